@@ -1,0 +1,18 @@
+# Runs EXE with ARGS (a ;-list); passes only if the exit code is non-zero and
+# stderr+stdout match REGEX, and the output has no "nan".
+execute_process(COMMAND ${EXE} ${ARGS} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+set(all "${out}${err}")
+if(rc EQUAL 0)
+  message(FATAL_ERROR "expected a non-zero exit, got 0; output:\n${all}")
+endif()
+if(NOT all MATCHES "${REGEX}")
+  message(FATAL_ERROR "output does not match '${REGEX}':\n${all}")
+endif()
+string(TOLOWER "${all}" lower)
+if(lower MATCHES "[^a-z]nan[^a-z]")
+  message(FATAL_ERROR "output contains NaN:\n${all}")
+endif()
+if(lower MATCHES "terminate called|segmentation fault|core dumped")
+  message(FATAL_ERROR "crash:\n${all}")
+endif()
+message(STATUS "ok (exit ${rc}): ${all}")
