@@ -38,11 +38,14 @@ Site::Site(const SiteSpec& spec) : spec_(spec) {
   reference_period(spec.vn_years, spec.cu);  // validates VN and CU
   topographic_factor(spec.conditions.topography, spec.conditions.h_over_H);
   if (spec.lat) {
-    grid_ = default_grid();
+    grid_ = spec.grid_path.empty() ? default_grid()
+                                   : std::make_shared<const HazardGrid>(HazardGrid::load(spec.grid_path));
     grid_->cell_nodes(*spec.lat, *spec.lon);  // fails now for a point outside the grid
   }
   if (spec.island) {
-    islands_ = default_islands();
+    islands_ = spec.islands_path.empty()
+                   ? default_islands()
+                   : std::make_shared<const IslandTable>(IslandTable::load(spec.islands_path));
     islands_->at(*spec.island, 475.0);  // fails now for an unknown island
   }
 }
@@ -76,6 +79,10 @@ SeismicAction Site::action(LimitState ls) const {
 
 ElasticSpectrum Site::spectrum(LimitState ls, double damping_pct) const {
   return ElasticSpectrum(action(ls).hazard, spec_.conditions, damping_pct);
+}
+
+std::vector<int> Site::grid_nodes() const {
+  return grid_ ? grid_->cell_nodes(*spec_.lat, *spec_.lon) : std::vector<int>{};
 }
 
 std::string Site::describe() const {

@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace assess {
 
@@ -25,6 +26,9 @@ struct SiteSpec {
   SiteConditions conditions;
   double vn_years = 50.0;  ///< nominal life VN (years)
   double cu = 1.0;         ///< coefficient of use CU (-)
+  /// Hazard data files; empty = the files shipped in data_dir()/spectra.
+  std::string grid_path;
+  std::string islands_path;
 };
 
 /// The seismic action of one limit state at the site.
@@ -50,6 +54,8 @@ class Site {
   HazardParams hazard_at_tr(double tr_years) const;
   /// Elastic spectrum of a limit state at damping xi (%).
   ElasticSpectrum spectrum(LimitState ls, double damping_pct = 5.0) const;
+  /// Grid nodes used for the site (the enclosing cell), empty unless lat/lon.
+  std::vector<int> grid_nodes() const;
   /// Human-readable description ("lat 42.35, lon 13.40", "island Lipari", "given").
   std::string describe() const;
 
