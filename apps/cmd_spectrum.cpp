@@ -1,14 +1,335 @@
-// cmd_spectrum.cpp: placeholder until the spectrum subcommand lands.
+// cmd_spectrum.cpp: `assess spectrum`, NTC 2018 elastic spectra of a site.
+// Parses the options, builds a Site, prints a Spettri-NTC-like table or JSON.
 #include "commands.hpp"
 
 #include <assess/error.hpp>
+#include <assess/site.hpp>
+#include <assess/units.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <optional>
+#include <sstream>
 
 namespace assess::cli {
 
+namespace {
+
+struct SpectrumArgs {
+  std::optional<double> lat, lon, ag_g, F0, Tc_star, cu, tr, q;
+  std::optional<std::string> island, use_class, limit_state;
+  std::string soil = "A", topography = "T1", periods, grid, islands;
+  double h_over_H = 1.0, vn = 50.0, damping = 5.0;
+  bool json = false;
+};
+
+std::vector<double> parse_periods(const std::string& list) {
+  if (list.empty()) return {0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.75, 1.0, 1.5, 2.0, 2.5, 3.0, 4.0};
+  std::vector<double> out;
+  std::stringstream ss(list);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    std::size_t used = 0;
+    double v = 0.0;
+    try {
+      v = std::stod(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    while (used < item.size() && item[used] == ' ') ++used;
+    if (used == 0 || used != item.size() || !std::isfinite(v) || v < 0.0)
+      throw InputError("--periods '" + list + "': expected a comma-separated list of periods >= 0 s, got '" +
+                       item + "'");
+    out.push_back(v);
+  }
+  return out;
+}
+
+// One evaluated case: a limit state (or a given TR / given hazard).
+struct Column {
+  std::string label;
+  std::optional<LimitState> ls;
+  std::optional<double> PVR, TR;  // TR as computed (years)
+  HazardParams hazard;
+};
+
+SiteSpec make_spec(const SpectrumArgs& a) {
+  SiteSpec spec;
+  const bool has_ll = a.lat || a.lon, has_given = a.ag_g || a.F0 || a.Tc_star;
+  if (int(has_ll) + int(bool(a.island)) + int(has_given) != 1)
+    throw InputError("give the site as --lat/--lon, or --island NAME, or --ag/--F0/--Tc-star (exactly one)");
+  if (has_ll) {
+    if (!a.lat || !a.lon) throw InputError("--lat and --lon must be given together (decimal degrees)");
+    if (!(*a.lat >= -90.0 && *a.lat <= 90.0))
+      throw InputError("--lat " + std::to_string(*a.lat) + ": expected a latitude in decimal degrees, -90 to 90");
+    if (!(*a.lon >= -180.0 && *a.lon <= 180.0))
+      throw InputError("--lon " + std::to_string(*a.lon) + ": expected a longitude in decimal degrees, -180 to 180");
+    spec.lat = a.lat, spec.lon = a.lon;
+  }
+  if (a.island) spec.island = a.island;
+  if (has_given) {
+    if (!a.ag_g || !a.F0 || !a.Tc_star) throw InputError("--ag, --F0 and --Tc-star must be given together");
+    if (!(*a.ag_g > 0.0 && *a.ag_g < 2.0)) throw InputError("--ag " + std::to_string(*a.ag_g) + ": expected ag in g, 0 < ag < 2");
+    if (!(*a.F0 >= 1.0 && *a.F0 <= 5.0)) throw InputError("--F0 " + std::to_string(*a.F0) + ": expected F0 between 1 and 5 (-)");
+    if (!(*a.Tc_star > 0.0 && *a.Tc_star <= 2.0))
+      throw InputError("--Tc-star " + std::to_string(*a.Tc_star) + ": expected TC* in s, 0 < TC* <= 2");
+    const HazardParams h{0.0, *a.ag_g, *a.F0, *a.Tc_star};
+    for (LimitState ls : all_limit_states) spec.given[ls] = h;
+  }
+  try {
+    spec.conditions.soil = parse_soil_class(a.soil);
+  } catch (const InputError& e) {
+    throw InputError(std::string("--soil: ") + e.what());
+  }
+  try {
+    spec.conditions.topography = parse_topography(a.topography);
+  } catch (const InputError& e) {
+    throw InputError(std::string("--topography: ") + e.what());
+  }
+  if (!(a.h_over_H >= 0.0 && a.h_over_H <= 1.0))
+    throw InputError("--h-over-H " + std::to_string(a.h_over_H) + ": expected the relative height of the site, 0 to 1");
+  spec.conditions.h_over_H = a.h_over_H;
+  if (!(a.vn > 0.0)) throw InputError("--vn " + std::to_string(a.vn) + ": expected a nominal life VN in years > 0");
+  spec.vn_years = a.vn;
+  if (a.cu && a.use_class) throw InputError("give either --cu or --use-class, not both");
+  if (a.cu) {
+    if (!(*a.cu > 0.0)) throw InputError("--cu " + std::to_string(*a.cu) + ": expected a coefficient of use CU > 0");
+    spec.cu = *a.cu;
+  }
+  if (a.use_class) {
+    try {
+      spec.cu = use_coefficient(parse_use_class(*a.use_class));
+    } catch (const InputError& e) {
+      throw InputError(std::string("--use-class: ") + e.what());
+    }
+  }
+  spec.grid_path = a.grid;
+  spec.islands_path = a.islands;
+  return spec;
+}
+
+std::vector<Column> evaluate(const SpectrumArgs& a, const Site& site) {
+  std::vector<Column> cols;
+  if (a.tr && a.limit_state) throw InputError("give either --limit-state or --tr, not both");
+  if (a.tr) {
+    if (!(*a.tr > 0.0) || !std::isfinite(*a.tr))
+      throw InputError("--tr " + std::to_string(*a.tr) + ": expected a return period in years > 0");
+    if (!site.spec().given.empty()) throw InputError("--tr cannot be used with --ag/--F0/--Tc-star");
+    Column c;
+    c.label = "TR";
+    c.TR = *a.tr;
+    c.hazard = site.hazard_at_tr(*a.tr);
+    cols.push_back(c);
+    return cols;
+  }
+  std::vector<LimitState> states(all_limit_states.begin(), all_limit_states.end());
+  if (a.limit_state) {
+    try {
+      states = {parse_limit_state(*a.limit_state)};
+    } catch (const InputError& e) {
+      throw InputError(std::string("--limit-state: ") + e.what());
+    }
+  }
+  if (!site.spec().given.empty()) {  // one hazard given directly: one column
+    Column c;
+    c.label = "given";
+    if (a.limit_state) c.ls = states[0];
+    c.hazard = site.action(states[0]).hazard;
+    c.hazard.TR = 0.0;
+    cols.push_back(c);
+    return cols;
+  }
+  for (LimitState ls : states) {
+    Column c;
+    c.ls = ls;
+    c.label = to_string(ls);
+    const SeismicAction act = site.action(ls);
+    c.PVR = act.PVR;
+    c.TR = act.TR;
+    c.hazard = act.hazard;
+    cols.push_back(c);
+  }
+  return cols;
+}
+
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+void warn_clamp(const Column& c) {
+  if (c.hazard.tr_clamped)
+    std::cerr << "assess: warning: " << c.label << ": TR = " << fmt("%.2f", c.hazard.tr_requested)
+              << " years is outside the tabulated 30-2475 years; the hazard of TR = " << fmt("%.0f", c.hazard.TR)
+              << " years is used (Circ. 2019 Tab. C3.2.I)\n";
+}
+
+nlohmann::json column_json(const Column& c, const ElasticSpectrum& s, const std::vector<double>& periods,
+                           std::optional<double> q) {
+  nlohmann::json j;
+  j["limit_state"] = c.ls ? nlohmann::json(to_string(*c.ls)) : nlohmann::json(nullptr);
+  j["PVR"] = c.PVR ? nlohmann::json(*c.PVR) : nlohmann::json(nullptr);
+  j["TR"] = c.TR ? nlohmann::json(*c.TR) : nlohmann::json(nullptr);
+  j["TR_used"] = c.TR ? nlohmann::json(c.hazard.TR) : nlohmann::json(nullptr);
+  j["TR_clamped"] = c.hazard.tr_clamped;
+  j["ag_g"] = s.ag_g();
+  j["F0"] = s.F0();
+  j["Tc_star"] = s.Tc_star();
+  j["SS"] = s.SS();
+  j["CC"] = s.CC();
+  j["ST"] = s.ST();
+  j["S"] = s.S();
+  j["eta"] = s.eta();
+  j["damping_pct"] = s.damping_pct();
+  j["TB"] = s.TB();
+  j["TC"] = s.TC();
+  j["TD"] = s.TD();
+  j["TE"] = s.TE();
+  j["TF"] = s.TF();
+  j["Fv"] = s.Fv();
+  j["PGA_g"] = s.PGA() / units::g;
+  nlohmann::json arr = nlohmann::json::array();
+  for (double T : periods) {
+    nlohmann::json p{{"T", T}, {"Se_g", s.Se(T) / units::g}, {"SDe_m", s.SDe(T)}, {"Sve_g", s.Sve(T) / units::g}};
+    if (q) p["Sd_g"] = s.Sd(T, *q) / units::g;
+    arr.push_back(p);
+  }
+  j["spectrum"] = arr;
+  return j;
+}
+
+void print_table(const Site& site, const std::vector<Column>& cols, const std::vector<ElasticSpectrum>& spectra,
+                 const std::vector<double>& periods, std::optional<double> q) {
+  const SiteSpec& sp = site.spec();
+  std::ostream& o = std::cout;
+  o << "NTC 2018 elastic spectra (§3.2.3.2)\n";
+  o << "Site        : " << site.describe();
+  if (const auto nodes = site.grid_nodes(); !nodes.empty()) {
+    o << "  (grid cell nodes";
+    for (int n : nodes) o << " " << n;
+    o << ")";
+  }
+  o << "\nSubsoil     : " << to_string(sp.conditions.soil) << ", topography " << to_string(sp.conditions.topography)
+    << " (h/H = " << fmt("%.2f", sp.conditions.h_over_H) << ")\n";
+  if (sp.given.empty())
+    o << "VN = " << fmt("%.0f", sp.vn_years) << " years, CU = " << fmt("%.2f", sp.cu)
+      << ", VR = " << fmt("%.1f", site.VR()) << " years\n";
+  o << "Damping     : " << fmt("%.1f", spectra[0].damping_pct()) << " % (eta = " << fmt("%.4f", spectra[0].eta())
+    << ")\n\n";
+  auto row = [&](const std::string& name, const std::string& unit, auto get, const char* f) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%-10s %-7s", name.c_str(), unit.c_str());
+    o << buf;
+    for (std::size_t i = 0; i < cols.size(); ++i) {
+      const std::optional<double> v = get(i);
+      std::snprintf(buf, sizeof buf, "%11s", v ? fmt(f, *v).c_str() : "-");
+      o << buf;
+    }
+    o << "\n";
+  };
+  {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%-10s %-7s", "", "");
+    o << buf;
+    for (const auto& c : cols) std::snprintf(buf, sizeof buf, "%11s", c.label.c_str()), o << buf;
+    o << "\n";
+  }
+  using OD = std::optional<double>;
+  row("P_VR", "%", [&](std::size_t i) { return cols[i].PVR ? OD(*cols[i].PVR * 100) : OD(); }, "%.0f");
+  row("TR", "years", [&](std::size_t i) { return cols[i].TR; }, "%.2f");
+  row("ag", "g", [&](std::size_t i) { return OD(spectra[i].ag_g()); }, "%.4f");
+  row("F0", "-", [&](std::size_t i) { return OD(spectra[i].F0()); }, "%.4f");
+  row("Tc*", "s", [&](std::size_t i) { return OD(spectra[i].Tc_star()); }, "%.4f");
+  row("SS", "-", [&](std::size_t i) { return OD(spectra[i].SS()); }, "%.4f");
+  row("CC", "-", [&](std::size_t i) { return OD(spectra[i].CC()); }, "%.4f");
+  row("ST", "-", [&](std::size_t i) { return OD(spectra[i].ST()); }, "%.4f");
+  row("S", "-", [&](std::size_t i) { return OD(spectra[i].S()); }, "%.4f");
+  row("TB", "s", [&](std::size_t i) { return OD(spectra[i].TB()); }, "%.4f");
+  row("TC", "s", [&](std::size_t i) { return OD(spectra[i].TC()); }, "%.4f");
+  row("TD", "s", [&](std::size_t i) { return OD(spectra[i].TD()); }, "%.4f");
+  row("ag*S", "g", [&](std::size_t i) { return OD(spectra[i].PGA() / units::g); }, "%.4f");
+  o << "\nHorizontal elastic spectrum Se (g) [3.2.2] and displacement spectrum SDe (mm) [3.2.10-11]";
+  if (q) o << "; design spectrum Sd (g) with q = " << fmt("%.2f", *q);
+  o << "\n";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%8s", "T (s)");
+  o << buf;
+  for (const auto& c : cols) {
+    std::snprintf(buf, sizeof buf, "%11s", ("Se " + c.label).c_str()), o << buf;
+    std::snprintf(buf, sizeof buf, "%11s", ("SDe " + c.label).c_str()), o << buf;
+    if (q) std::snprintf(buf, sizeof buf, "%11s", ("Sd " + c.label).c_str()), o << buf;
+  }
+  o << "\n";
+  for (double T : periods) {
+    std::snprintf(buf, sizeof buf, "%8.3f", T);
+    o << buf;
+    for (const auto& s : spectra) {
+      std::snprintf(buf, sizeof buf, "%11.4f", s.Se(T) / units::g), o << buf;
+      std::snprintf(buf, sizeof buf, "%11.2f", s.SDe(T) * 1000.0), o << buf;
+      if (q) std::snprintf(buf, sizeof buf, "%11.4f", s.Sd(T, *q) / units::g), o << buf;
+    }
+    o << "\n";
+  }
+}
+
+void run(const SpectrumArgs& a) {
+  const SiteSpec spec = make_spec(a);
+  const std::vector<double> periods = parse_periods(a.periods);
+  if (!(a.damping >= 0.0) || !std::isfinite(a.damping))
+    throw InputError("--damping " + std::to_string(a.damping) + ": expected a viscous damping ratio in percent >= 0");
+  if (a.q && !(*a.q >= 1.0)) throw InputError("--q " + std::to_string(*a.q) + ": expected a behaviour factor q >= 1");
+  const Site site(spec);
+  const std::vector<Column> cols = evaluate(a, site);
+  std::vector<ElasticSpectrum> spectra;
+  for (const Column& c : cols) spectra.emplace_back(c.hazard, spec.conditions, a.damping);
+  for (const Column& c : cols) warn_clamp(c);
+  if (a.json) {
+    if (cols.size() == 1) {
+      std::cout << column_json(cols[0], spectra[0], periods, a.q).dump(2) << "\n";
+    } else {
+      nlohmann::json j;
+      j["site"] = site.describe();
+      j["VR"] = site.VR();
+      nlohmann::json arr = nlohmann::json::array();
+      for (std::size_t i = 0; i < cols.size(); ++i) arr.push_back(column_json(cols[i], spectra[i], periods, a.q));
+      j["limit_states"] = arr;
+      std::cout << j.dump(2) << "\n";
+    }
+  } else {
+    print_table(site, cols, spectra, periods, a.q);
+  }
+}
+
+}  // namespace
+
 void add_spectrum_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("spectrum", "(not available yet in this build)");
-  cmd->allow_extras();
-  cmd->callback([] { throw InputError("the 'spectrum' command is not available yet in this build"); });
+  auto a = std::make_shared<SpectrumArgs>();
+  auto* cmd = app.add_subcommand("spectrum", "NTC 2018 elastic spectra of a site (§3.2), per limit state");
+  cmd->add_option("--lat", a->lat, "site latitude (decimal degrees, north)");
+  cmd->add_option("--lon", a->lon, "site longitude (decimal degrees, east)");
+  cmd->add_option("--ag", a->ag_g, "ag on rock, given directly (g)");
+  cmd->add_option("--F0", a->F0, "F0, given directly (-)");
+  cmd->add_option("--Tc-star", a->Tc_star, "TC*, given directly (s)");
+  cmd->add_option("--island", a->island, "island of Allegato B Tab. 2 (e.g. Sardegna, Lipari)");
+  cmd->add_option("--soil", a->soil, "subsoil class A..E (default A)");
+  cmd->add_option("--topography", a->topography, "topographic class T1..T4 (default T1)");
+  cmd->add_option("--h-over-H", a->h_over_H, "relative height of the site on the relief, 0..1 (default 1)");
+  cmd->add_option("--vn", a->vn, "nominal life VN (years, default 50)");
+  cmd->add_option("--cu", a->cu, "coefficient of use CU (default 1.0)");
+  cmd->add_option("--use-class", a->use_class, "use class I..IV (sets CU)");
+  cmd->add_option("--limit-state", a->limit_state, "SLO|SLD|SLV|SLC (default: all four)");
+  cmd->add_option("--tr", a->tr, "return period (years) instead of a limit state");
+  cmd->add_option("--damping", a->damping, "viscous damping (%, default 5)");
+  cmd->add_option("--q", a->q, "behaviour factor: also print the design spectrum Sd");
+  cmd->add_option("--periods", a->periods, "comma-separated periods (s), e.g. 0,0.5,1");
+  cmd->add_option("--grid", a->grid, "hazard grid CSV (default: the shipped spectra/ntc2008_hazard_grid.csv)");
+  cmd->add_option("--islands-table", a->islands, "islands CSV (default: the shipped table)");
+  cmd->add_flag("--json", a->json, "print JSON (one object for one limit state)");
+  cmd->callback([a] { run(*a); });
 }
 
 }  // namespace assess::cli

@@ -60,7 +60,11 @@ class HazardGrid {
   std::vector<HazardNode> nodes_;  // in file order
   std::vector<int> index_;         // id - id_min -> position in nodes_, -1 if absent
   int id_min_ = 0;
-  friend struct HazardGridAccess;
+  // Spatial index: nodes binned on a regular lat/lon raster (CSR layout).
+  double lat0_ = 0.0, lon0_ = 0.0;
+  int nlat_ = 0, nlon_ = 0;
+  std::vector<int> bin_start_, bin_nodes_;
+  void build_index();
 };
 
 /// The islands of Allegato B Tab. 2 (not covered by the grid).
