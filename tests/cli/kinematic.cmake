@@ -1,0 +1,25 @@
+# CLI tests of `assess kinematic`: the report, the JSON keys, the §6b wall
+# numbers at L'Aquila, and each bad input with a named element and exit != 0.
+assess_cli_test(kinematic_report ARGS kinematic mechanisms/free_wall_laquila.json
+  PASS "a0\\* = alpha0 g/\\(e\\* FC\\).*0\\.807407 m/s2")
+assess_cli_test(kinematic_report_verdict ARGS kinematic mechanisms/free_wall_laquila.json
+  PASS "non verificato / not satisfied")
+assess_cli_test(kinematic_json_keys ARGS kinematic mechanisms/free_wall_laquila.json --json
+  PASS "\"M_star\": 4\\.1284.*\"T_SLC\": 3\\.8566.*\"T_SLV\": 2\\.7688.*\"Ts\": 1\\.7619")
+assess_cli_test(kinematic_json_checks ARGS kinematic mechanisms/free_wall_laquila.json --json
+  PASS "\"ag_capacity_g\": 0\\.19301")
+assess_cli_test(kinematic_json_curve ARGS kinematic mechanisms/free_wall_laquila.json --json
+  PASS "\"capacity_curve\": \\[[^]]*\"a_star\"[^]]*\"d_star\"")
+assess_cli_test(kinematic_facade ARGS kinematic mechanisms/two_storey_facade.json PASS "<- governing")
+assess_cli_test(kinematic_flexure ARGS kinematic mechanisms/vertical_flexure.json PASS "minimum of alpha0")
+assess_cli_test(kinematic_gable ARGS kinematic mechanisms/gable.json PASS "C8A.4.12")
+assess_cli_test(kinematic_composite ARGS kinematic mechanisms/composite_wedge.json PASS "wedge beta = 45.0 deg")
+assess_cli_test(kinematic_blocks ARGS kinematic mechanisms/explicit_blocks.json PASS "no site in the case")
+assess_cli_error_test(kinematic_two_dof "/mechanism: the chain has 4 degrees of freedom.*block 1 'b'" kinematic tests/cli/kinematic_bad/two_dof.json)
+assess_cli_error_test(kinematic_zero_dof "0 degrees of freedom" kinematic tests/cli/kinematic_bad/zero_dof.json)
+assess_cli_error_test(kinematic_hinge_off_block "/mechanism/constraints/0/point: the point is not on block \"a\"" kinematic tests/cli/kinematic_bad/hinge_off_block.json)
+assess_cli_error_test(kinematic_load_outside "/mechanism/loads/0/point: the load lies outside every block" kinematic tests/cli/kinematic_bad/load_outside.json)
+assess_cli_error_test(kinematic_negative_thickness "/mechanism/storeys/0/thickness: value -0.4 out of range: expected > 0 m" kinematic tests/cli/kinematic_bad/negative_thickness.json)
+assess_cli_error_test(kinematic_not_activated "never activated: alpha0 = -" kinematic tests/cli/kinematic_bad/not_activated.json)
+assess_cli_error_test(kinematic_unknown_key "unknown key \"thicknes\" \\(did you mean \"thickness\"\\?\\)" kinematic tests/cli/kinematic_bad/unknown_key.json)
+assess_cli_error_test(kinematic_missing_file "kinematic|exist" kinematic tests/cli/kinematic_bad/none.json)
