@@ -28,8 +28,8 @@ class GroundMotion {
     if (!samples_.empty()) {
       if (t < 0.0) return 0.0;
       const double x = t * inv_dt_;
-      std::size_t i = static_cast<std::size_t>(x);
-      if (i + 1 >= samples_.size()) return t <= duration_ ? samples_.back() : 0.0;
+      const long i = static_cast<long>(x);  // signed: a single conversion instruction
+      if (static_cast<std::size_t>(i) + 1 >= samples_.size()) return t <= duration_ ? samples_.back() : 0.0;
       return samples_[i] + (x - double(i)) * (samples_[i + 1] - samples_[i]);
     }
     return fn_ ? fn_(t) : 0.0;
