@@ -74,13 +74,13 @@ std::once_flag gsl_handler_once;
 
 void HybridOdeOptions::validate() const {
   auto positive = [](double v, const char* field) {
-    if (!(std::isfinite(v) && v > 0.0))
-      throw InputError(std::string(field) + " must be a positive number");
+    if (!(v > 0.0)) throw InputError(std::string(field) + " must be a positive number");
   };
   positive(rel_tol, "relative tolerance rel_tol");
   positive(abs_tol, "absolute tolerance abs_tol");
   positive(event_time_tol, "event time tolerance event_time_tol (s)");
   positive(h_initial, "initial step h_initial (s)");
+  positive(h_max, "largest step h_max (s)");
   if (max_steps <= 0) throw InputError("max_steps must be positive");
   if (max_events <= 0) throw InputError("max_events must be positive");
 }
@@ -150,7 +150,7 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
     std::copy(y, y + n, y0.begin());
     std::copy(f.begin(), f.end(), f0.begin());
     const double t_prev = t;
-    double h_try = h;
+    double h_try = std::min(h, options.h_max);
     bool final_step = false;
     for (;;) {
       if (res.steps + res.rejected_steps >= options.max_steps)

@@ -266,6 +266,7 @@ RockingResult analyse(const RockingModel& model, const GroundMotion& motion, con
   hopt.event_time_tol = options.event_time_tol;
   hopt.max_steps = options.max_steps;
   hopt.max_events = options.max_events;
+  hopt.h_max = motion.max_step();
   const HybridOdeResult h = integrate_hybrid(sys, 0.0, motion.duration() + options.tail_s, y, mode, hopt);
 
   RockingResult r = std::move(sys.result());
