@@ -97,6 +97,11 @@ class Chain {
   /// the sum P dx^2 of C8A.4.2 for a block of continuous mass.
   double vertical_gyration_sq(int block, const Eigen::VectorXd& q) const;
 
+  /// Polar radius of gyration squared about the block's centroid (m^2):
+  /// integral of ((x - x_c)^2 + (z - z_c)^2) dA / A of the undeformed polygon.
+  /// The block's moment of inertia about its centroid is then m * this.
+  double polar_gyration_sq(int block) const { return moments_[block](0) + moments_[block](2); }
+
   /// Position (m) of the material point p0 (undeformed, m) of `block` in the
   /// configuration q (size n_coordinates(); zero = undeformed).
   Eigen::Vector2d position(int block, const Eigen::Vector2d& p0, const Eigen::VectorXd& q) const;
