@@ -1,14 +1,56 @@
-// cmd_run.cpp: placeholder until the run subcommand lands.
+// cmd_run.cpp: `assess run CASE.json [--json] [--html FILE] [--keep-going]`:
+// the façade assessment — site, kinematic checks of both editions and the
+// dynamic rocking analysis — side by side. Parses, calls, prints.
 #include "commands.hpp"
 
+#include <assess/case_file.hpp>
 #include <assess/error.hpp>
+#include <assess/facade_assessment.hpp>
+#include <assess/facade_report.hpp>
+
+#include <fstream>
+#include <iostream>
+#include <memory>
 
 namespace assess::cli {
+namespace {
+
+struct RunArgs {
+  std::string file, html;
+  bool json = false, keep_going = false;
+};
+
+void run(const RunArgs& a) {
+  const CaseFile c = read_case_file(a.file);
+  FacadeOptions opt;
+  opt.keep_going = a.keep_going;
+  opt.histories = !a.html.empty();
+  const FacadeAssessment res = assess_facade(c, opt);
+  const CandidateResult& gc = res.kinematic.candidates[res.kinematic.governing];
+  if (!gc.result.activates)
+    throw InputError(a.file + ": the mechanism (" + gc.label + ") is never activated: alpha0 = " +
+                     std::to_string(gc.result.alpha0) + " <= 0");
+  if (!a.html.empty()) {
+    const std::string page = facade_html(res);
+    std::ofstream out(a.html, std::ios::binary);
+    if (!out || !(out << page)) throw InputError("--html " + a.html + ": cannot write the file");
+  }
+  if (a.json)
+    std::cout << facade_json(res).dump(2) << "\n";
+  else
+    std::cout << facade_text(res) << (a.html.empty() ? "" : "\nHTML report written to " + a.html + "\n");
+}
+
+}  // namespace
 
 void add_run_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("run", "(not available yet in this build)");
-  cmd->allow_extras();
-  cmd->callback([] { throw InputError("the 'run' command is not available yet in this build"); });
+  auto args = std::make_shared<RunArgs>();
+  auto* cmd = app.add_subcommand("run", "façade assessment: strength, displacement and dynamic verdicts side by side");
+  cmd->add_option("case", args->file, "case file (JSON, see docs/user/case-file.md)")->required()->check(CLI::ExistingFile);
+  cmd->add_flag("--json", args->json, "print the report as JSON");
+  cmd->add_option("--html", args->html, "also write a self-contained HTML report with plots to this file");
+  cmd->add_flag("--keep-going", args->keep_going, "continue with the readable records when some cannot be read");
+  cmd->callback([args] { run(*args); });
 }
 
 }  // namespace assess::cli

@@ -15,6 +15,7 @@
 #include "assess/error.hpp"
 #include "assess/record_catalogue.hpp"
 #include "assess/record_io.hpp"
+#include "assess/response_spectrum.hpp"
 #include "assess/units.hpp"
 
 #include <algorithm>
@@ -94,6 +95,14 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
       a.actions[ls] = site->action(ls);
     }
   }
+  if (site) {
+    a.periods = log_spaced_periods(0.02, 4.0, 48);
+    a.periods.insert(a.periods.begin(), 0.0);
+    for (const auto& [ls, act] : a.actions) {
+      const ElasticSpectrum s(act.hazard, kase.site->conditions, 5.0);
+      for (double T : a.periods) a.site_Se[ls].push_back(s.Se(T));
+    }
+  }
   if (kase.dynamic.is_null()) return a;
 
   a.dynamic = parse_dynamic(kase.dynamic, kase.file, directory_of(kase.file));
@@ -130,6 +139,25 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   const ElasticSpectrum target = site->spectrum(LimitState::SLV, 5.0);
   std::vector<Record> recs;
   load_records(a, d, opt, target, gov.result, recs);
+
+  // Curves for the report: record spectra and the moment-rotation curve.
+  a.mean_psa.assign(a.periods.size(), 0.0);
+  for (std::size_t ir = 0; ir < recs.size(); ++ir) {
+    const ResponseSpectrum rs = response_spectrum(recs[ir], a.periods);
+    std::vector<double> psa = rs.psa();
+    for (std::size_t j = 0; j < psa.size(); ++j) {
+      psa[j] *= a.records[ir].scale;
+      a.mean_psa[j] += psa[j] / double(recs.size());
+    }
+    a.record_psa.push_back(std::move(psa));
+  }
+  const double th_u = a.model->theta_u(+1);
+  constexpr int n_mr = 200;
+  for (int i = 0; i <= n_mr; ++i) {
+    const double th = th_u * i / n_mr;
+    a.mr_theta.push_back(th);
+    a.mr_moment.push_back(a.model->restoring_moment(th) - a.body->body.M_ext);
+  }
 
   // Control point of the kinematic analysis, for the C8.7.1.2.1.9 displacements.
   const KinematicResult& kin = gov.result;

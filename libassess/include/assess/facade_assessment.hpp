@@ -78,6 +78,13 @@ struct FacadeAssessment {
   std::vector<RestitutionSummary> summaries;
   /// Every check: the kinematic rows of both editions, then "dynamic" rows.
   std::vector<CheckRow> checks;
+
+  // Curves for the report (computed here so the report never recomputes physics).
+  std::vector<double> periods;                         ///< s (0 first, then log-spaced to 4 s)
+  std::map<LimitState, std::vector<double>> site_Se;   ///< 5 % elastic Se at `periods` (m/s^2)
+  std::vector<std::vector<double>> record_psa;         ///< scaled 5 % PSA of each record at `periods` (m/s^2)
+  std::vector<double> mean_psa;                        ///< their mean (m/s^2)
+  std::vector<double> mr_theta, mr_moment;             ///< moment-rotation curve of the body: rad, N m/m
 };
 
 /// Runs the whole assessment of a case. Throws InputError for bad input
