@@ -242,6 +242,13 @@ SiteSpec parse_site(const JsonNode& s) {
   if (s.has("use_class") && s.has("CU")) s.fail("give \"use_class\" or \"CU\", not both");
   if (s.has("use_class")) spec.cu = use_coefficient(parse_use_class(s.choice("use_class", {"I", "II", "III", "IV"})));
   if (s.has("CU")) spec.cu = s.positive("CU", "-");
+  // Hazard availability now (a point outside the grid, an unknown island),
+  // with the JSON path in the message.
+  try {
+    const Site check(spec);
+  } catch (const InputError& e) {
+    s.fail(e.what());
+  }
   return spec;
 }
 
