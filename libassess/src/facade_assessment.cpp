@@ -17,6 +17,7 @@
 #include "assess/record_io.hpp"
 #include "assess/response_spectrum.hpp"
 #include "assess/units.hpp"
+#include "parallel_for.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -142,15 +143,13 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
 
   // Curves for the report: record spectra and the moment-rotation curve.
   a.mean_psa.assign(a.periods.size(), 0.0);
-  for (std::size_t ir = 0; ir < recs.size(); ++ir) {
-    const ResponseSpectrum rs = response_spectrum(recs[ir], a.periods);
-    std::vector<double> psa = rs.psa();
-    for (std::size_t j = 0; j < psa.size(); ++j) {
-      psa[j] *= a.records[ir].scale;
-      a.mean_psa[j] += psa[j] / double(recs.size());
-    }
-    a.record_psa.push_back(std::move(psa));
-  }
+  a.record_psa.resize(recs.size());
+  detail::parallel_for(recs.size(), [&](std::size_t ir) {
+    a.record_psa[ir] = response_spectrum(recs[ir], a.periods).psa();
+    for (double& v : a.record_psa[ir]) v *= a.records[ir].scale;
+  });
+  for (const auto& psa : a.record_psa)
+    for (std::size_t j = 0; j < psa.size(); ++j) a.mean_psa[j] += psa[j] / double(recs.size());
   const double th_u = a.model->theta_u(+1);
   constexpr int n_mr = 200;
   for (int i = 0; i <= n_mr; ++i) {
@@ -164,29 +163,31 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   std::vector<bool> polarities;
   if (d.polarity != Polarity::reversed) polarities.push_back(false);
   if (d.polarity != Polarity::normal) polarities.push_back(true);
-  RockingOptions ro = d.options;
-  ro.record_history = opt.histories;
-  for (std::size_t ie = 0; ie < models.size(); ++ie) {
-    for (std::size_t ir = 0; ir < recs.size(); ++ir) {
+  // Every (restitution, record, polarity) analysis, in this order, on all cores.
+  for (std::size_t ie = 0; ie < models.size(); ++ie)
+    for (std::size_t ir = 0; ir < recs.size(); ++ir)
       for (bool rev : polarities) {
-        ro.scale = a.records[ir].scale;
-        ro.reverse = rev;
         DynamicRun run;
         run.record = ir;
         run.reversed = rev;
         run.restitution = ie;
         run.e = models[ie].restitution();
-        run.result = analyse(models[ie], recs[ir], ro);
-        run.theta_ratio = run.result.theta_u > 0 ? run.result.theta_max / run.result.theta_u : 0.0;
-        // Peak outward rotation moves the control point outward (one-sided:
-        // theta >= 0); for two-sided, |theta| on either side (symmetric body).
-        run.d_control = std::fabs(a.body->horizontal_displacement(kin.control_point, run.result.theta_max));
-        run.d_star = run.d_control * kin.d_star_per_dk;
-        run.collapse = run.result.overturned || run.d_control >= kin.dk0;
         a.runs.push_back(std::move(run));
       }
-    }
-  }
+  detail::parallel_for(a.runs.size(), [&](std::size_t i) {
+    DynamicRun& run = a.runs[i];
+    RockingOptions ro = d.options;
+    ro.record_history = opt.histories;
+    ro.scale = a.records[run.record].scale;
+    ro.reverse = run.reversed;
+    run.result = analyse(models[run.restitution], recs[run.record], ro);
+    run.theta_ratio = run.result.theta_u > 0 ? run.result.theta_max / run.result.theta_u : 0.0;
+    // Peak outward rotation moves the control point outward (one-sided:
+    // theta >= 0); for two-sided, |theta| on either side (symmetric body).
+    run.d_control = std::fabs(a.body->horizontal_displacement(kin.control_point, run.result.theta_max));
+    run.d_star = run.d_control * kin.d_star_per_dk;
+    run.collapse = run.result.overturned || run.d_control >= kin.dk0;
+  });
   // Summaries per restitution value.
   for (std::size_t ie = 0; ie < models.size(); ++ie) {
     RestitutionSummary s;

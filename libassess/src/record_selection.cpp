@@ -16,6 +16,7 @@
 #include "assess/record_selection.hpp"
 
 #include "assess/error.hpp"
+#include "parallel_for.hpp"
 #include "assess/response_spectrum.hpp"
 
 #include <algorithm>
@@ -206,8 +207,11 @@ SelectionResult select_records(const std::function<double(double)>& target,
   std::vector<double> scale;
   std::vector<std::vector<double>> ratios, psa;
   const ResponseOptions ro{opts.damping_ratio, ResponseOptions{}.min_steps_per_period};
+  std::vector<ResponseSpectrum> spectra(candidates.size());
+  detail::parallel_for(candidates.size(),
+                       [&](std::size_t i) { spectra[i] = response_spectrum(candidates[i], res.periods, ro); });
   for (std::size_t i = 0; i < candidates.size(); ++i) {
-    const auto rs = response_spectrum(candidates[i], res.periods, ro);
+    const ResponseSpectrum& rs = spectra[i];
     std::vector<double> rho(nT);
     double sum_log = 0.0;
     bool zero = false;
