@@ -17,7 +17,9 @@
 #include "assess/units.hpp"
 #include "bracket_root.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace assess {
@@ -156,6 +158,19 @@ double RockingModel::dnet_side(double a, int side) const {
   if (foundation_.is_rigid()) return gravity;
   if (a <= theta_cr_) return gravity + kb3_;
   return gravity + 0.5 * c_partial_ / (a * std::sqrt(a));
+}
+
+RockingModel::Curve RockingModel::moment_rotation_curve(std::size_t points, int side) const {
+  Curve c;
+  const double tu = theta_u(side);
+  const std::size_t n = std::max<std::size_t>(points, 2);
+  for (std::size_t i = 0; i < n; ++i) c.theta.push_back(tu * double(i) / double(n - 1));
+  if (theta_cr_ > 0.0 && theta_cr_ < tu) c.theta.push_back(theta_cr_);
+  c.theta.push_back(theta_peak(side));
+  std::sort(c.theta.begin(), c.theta.end());
+  c.theta.erase(std::unique(c.theta.begin(), c.theta.end()), c.theta.end());
+  for (double a : c.theta) c.moment.push_back(net_side(a, side));
+  return c;
 }
 
 double RockingModel::work(double a, int side) const {

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace assess {
 
@@ -85,6 +86,15 @@ class RockingModel {
   /// Same, for an explicit pivot side s and branch (partial = beyond theta_cr):
   /// the form used by the equation of motion (each branch extends smoothly).
   double restoring_moment(double theta, int pivot, bool partial) const;
+
+  /// The moment-rotation curve of the seed's Fig. 2a on side s: `points`
+  /// rotations evenly spaced on [0, theta_u] plus theta_cr and theta_peak, sorted
+  /// (rad), with the net restoring moment s (M(s theta) - M_ext) (N m/m).
+  struct Curve {
+    std::vector<double> theta;   ///< rotation magnitude (rad)
+    std::vector<double> moment;  ///< net restoring moment (N m/m)
+  };
+  Curve moment_rotation_curve(std::size_t points = 200, int side = +1) const;
 
   /// Work of the net restoring moment from 0 to a on side s (J/m):
   /// closed form of the integral of s (M(s x) - M_ext) dx over [0, a].
