@@ -1,4 +1,9 @@
 // ground_motion.cpp: piecewise-linear records and functional excitations.
+//
+// Notation: ug''(t) ground acceleration (m/s^2, positive outward, seed Eq. 1);
+//   samples_[i] = f * acc[i] at t_i = i dt, f = scale (negated if reversed);
+//   between samples ug'' is linear, so every t_i is a breakpoint (a kink) the
+//   integrator must not step across (research notes rocking.md §3.1).
 #include "assess/ground_motion.hpp"
 
 #include "assess/error.hpp"
@@ -45,7 +50,8 @@ GroundMotion GroundMotion::none(double duration_s) {
 double GroundMotion::next_breakpoint(double t) const {
   if (!samples_.empty()) {
     // index of the first sample strictly after t (robust to t a rounded sample time)
-    double i = std::floor(t * inv_dt_) + 1.0;
+    if (t < 0.0) return 0.0;
+    double i = static_cast<double>(static_cast<long>(t * inv_dt_)) + 1.0;  // floor for t >= 0
     if (i * dt_ <= t) i += 1.0;
     return i * dt_;
   }

@@ -6,18 +6,19 @@
 //
 // Notation:
 //   t_prev, y0, f0  start of the current step: time (s), state, dy/dt
-//   t, y, f      end of the step
-//   g_start[k]   event function k at the start of the step, g1 at its end
-//   hh           trial step size while locating an event by re-stepping from (t0, y0)
+//   t, y, ftry      end of the step (ftry becomes f, the next start derivative)
+//   g_start, g_end  event functions at the start and at the end of the step
+//   hh              trial step size while locating an event from (t_prev, y0)
 //
 // Event location: a step across which some g_k changes sign in its direction
 // is re-taken from its saved start with gsl_odeiv2_step_apply and step sizes
 // chosen by an Illinois/bisection bracket on hh (bracket_root.hpp), until the
 // bracket is narrower than event_time_tol; the state at the fired end of the
-// bracket is handed to the system's jump map, then the stepper is reset (GSL manual: step_reset "should be used whenever the
-// next use of s will not be a continuation of a previous step"). This is
-// valid for one-step Runge-Kutta methods only, which is why only explicit RK
-// steppers are offered (research notes rocking.md §3.1).
+// bracket is handed to the system's jump map, then the stepper is reset (GSL
+// manual: step_reset "should be used whenever the next use of s will not be a
+// continuation of a previous step"). Re-stepping is valid for one-step
+// Runge-Kutta methods only, which is why only explicit RK steppers are offered
+// (research notes rocking.md §3.1).
 #include "assess/hybrid_ode.hpp"
 
 #include "assess/error.hpp"
@@ -74,13 +75,13 @@ std::once_flag gsl_handler_once;
 
 void HybridOdeOptions::validate() const {
   auto positive = [](double v, const char* field) {
-    if (!(v > 0.0)) throw InputError(std::string(field) + " must be a positive number");
+    if (!(std::isfinite(v) && v > 0.0)) throw InputError(std::string(field) + " must be a positive number");
   };
   positive(rel_tol, "relative tolerance rel_tol");
   positive(abs_tol, "absolute tolerance abs_tol");
   positive(event_time_tol, "event time tolerance event_time_tol (s)");
   positive(h_initial, "initial step h_initial (s)");
-  positive(h_max, "largest step h_max (s)");
+  if (!(h_max > 0.0)) throw InputError("largest step h_max must be positive (s)");
   if (max_steps <= 0) throw InputError("max_steps must be positive");
   if (max_events <= 0) throw InputError("max_events must be positive");
 }
@@ -163,9 +164,17 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
       if (status != GSL_SUCCESS)
         return finish(HybridTermination::integrator_error, std::string("GSL gsl_odeiv2_step_apply at t = ") +
                                                                std::to_string(t_prev) + " s: " + gsl_strerror(status));
+      // A step cut at a breakpoint whose error ratio is within GSL's acceptance
+      // (D_i = abs_tol + rel_tol |y_i|, max |yerr_i|/D_i <= 1.1, the rule of
+      // gsl_odeiv2_control_y_new) keeps the current proposal h, so the control
+      // (and its pow()) is only consulted when it can change something.
       double h_new = h_try;
-      const int adj = gsl_odeiv2_control_hadjust(control.get(), step.get(), ytry.data(), yerr.data(), ftry.data(),
-                                                 &h_new);
+      int adj = GSL_ODEIV_HADJ_NIL;
+      double ratio = 0.0;
+      for (std::size_t i = 0; i < n; ++i)
+        ratio = std::max(ratio, std::fabs(yerr[i]) / (options.abs_tol + options.rel_tol * std::fabs(ytry[i])));
+      if (!(final_step && ratio <= 1.1))
+        adj = gsl_odeiv2_control_hadjust(control.get(), step.get(), ytry.data(), yerr.data(), ftry.data(), &h_new);
       if (adj == GSL_ODEIV_HADJ_DEC) {
         ++res.rejected_steps;
         if (!(h_new > 16.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::fabs(t_prev))))
