@@ -4,6 +4,8 @@
 
 #include "check_close.hpp"
 
+#include <assess/record_io.hpp>
+
 #include "assess/error.hpp"
 #include "assess/record.hpp"
 #include "assess/response_spectrum.hpp"
@@ -12,7 +14,6 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <regex>
 #include <sstream>
 #include <string>
 
@@ -115,29 +116,6 @@ Rk4Result rk4_response(const Record& r, double T, double xi, int n_sub) {
   return out;
 }
 
-// Minimal PEER AT2 reader for this test only (4 header lines, NPTS/DT on
-// line 4, values in g). The library's readers live in assess/record_io.hpp.
-Record read_at2_for_test(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  REQUIRE(in.good());
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  text.erase(std::remove(text.begin(), text.end(), '\r'), text.end());
-  std::istringstream is(text);
-  std::string line, l4;
-  for (int i = 0; i < 4; ++i) std::getline(is, l4);
-  std::smatch m1, m2;
-  const std::regex npts_re("NPTS\\s*=\\s*(\\d+)", std::regex::icase), dt_re("DT\\s*=\\s*([0-9.eE+-]+)", std::regex::icase);
-  REQUIRE(std::regex_search(l4, m1, npts_re));
-  REQUIRE(std::regex_search(l4, m2, dt_re));
-  Record r;
-  r.name = path.substr(path.find_last_of('/') + 1);
-  r.dt = std::stod(m2[1]);
-  const std::size_t n = std::stoul(m1[1]);
-  double x;
-  while (r.acc.size() < n && (is >> x)) r.acc.push_back(x * units::g_n);
-  REQUIRE(r.acc.size() == n);
-  return r;
-}
 
 }  // namespace
 
@@ -286,7 +264,7 @@ TEST_CASE("exact recurrence agrees with a fine-step RK4 integration") {
 }
 
 TEST_CASE("El Centro 1940 NS: peak of the exact response equals the fine RK4 peak") {
-  const Record r = read_at2_for_test(std::string(ASSESS_TEST_DATA_DIR) + "/spectra/records/elCentro.AT2");
+  const Record r = assess::read_record(std::string(ASSESS_TEST_DATA_DIR) + "/spectra/records/elCentro.AT2");
   CHECK_CLOSE(r.pga() / units::g_n, 0.319, abs_tol(0.0005));  // README: 0.319 g
   for (double T : {0.1, 0.5, 2.0}) {
     CAPTURE(T);
