@@ -1,6 +1,8 @@
 // html_report.cpp: self-contained printable HTML5 report builder.
 #include "assess/html_report.hpp"
 
+#include "xml_escape.hpp"
+
 #include "assess/error.hpp"
 
 #include <algorithm>
@@ -10,21 +12,7 @@ namespace assess {
 
 namespace {
 
-std::string escape(const std::string& s) {
-  std::string out;
-  out.reserve(s.size());
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+using detail::xml_escape;
 
 // Print-friendly inline style sheet: A4 pages, a page break before each
 // section but the first, figures and table rows never split across pages.
@@ -60,10 +48,10 @@ void HtmlReport::add_heading(const std::string& text, int level) {
     if (has_section_) cls = " class=\"section-break\"";
     has_section_ = true;
   }
-  body_ += "<" + tag + cls + ">" + escape(text) + "</" + tag + ">\n";
+  body_ += "<" + tag + cls + ">" + xml_escape(text) + "</" + tag + ">\n";
 }
 
-void HtmlReport::add_paragraph(const std::string& text) { body_ += "<p>" + escape(text) + "</p>\n"; }
+void HtmlReport::add_paragraph(const std::string& text) { body_ += "<p>" + xml_escape(text) + "</p>\n"; }
 
 void HtmlReport::add_table(const std::vector<std::string>& header,
                            const std::vector<std::vector<std::string>>& rows, const std::string& caption) {
@@ -72,13 +60,13 @@ void HtmlReport::add_table(const std::vector<std::string>& header,
       throw InputError("HtmlReport: table row has " + std::to_string(r.size()) + " cells, header has " +
                        std::to_string(header.size()));
   body_ += "<table>\n";
-  if (!caption.empty()) body_ += "<caption>" + escape(caption) + "</caption>\n";
+  if (!caption.empty()) body_ += "<caption>" + xml_escape(caption) + "</caption>\n";
   body_ += "<thead><tr>";
-  for (const auto& h : header) body_ += "<th>" + escape(h) + "</th>";
+  for (const auto& h : header) body_ += "<th>" + xml_escape(h) + "</th>";
   body_ += "</tr></thead>\n<tbody>\n";
   for (const auto& r : rows) {
     body_ += "<tr>";
-    for (const auto& c : r) body_ += "<td>" + escape(c) + "</td>";
+    for (const auto& c : r) body_ += "<td>" + xml_escape(c) + "</td>";
     body_ += "</tr>\n";
   }
   body_ += "</tbody>\n</table>\n";
@@ -102,7 +90,7 @@ void HtmlReport::add_svg(const std::string& svg, const std::string& caption, con
   static const std::regex urls(R"(url\(#)");
   body = std::regex_replace(body, urls, "url(#" + id + "-");
   body_ += "<figure id=\"" + id + "\">\n" + body + "\n";
-  if (!caption.empty()) body_ += "<figcaption>" + escape(caption) + "</figcaption>\n";
+  if (!caption.empty()) body_ += "<figcaption>" + xml_escape(caption) + "</figcaption>\n";
   body_ += "</figure>\n";
   figure_ids_.push_back(id);
 }
@@ -110,7 +98,7 @@ void HtmlReport::add_svg(const std::string& svg, const std::string& caption, con
 std::string HtmlReport::str() const {
   return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
          "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
-         escape(title_) + "</title>\n<style>" + kCss + "</style>\n</head>\n<body>\n<h1>" + escape(title_) +
+         xml_escape(title_) + "</title>\n<style>" + kCss + "</style>\n</head>\n<body>\n<h1>" + xml_escape(title_) +
          "</h1>\n" + body_ + "</body>\n</html>\n";
 }
 

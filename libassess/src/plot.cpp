@@ -6,6 +6,8 @@
 // shell-quoted. Data travel inline in datablocks ($dN << EOD ... EOD).
 #include "assess/plot.hpp"
 
+#include "xml_escape.hpp"
+
 #include "assess/error.hpp"
 
 #include <sys/wait.h>
@@ -42,19 +44,6 @@ std::string sh_quote(const std::string& s) {
   return out + "'";
 }
 
-std::string xml_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 std::string num(double x) {
   if (!std::isfinite(x)) return "NaN";
@@ -199,7 +188,7 @@ std::string render_svg(const Plot& plot) {
   // Give the document the plot's title instead of "Gnuplot" (accessibility).
   const std::string generic = "<title>Gnuplot</title>";
   if (const auto pos = svg.find(generic); pos != std::string::npos)
-    svg.replace(pos, generic.size(), "<title>" + xml_escape(plot.title) + "</title>");
+    svg.replace(pos, generic.size(), "<title>" + detail::xml_escape(plot.title) + "</title>");
   return svg;
 }
 
