@@ -43,7 +43,7 @@ TEST_CASE("render_svg returns an SVG with the title and one group per series") {
   CHECK(svg.find("<svg") != std::string::npos);
   CHECK(svg.find("</svg>") != std::string::npos);
   CHECK(count(svg, "id=\"gnuplot_plot_") == 4);
-  CHECK(svg.find("<title>Spectra &lt;site&gt; &amp; 'records'</title>") != std::string::npos);
+  CHECK(svg.find("<title>Spectra &lt;site&gt; &amp; &#39;records&#39;</title>") != std::string::npos);
   // Legend text printed literally: no macro or command substitution.
   CHECK(svg.find("rec_1 @x `echo hi`") != std::string::npos);
   CHECK(svg.find("Se (m/s²)") != std::string::npos);
