@@ -1,0 +1,107 @@
+// hybrid_ode.hpp: a generic event-driven integrator for hybrid systems
+// (continuous state y with a discrete mode, events and jumps). It knows
+// nothing of masonry. The implementation uses GSL gsl_odeiv2 explicit
+// embedded Runge-Kutta steppers with adaptive step control; GSL stays in the
+// source file.
+//
+// Thread safety: an integrate() call owns all its GSL objects, so calls may
+// run concurrently. The first call switches GSL's error handler off
+// (gsl_set_error_handler_off(), process-global and done once): every GSL
+// status is checked and becomes a HybridTermination instead of an abort.
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <string>
+
+namespace assess {
+
+/// Explicit embedded Runge-Kutta stepper of gsl_odeiv2.
+enum class OdeStepper {
+  rk8pd,  ///< Prince-Dormand (8, 9), 13 stages (default)
+  rkck,   ///< Cash-Karp (4, 5)
+  rkf45   ///< Runge-Kutta-Fehlberg (4, 5)
+};
+
+/// Direction in which an event function must cross zero to fire.
+enum class EventDirection {
+  falling,  ///< from g >= 0 at the start of a step to g < 0
+  rising    ///< from g <= 0 at the start of a step to g > 0
+};
+
+/// What the integrator does after an event callback.
+enum class EventAction { proceed, stop };
+
+/// A hybrid system: state y (size n), a discrete mode, a right-hand side per
+/// mode, event functions per mode and a jump map. A value exactly at zero
+/// counts as not yet crossed, so an event that starts exactly at zero (a
+/// state put on the switching surface by a jump) is not re-detected.
+class HybridSystem {
+ public:
+  virtual ~HybridSystem() = default;
+  virtual std::size_t dimension() const = 0;
+  /// dy/dt at (t, y) in `mode`. Return false if the derivative cannot be computed.
+  virtual bool rhs(double t, const double* y, int mode, double* dydt) const = 0;
+  /// Number of event functions active in `mode`.
+  virtual std::size_t event_count(int mode) const = 0;
+  /// Event function g_k(t, y) in `mode` and its direction.
+  virtual double event(std::size_t k, double t, const double* y, int mode) const = 0;
+  virtual EventDirection event_direction(std::size_t k, int mode) const = 0;
+  /// Called with the state just past the located event k: apply the jump
+  /// (may change y and mode); return stop to end the integration.
+  virtual EventAction on_event(std::size_t k, double t, double* y, int& mode) = 0;
+  /// Called after every accepted step with its end points and derivatives
+  /// (for dense output by cubic Hermite interpolation, history, peaks).
+  virtual void on_step(double t0, const double* y0, const double* f0, double t1, const double* y1,
+                       const double* f1, int mode) = 0;
+  /// Next time > t at which the right-hand side is not smooth (e.g. a record
+  /// sample); the integrator never steps across it. +inf if none.
+  virtual double next_breakpoint(double t) const = 0;
+};
+
+/// Settings of HybridIntegrator::integrate. Defaults are documented per field.
+struct HybridOdeOptions {
+  OdeStepper stepper = OdeStepper::rk8pd;  ///< default rk8pd
+  double rel_tol = 1e-8;                   ///< relative local error per step (default 1e-8)
+  double abs_tol = 1e-10;                  ///< absolute local error per step (state units; default 1e-10)
+  double event_time_tol = 1e-12;           ///< width of the final event bracket (s; default 1e-12)
+  double h_initial = 1e-3;                 ///< first trial step (s; default 1e-3)
+  long max_steps = 50'000'000;             ///< limit on steps, accepted + rejected (default 5e7)
+  long max_events = 10'000'000;            ///< limit on located events (default 1e7)
+  /// @throws InputError naming the invalid field
+  void validate() const;
+};
+
+/// How an integration ended.
+enum class HybridTermination {
+  completed,         ///< reached t_end
+  stopped_by_event,  ///< an event callback returned stop
+  step_limit,        ///< max_steps reached
+  event_limit,       ///< max_events reached (e.g. an accumulation of events)
+  integrator_error   ///< a GSL status other than success, or a failed rhs
+};
+
+const char* to_string(HybridTermination t);
+
+/// Outcome of an integration: the state at t_end (or at the stop) and counters.
+struct HybridOdeResult {
+  HybridTermination termination = HybridTermination::completed;
+  std::string message;     ///< human-readable detail (GSL error text, which event stopped)
+  double t = 0.0;          ///< final time (s)
+  int mode = 0;            ///< final mode
+  long steps = 0;          ///< accepted steps (event re-steps excluded)
+  long rejected_steps = 0; ///< steps rejected by the error control
+  long event_steps = 0;    ///< re-steps taken to locate events
+  long events = 0;         ///< located events
+  long rhs_evaluations = 0;
+};
+
+/// Integrates `sys` from (t0, y, mode) to t_end, locating events by
+/// re-stepping from the saved start of the step with a bracketing root
+/// finder (Illinois regula falsi with bisection safeguard) on the step size
+/// until the bracket is narrower than event_time_tol, applying the jump and
+/// resetting the stepper. `y` (size sys.dimension()) holds the final state.
+HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, double* y, int mode,
+                                 const HybridOdeOptions& options = {});
+
+}  // namespace assess

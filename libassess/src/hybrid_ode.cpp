@@ -1,0 +1,224 @@
+// hybrid_ode.cpp: event-driven integration of hybrid systems with GSL
+// gsl_odeiv2 (evolve/control/step, no driver).
+//
+// Notation:
+//   t0, y0, f0   start of the current step: time (s), state, dy/dt (from the evolve object)
+//   t, y, f      end of the step
+//   g_start[k]   event function k at the start of the step, g1 at its end
+//   hh           trial step size while locating an event by re-stepping from (t0, y0)
+//
+// Event location: a step across which some g_k changes sign in its direction
+// is re-taken from its saved start with gsl_odeiv2_step_apply and step sizes
+// chosen by an Illinois/bisection bracket on hh (bracket_root.hpp), until the
+// bracket is narrower than event_time_tol; the state at the fired end of the
+// bracket is handed to the system's jump map, then the stepper and the
+// evolve object are reset (GSL manual: step_reset "should be used whenever the
+// next use of s will not be a continuation of a previous step"). This is
+// valid for one-step Runge-Kutta methods only, which is why only explicit RK
+// steppers are offered (research notes rocking.md §3.1).
+#include "assess/hybrid_ode.hpp"
+
+#include "assess/error.hpp"
+#include "bracket_root.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_odeiv2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+namespace assess {
+namespace {
+
+struct StepDeleter {
+  void operator()(gsl_odeiv2_step* p) const { gsl_odeiv2_step_free(p); }
+};
+struct ControlDeleter {
+  void operator()(gsl_odeiv2_control* p) const { gsl_odeiv2_control_free(p); }
+};
+struct EvolveDeleter {
+  void operator()(gsl_odeiv2_evolve* p) const { gsl_odeiv2_evolve_free(p); }
+};
+
+struct Adapter {
+  HybridSystem* sys;
+  int mode;
+  long* rhs_count;
+};
+
+int gsl_rhs(double t, const double y[], double dydt[], void* params) {
+  auto* a = static_cast<Adapter*>(params);
+  ++*a->rhs_count;
+  return a->sys->rhs(t, y, a->mode, dydt) ? GSL_SUCCESS : GSL_EBADFUNC;
+}
+
+const gsl_odeiv2_step_type* step_type(OdeStepper s) {
+  switch (s) {
+    case OdeStepper::rkck: return gsl_odeiv2_step_rkck;
+    case OdeStepper::rkf45: return gsl_odeiv2_step_rkf45;
+    case OdeStepper::rk8pd: break;
+  }
+  return gsl_odeiv2_step_rk8pd;
+}
+
+bool fired(EventDirection d, double g_start, double g_end) {
+  return d == EventDirection::falling ? (g_start >= 0.0 && g_end < 0.0) : (g_start <= 0.0 && g_end > 0.0);
+}
+
+std::once_flag gsl_handler_once;
+
+}  // namespace
+
+void HybridOdeOptions::validate() const {
+  auto positive = [](double v, const char* field) {
+    if (!(std::isfinite(v) && v > 0.0))
+      throw InputError(std::string(field) + " must be a positive number");
+  };
+  positive(rel_tol, "relative tolerance rel_tol");
+  positive(abs_tol, "absolute tolerance abs_tol");
+  positive(event_time_tol, "event time tolerance event_time_tol (s)");
+  positive(h_initial, "initial step h_initial (s)");
+  if (max_steps <= 0) throw InputError("max_steps must be positive");
+  if (max_events <= 0) throw InputError("max_events must be positive");
+}
+
+const char* to_string(HybridTermination t) {
+  switch (t) {
+    case HybridTermination::completed: return "completed";
+    case HybridTermination::stopped_by_event: return "stopped_by_event";
+    case HybridTermination::step_limit: return "step_limit";
+    case HybridTermination::event_limit: return "event_limit";
+    case HybridTermination::integrator_error: return "integrator_error";
+  }
+  return "unknown";
+}
+
+HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, double* y, int mode,
+                                 const HybridOdeOptions& options) {
+  std::call_once(gsl_handler_once, [] { gsl_set_error_handler_off(); });
+  options.validate();
+  if (!(std::isfinite(t0) && std::isfinite(t_end) && t_end >= t0))
+    throw InputError("integration interval must be finite with t_end >= t0 (s)");
+
+  HybridOdeResult res;
+  const std::size_t n = sys.dimension();
+  std::unique_ptr<gsl_odeiv2_step, StepDeleter> step(gsl_odeiv2_step_alloc(step_type(options.stepper), n));
+  std::unique_ptr<gsl_odeiv2_control, ControlDeleter> control(
+      gsl_odeiv2_control_y_new(options.abs_tol, options.rel_tol));
+  std::unique_ptr<gsl_odeiv2_evolve, EvolveDeleter> evolve(gsl_odeiv2_evolve_alloc(n));
+  if (!step || !control || !evolve) throw std::bad_alloc();
+
+  Adapter adapter{&sys, mode, &res.rhs_evaluations};
+  gsl_odeiv2_system gsys{gsl_rhs, nullptr, n, &adapter};
+
+  std::vector<double> y0(n), f0(n), ytry(n), ftry(n), yerr(n);
+  std::vector<double> g_start, g_end;
+  auto eval_events = [&](double tt, const double* yy, std::vector<double>& g) {
+    g.resize(sys.event_count(mode));
+    for (std::size_t k = 0; k < g.size(); ++k) g[k] = sys.event(k, tt, yy, mode);
+  };
+
+  double t = t0;
+  double h = std::min(options.h_initial, std::max(t_end - t0, 0.0));
+  eval_events(t, y, g_start);
+  long failed_before_reset = 0;
+  auto finish = [&](HybridTermination term, std::string msg) {
+    res.termination = term;
+    res.message = std::move(msg);
+    res.t = t;
+    res.mode = mode;
+    res.rejected_steps = failed_before_reset + static_cast<long>(evolve->failed_steps);
+    return res;
+  };
+
+  while (t < t_end) {
+    double t_bp = std::min(sys.next_breakpoint(t), t_end);
+    if (!(t_bp > t)) t_bp = t_end;
+    if (t_bp - t <= 4.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::fabs(t))) {
+      t = t_bp;  // a sliver left by an event at a breakpoint: nothing to integrate
+      continue;
+    }
+    if (res.steps + failed_before_reset + static_cast<long>(evolve->failed_steps) >= options.max_steps)
+      return finish(HybridTermination::step_limit, "step limit reached");
+    if (!(h > 0.0)) h = t_bp - t;
+
+    const double t_prev = t;
+    const int status = gsl_odeiv2_evolve_apply(evolve.get(), control.get(), step.get(), &gsys, &t, t_bp, &h, y);
+    if (status != GSL_SUCCESS) {
+      t = t_prev;
+      return finish(HybridTermination::integrator_error,
+                    std::string("GSL gsl_odeiv2_evolve_apply at t = ") + std::to_string(t_prev) +
+                        " s: " + gsl_strerror(status));
+    }
+    ++res.steps;
+
+    eval_events(t, y, g_end);
+    std::size_t k_hit = g_end.size();
+    for (std::size_t k = 0; k < g_end.size(); ++k)
+      if (fired(sys.event_direction(k, mode), g_start[k], g_end[k])) {
+        k_hit = k;
+        break;
+      }
+    if (k_hit == g_end.size()) {
+      sys.on_step(t_prev, evolve->y0, evolve->dydt_in, t, y, evolve->dydt_out, mode);
+      g_start.swap(g_end);
+      continue;
+    }
+
+    // Locate the earliest of the fired events by re-stepping from (t_prev, y0).
+    std::copy(evolve->y0, evolve->y0 + n, y0.begin());
+    std::copy(evolve->dydt_in, evolve->dydt_in + n, f0.begin());
+    const double h_step = t - t_prev;
+    bool step_failed = false;
+    double best_h = h_step;
+    for (std::size_t k = k_hit; k < g_end.size(); ++k) {
+      const EventDirection dir = sys.event_direction(k, mode);
+      if (!fired(dir, g_start[k], g_end[k])) continue;
+      auto g_of_h = [&](double hh) {
+        std::copy(y0.begin(), y0.end(), ytry.begin());
+        ++res.event_steps;
+        if (gsl_odeiv2_step_apply(step.get(), t_prev, hh, ytry.data(), yerr.data(), f0.data(), nullptr,
+                                  &gsys) != GSL_SUCCESS)
+          step_failed = true;
+        return sys.event(k, t_prev + hh, ytry.data(), mode);
+      };
+      const double g_b = best_h == h_step ? g_end[k] : g_of_h(best_h);
+      if (!fired(dir, g_start[k], g_b)) continue;  // fires only after an earlier event
+      const auto br = detail::shrink_bracket(g_of_h, {0.0, g_start[k], best_h, g_b}, options.event_time_tol);
+      if (!step_failed && fired(dir, g_start[k], br.fb) && br.b <= best_h) {
+        best_h = br.b;
+        k_hit = k;
+      }
+    }
+    // State at the fired end of the bracket (with its derivative for on_step).
+    std::copy(y0.begin(), y0.end(), ytry.begin());
+    ++res.event_steps;
+    if (step_failed || gsl_odeiv2_step_apply(step.get(), t_prev, best_h, ytry.data(), yerr.data(), f0.data(),
+                                             ftry.data(), &gsys) != GSL_SUCCESS) {
+      t = t_prev;
+      std::copy(y0.begin(), y0.end(), y);
+      return finish(HybridTermination::integrator_error, "GSL step failed while locating an event");
+    }
+    t = t_prev + best_h;
+    std::copy(ytry.begin(), ytry.end(), y);
+    sys.on_step(t_prev, y0.data(), f0.data(), t, y, ftry.data(), mode);
+
+    ++res.events;
+    const EventAction action = sys.on_event(k_hit, t, y, mode);
+    adapter.mode = mode;
+    failed_before_reset += static_cast<long>(evolve->failed_steps);
+    gsl_odeiv2_step_reset(step.get());
+    gsl_odeiv2_evolve_reset(evolve.get());
+    if (action == EventAction::stop) return finish(HybridTermination::stopped_by_event, "stopped by an event");
+    if (res.events >= options.max_events)
+      return finish(HybridTermination::event_limit, "event limit reached (accumulation of events?)");
+    eval_events(t, y, g_start);
+  }
+  return finish(HybridTermination::completed, "");
+}
+
+}  // namespace assess
