@@ -292,7 +292,7 @@ TEST_CASE("real PEER records: 7 of 10 selected for an NTC-shaped target, statist
   REQUIRE(res.rejected.size() == 1);
   CHECK(res.rejected[0].name == "ISE-WE.AT2");
   CHECK(res.combinations == 36.0);
-  // Regression (measured 2025 on this data): the best set is compatible,
+  // Regression (measured on these files): the best set is compatible,
   // mean/target in [0.914, 1.28] over 0.25-2.25 s.
   CHECK(res.band_satisfied);
   check_consistency(res, opts);
