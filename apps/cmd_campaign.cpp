@@ -128,9 +128,12 @@ void run(const CampaignArgs& a) {
     int bad = error.empty() ? 0 : 1, any = 0;
     MPI_Allreduce(&bad, &any, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
     if (any && error.empty()) error = "another MPI rank failed (see its message)";
-    unsigned long long f = s.failed, ft = 0;
-    MPI_Reduce(&f, &ft, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, 0, MPI_COMM_WORLD);
-    s.failed = ft;
+    // Counts summed over the ranks; the time is the slowest rank's.
+    unsigned long long mine[3] = {s.resumed, s.run, s.failed}, all[3] = {0, 0, 0};
+    MPI_Reduce(mine, all, 3, MPI_UNSIGNED_LONG_LONG, MPI_SUM, 0, MPI_COMM_WORLD);
+    double slowest = 0.0;
+    MPI_Reduce(&s.seconds, &slowest, 1, MPI_DOUBLE, MPI_MAX, 0, MPI_COMM_WORLD);
+    s.resumed = all[0], s.run = all[1], s.failed = all[2], s.seconds = slowest;
   }
 #endif
   if (!error.empty()) throw InputError(error);
