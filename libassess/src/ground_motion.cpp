@@ -25,10 +25,12 @@ GroundMotion GroundMotion::from_record(const Record& record, double scale, bool 
 }
 
 GroundMotion GroundMotion::from_function(std::function<double(double)> acc_m_s2, double duration_s,
-                                         std::vector<double> breakpoints_s) {
+                                         std::vector<double> breakpoints_s, double max_step_s) {
   if (!(duration_s >= 0.0 && std::isfinite(duration_s)))
     throw InputError("excitation duration must be finite and >= 0 (s)");
+  if (!(max_step_s > 0.0)) throw InputError("maximum step of an excitation function must be positive (s)");
   GroundMotion g;
+  g.max_step_ = max_step_s;
   g.fn_ = std::move(acc_m_s2);
   g.duration_ = duration_s;
   std::sort(breakpoints_s.begin(), breakpoints_s.end());

@@ -1,8 +1,11 @@
 // hybrid_ode.cpp: event-driven integration of hybrid systems with GSL
-// gsl_odeiv2 (evolve/control/step, no driver).
+// gsl_odeiv2 steppers and step-size control (gsl_odeiv2_step_apply +
+// gsl_odeiv2_control_hadjust; the evolve loop is written out here so that the
+// end derivative of an accepted step is reused as the start derivative of the
+// next, first-same-as-last, and the step start is at hand for event location).
 //
 // Notation:
-//   t0, y0, f0   start of the current step: time (s), state, dy/dt (from the evolve object)
+//   t_prev, y0, f0  start of the current step: time (s), state, dy/dt
 //   t, y, f      end of the step
 //   g_start[k]   event function k at the start of the step, g1 at its end
 //   hh           trial step size while locating an event by re-stepping from (t0, y0)
@@ -11,8 +14,7 @@
 // is re-taken from its saved start with gsl_odeiv2_step_apply and step sizes
 // chosen by an Illinois/bisection bracket on hh (bracket_root.hpp), until the
 // bracket is narrower than event_time_tol; the state at the fired end of the
-// bracket is handed to the system's jump map, then the stepper and the
-// evolve object are reset (GSL manual: step_reset "should be used whenever the
+// bracket is handed to the system's jump map, then the stepper is reset (GSL manual: step_reset "should be used whenever the
 // next use of s will not be a continuation of a previous step"). This is
 // valid for one-step Runge-Kutta methods only, which is why only explicit RK
 // steppers are offered (research notes rocking.md §3.1).
@@ -39,9 +41,6 @@ struct StepDeleter {
 };
 struct ControlDeleter {
   void operator()(gsl_odeiv2_control* p) const { gsl_odeiv2_control_free(p); }
-};
-struct EvolveDeleter {
-  void operator()(gsl_odeiv2_evolve* p) const { gsl_odeiv2_evolve_free(p); }
 };
 
 struct Adapter {
@@ -75,13 +74,13 @@ std::once_flag gsl_handler_once;
 
 void HybridOdeOptions::validate() const {
   auto positive = [](double v, const char* field) {
-    if (!(std::isfinite(v) && v > 0.0))
-      throw InputError(std::string(field) + " must be a positive number");
+    if (!(v > 0.0)) throw InputError(std::string(field) + " must be a positive number");
   };
   positive(rel_tol, "relative tolerance rel_tol");
   positive(abs_tol, "absolute tolerance abs_tol");
   positive(event_time_tol, "event time tolerance event_time_tol (s)");
   positive(h_initial, "initial step h_initial (s)");
+  positive(h_max, "largest step h_max (s)");
   if (max_steps <= 0) throw InputError("max_steps must be positive");
   if (max_events <= 0) throw InputError("max_events must be positive");
 }
@@ -109,31 +108,35 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
   std::unique_ptr<gsl_odeiv2_step, StepDeleter> step(gsl_odeiv2_step_alloc(step_type(options.stepper), n));
   std::unique_ptr<gsl_odeiv2_control, ControlDeleter> control(
       gsl_odeiv2_control_y_new(options.abs_tol, options.rel_tol));
-  std::unique_ptr<gsl_odeiv2_evolve, EvolveDeleter> evolve(gsl_odeiv2_evolve_alloc(n));
-  if (!step || !control || !evolve) throw std::bad_alloc();
+  if (!step || !control) throw std::bad_alloc();
 
   Adapter adapter{&sys, mode, &res.rhs_evaluations};
   gsl_odeiv2_system gsys{gsl_rhs, nullptr, n, &adapter};
 
-  std::vector<double> y0(n), f0(n), ytry(n), ftry(n), yerr(n);
+  // y0/f0: start of the step; f: dy/dt at y (first same as last: the end
+  // derivative of an accepted step is the start derivative of the next).
+  std::vector<double> y0(n), f0(n), f(n), ytry(n), ftry(n), yerr(n);
   std::vector<double> g_start, g_end;
   auto eval_events = [&](double tt, const double* yy, std::vector<double>& g) {
     g.resize(sys.event_count(mode));
     for (std::size_t k = 0; k < g.size(); ++k) g[k] = sys.event(k, tt, yy, mode);
   };
-
   double t = t0;
-  double h = std::min(options.h_initial, std::max(t_end - t0, 0.0));
-  eval_events(t, y, g_start);
-  long failed_before_reset = 0;
   auto finish = [&](HybridTermination term, std::string msg) {
     res.termination = term;
     res.message = std::move(msg);
     res.t = t;
     res.mode = mode;
-    res.rejected_steps = failed_before_reset + static_cast<long>(evolve->failed_steps);
     return res;
   };
+  auto restart = [&]() {  // after a jump: fresh derivative and event values
+    gsl_odeiv2_step_reset(step.get());
+    eval_events(t, y, g_start);
+    return gsl_rhs(t, y, f.data(), &adapter) == GSL_SUCCESS;
+  };
+
+  double h = std::min(options.h_initial, std::max(t_end - t0, 0.0));
+  if (!restart()) return finish(HybridTermination::integrator_error, "right-hand side failed at the start");
 
   while (t < t_end) {
     double t_bp = std::min(sys.next_breakpoint(t), t_end);
@@ -142,19 +145,41 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
       t = t_bp;  // a sliver left by an event at a breakpoint: nothing to integrate
       continue;
     }
-    if (res.steps + failed_before_reset + static_cast<long>(evolve->failed_steps) >= options.max_steps)
-      return finish(HybridTermination::step_limit, "step limit reached");
-    if (!(h > 0.0)) h = t_bp - t;
-
+    // One adaptive step (gsl_odeiv2_step_apply + gsl_odeiv2_control_hadjust),
+    // never across the breakpoint t_bp.
+    std::copy(y, y + n, y0.begin());
+    std::copy(f.begin(), f.end(), f0.begin());
     const double t_prev = t;
-    const int status = gsl_odeiv2_evolve_apply(evolve.get(), control.get(), step.get(), &gsys, &t, t_bp, &h, y);
-    if (status != GSL_SUCCESS) {
-      t = t_prev;
-      return finish(HybridTermination::integrator_error,
-                    std::string("GSL gsl_odeiv2_evolve_apply at t = ") + std::to_string(t_prev) +
-                        " s: " + gsl_strerror(status));
+    double h_try = std::min(h, options.h_max);
+    bool final_step = false;
+    for (;;) {
+      if (res.steps + res.rejected_steps >= options.max_steps)
+        return finish(HybridTermination::step_limit, "step limit reached");
+      final_step = h_try >= t_bp - t_prev;
+      if (final_step) h_try = t_bp - t_prev;
+      std::copy(y0.begin(), y0.end(), ytry.begin());
+      const int status = gsl_odeiv2_step_apply(step.get(), t_prev, h_try, ytry.data(), yerr.data(), f0.data(),
+                                               ftry.data(), &gsys);
+      if (status != GSL_SUCCESS)
+        return finish(HybridTermination::integrator_error, std::string("GSL gsl_odeiv2_step_apply at t = ") +
+                                                               std::to_string(t_prev) + " s: " + gsl_strerror(status));
+      double h_new = h_try;
+      const int adj = gsl_odeiv2_control_hadjust(control.get(), step.get(), ytry.data(), yerr.data(), ftry.data(),
+                                                 &h_new);
+      if (adj == GSL_ODEIV_HADJ_DEC) {
+        ++res.rejected_steps;
+        if (!(h_new > 16.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::fabs(t_prev))))
+          return finish(HybridTermination::integrator_error,
+                        "step size underflow at t = " + std::to_string(t_prev) + " s");
+        h_try = h_new;
+        continue;
+      }
+      h = final_step ? std::max(h, h_new) : h_new;  // a step cut at a breakpoint keeps the proposal
+      break;
     }
     ++res.steps;
+    t = final_step ? t_bp : t_prev + h_try;
+    std::copy(ytry.begin(), ytry.end(), y);
 
     eval_events(t, y, g_end);
     std::size_t k_hit = g_end.size();
@@ -164,14 +189,13 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
         break;
       }
     if (k_hit == g_end.size()) {
-      sys.on_step(t_prev, evolve->y0, evolve->dydt_in, t, y, evolve->dydt_out, mode);
+      sys.on_step(t_prev, y0.data(), f0.data(), t, y, ftry.data(), mode);
       g_start.swap(g_end);
+      f.swap(ftry);
       continue;
     }
 
     // Locate the earliest of the fired events by re-stepping from (t_prev, y0).
-    std::copy(evolve->y0, evolve->y0 + n, y0.begin());
-    std::copy(evolve->dydt_in, evolve->dydt_in + n, f0.begin());
     const double h_step = t - t_prev;
     bool step_failed = false;
     double best_h = h_step;
@@ -181,8 +205,8 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
       auto g_of_h = [&](double hh) {
         std::copy(y0.begin(), y0.end(), ytry.begin());
         ++res.event_steps;
-        if (gsl_odeiv2_step_apply(step.get(), t_prev, hh, ytry.data(), yerr.data(), f0.data(), nullptr,
-                                  &gsys) != GSL_SUCCESS)
+        if (gsl_odeiv2_step_apply(step.get(), t_prev, hh, ytry.data(), yerr.data(), f0.data(), nullptr, &gsys) !=
+            GSL_SUCCESS)
           step_failed = true;
         return sys.event(k, t_prev + hh, ytry.data(), mode);
       };
@@ -210,13 +234,12 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
     ++res.events;
     const EventAction action = sys.on_event(k_hit, t, y, mode);
     adapter.mode = mode;
-    failed_before_reset += static_cast<long>(evolve->failed_steps);
-    gsl_odeiv2_step_reset(step.get());
-    gsl_odeiv2_evolve_reset(evolve.get());
     if (action == EventAction::stop) return finish(HybridTermination::stopped_by_event, "stopped by an event");
     if (res.events >= options.max_events)
       return finish(HybridTermination::event_limit, "event limit reached (accumulation of events?)");
-    eval_events(t, y, g_start);
+    if (!restart())
+      return finish(HybridTermination::integrator_error,
+                    "right-hand side failed after an event at t = " + std::to_string(t) + " s");
   }
   return finish(HybridTermination::completed, "");
 }

@@ -48,7 +48,9 @@ class RockingSystem final : public HybridSystem {
  public:
   RockingSystem(const RockingModel& model, const GroundMotion& motion, const RockingOptions& opt)
       : model_(model), motion_(motion), opt_(opt), smooth_(!model.foundation().is_rigid()),
-        two_sided_(model.sidedness() == Sidedness::two_sided) {}
+        two_sided_(model.sidedness() == Sidedness::two_sided) {
+    for (int m = -2; m <= 2; ++m) n_events_[m + 2] = events(m, kinds_[m + 2]);
+  }
 
   std::size_t dimension() const override { return 2; }
 
@@ -62,7 +64,7 @@ class RockingSystem final : public HybridSystem {
     return std::isfinite(dydt[1]);
   }
 
-  std::size_t event_count(int mode) const override { return events(mode, nullptr); }
+  std::size_t event_count(int mode) const override { return n_events_[mode + 2]; }
   EventDirection event_direction(std::size_t k, int mode) const override {
     const Ev e = event_kind(k, mode);
     return (e == Ev::lift_out || e == Ev::lift_in) ? EventDirection::rising : EventDirection::falling;
@@ -171,11 +173,7 @@ class RockingSystem final : public HybridSystem {
     if (smooth_) add(Ev::branch);
     return n;
   }
-  Ev event_kind(std::size_t k, int mode) const {
-    Ev kinds[6];
-    events(mode, kinds);
-    return kinds[k];
-  }
+  Ev event_kind(std::size_t k, int mode) const { return kinds_[mode + 2][k]; }
 
   void consider_peak(double t, double theta) {
     if (std::fabs(theta) > res_.theta_max) {
@@ -195,6 +193,8 @@ class RockingSystem final : public HybridSystem {
   const GroundMotion& motion_;
   const RockingOptions& opt_;
   bool smooth_, two_sided_;
+  Ev kinds_[5][6];  // event kinds per mode (-2..2)
+  std::size_t n_events_[5];
   RockingResult res_;
   long impacts_ = 0;
   double ke_theta_u_ = 0.0;
@@ -266,6 +266,7 @@ RockingResult analyse(const RockingModel& model, const GroundMotion& motion, con
   hopt.event_time_tol = options.event_time_tol;
   hopt.max_steps = options.max_steps;
   hopt.max_events = options.max_events;
+  hopt.h_max = motion.max_step();
   const HybridOdeResult h = integrate_hybrid(sys, 0.0, motion.duration() + options.tail_s, y, mode, hopt);
 
   RockingResult r = std::move(sys.result());

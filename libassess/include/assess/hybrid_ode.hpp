@@ -66,6 +66,7 @@ struct HybridOdeOptions {
   double abs_tol = 1e-10;                  ///< absolute local error per step (state units; default 1e-10)
   double event_time_tol = 1e-12;           ///< width of the final event bracket (s; default 1e-12)
   double h_initial = 1e-3;                 ///< first trial step (s; default 1e-3)
+  double h_max = std::numeric_limits<double>::infinity();  ///< largest step (s; default unlimited)
   long max_steps = 50'000'000;             ///< limit on steps, accepted + rejected (default 5e7)
   long max_events = 10'000'000;            ///< limit on located events (default 1e7)
   /// @throws InputError naming the invalid field

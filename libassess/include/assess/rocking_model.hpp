@@ -116,7 +116,7 @@ class RockingModel {
   double theta_u_[2] = {0.0, 0.0};
   double theta_pk_[2] = {0.0, 0.0};
   // cached constants
-  double WR_ = 0.0, m_R_ = 0.0, kb3_ = 0.0, c_partial_ = 0.0, sin_a_ = 0.0, cos_a_ = 0.0;
+  double WR_ = 0.0, inv_I0_ = 0.0, m_R_ = 0.0, kb3_ = 0.0, c_partial_ = 0.0, sin_a_ = 0.0, cos_a_ = 0.0;
 };
 
 }  // namespace assess
