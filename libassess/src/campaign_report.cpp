@@ -197,7 +197,10 @@ std::vector<std::pair<std::string, Plot>> campaign_plots(const Campaign& campaig
     p.x_label = "theta (rad)";
     p.y_label = "restoring moment M (kN m/m)";
     const Sidedness side = spec.one_sided ? Sidedness::one_sided : Sidedness::two_sided;
+    const char* palette[] = {"#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e", "#e6ab02", "#a6761d", "#666666"};
+    std::size_t w = 0;
     for (const auto& wall : spec.walls) {
+      const char* wall_colour = palette[w++ % (sizeof palette / sizeof *palette)];
       const RockingBody body = RockingBody::rectangle(2 * wall.b_m, 2 * wall.h_m, wall.unit_weight_N_m3);
       for (CampaignModel m : {CampaignModel::smooth, CampaignModel::rigid}) {
         if (m == CampaignModel::smooth && !(wall.k_N_m3 > 0.0)) continue;
@@ -206,6 +209,7 @@ std::vector<std::pair<std::string, Plot>> campaign_plots(const Campaign& campaig
         PlotSeries s;
         s.name = wall.name + " " + to_string(m);
         s.style = m == CampaignModel::smooth ? PlotSeries::Style::Line : PlotSeries::Style::Dashed;
+        s.color = wall_colour;
         const int n = 200;
         const double tu = model.theta_u(+1);
         // Smooth: from 0 (M = 0); rigid: from 0+ (M jumps to W b at uplift).
