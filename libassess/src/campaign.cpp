@@ -15,6 +15,7 @@
 
 #include "assess/error.hpp"
 #include "assess/hazard.hpp"
+#include "assess/record_catalogue.hpp"
 #include "assess/record_io.hpp"
 #include "assess/response_spectrum.hpp"
 #include "assess/units.hpp"
@@ -211,11 +212,25 @@ CampaignSpec parse_campaign(const json& j, const std::string& base_dir) {
   }
 
   const json& recs = array_of(require(j, "records", "$"), "records");
+  std::optional<RecordCatalogue> catalogue;
   for (std::size_t i = 0; i < recs.size(); ++i) {
     const std::string p = child("records", i);
     const json& r = recs[i];
     CampaignRecord cr;
     std::string file;
+    if (r.is_object() && r.contains("id")) {
+      // A record of the catalogue shipped in data_dir()/spectra/records.
+      if (!r["id"].is_string()) fail(p + ".id", "expected a catalogue id (string)");
+      if (r.contains("file")) fail(p, "give either \"id\" or \"file\", not both");
+      if (!catalogue) catalogue = read_catalogue(data_dir() + "/spectra/records/catalogue.json");
+      const std::string id = r["id"].get<std::string>();
+      const CatalogueEntry* e = catalogue->find(id);
+      if (!e) fail(p + ".id", "'" + id + "' is not in the record catalogue " + catalogue->directory + "/catalogue.json");
+      cr.path = resolve_record(catalogue->directory + "/" + e->file, "", p + ".id");
+      cr.name = r.contains("name") ? r["name"].get<std::string>() : e->id;
+      s.records.push_back(cr);
+      continue;
+    }
     if (r.is_string()) {
       file = r.get<std::string>();
     } else if (r.is_object()) {
@@ -224,7 +239,7 @@ CampaignSpec parse_campaign(const json& j, const std::string& base_dir) {
       file = f.get<std::string>();
       if (r.contains("name")) cr.name = r["name"].get<std::string>();
     } else {
-      fail(p, "expected a file path or {\"name\": ..., \"file\": ...}");
+      fail(p, "expected a file path, {\"name\": ..., \"file\": ...} or {\"id\": catalogue id}");
     }
     cr.path = resolve_record(file, base_dir, r.is_object() ? p + ".file" : p);
     if (cr.name.empty()) {

@@ -67,6 +67,16 @@ TEST_CASE("campaign spec: values, defaults and half-dimension walls") {
   CHECK(s.size() == 2u * 2 * 10 * 3 * 2 * 2);
 }
 
+TEST_CASE("campaign spec: records by catalogue id") {
+  json j = tiny();
+  j["records"][1] = {{"id", "RSN289_1"}};
+  const assess::CampaignSpec s = assess::parse_campaign(j, kData);
+  CHECK(s.records[1].name == "RSN289_1");
+  CHECK(s.records[1].path.find("spectra/records/RSN289_1.AT2") != std::string::npos);
+  j["records"][1] = {{"id", "RSN999_NOWHERE"}};
+  CHECK(error_of(j).find("records[1].id: 'RSN999_NOWHERE' is not in the record catalogue") == 0);
+}
+
 TEST_CASE("campaign spec: errors name the JSON path") {
   json j = tiny();
   j["records"][1]["file"] = "spectra/records/no_such_record.AT2";
