@@ -30,3 +30,10 @@ if(ASSESS_MPIRUN AND "ASSESS_HAVE_MPI=1" IN_LIST _assess_cli_defs)
             -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/campaign_compare.cmake)
   set_tests_properties(cli.campaign_mpi_identical PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "on 2 MPI ranks.*identical results.csv \\(49 lines\\)")
 endif()
+
+# Unperturbed campaign rows equal single `assess rocking` runs.
+add_test(NAME cli.campaign_rows_vs_rocking
+  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:assess_cli> -DSRC=${PROJECT_SOURCE_DIR} -DOUT=${_campaign_out}/vs_rocking
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/campaign_vs_rocking.cmake)
+set_tests_properties(cli.campaign_rows_vs_rocking PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "smooth: theta_max .* as assess rocking.*rigid: theta_max .* as assess rocking")
