@@ -9,7 +9,9 @@
 #include <assess/campaign_runner.hpp>
 #include <assess/error.hpp>
 
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -82,6 +84,11 @@ class Progress {
   std::uint64_t first_ = 0;
 };
 
+// Set by SIGINT/SIGTERM: the runner finishes the groups under way, writes
+// them, and stops; --resume continues.
+std::atomic<bool> g_cancel{false};
+extern "C" void on_signal(int) { g_cancel = true; }
+
 #if defined(ASSESS_HAVE_MPI)
 // MPI is initialised only for the campaign command, and only if launched
 // by mpirun (an MPI launcher sets OMPI_COMM_WORLD_SIZE / PMI_SIZE).
@@ -114,6 +121,9 @@ void run(const CampaignArgs& a) {
   o.parts = ranks;
   Progress progress(!a.quiet && rank == 0, ranks > 1 ? "rank 0/" + std::to_string(ranks) + " " : "");
   o.progress = std::ref(progress);
+  o.cancel = &g_cancel;
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
 
   std::string error;
   CampaignRunSummary s;
@@ -137,6 +147,16 @@ void run(const CampaignArgs& a) {
   }
 #endif
   if (!error.empty()) throw InputError(error);
+#if defined(ASSESS_HAVE_MPI)
+  if (mpi) {
+    int mine = s.interrupted ? 1 : 0, any = 0;
+    MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    s.interrupted = any != 0;
+  }
+#endif
+  if (s.interrupted)
+    throw InputError("campaign interrupted: the finished rows are in " + a.out +
+                     "; run the same command with --resume to continue");
   if (rank != 0) return;
   if (ranks > 1) {
     std::vector<std::string> parts;

@@ -308,7 +308,7 @@ CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out
 
   auto worker = [&] {
     try {
-      for (std::size_t t; !stop && (t = next_task++) < tasks.size();) {
+      for (std::size_t t; !stop && !(options.cancel && options.cancel->load()) && (t = next_task++) < tasks.size();) {
         const std::vector<AnalysisRow> rows = campaign.evaluate(tasks[t].first, tasks[t].end);
         std::string text;
         std::uint64_t failed = 0;
@@ -347,6 +347,7 @@ CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out
   if (error) std::rethrow_exception(error);
 
   summary.run = done - summary.resumed;
+  summary.interrupted = done < summary.total;
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;
 }

@@ -12,6 +12,7 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -91,6 +92,25 @@ TEST_CASE("campaign: a run stopped halfway and resumed equals an uninterrupted o
   CHECK(run(c, b.path, 2, 0, true) == full);
   // Resuming a complete file runs nothing and changes nothing.
   CHECK(run(c, b.path, 1, 0, true) == full);
+}
+
+TEST_CASE("campaign: a cancelled run keeps every finished row and resumes to the full result") {
+  const assess::Campaign c(assess::read_campaign(kTiny));
+  TempDir a("full_c"), b("cancelled");
+  const std::string full = run(c, a.path, 2);
+  std::atomic<bool> cancel{false};
+  assess::CampaignRunOptions o;
+  o.threads = 2;
+  o.cancel = &cancel;
+  o.progress = [&cancel](std::uint64_t done, std::uint64_t) { cancel = cancel || done >= 10; };
+  const assess::CampaignRunSummary s = assess::run_campaign(c, b.path, o);
+  CHECK(s.interrupted);
+  CHECK(s.run >= 10);
+  CHECK(s.run < c.size());
+  const auto rows = assess::read_campaign_csv(b.path + "/results.csv");
+  CHECK(rows.size() == s.run);
+  CHECK(full.compare(0, slurp(b.path + "/results.csv").size(), slurp(b.path + "/results.csv")) == 0);
+  CHECK(run(c, b.path, 2, 0, true) == full);
 }
 
 TEST_CASE("campaign: resume refuses a changed campaign; a fresh run refuses to overwrite") {

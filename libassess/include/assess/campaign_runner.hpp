@@ -5,6 +5,7 @@
 
 #include "assess/campaign.hpp"
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -25,6 +26,11 @@ struct CampaignRunOptions {
   /// Called after rows are written, with (analyses done, analyses to do) in
   /// this part, counting rows found on resume. Called from one thread at a time.
   std::function<void(std::uint64_t done, std::uint64_t total)> progress;
+  /// If set, checked before each group: once true, no new group starts, the
+  /// groups under way finish and are written, and run_campaign returns with
+  /// `interrupted` set (e.g. set from a SIGINT handler; lock-free, so
+  /// signal-safe). Default none.
+  const std::atomic<bool>* cancel = nullptr;
 
   /// @throws InputError naming the invalid field
   void validate() const;
@@ -37,6 +43,7 @@ struct CampaignRunSummary {
   std::uint64_t run = 0;      ///< analyses run now
   std::uint64_t failed = 0;   ///< of which failed (status "failed")
   double seconds = 0.0;       ///< wall-clock time of this run (s)
+  bool interrupted = false;   ///< stopped by options.cancel before the end
 };
 
 /// The header of results.csv (column names with units).
