@@ -417,6 +417,8 @@ const RockingModel& Campaign::model(std::size_t wall, std::size_t restitution, s
 }
 
 Record Campaign::applied_record(std::size_t r, std::size_t n, double scale) const {
+  if (r >= records_.size()) throw InputError("record index " + std::to_string(r) + " out of range");
+  if (!records_[r]) throw InputError(record_errors_[r]);
   const Perturbation p = perturbation(spec_.seed, r, n, spec_.time_cov, spec_.amplitude_cov);
   if (!(p.time > 0.0) || !(p.amplitude > 0.0))
     throw InputError("non-positive random multiplier (time " + shortest(p.time) + ", amplitude " +
@@ -427,6 +429,10 @@ Record Campaign::applied_record(std::size_t r, std::size_t n, double scale) cons
 }
 
 std::vector<AnalysisRow> Campaign::evaluate(std::uint64_t first, std::uint64_t end) const {
+  const std::uint64_t G = spec_.group_size();
+  if (!(first < end && end <= spec_.size() && (end - 1) / G == first / G))
+    throw InputError("analyses [" + std::to_string(first) + ", " + std::to_string(end) +
+                     ") are not a non-empty range within one group of " + std::to_string(G));
   std::vector<AnalysisRow> rows;
   const AnalysisIndex g = decompose(spec_, first);
   const CampaignWall& wall = spec_.walls[g.wall];

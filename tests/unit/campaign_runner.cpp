@@ -140,6 +140,8 @@ TEST_CASE("campaign: an unreadable record fails its analyses with the reason; th
   }
   const auto summary = assess::summarise_campaign(rows);
   CHECK(summary["failed"] == 2);
+  CHECK_THROWS_AS(c.applied_record(0, 0, 1.0), assess::InputError);
+  CHECK_THROWS_AS(c.evaluate(0, 3), assess::InputError);  // groups of 1 analysis (1 restitution x 1 model)
 }
 
 TEST_CASE("campaign CSV: a row round-trips, including quoted text") {
