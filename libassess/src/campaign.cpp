@@ -111,7 +111,7 @@ CampaignRestitution parse_restitution(const json& j, const std::string& path) {
   if (!j.is_string()) fail(path, "expected \"housner\", \"one_sided_theory\", \"none\" or a number in [-1, 1]");
   const std::string s = j.get<std::string>();
   if (s == "housner") return {s, Restitution::housner()};
-  if (s == "one_sided_theory") return {s, Restitution::one_sided_theory()};
+  if (s == "one_sided_theory" || s == "one-sided-theory") return {"one_sided_theory", Restitution::one_sided_theory()};
   if (s == "none") return {s, Restitution::none()};
   fail(path, "unknown restitution '" + s + "' (expected housner, one_sided_theory, none or a number in [-1, 1])");
 }
