@@ -13,6 +13,7 @@
 #include "assess/error.hpp"
 #include "assess/units.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -52,6 +53,14 @@ struct Group {
     displacement.add(r.dc_displacement);
   }
 };
+
+// A wall name made safe as part of a file name.
+std::string file_stem(const std::string& name) {
+  std::string s = name;
+  for (char& c : s)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_')) c = '_';
+  return s;
+}
 
 const char* kSmoothColour = "#1f77b4";
 const char* kRigidColour = "#d62728";
@@ -187,7 +196,7 @@ std::vector<std::pair<std::string, Plot>> campaign_plots(const Campaign& campaig
         }
       if (!s.x.empty()) p.series.push_back(std::move(s));
     }
-    if (!p.series.empty()) plots.emplace_back("fig4a_" + wall.name + ".svg", std::move(p));
+    if (!p.series.empty()) plots.emplace_back("fig4a_" + file_stem(wall.name) + ".svg", std::move(p));
   }
 
   // Fig. 4b: capacity (moment-rotation) curves.

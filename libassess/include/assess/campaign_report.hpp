@@ -21,7 +21,8 @@ namespace assess {
 nlohmann::json summarise_campaign(const std::vector<AnalysisRow>& rows);
 
 /// Plots of the campaign (name of the SVG file, plot):
-///  - fig4a_<wall>.svg: dynamic D/C against PGA, smooth vs rigid (means over
+///  - fig4a_<wall>.svg (wall name with characters other than letters, digits,
+///    '.', '-', '_' replaced by '_'): dynamic D/C against PGA, smooth vs rigid (means over
 ///    the realisations per record and scale, with +/- one standard deviation);
 ///  - fig4b_capacity.svg: moment-rotation curves of the walls, smooth and rigid;
 ///  - fig5a_strength.svg, fig5b_displacement.svg: code D/C against dynamic D/C
