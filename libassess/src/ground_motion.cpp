@@ -45,7 +45,8 @@ GroundMotion GroundMotion::none(double duration_s) {
 double GroundMotion::next_breakpoint(double t) const {
   if (!samples_.empty()) {
     // index of the first sample strictly after t (robust to t a rounded sample time)
-    double i = std::floor(t * inv_dt_) + 1.0;
+    if (t < 0.0) return 0.0;
+    double i = static_cast<double>(static_cast<long>(t * inv_dt_)) + 1.0;  // floor for t >= 0
     if (i * dt_ <= t) i += 1.0;
     return i * dt_;
   }

@@ -163,9 +163,17 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
       if (status != GSL_SUCCESS)
         return finish(HybridTermination::integrator_error, std::string("GSL gsl_odeiv2_step_apply at t = ") +
                                                                std::to_string(t_prev) + " s: " + gsl_strerror(status));
+      // A step cut at a breakpoint whose error ratio is within GSL's acceptance
+      // (D_i = abs_tol + rel_tol |y_i|, max |yerr_i|/D_i <= 1.1, the rule of
+      // gsl_odeiv2_control_y_new) keeps the current proposal h, so the control
+      // (and its pow()) is only consulted when it can change something.
       double h_new = h_try;
-      const int adj = gsl_odeiv2_control_hadjust(control.get(), step.get(), ytry.data(), yerr.data(), ftry.data(),
-                                                 &h_new);
+      int adj = GSL_ODEIV_HADJ_NIL;
+      double ratio = 0.0;
+      for (std::size_t i = 0; i < n; ++i)
+        ratio = std::max(ratio, std::fabs(yerr[i]) / (options.abs_tol + options.rel_tol * std::fabs(ytry[i])));
+      if (!(final_step && ratio <= 1.1))
+        adj = gsl_odeiv2_control_hadjust(control.get(), step.get(), ytry.data(), yerr.data(), ftry.data(), &h_new);
       if (adj == GSL_ODEIV_HADJ_DEC) {
         ++res.rejected_steps;
         if (!(h_new > 16.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::fabs(t_prev))))

@@ -17,7 +17,9 @@
 #include "assess/units.hpp"
 #include "bracket_root.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace assess {
@@ -83,6 +85,8 @@ RockingModel::RockingModel(const RockingBody& body, Foundation foundation, Sided
   }
 
   WR_ = W * body_.R;
+  Wb_ = W * b;
+  M_ext_ = body_.M_ext;
   inv_I0_ = 1.0 / body_.I0;
   m_R_ = m * body_.R;
   sin_a_ = std::sin(body_.alpha);
@@ -156,6 +160,19 @@ double RockingModel::dnet_side(double a, int side) const {
   return gravity + 0.5 * c_partial_ / (a * std::sqrt(a));
 }
 
+RockingModel::Curve RockingModel::moment_rotation_curve(std::size_t points, int side) const {
+  Curve c;
+  const double tu = theta_u(side);
+  const std::size_t n = std::max<std::size_t>(points, 2);
+  for (std::size_t i = 0; i < n; ++i) c.theta.push_back(tu * double(i) / double(n - 1));
+  if (theta_cr_ > 0.0 && theta_cr_ < tu) c.theta.push_back(theta_cr_);
+  c.theta.push_back(theta_peak(side));
+  std::sort(c.theta.begin(), c.theta.end());
+  c.theta.erase(std::unique(c.theta.begin(), c.theta.end()), c.theta.end());
+  for (double a : c.theta) c.moment.push_back(net_side(a, side));
+  return c;
+}
+
 double RockingModel::work(double a, int side) const {
   const double s = side >= 0 ? 1.0 : -1.0;
   // Integral of W R sin(alpha - x) over [0, a]
@@ -170,49 +187,6 @@ double RockingModel::work(double a, int side) const {
 
 double RockingModel::energy_demand(double a, int side) const {
   return work(std::min(std::fabs(a), theta_u(side)), side);
-}
-
-namespace {
-
-/// sin and cos of x. For |x| <= 1/4 (every rotation of a rocking wall short of
-/// collapse) truncated Taylor series whose remainders are below 1e-20, i.e.
-/// exact to rounding: to x^7 / x^8 for |x| <= 1/64 (remainders x^9/9!, x^10/10!)
-/// and to x^13 / x^14 for |x| <= 1/4 (x^15/15!, x^16/16!). They cost a fraction
-/// of the library calls; the right-hand side is evaluated ~10^5 times per record.
-inline void sin_cos(double x, double& sn, double& cs) {
-  const double ax = std::fabs(x), x2 = x * x;
-  if (ax <= 1.0 / 64) {
-    sn = x * (1.0 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040))));
-    cs = 1.0 + x2 * (-0.5 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320))));
-  } else if (ax <= 0.25) {
-    sn = x * (1.0 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 * (1.0 / 362880 +
-         x2 * (-1.0 / 39916800 + x2 * (1.0 / 6227020800.0)))))));
-    cs = 1.0 + x2 * (-0.5 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 + x2 * (-1.0 / 3628800 +
-         x2 * (1.0 / 479001600.0 + x2 * (-1.0 / 87178291200.0)))))));
-  } else {
-    sn = std::sin(x);
-    cs = std::cos(x);
-  }
-}
-
-}  // namespace
-
-double RockingModel::angular_acceleration(double theta, int pivot, bool partial, double ug) const {
-  const double s = pivot >= 0 ? 1.0 : -1.0;
-  // sin(alpha s - theta) and cos(alpha s - theta) by the angle-difference formulas
-  double st, ct;
-  sin_cos(theta, st, ct);
-  const double sn = s * sin_a_ * ct - cos_a_ * st;
-  const double cs = cos_a_ * ct + s * sin_a_ * st;
-  double M = WR_ * sn;
-  if (!foundation_.is_rigid()) {
-    if (!partial) {
-      M += -s * body_.W * body_.b + kb3_ * theta;
-    } else {
-      M -= s * c_partial_ / std::sqrt(std::max(s * theta, 1e-300));
-    }
-  }
-  return (body_.M_ext - M - m_R_ * ug * cs) * inv_I0_;
 }
 
 bool RockingModel::lifts(int pivot, double ug) const {

@@ -11,6 +11,7 @@
 #include <assess/rocking_analysis.hpp>
 #include <assess/units.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -110,6 +111,17 @@ TEST_CASE("theta_u, capacity and peak moment for each k match rocking.md §2.7")
     CHECK_CLOSE(m.capacity(), q, rel_tol(1e-10));
     CHECK_CLOSE(m.theta_u(-1), m.theta_u(+1), abs_tol(1e-15));  // symmetric body
   }
+}
+
+TEST_CASE("the moment-rotation curve runs from 0 to theta_u through theta_cr and the peak") {
+  const RockingModel m = smooth(1e8);
+  const auto c = m.moment_rotation_curve(101);
+  REQUIRE(c.theta.size() == c.moment.size());
+  CHECK(c.theta.front() == 0.0);
+  CHECK(c.theta.back() == m.theta_u());
+  CHECK(std::count(c.theta.begin(), c.theta.end(), m.theta_cr()) == 1);
+  CHECK_CLOSE(*std::max_element(c.moment.begin(), c.moment.end()), m.peak_moment(), abs_tol(1e-9));
+  CHECK_CLOSE(c.moment.back(), 0.0, abs_tol(1e-9));
 }
 
 TEST_CASE("energy demand and D/C for a peak rotation match rocking.md §2.8") {

@@ -10,7 +10,10 @@
 
 #include "assess/rocking_body.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
+#include <vector>
 
 namespace assess {
 
@@ -84,6 +87,15 @@ class RockingModel {
   /// the form used by the equation of motion (each branch extends smoothly).
   double restoring_moment(double theta, int pivot, bool partial) const;
 
+  /// The moment-rotation curve of the seed's Fig. 2a on side s: `points`
+  /// rotations evenly spaced on [0, theta_u] plus theta_cr and theta_peak, sorted
+  /// (rad), with the net restoring moment s (M(s theta) - M_ext) (N m/m).
+  struct Curve {
+    std::vector<double> theta;   ///< rotation magnitude (rad)
+    std::vector<double> moment;  ///< net restoring moment (N m/m)
+  };
+  Curve moment_rotation_curve(std::size_t points = 200, int side = +1) const;
+
   /// Work of the net restoring moment from 0 to a on side s (J/m):
   /// closed form of the integral of s (M(s x) - M_ext) dx over [0, a].
   double work(double a, int side = +1) const;
@@ -96,6 +108,7 @@ class RockingModel {
   /// Angular acceleration theta'' (rad/s^2) for pivot side s, branch and
   /// ground acceleration ug (m/s^2, positive outward), seed Eq. 1:
   /// I0 theta'' = -M(theta) + M_ext - (W/g) ug R cos(alpha s - theta).
+  /// Inline: the integrator evaluates it ~10^5 times per record.
   double angular_acceleration(double theta, int pivot, bool partial, double ug) const;
   /// True if, at rest at theta = 0, the excitation ug drives the body off the
   /// base about pivot s (s theta'' > 0); one-sided: only s = +1.
@@ -116,7 +129,52 @@ class RockingModel {
   double theta_u_[2] = {0.0, 0.0};
   double theta_pk_[2] = {0.0, 0.0};
   // cached constants
-  double WR_ = 0.0, inv_I0_ = 0.0, m_R_ = 0.0, kb3_ = 0.0, c_partial_ = 0.0, sin_a_ = 0.0, cos_a_ = 0.0;
+  double WR_ = 0.0, Wb_ = 0.0, M_ext_ = 0.0, inv_I0_ = 0.0, m_R_ = 0.0, kb3_ = 0.0, c_partial_ = 0.0, sin_a_ = 0.0, cos_a_ = 0.0;
 };
+
+namespace detail {
+
+/// sin and cos of x. For |x| <= 1/4 (every rotation of a rocking wall short of
+/// collapse) truncated Taylor series whose remainders are below 1e-20, i.e.
+/// exact to rounding: to x^7 / x^8 for |x| <= 1/64 (remainders x^9/9!, x^10/10!)
+/// and to x^13 / x^14 for |x| <= 1/4 (x^15/15!, x^16/16!). They cost a fraction
+/// of the library calls.
+inline void sin_cos(double x, double& sn, double& cs) {
+  const double ax = std::fabs(x), x2 = x * x;
+  if (ax <= 1.0 / 64) {
+    sn = x * (1.0 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040))));
+    cs = 1.0 + x2 * (-0.5 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320))));
+  } else if (ax <= 0.25) {
+    sn = x * (1.0 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 * (1.0 / 362880 +
+         x2 * (-1.0 / 39916800 + x2 * (1.0 / 6227020800.0)))))));
+    cs = 1.0 + x2 * (-0.5 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 + x2 * (-1.0 / 3628800 +
+         x2 * (1.0 / 479001600.0 + x2 * (-1.0 / 87178291200.0)))))));
+  } else {
+    sn = std::sin(x);
+    cs = std::cos(x);
+  }
+}
+
+}  // namespace detail
+
+// Seed Eq. 1: I0 theta'' = -M(theta) + M_ext - (W/g) ug R cos(alpha s - theta), with
+// M = W R sin(alpha s - theta) [- s W b + (2/3) k b^3 theta (full contact)]
+//                              [- s (W/3) sqrt(2W/(k |theta|)) (partial contact)].
+inline double RockingModel::angular_acceleration(double theta, int pivot, bool partial, double ug) const {
+  const double s = pivot >= 0 ? 1.0 : -1.0;
+  double st, ct;  // sin(alpha s - theta), cos(alpha s - theta) by the angle-difference formulas
+  detail::sin_cos(theta, st, ct);
+  const double sn = s * sin_a_ * ct - cos_a_ * st;
+  const double cs = cos_a_ * ct + s * sin_a_ * st;
+  double M = WR_ * sn;
+  if (kb3_ > 0.0) {  // Winkler foundation
+    if (!partial) {
+      M += -s * Wb_ + kb3_ * theta;
+    } else {
+      M -= s * c_partial_ / std::sqrt(std::max(s * theta, 1e-300));
+    }
+  }
+  return (M_ext_ - M - m_R_ * ug * cs) * inv_I0_;
+}
 
 }  // namespace assess
