@@ -264,24 +264,28 @@ CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out
     if (ec) throw InputError("cannot write '" + spec_path + "'");
   }
 
-  // The tasks of this part: one per group, ids below the limit.
+  // The tasks of this part: one per group; `all` ignores the limit (a resumed
+  // file may hold more rows than this run asks for: they are kept).
   const std::uint64_t end = options.limit > 0 ? std::min(options.limit, spec.size()) : spec.size();
   const std::uint64_t G = spec.group_size();
-  std::vector<Task> tasks;
+  std::vector<Task> all, tasks;
   CampaignRunSummary summary;
-  for (std::uint64_t g = std::uint64_t(options.part); g * G < end; g += std::uint64_t(options.parts)) {
-    tasks.push_back({g * G, std::min((g + 1) * G, end)});
-    summary.total += tasks.back().end - tasks.back().first;
+  for (std::uint64_t g = std::uint64_t(options.part); g * G < spec.size(); g += std::uint64_t(options.parts)) {
+    all.push_back({g * G, std::min((g + 1) * G, spec.size())});
+    if (g * G < end) {
+      tasks.push_back({g * G, std::min((g + 1) * G, end)});
+      summary.total += tasks.back().end - tasks.back().first;
+    }
   }
 
   const std::string path = campaign_part_path(out_dir, options.part, options.parts);
   std::ofstream out;
   if (options.resume && fs::exists(path)) {
-    const auto [count, offset] = valid_prefix(path, tasks);
+    const auto [count, offset] = valid_prefix(path, all);
     fs::resize_file(path, offset, ec);  // drops a partly written last line
     if (ec) throw InputError("cannot truncate '" + path + "' to its complete rows");
-    summary.resumed = count;
-    std::uint64_t skip = count;
+    summary.resumed = std::min(count, summary.total);
+    std::uint64_t skip = summary.resumed;
     std::size_t t = 0;
     while (t < tasks.size() && skip >= tasks[t].end - tasks[t].first) skip -= tasks[t].end - tasks[t].first, ++t;
     tasks.erase(tasks.begin(), tasks.begin() + std::ptrdiff_t(t));

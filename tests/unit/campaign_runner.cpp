@@ -90,8 +90,9 @@ TEST_CASE("campaign: a run stopped halfway and resumed equals an uninterrupted o
   const std::string partial = slurp(b.path + "/results.csv");
   std::ofstream(b.path + "/results.csv", std::ios::binary | std::ios::trunc) << partial.substr(0, partial.size() - 25);
   CHECK(run(c, b.path, 2, 0, true) == full);
-  // Resuming a complete file runs nothing and changes nothing.
+  // Resuming a complete file runs nothing and changes nothing, also with a smaller limit.
   CHECK(run(c, b.path, 1, 0, true) == full);
+  CHECK(run(c, b.path, 1, 5, true) == full);
 }
 
 TEST_CASE("campaign: a cancelled run keeps every finished row and resumes to the full result") {
