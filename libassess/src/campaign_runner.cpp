@@ -292,8 +292,10 @@ CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out
     if (!tasks.empty()) tasks.front().first += skip;
     out.open(path, std::ios::binary | std::ios::app);
   } else {
-    if (fs::exists(path) && !options.resume)
-      throw InputError("'" + path + "' exists: pass --resume to continue it, or choose another output directory");
+    // A part run must not silently replace a merged results.csv either.
+    for (const std::string& p : {path, campaign_part_path(out_dir, 0, 1)})
+      if (fs::exists(p) && !options.resume)
+        throw InputError("'" + p + "' exists: pass --resume to continue it, or choose another output directory");
     out.open(path, std::ios::binary | std::ios::trunc);
     out << campaign_csv_header() << "\n";
   }
