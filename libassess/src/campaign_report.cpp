@@ -14,6 +14,7 @@
 #include "assess/units.hpp"
 
 #include <cctype>
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -180,8 +181,6 @@ std::vector<std::pair<std::string, Plot>> campaign_plots(const Campaign& campaig
     p.title = "Dynamic D/C against PGA, wall " + wall.name + " (means over realisations, +/- 1 std)";
     p.x_label = "PGA (g)";
     p.y_label = "energy demand/capacity (-)";
-    p.y_min = 0.0;
-    p.y_max = 2.0;
     for (CampaignModel m : spec.models) {
       const std::string model = to_string(m);
       PlotSeries s;
@@ -244,7 +243,7 @@ std::vector<std::pair<std::string, Plot>> campaign_plots(const Campaign& campaig
                          : "Displacement-based code D/C, SDe(Ts)/du*, against dynamic D/C";
     p.x_label = "dynamic energy D/C (-)";
     p.y_label = which == 0 ? "PGA/(2 a0*) (-)" : "SDe(Ts)/du* (-)";
-    p.x_min = 0.0, p.x_max = 2.0, p.y_min = 0.0, p.y_max = 2.0;
+    double top = 1.0;  // extent of the line of equality: the largest value plotted
     for (CampaignModel m : spec.models) {
       const std::string model = to_string(m);
       PlotSeries s;
@@ -255,14 +254,15 @@ std::vector<std::pair<std::string, Plot>> campaign_plots(const Campaign& campaig
         if (std::get<3>(k) == model) {
           s.x.push_back(c.dc.mean());
           s.y.push_back(which == 0 ? c.strength.mean() : c.displacement.mean());
+          top = std::max({top, s.x.back(), s.y.back()});
         }
       if (!s.x.empty()) p.series.push_back(std::move(s));
     }
     PlotSeries eq;
     eq.name = "code = dynamic";
     eq.style = PlotSeries::Style::Dashed;
-    eq.x = {0.0, 2.0};
-    eq.y = {0.0, 2.0};
+    eq.x = {0.0, top};
+    eq.y = {0.0, top};
     eq.color = "#555555";
     p.series.push_back(std::move(eq));
     plots.emplace_back(which == 0 ? "fig5a_strength.svg" : "fig5b_displacement.svg", std::move(p));
