@@ -22,6 +22,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sys/stat.h>
 
@@ -72,15 +73,19 @@ const json& array_of(const json& j, const std::string& path) {
 
 std::string child(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
 
+// The record file as an absolute, normalised path (so that a campaign resumed
+// from another working directory is recognised as the same one).
 std::string resolve_record(const std::string& file, const std::string& base_dir, const std::string& path) {
+  namespace fs = std::filesystem;
+  auto found = [](const std::string& p) { return fs::absolute(fs::path(p)).lexically_normal().string(); };
   if (!file.empty() && file.front() == '/') {
-    if (file_exists(file)) return file;
+    if (file_exists(file)) return found(file);
     fail(path, "record file '" + file + "' not found");
   }
   const std::string a = base_dir.empty() ? file : base_dir + "/" + file;
-  if (file_exists(a)) return a;
+  if (file_exists(a)) return found(a);
   const std::string b = data_dir() + "/" + file;
-  if (file_exists(b)) return b;
+  if (file_exists(b)) return found(b);
   fail(path, "record file '" + file + "' not found (looked in '" + a + "' and '" + b + "')");
 }
 
