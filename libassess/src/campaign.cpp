@@ -22,9 +22,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sys/stat.h>
 
 namespace assess {
 
@@ -33,8 +33,8 @@ namespace {
 using nlohmann::json;
 
 bool file_exists(const std::string& p) {
-  struct stat st {};
-  return ::stat(p.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+  std::error_code ec;
+  return std::filesystem::is_regular_file(p, ec);
 }
 
 std::string shortest(double v) {
@@ -59,6 +59,11 @@ double positive(const json& j, const std::string& path, const std::string& unit)
   const double v = number(j, path);
   if (!(v > 0.0)) fail(path, "expected a positive value (" + unit + "), got " + shortest(v));
   return v;
+}
+
+std::string text(const json& j, const std::string& path) {
+  if (!j.is_string()) fail(path, "expected a string, got " + j.dump());
+  return j.get<std::string>();
 }
 
 const json& require(const json& j, const char* key, const std::string& path) {
@@ -190,7 +195,7 @@ CampaignSpec parse_campaign(const json& j, const std::string& base_dir) {
     if (!ok) fail(key, "unknown key");
   }
   CampaignSpec s;
-  s.name = j.value("name", std::string("campaign"));
+  s.name = j.contains("name") ? text(j["name"], "name") : "campaign";
   const double gamma_default = j.contains("unit_weight_kN_m3")
                                    ? positive(j["unit_weight_kN_m3"], "unit_weight_kN_m3", "kN/m^3")
                                    : 0.0;
@@ -205,7 +210,7 @@ CampaignSpec parse_campaign(const json& j, const std::string& base_dir) {
     cw.b_m = positive(require(w, "b", p), p + ".b", "m, half-thickness");
     cw.h_m = positive(require(w, "h", p), p + ".h", "m, half-height");
     if (!(cw.h_m > cw.b_m)) fail(p + ".h", "the half-height h must exceed the half-thickness b");
-    cw.name = w.contains("name") ? w["name"].get<std::string>() : "b" + shortest(cw.b_m) + "_h" + shortest(cw.h_m);
+    cw.name = w.contains("name") ? text(w["name"], p + ".name") : "b" + shortest(cw.b_m) + "_h" + shortest(cw.h_m);
     const double gamma = w.contains("unit_weight_kN_m3")
                              ? positive(w["unit_weight_kN_m3"], p + ".unit_weight_kN_m3", "kN/m^3")
                              : gamma_default;
@@ -225,24 +230,21 @@ CampaignSpec parse_campaign(const json& j, const std::string& base_dir) {
     std::string file;
     if (r.is_object() && r.contains("id")) {
       // A record of the catalogue shipped in data_dir()/spectra/records.
-      if (!r["id"].is_string()) fail(p + ".id", "expected a catalogue id (string)");
+      const std::string id = text(r["id"], p + ".id");
       if (r.contains("file")) fail(p, "give either \"id\" or \"file\", not both");
       if (!catalogue) catalogue = read_catalogue(data_dir() + "/spectra/records/catalogue.json");
-      const std::string id = r["id"].get<std::string>();
       const CatalogueEntry* e = catalogue->find(id);
       if (!e) fail(p + ".id", "'" + id + "' is not in the record catalogue " + catalogue->directory + "/catalogue.json");
       cr.path = resolve_record(catalogue->directory + "/" + e->file, "", p + ".id");
-      cr.name = r.contains("name") ? r["name"].get<std::string>() : e->id;
+      cr.name = r.contains("name") ? text(r["name"], p + ".name") : e->id;
       s.records.push_back(cr);
       continue;
     }
     if (r.is_string()) {
       file = r.get<std::string>();
     } else if (r.is_object()) {
-      const json& f = require(r, "file", p);
-      if (!f.is_string()) fail(p + ".file", "expected a file path");
-      file = f.get<std::string>();
-      if (r.contains("name")) cr.name = r["name"].get<std::string>();
+      file = text(require(r, "file", p), p + ".file");
+      if (r.contains("name")) cr.name = text(r["name"], p + ".name");
     } else {
       fail(p, "expected a file path, {\"name\": ..., \"file\": ...} or {\"id\": catalogue id}");
     }

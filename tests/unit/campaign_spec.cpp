@@ -100,6 +100,9 @@ TEST_CASE("campaign spec: errors name the JSON path") {
   j["integrator"] = {{"rel_tol", -1}};
   CHECK(error_of(j).find("integrator.rel_tol") == 0);
   j = tiny();
+  j["walls"][0]["name"] = 12;
+  CHECK(error_of(j).find("walls[0].name: expected a string") == 0);
+  j = tiny();
   j["realisation"] = 3;  // typo
   CHECK(error_of(j).find("realisation: unknown key") == 0);
   j = tiny();
