@@ -28,7 +28,7 @@ struct RockingArgs {
   bool one_sided = false;
   std::string record;
   double dt = std::nan("");
-  std::string unit = "g";
+  std::string unit;
   double scale = 1.0;
   bool reverse = false;
   std::string overturn_at = "theta_u";
@@ -71,8 +71,10 @@ void run(const RockingArgs& a) {
   const Sidedness sided = a.one_sided ? Sidedness::one_sided : Sidedness::two_sided;
   const RockingModel model(body, foundation, sided, parse_restitution(a.restitution, a.one_sided));
 
+  if (std::isnan(a.dt) && !a.unit.empty())
+    throw InputError("--unit applies only to a plain record file, given with --dt");
   Record record = std::isnan(a.dt) ? read_record(a.record)
-                                   : read_plain_record(a.record, a.dt, parse_acceleration_unit(a.unit));
+                                   : read_plain_record(a.record, a.dt, parse_acceleration_unit(a.unit.empty() ? "g" : a.unit));
   RockingOptions opt;
   opt.scale = a.scale;
   opt.reverse = a.reverse;

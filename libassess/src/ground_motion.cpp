@@ -1,4 +1,9 @@
 // ground_motion.cpp: piecewise-linear records and functional excitations.
+//
+// Notation: ug''(t) ground acceleration (m/s^2, positive outward, seed Eq. 1);
+//   samples_[i] = f * acc[i] at t_i = i dt, f = scale (negated if reversed);
+//   between samples ug'' is linear, so every t_i is a breakpoint (a kink) the
+//   integrator must not step across (research notes rocking.md §3.1).
 #include "assess/ground_motion.hpp"
 
 #include "assess/error.hpp"

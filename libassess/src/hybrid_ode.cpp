@@ -6,18 +6,19 @@
 //
 // Notation:
 //   t_prev, y0, f0  start of the current step: time (s), state, dy/dt
-//   t, y, f      end of the step
-//   g_start[k]   event function k at the start of the step, g1 at its end
-//   hh           trial step size while locating an event by re-stepping from (t0, y0)
+//   t, y, ftry      end of the step (ftry becomes f, the next start derivative)
+//   g_start, g_end  event functions at the start and at the end of the step
+//   hh              trial step size while locating an event from (t_prev, y0)
 //
 // Event location: a step across which some g_k changes sign in its direction
 // is re-taken from its saved start with gsl_odeiv2_step_apply and step sizes
 // chosen by an Illinois/bisection bracket on hh (bracket_root.hpp), until the
 // bracket is narrower than event_time_tol; the state at the fired end of the
-// bracket is handed to the system's jump map, then the stepper is reset (GSL manual: step_reset "should be used whenever the
-// next use of s will not be a continuation of a previous step"). This is
-// valid for one-step Runge-Kutta methods only, which is why only explicit RK
-// steppers are offered (research notes rocking.md §3.1).
+// bracket is handed to the system's jump map, then the stepper is reset (GSL
+// manual: step_reset "should be used whenever the next use of s will not be a
+// continuation of a previous step"). Re-stepping is valid for one-step
+// Runge-Kutta methods only, which is why only explicit RK steppers are offered
+// (research notes rocking.md §3.1).
 #include "assess/hybrid_ode.hpp"
 
 #include "assess/error.hpp"
@@ -74,13 +75,13 @@ std::once_flag gsl_handler_once;
 
 void HybridOdeOptions::validate() const {
   auto positive = [](double v, const char* field) {
-    if (!(v > 0.0)) throw InputError(std::string(field) + " must be a positive number");
+    if (!(std::isfinite(v) && v > 0.0)) throw InputError(std::string(field) + " must be a positive number");
   };
   positive(rel_tol, "relative tolerance rel_tol");
   positive(abs_tol, "absolute tolerance abs_tol");
   positive(event_time_tol, "event time tolerance event_time_tol (s)");
   positive(h_initial, "initial step h_initial (s)");
-  positive(h_max, "largest step h_max (s)");
+  if (!(h_max > 0.0)) throw InputError("largest step h_max must be positive (s)");
   if (max_steps <= 0) throw InputError("max_steps must be positive");
   if (max_events <= 0) throw InputError("max_events must be positive");
 }

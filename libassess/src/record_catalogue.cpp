@@ -1,4 +1,8 @@
 // record_catalogue.cpp: reader of spectra/records/catalogue.json.
+//
+// Notation: one JSON object per record file with id, file, format, event, date,
+// station, component, npts, dt_s (s), pga_g (g, g_n = 9.80665 m/s^2), source,
+// usable_for_design and note (spectra/records/README.md §5).
 #include "assess/record_catalogue.hpp"
 
 #include "assess/error.hpp"

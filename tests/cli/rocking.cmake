@@ -60,3 +60,5 @@ assess_cli_error_test(rocking_err_model "--model must be 'smooth' or 'rigid'"
   rocking --model soft ${_rk_block} --record ${_rk_stu})
 assess_cli_error_test(rocking_err_no_k "--k \\(Winkler modulus, kN/m\\^3\\) is required"
   rocking --model smooth ${_rk_block} --record ${_rk_stu})
+assess_cli_error_test(rocking_err_unit_without_dt "--unit applies only to a plain record file"
+  rocking --model rigid ${_rk_block} --record ${_rk_stu} --unit cm/s^2)

@@ -151,4 +151,11 @@ TEST_CASE("one-sided free rocking with e = -0.48 rebounds at the impact times of
     CHECK(imp[i].omega_plus > 0.0);  // rebound: theta >= 0 only
   }
   for (double th : r.history.theta) CHECK(th >= -kThetaEventTol);
+  // peaks between the impacts: 0.090673, 0.020156, 0.004608 alpha (rebound from
+  // theta = 0 with the engine's post-impact velocity)
+  const double peaks[] = {0.090673, 0.020156, 0.004608};
+  for (int n = 0; n < 3; ++n) {
+    const RockingResult rn = analyse_free(m, {0.0, imp[n].omega_plus}, 0.3, tight());
+    CHECK_CLOSE(rn.theta_max / kBlockA.alpha, peaks[n], abs_tol(kPhiTol));
+  }
 }
