@@ -145,6 +145,24 @@ TEST_CASE("campaign: an unreadable record fails its analyses with the reason; th
   CHECK_THROWS_AS(c.evaluate(0, 3), assess::InputError);  // groups of 1 analysis (1 restitution x 1 model)
 }
 
+TEST_CASE("campaign: an analysis stopped by the step limit is a failed row with its reason") {
+  assess::CampaignSpec spec = assess::read_campaign(kTiny);
+  spec.rocking.max_steps = 50;  // far fewer than the record's samples
+  const assess::Campaign c(spec);
+  TempDir a("steplimit");
+  assess::CampaignRunOptions o;
+  o.threads = 2;
+  o.limit = 4;
+  const assess::CampaignRunSummary s = assess::run_campaign(c, a.path, o);
+  CHECK(s.failed == 4);
+  for (const auto& r : assess::read_campaign_csv(a.path + "/results.csv")) {
+    CHECK_FALSE(r.ok);
+    CHECK(r.termination == "step_limit");
+    CHECK(r.reason.find("step limit") != std::string::npos);
+    CHECK(r.has_code);  // the code ratios do not depend on the integration
+  }
+}
+
 TEST_CASE("campaign CSV: a row round-trips, including quoted text") {
   assess::AnalysisRow r;
   r.id = 12;
