@@ -1,14 +1,200 @@
-// cmd_campaign.cpp: placeholder until the campaign subcommand lands.
+// cmd_campaign.cpp: `assess campaign CAMPAIGN.json --out DIR`, a parametric
+// campaign of rocking analyses on all cores (and on MPI ranks when built with
+// MPI): parses the options, runs the library's campaign runner, shows the
+// progress on stderr, then writes the summary and the plots.
 #include "commands.hpp"
 
+#include <assess/campaign.hpp>
+#include <assess/campaign_report.hpp>
+#include <assess/campaign_runner.hpp>
 #include <assess/error.hpp>
+#include <assess/plot.hpp>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <unistd.h>
+
+#if defined(ASSESS_HAVE_MPI)
+#include <mpi.h>
+#endif
 
 namespace assess::cli {
 
+namespace {
+
+struct CampaignArgs {
+  std::string file, out;
+  unsigned threads = 0;
+  std::uint64_t limit = 0;
+  bool resume = false, quiet = false, no_plots = false;
+};
+
+std::string hms(double s) {
+  if (!std::isfinite(s) || s < 0) return "--";
+  const long t = std::lround(s);
+  char buf[32];
+  if (t >= 3600) std::snprintf(buf, sizeof buf, "%ldh%02ldm", t / 3600, (t / 60) % 60);
+  else if (t >= 60) std::snprintf(buf, sizeof buf, "%ldm%02lds", t / 60, t % 60);
+  else std::snprintf(buf, sizeof buf, "%lds", t);
+  return buf;
+}
+
+// Progress on stderr: a bar with rate and ETA redrawn in place on a terminal,
+// a plain line every 10 s otherwise (logs, batch jobs).
+class Progress {
+ public:
+  Progress(bool enabled, std::string prefix) : enabled_(enabled), tty_(isatty(2)), prefix_(std::move(prefix)) {}
+
+  void operator()(std::uint64_t done, std::uint64_t total) {
+    if (!enabled_) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (!started_) started_ = true, start_ = now, first_ = done, last_ = now - std::chrono::hours(1);
+    const double since = std::chrono::duration<double>(now - last_).count();
+    const bool end = done == total;
+    if (!end && since < (tty_ ? 0.2 : 10.0)) return;
+    last_ = now;
+    const double el = std::chrono::duration<double>(now - start_).count();
+    const double rate = el > 0 ? double(done - first_) / el : 0.0;
+    const double eta = rate > 0 ? double(total - done) / rate : NAN;
+    const double frac = total ? double(done) / double(total) : 1.0;
+    char line[200];
+    if (tty_) {
+      const int w = 30, fill = int(frac * w);
+      std::string bar = std::string(std::size_t(fill), '#') + std::string(std::size_t(w - fill), '.');
+      std::snprintf(line, sizeof line, "\r%s[%s] %llu/%llu %5.1f%% %.0f/s ETA %s   ", prefix_.c_str(), bar.c_str(),
+                    (unsigned long long)done, (unsigned long long)total, 100 * frac, rate, hms(eta).c_str());
+      std::cerr << line << (end ? "\n" : "") << std::flush;
+    } else {
+      std::snprintf(line, sizeof line, "%s%llu/%llu analyses (%.1f %%), %.0f/s, ETA %s", prefix_.c_str(),
+                    (unsigned long long)done, (unsigned long long)total, 100 * frac, rate, hms(eta).c_str());
+      std::cerr << line << "\n";
+    }
+  }
+
+ private:
+  bool enabled_, tty_;
+  std::string prefix_;
+  bool started_ = false;
+  std::chrono::steady_clock::time_point start_, last_;
+  std::uint64_t first_ = 0;
+};
+
+// Set by SIGINT/SIGTERM: the runner finishes the groups under way, writes
+// them, and stops; --resume continues.
+std::atomic<bool> g_cancel{false};
+extern "C" void on_signal(int) { g_cancel = true; }
+
+#if defined(ASSESS_HAVE_MPI)
+// MPI is initialised only for the campaign command, and only if launched
+// by mpirun (an MPI launcher sets OMPI_COMM_WORLD_SIZE / PMI_SIZE).
+bool under_mpi() { return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE"); }
+#endif
+
+void run(const CampaignArgs& a) {
+  int rank = 0, ranks = 1;
+#if defined(ASSESS_HAVE_MPI)
+  const bool mpi = under_mpi();
+  if (mpi) {
+    MPI_Init(nullptr, nullptr);
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  }
+  struct Finalize {
+    bool on;
+    ~Finalize() {
+      if (on) MPI_Finalize();
+    }
+  } finalize{mpi};
+#endif
+  const Campaign campaign(read_campaign(a.file));
+  CampaignRunOptions o;
+  // Several ranks on one machine share its cores: one thread each unless told.
+  o.threads = a.threads ? a.threads : (ranks > 1 ? 1u : 0u);
+  o.limit = a.limit;
+  o.resume = a.resume;
+  o.part = rank;
+  o.parts = ranks;
+  Progress progress(!a.quiet && rank == 0, ranks > 1 ? "rank 0/" + std::to_string(ranks) + " " : "");
+  o.progress = std::ref(progress);
+  o.cancel = &g_cancel;
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+
+  std::string error;
+  CampaignRunSummary s;
+  try {
+    s = run_campaign(campaign, a.out, o);
+  } catch (const InputError& e) {
+    error = e.what();
+  }
+#if defined(ASSESS_HAVE_MPI)
+  if (mpi) {
+    // Every rank must finish its part before rank 0 merges; a failure on any rank stops all.
+    int bad = error.empty() ? 0 : 1, any = 0;
+    MPI_Allreduce(&bad, &any, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    if (any && error.empty()) error = "another MPI rank failed (see its message)";
+    // Counts summed over the ranks; the time is the slowest rank's.
+    unsigned long long mine[3] = {s.resumed, s.run, s.failed}, all[3] = {0, 0, 0};
+    MPI_Reduce(mine, all, 3, MPI_UNSIGNED_LONG_LONG, MPI_SUM, 0, MPI_COMM_WORLD);
+    double slowest = 0.0;
+    MPI_Reduce(&s.seconds, &slowest, 1, MPI_DOUBLE, MPI_MAX, 0, MPI_COMM_WORLD);
+    s.resumed = all[0], s.run = all[1], s.failed = all[2], s.seconds = slowest;
+  }
+#endif
+  if (!error.empty()) throw InputError(error);
+#if defined(ASSESS_HAVE_MPI)
+  if (mpi) {
+    int mine = s.interrupted ? 1 : 0, any = 0;
+    MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    s.interrupted = any != 0;
+  }
+#endif
+  if (s.interrupted)
+    throw InputError("campaign interrupted: the finished rows are in " + a.out +
+                     "; run the same command with --resume to continue");
+  if (rank != 0) return;
+  if (ranks > 1) {
+    std::vector<std::string> parts;
+    for (int r = 0; r < ranks; ++r) parts.push_back(campaign_part_path(a.out, r, ranks));
+    merge_campaign_parts(parts, campaign_part_path(a.out, 0, 1));
+    for (const auto& p : parts) std::filesystem::remove(p);
+  }
+  // The results are complete at this point: a missing gnuplot only skips the plots.
+  const bool plots = !a.no_plots && gnuplot_available();
+  if (!a.no_plots && !plots)
+    std::cerr << "assess: warning: gnuplot not found (Debian package gnuplot-nox): plots skipped\n";
+  const CampaignReportFiles files = write_campaign_report(campaign, a.out, plots);
+  std::printf("campaign '%s': %llu analyses", campaign.spec().name.c_str(),
+              (unsigned long long)(a.limit ? std::min<std::uint64_t>(a.limit, campaign.size()) : campaign.size()));
+  if (ranks > 1) std::printf(" on %d MPI ranks", ranks);
+  std::printf(" (%llu resumed, %llu run in %.2f s, %llu failed)\n", (unsigned long long)s.resumed,
+              (unsigned long long)s.run, s.seconds, (unsigned long long)s.failed);
+  std::printf("results: %s\nsummary: %s\n", campaign_part_path(a.out, 0, 1).c_str(), files.summary.c_str());
+  for (const auto& p : files.plots) std::printf("plot:    %s\n", p.c_str());
+}
+
+}  // namespace
+
 void add_campaign_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("campaign", "(not available yet in this build)");
-  cmd->allow_extras();
-  cmd->callback([] { throw InputError("the 'campaign' command is not available yet in this build"); });
+  auto a = std::make_shared<CampaignArgs>();
+  auto* cmd = app.add_subcommand(
+      "campaign",
+      "Parametric campaign of rocking analyses (walls x records x scale factors x realisations x restitution x "
+      "models), with the code's demand/capacity ratios; all cores, resumable, MPI-aware");
+  cmd->add_option("campaign", a->file, "campaign file (JSON, see docs/user/campaign.md)")->required();
+  cmd->add_option("--out", a->out, "output directory (results.csv, summary.json, campaign.json, plots)")->required();
+  cmd->add_option("--threads", a->threads, "worker threads (default: all cores; 1 per rank under mpirun)");
+  cmd->add_flag("--resume", a->resume, "continue the results in --out after their last complete row");
+  cmd->add_option("--limit", a->limit, "run only the analyses with id < N (tests, trials)");
+  cmd->add_flag("--quiet", a->quiet, "no progress on stderr");
+  cmd->add_flag("--no-plots", a->no_plots, "write results and summary only");
+  cmd->callback([a] { run(*a); });
 }
 
 }  // namespace assess::cli
