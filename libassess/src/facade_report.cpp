@@ -240,6 +240,15 @@ namespace {
 
 std::string fixed(double v, int prec) { return format("%.*f", prec, v); }
 
+PlotSeries series(std::string name, PlotSeries::Style style, std::vector<double> x = {}, std::vector<double> y = {}) {
+  PlotSeries s;
+  s.name = std::move(name);
+  s.style = style;
+  s.x = std::move(x);
+  s.y = std::move(y);
+  return s;
+}
+
 }  // namespace
 
 std::string facade_html(const FacadeAssessment& a) {
@@ -320,18 +329,16 @@ std::string facade_html(const FacadeAssessment& a) {
     p.title = "Capacity curve of the equivalent oscillator";
     p.x_label = "d* (m)";
     p.y_label = "a* (m/s2)";
-    PlotSeries c{"a*(d*)", {}, {}, PlotSeries::Style::Line};
+    PlotSeries c = series("a*(d*)", PlotSeries::Style::Line);
     for (const CapacityPoint& q : k.curve) c.x.push_back(q.d_star), c.y.push_back(q.a_star);
     c.highlight = true;
     p.series.push_back(c);
     for (const CheckRow& row : a.checks) {
       if (row.kind != "displacement" || row.location != "ground") continue;
-      PlotSeries cap{row.code + " " + row.limit_state + " capacity", {row.capacity, row.capacity},
-                     {0.0, k.a0_star}, PlotSeries::Style::Dashed};
-      PlotSeries dem{row.code + " " + row.limit_state + " demand", {row.demand, row.demand}, {0.0, k.a0_star},
-                     PlotSeries::Style::Line};
-      p.series.push_back(cap);
-      p.series.push_back(dem);
+      p.series.push_back(series(row.code + " " + row.limit_state + " capacity", PlotSeries::Style::Dashed,
+                                {row.capacity, row.capacity}, {0.0, k.a0_star}));
+      p.series.push_back(series(row.code + " " + row.limit_state + " demand", PlotSeries::Style::Line,
+                                {row.demand, row.demand}, {0.0, k.a0_star}));
     }
     h.add_svg(render_svg(p), "Capacity curve a*-d* (C8A.4.5 / C8.7.1.4) with the displacement capacities (dashed) "
                              "and demands (solid) of the ground-level checks.", "fig-capacity");
@@ -366,7 +373,7 @@ std::string facade_html(const FacadeAssessment& a) {
       mr.title = "Moment-rotation curve of the rocking body";
       mr.x_label = "theta (rad)";
       mr.y_label = "M (kN m/m)";
-      PlotSeries s{"restoring moment", a.mr_theta, {}, PlotSeries::Style::Line};
+      PlotSeries s = series("restoring moment", PlotSeries::Style::Line, a.mr_theta);
       for (double v : a.mr_moment) s.y.push_back(v / units::kN);
       s.highlight = true;
       mr.series.push_back(s);
@@ -395,7 +402,7 @@ std::string facade_html(const FacadeAssessment& a) {
         th.y_label = "theta/theta_u (-)";
         for (const DynamicRun& r : a.runs) {
           if (r.restitution != ie || r.result.history.t.empty()) continue;
-          PlotSeries s{record_label(a, r), {}, {}, PlotSeries::Style::Line};
+          PlotSeries s = series(record_label(a, r), PlotSeries::Style::Line);
           const std::size_t n = r.result.history.t.size(), step = std::max<std::size_t>(1, n / 1500);
           for (std::size_t i = 0; i < n; i += step) {
             s.x.push_back(r.result.history.t[i]);
@@ -418,15 +425,14 @@ std::string facade_html(const FacadeAssessment& a) {
     b.title = "D/C of the strength, displacement and dynamic approaches";
     b.y_label = "D/C (-)";
     b.x_label = "";
-    PlotSeries bars{"D/C", {}, {}, PlotSeries::Style::Bars};
+    PlotSeries bars = series("D/C", PlotSeries::Style::Bars);
     for (std::size_t i = 0; i < cmp.size(); ++i) {
       bars.x.push_back(double(i));
       bars.y.push_back(cmp[i].dc);
       b.x_tic_labels.push_back({double(i), std::to_string(i + 1)});
     }
     b.series.push_back(bars);
-    PlotSeries one{"D/C = 1", {-0.5, double(cmp.size()) - 0.5}, {1.0, 1.0}, PlotSeries::Style::Dashed};
-    b.series.push_back(one);
+    b.series.push_back(series("D/C = 1", PlotSeries::Style::Dashed, {-0.5, double(cmp.size()) - 0.5}, {1.0, 1.0}));
     std::vector<std::vector<std::string>> rows;
     for (std::size_t i = 0; i < cmp.size(); ++i)
       rows.push_back({std::to_string(i + 1), cmp[i].name, fixed(cmp[i].dc, 3), cmp[i].dc <= 1 ? "<= 1" : "> 1"});

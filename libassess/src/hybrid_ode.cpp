@@ -146,6 +146,41 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
       t = t_bp;  // a sliver left by an event at a breakpoint: nothing to integrate
       continue;
     }
+    if (sys.stationary(mode)) {
+      // The state does not move: advance to the breakpoint (at most h_max),
+      // and locate an event in time if one fires on the way.
+      const double t_prev = t;
+      const double t_next = std::min(t_bp, t_prev + options.h_max);
+      std::copy(y, y + n, y0.begin());
+      eval_events(t_next, y, g_end);
+      std::size_t k_hit = g_end.size();
+      double best = t_next;
+      for (std::size_t k = 0; k < g_end.size(); ++k) {
+        const EventDirection dir = sys.event_direction(k, mode);
+        if (!fired(dir, g_start[k], g_end[k])) continue;
+        auto g_of_t = [&](double tt) { return sys.event(k, tt, y0.data(), mode); };
+        const double g_b = best == t_next ? g_end[k] : g_of_t(best);
+        if (!fired(dir, g_start[k], g_b)) continue;
+        const auto br = detail::shrink_bracket(g_of_t, {t_prev, g_start[k], best, g_b}, options.event_time_tol);
+        if (fired(dir, g_start[k], br.fb) && br.b <= best) best = br.b, k_hit = k;
+      }
+      t = best;
+      sys.on_step(t_prev, y0.data(), f.data(), t, y, f.data(), mode);
+      if (k_hit == g_end.size()) {
+        g_start.swap(g_end);
+        continue;
+      }
+      ++res.events;
+      const EventAction action = sys.on_event(k_hit, t, y, mode);
+      adapter.mode = mode;
+      if (action == EventAction::stop) return finish(HybridTermination::stopped_by_event, "stopped by an event");
+      if (res.events >= options.max_events)
+        return finish(HybridTermination::event_limit, "event limit reached (accumulation of events?)");
+      if (!restart())
+        return finish(HybridTermination::integrator_error,
+                      "right-hand side failed after an event at t = " + std::to_string(t) + " s");
+      continue;
+    }
     // One adaptive step (gsl_odeiv2_step_apply + gsl_odeiv2_control_hadjust),
     // never across the breakpoint t_bp.
     std::copy(y, y + n, y0.begin());

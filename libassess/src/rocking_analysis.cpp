@@ -141,6 +141,7 @@ class RockingSystem final : public HybridSystem {
   }
 
   double next_breakpoint(double t) const override { return motion_.next_breakpoint(t); }
+  bool stationary(int mode) const override { return mode == 0; }  // at rest on the base
 
   void push_history(double t, const double* y) {
     if (!opt_.record_history) return;

@@ -57,6 +57,11 @@ class HybridSystem {
   /// Next time > t at which the right-hand side is not smooth (e.g. a record
   /// sample); the integrator never steps across it. +inf if none.
   virtual double next_breakpoint(double t) const = 0;
+  /// True if dy/dt is identically zero in `mode` (e.g. a body at rest): the
+  /// integrator then takes no Runge-Kutta steps, only evaluates the event
+  /// functions at the breakpoints (at most h_max apart) and locates a sign
+  /// change in time with the state held constant. Default: false.
+  virtual bool stationary(int /*mode*/) const { return false; }
 };
 
 /// Settings of HybridIntegrator::integrate. Defaults are documented per field.
