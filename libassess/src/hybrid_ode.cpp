@@ -31,6 +31,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <mutex>
 #include <vector>
 
@@ -136,6 +137,21 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
     return gsl_rhs(t, y, f.data(), &adapter) == GSL_SUCCESS;
   };
 
+  // Applies the located event k at (t, y): the jump, then a stop or a limit
+  // ends the integration (the result is returned), else a fresh start.
+  auto fire = [&](std::size_t k) -> std::optional<HybridOdeResult> {
+    ++res.events;
+    const EventAction action = sys.on_event(k, t, y, mode);
+    adapter.mode = mode;
+    if (action == EventAction::stop) return finish(HybridTermination::stopped_by_event, "stopped by an event");
+    if (res.events >= options.max_events)
+      return finish(HybridTermination::event_limit, "event limit reached (accumulation of events?)");
+    if (!restart())
+      return finish(HybridTermination::integrator_error,
+                    "right-hand side failed after an event at t = " + std::to_string(t) + " s");
+    return std::nullopt;
+  };
+
   double h = std::min(options.h_initial, std::max(t_end - t0, 0.0));
   if (!restart()) return finish(HybridTermination::integrator_error, "right-hand side failed at the start");
 
@@ -170,15 +186,7 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
         g_start.swap(g_end);
         continue;
       }
-      ++res.events;
-      const EventAction action = sys.on_event(k_hit, t, y, mode);
-      adapter.mode = mode;
-      if (action == EventAction::stop) return finish(HybridTermination::stopped_by_event, "stopped by an event");
-      if (res.events >= options.max_events)
-        return finish(HybridTermination::event_limit, "event limit reached (accumulation of events?)");
-      if (!restart())
-        return finish(HybridTermination::integrator_error,
-                      "right-hand side failed after an event at t = " + std::to_string(t) + " s");
+      if (auto end = fire(k_hit)) return *end;
       continue;
     }
     // One adaptive step (gsl_odeiv2_step_apply + gsl_odeiv2_control_hadjust),
@@ -275,15 +283,7 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
     std::copy(ytry.begin(), ytry.end(), y);
     sys.on_step(t_prev, y0.data(), f0.data(), t, y, ftry.data(), mode);
 
-    ++res.events;
-    const EventAction action = sys.on_event(k_hit, t, y, mode);
-    adapter.mode = mode;
-    if (action == EventAction::stop) return finish(HybridTermination::stopped_by_event, "stopped by an event");
-    if (res.events >= options.max_events)
-      return finish(HybridTermination::event_limit, "event limit reached (accumulation of events?)");
-    if (!restart())
-      return finish(HybridTermination::integrator_error,
-                    "right-hand side failed after an event at t = " + std::to_string(t) + " s");
+    if (auto end = fire(k_hit)) return *end;
   }
   return finish(HybridTermination::completed, "");
 }
