@@ -4,6 +4,7 @@
 // Prints ms per analysis (best of N repeats), steps and right-hand-side
 // evaluations per analysis, and theta_max against a run at 1000x tighter
 // tolerances. Usage: bench_rocking [repeats] [rel_tol abs_tol] [stepper]
+#include <assess/hazard.hpp>
 #include <assess/record_io.hpp>
 #include <assess/rocking_analysis.hpp>
 #include <assess/units.hpp>
@@ -25,8 +26,7 @@ int main(int argc, char** argv) {
     opt.stepper = s == "rkck" ? OdeStepper::rkck : s == "rkf45" ? OdeStepper::rkf45 : OdeStepper::rk8pd;
   }
   opt.scale = 0.2;
-  const char* dir = std::getenv("ASSESS_DATA_DIR");
-  const std::string root = dir ? dir : ".";  // run from the repository root, or set ASSESS_DATA_DIR
+  const std::string root = data_dir();  // $ASSESS_DATA_DIR, the install prefix or the source tree
   const Record rec = read_record(root + "/spectra/records/RSN292_ITALY_A-STU270.AT2");
   const RockingModel model(RockingBody::rectangle(0.25, 3.0, 12.06 * units::kN), Foundation::winkler(1e9),
                            Sidedness::two_sided, Restitution::housner());
