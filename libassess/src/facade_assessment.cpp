@@ -21,11 +21,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 namespace assess {
 
 namespace {
+
+std::string format_m(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f", v);
+  return buf;
+}
 
 std::string directory_of(const std::string& path) {
   const auto p = path.find_last_of('/');
@@ -84,25 +91,24 @@ void load_records(FacadeAssessment& a, const DynamicSpec& d, const FacadeOptions
 }  // namespace
 
 FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
+  if (!kase.site)
+    throw InputError(kase.file + ": /site: missing: the assessment checks the mechanism against the site's "
+                     "seismic action (give \"lat\"/\"lon\", \"island\" or \"hazard\"); `assess kinematic` "
+                     "analyses a mechanism without a site");
   FacadeAssessment a;
   a.kase = kase;
   a.kinematic = run_kinematic_case(kase);
   a.checks = a.kinematic.checks;
-  std::optional<Site> site;
-  if (kase.site) {
-    site.emplace(*kase.site);
-    for (LimitState ls : all_limit_states) {
-      if (!kase.site->given.empty() && !kase.site->given.count(ls)) continue;
-      a.actions[ls] = site->action(ls);
-    }
+  const Site site(*kase.site);
+  for (LimitState ls : all_limit_states) {
+    if (!kase.site->given.empty() && !kase.site->given.count(ls)) continue;
+    a.actions[ls] = site.action(ls);
   }
-  if (site) {
-    a.periods = log_spaced_periods(0.02, 4.0, 48);
-    a.periods.insert(a.periods.begin(), 0.0);
-    for (const auto& [ls, act] : a.actions) {
-      const ElasticSpectrum s(act.hazard, kase.site->conditions, 5.0);
-      for (double T : a.periods) a.site_Se[ls].push_back(s.Se(T));
-    }
+  a.periods = log_spaced_periods(0.02, 4.0, 48);
+  a.periods.insert(a.periods.begin(), 0.0);
+  for (const auto& [ls, act] : a.actions) {
+    const ElasticSpectrum s(act.hazard, kase.site->conditions, 5.0);
+    for (double T : a.periods) a.site_Se[ls].push_back(s.Se(T));
   }
   if (kase.dynamic.is_null()) return a;
 
@@ -110,19 +116,19 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   const DynamicSpec& d = *a.dynamic;
   const CandidateResult& gov = a.kinematic.candidates[a.kinematic.governing];
   const Chain& chain = kase.mechanism.candidates[a.kinematic.governing].chain;
-  if (!site || !a.actions.count(LimitState::SLV))
-    throw InputError(kase.file + ": /site: the dynamic analysis needs a site with its SLV hazard (records are "
+  if (!a.actions.count(LimitState::SLV))
+    throw InputError(kase.file + ": /site/hazard: the dynamic analysis needs the SLV hazard (records are "
                      "compared with the SLV spectrum)");
-  if (gov.Z > 0.0) {
-    a.dynamic_note = "the governing mechanism is at height (Z = " + std::to_string(gov.Z) +
-                     " m): the records are ground motions and floor accelerograms are not implemented, so the "
-                     "dynamic analysis does not apply yet";
-    return a;
-  }
   try {
     a.body = rocking_body_from_chain(chain);
   } catch (const InputError& e) {
     a.dynamic_note = e.what();
+    return a;
+  }
+  if (gov.Z > 0.0) {
+    a.dynamic_note = "the governing mechanism is at height (Z = " + format_m(gov.Z) +
+                     " m): the records are ground motions and floor accelerograms are not implemented, so the "
+                     "dynamic analysis does not apply yet";
     return a;
   }
   const Foundation found = d.smooth ? Foundation::winkler(d.k) : Foundation::rigid();
@@ -137,7 +143,7 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   a.model = models.front();
   a.dynamic_applies = true;
 
-  const ElasticSpectrum target = site->spectrum(LimitState::SLV, 5.0);
+  const ElasticSpectrum target = site.spectrum(LimitState::SLV, 5.0);
   std::vector<Record> recs;
   load_records(a, d, opt, target, gov.result, recs);
 

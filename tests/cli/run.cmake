@@ -7,7 +7,7 @@ assess_cli_error_test(run_missing_record "/dynamic/records/1/file.*missing\\.AT2
 assess_cli_test(run_keep_going ARGS run tests/cli/run_bad/missing_record.json --keep-going
   PASS "record skipped: /dynamic/records/1/file")
 assess_cli_error_test(run_outside_grid "/site.*outside the NTC hazard grid" run tests/cli/run_bad/outside_grid.json)
-assess_cli_error_test(run_no_site "needs a site" run tests/cli/run_bad/no_site.json)
+assess_cli_error_test(run_no_site "/site: missing" run tests/cli/run_bad/no_site.json)
 assess_cli_error_test(run_empty_records "/dynamic/records.*at least one record" run tests/cli/run_bad/empty_records.json)
 assess_cli_error_test(run_restitution_2 "/dynamic/restitution/1.*\\[-1, 1\\]|/dynamic/restitution/1.*-1" run tests/cli/run_bad/restitution_2.json)
 assess_cli_error_test(run_scale_string "/dynamic/records/1/scale" run tests/cli/run_bad/scale_string.json)
@@ -21,3 +21,7 @@ add_test(NAME cli.run_church_html_browser
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.run_church_html_browser PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77
   ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+assess_cli_test(run_dynamic_at_height ARGS run tests/cli/run_bad/gable_dynamic.json
+  PASS "not applicable: the governing mechanism is at height")
+assess_cli_test(run_dynamic_multi_block ARGS run tests/cli/run_bad/flexure_dynamic.json
+  PASS "not applicable: .*multi-block chains")
