@@ -10,6 +10,7 @@
 #include "assess/error.hpp"
 #include "assess/units.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace assess {
@@ -21,20 +22,39 @@ double ChainRockingBody::horizontal_displacement(const Eigen::Vector2d& p0, doub
   return r.x() * (std::cos(theta) - 1.0) + r.y() * std::sin(theta);
 }
 
-ChainRockingBody rocking_body_from_chain(const Chain& chain) {
-  if (chain.blocks().size() != 1)
-    throw InputError("dynamic analysis: the mechanism has " + std::to_string(chain.blocks().size()) +
-                     " blocks; the rocking model applies to one rotating block (simple overturning, gable, "
-                     "one-block façade); the dynamic analysis does not apply yet to multi-block chains");
-  const Block& blk = chain.blocks()[0];
-  const Constraint* hinge = nullptr;
-  for (const Constraint& c : chain.constraints()) {
-    if (c.type != ConstraintType::GroundHinge)
-      throw InputError("dynamic analysis: constraint '" + c.name +
-                       "' is not a ground hinge; the rocking model needs a block free to rotate about its toe");
-    hinge = &c;
+namespace {
+
+// True if the chain's virtual displacement is a rigid rotation of every block
+// about `h` (e.g. slices of a gable welded together): then it rocks as one body.
+bool moves_as_one_body(const Chain& chain, const Eigen::Vector2d& h) {
+  const Eigen::VectorXd q0 = Eigen::VectorXd::Zero(Eigen::Index(chain.n_coordinates()));
+  const Eigen::VectorXd v = chain.virtual_displacement(q0);
+  const double phi = v(2);
+  const double tol = 1e-9 * std::max(1.0, chain.size());
+  for (std::size_t b = 0; b < chain.blocks().size(); ++b) {
+    const Eigen::Index j = Eigen::Index(3 * b);
+    const Eigen::Vector2d r = chain.centroid(int(b)) - h;
+    // Counter-clockwise rotation phi about h: dp = phi (-(z - z_h), x - x_h).
+    if (std::fabs(v(j + 2) - phi) > 1e-9 || std::fabs(v(j) + phi * r.y()) > tol ||
+        std::fabs(v(j + 1) - phi * r.x()) > tol)
+      return false;
   }
-  if (!hinge) throw InputError("dynamic analysis: the block has no ground hinge to rock about");
+  return true;
+}
+
+}  // namespace
+
+ChainRockingBody rocking_body_from_chain(const Chain& chain) {
+  const Constraint* hinge = nullptr;
+  int ground_hinges = 0;
+  for (const Constraint& c : chain.constraints())
+    if (c.type == ConstraintType::GroundHinge) hinge = &c, ++ground_hinges;
+  if (ground_hinges != 1 || !moves_as_one_body(chain, hinge->point))
+    throw InputError("dynamic analysis: the mechanism (" + std::to_string(chain.blocks().size()) +
+                     " blocks) does not rotate as one body about a single ground hinge; the rocking model "
+                     "applies to one rotating block (simple overturning, gable, one-block façade); the dynamic "
+                     "analysis does not apply yet to multi-block chains");
+  const Block& blk = chain.blocks()[std::size_t(hinge->block)];  // the base block, on the hinge
 
   ChainRockingBody out;
   out.hinge = hinge->point;

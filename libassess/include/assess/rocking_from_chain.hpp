@@ -23,15 +23,19 @@ struct ChainRockingBody {
   double horizontal_displacement(const Eigen::Vector2d& p0, double theta) const;
 };
 
-/// Builds the body of a chain with ONE block rotating about a ground hinge:
+/// Builds the body of a chain that rotates as ONE rigid body about a single
+/// ground hinge (one block, or blocks welded together such as the slices of a
+/// gable):
 /// weight W = self weight + carried weights (bearing and seismic), centroid of
 /// all of them, I0 = sum of the blocks' (I_c + m d^2) and the carried point
 /// masses about the hinge, half base width b = half the extent of the block's
 /// base at the hinge level, constant moment of the external forces and ties
 /// about the hinge (virtual work of a rotation about it). Everything is
-/// divided by the block's out-of-plane length (per unit depth).
-/// @throws InputError for a multi-block chain ("the dynamic analysis does not
-///   apply yet to multi-block chains"), a block without a ground hinge, a
+/// divided by the out-of-plane length of the block on the hinge (per unit
+/// length of the base).
+/// @throws InputError for a chain whose blocks move relative to each other
+///   ("the dynamic analysis does not apply yet to multi-block chains"), no or
+///   several ground hinges, a
 ///   carried weight whose mass and weight do not both act, or friction loads.
 ChainRockingBody rocking_body_from_chain(const Chain& chain);
 
