@@ -7,9 +7,6 @@
 #include <exception>
 #include <iostream>
 
-#ifndef ASSESS_VERSION_STRING
-#define ASSESS_VERSION_STRING "0.1.0"
-#endif
 
 int main(int argc, char** argv) {
   CLI::App app{
