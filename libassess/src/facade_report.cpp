@@ -400,12 +400,22 @@ std::string facade_html(const FacadeAssessment& a) {
         th.title = "theta/theta_u, " + describe(a.dynamic->restitutions[ie]);
         th.x_label = "t (s)";
         th.y_label = "theta/theta_u (-)";
+        // Show the strong motion: up to 10 s after the latest peak (long
+        // records have minutes of near-silence after it).
+        double t_show = 0.0, t_last = 0.0;
+        for (const DynamicRun& r : a.runs)
+          if (r.restitution == ie) t_show = std::max(t_show, r.result.t_theta_max), t_last = std::max(t_last, r.result.t_end);
+        th.x_min = 0.0;
+        th.x_max = std::min(t_last, t_show + 10.0);
+        if (!(th.x_max > 0.0)) th.x_max = 1.0;
         for (const DynamicRun& r : a.runs) {
           if (r.restitution != ie || r.result.history.t.empty()) continue;
           PlotSeries s = series(record_label(a, r), PlotSeries::Style::Line);
-          const std::size_t n = r.result.history.t.size(), step = std::max<std::size_t>(1, n / 1500);
+          const std::vector<double>& t = r.result.history.t;
+          const std::size_t n = std::size_t(std::upper_bound(t.begin(), t.end(), th.x_max) - t.begin());
+          const std::size_t step = std::max<std::size_t>(1, n / 3000);  // keep the SVG small
           for (std::size_t i = 0; i < n; i += step) {
-            s.x.push_back(r.result.history.t[i]);
+            s.x.push_back(t[i]);
             s.y.push_back(r.result.history.theta[i] / r.result.theta_u);
           }
           th.series.push_back(s);
@@ -432,6 +442,10 @@ std::string facade_html(const FacadeAssessment& a) {
       b.x_tic_labels.push_back({double(i), std::to_string(i + 1)});
     }
     b.series.push_back(bars);
+    double dc_max = 1.0;
+    for (const Approach& x : cmp) dc_max = std::max(dc_max, x.dc);
+    b.y_min = 0.0;
+    b.y_max = 1.1 * dc_max;
     b.series.push_back(series("D/C = 1", PlotSeries::Style::Dashed, {-0.5, double(cmp.size()) - 0.5}, {1.0, 1.0}));
     std::vector<std::vector<std::string>> rows;
     for (std::size_t i = 0; i < cmp.size(); ++i)
