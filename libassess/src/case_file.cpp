@@ -148,7 +148,8 @@ MechanismSet parse_blocks(const JsonNode& m) {
 
 MechanismSet parse_mechanism(const JsonNode& m) {
   const std::string type =
-      m.choice("type", {"blocks", "simple_overturning", "vertical_flexure", "composite_overturning", "gable_overturning"});
+      m.choice("type", {"blocks", "simple_overturning", "vertical_flexure", "composite_overturning", "gable_overturning",
+                        "corner_overturning"});
   if (type == "blocks") return parse_blocks(m);
   if (type == "simple_overturning") {
     m.allow_only({"type", "storeys", "unit_weight", "length", "hinge_level", "hinge_setback"});
@@ -207,6 +208,26 @@ MechanismSet parse_mechanism(const JsonNode& m) {
     p.beta_max_deg = m.number_or("beta_max_deg", p.beta_max_deg, "deg", 0.0, 90.0);
     p.search_points = m.integer_or("search_points", p.search_points, 2, 100);
     return composite_overturning(p);
+  }
+  if (type == "corner_overturning") {
+    m.allow_only({"type", "height", "thickness", "unit_weight", "wall_length", "base_z", "top_weight", "thrust", "tie",
+                  "beta_deg", "unit_length", "course_height", "beta_min_deg", "beta_max_deg", "search_points"});
+    CornerOverturningParams p;
+    p.height = m.positive("height", "m");
+    p.thickness = m.positive("thickness", "m");
+    p.unit_weight = m.positive("unit_weight", "kN/m^3") * kN;
+    p.wall_length = m.positive("wall_length", "m");
+    p.base_z = m.number_or("base_z", 0.0, "m", 0.0);
+    p.top_weight = m.number_or("top_weight", 0.0, "kN", 0.0) * kN;
+    p.thrust = m.number_or("thrust", 0.0, "kN") * kN;
+    p.tie = m.number_or("tie", 0.0, "kN", 0.0) * kN;
+    if (m.find("beta_deg")) p.beta_deg = open_interval(m.at("beta_deg"), "deg", 0.0, 90.0);
+    if (m.find("unit_length")) p.unit_length = m.positive("unit_length", "m");
+    if (m.find("course_height")) p.course_height = m.positive("course_height", "m");
+    p.beta_min_deg = m.number_or("beta_min_deg", p.beta_min_deg, "deg", 0.0, 90.0);
+    p.beta_max_deg = m.number_or("beta_max_deg", p.beta_max_deg, "deg", 0.0, 90.0);
+    p.search_points = m.integer_or("search_points", p.search_points, 2, 100);
+    return corner_overturning(p);
   }
   m.allow_only({"type", "width", "height", "thickness", "unit_weight", "base_z", "ridge_weight", "ridge_thrust", "tie", "slices"});
   GableParams p;
