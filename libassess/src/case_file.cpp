@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <sstream>
 
 namespace assess {
 namespace {
@@ -26,6 +27,17 @@ int block_ref(const JsonNode& n, const std::map<std::string, int>& names, int nb
   const auto it = names.find(s);
   if (it == names.end()) n.fail("no block named \"" + s + "\"");
   return it->second;
+}
+
+// A number strictly inside (lo, hi), e.g. a hinge between two restraints.
+double open_interval(const JsonNode& n, const char* unit, double lo, double hi) {
+  const double v = n.as_number(unit);
+  if (!(v > lo && v < hi)) {
+    std::ostringstream os;
+    os << "value " << v << " out of range: expected in (" << lo << ", " << hi << ") " << unit;
+    n.fail(os.str());
+  }
+  return v;
 }
 
 MechanismSet parse_blocks(const JsonNode& m) {
@@ -136,7 +148,8 @@ MechanismSet parse_blocks(const JsonNode& m) {
 
 MechanismSet parse_mechanism(const JsonNode& m) {
   const std::string type =
-      m.choice("type", {"blocks", "simple_overturning", "vertical_flexure", "composite_overturning", "gable_overturning"});
+      m.choice("type", {"blocks", "simple_overturning", "vertical_flexure", "composite_overturning", "gable_overturning",
+                        "corner_overturning"});
   if (type == "blocks") return parse_blocks(m);
   if (type == "simple_overturning") {
     m.allow_only({"type", "storeys", "unit_weight", "length", "hinge_level", "hinge_setback"});
@@ -170,7 +183,7 @@ MechanismSet parse_mechanism(const JsonNode& m) {
     p.base_z = m.number_or("base_z", 0.0, "m", 0.0);
     p.top_load = m.number_or("top_load", 0.0, "kN", 0.0) * kN;
     p.top_load_distance_from_inner_face = m.number_or("top_load_distance_from_inner_face", 0.0, "m", 0.0, p.thickness);
-    if (m.find("hinge_height")) p.hinge_height = m.number("hinge_height", "m", 0.0, p.height);
+    if (m.find("hinge_height")) p.hinge_height = open_interval(m.at("hinge_height"), "m", 0.0, p.height);
     return vertical_flexure(p);
   }
   if (type == "composite_overturning") {
@@ -188,13 +201,33 @@ MechanismSet parse_mechanism(const JsonNode& m) {
     p.base_z = m.number_or("base_z", 0.0, "m", 0.0);
     p.top_weight = m.number_or("top_weight", 0.0, "kN", 0.0) * kN;
     p.tie = m.number_or("tie", 0.0, "kN", 0.0) * kN;
-    if (m.find("beta_deg")) p.beta_deg = m.number("beta_deg", "deg", 0.0, 90.0);
+    if (m.find("beta_deg")) p.beta_deg = open_interval(m.at("beta_deg"), "deg", 0.0, 90.0);
     if (m.find("unit_length")) p.unit_length = m.positive("unit_length", "m");
     if (m.find("course_height")) p.course_height = m.positive("course_height", "m");
     p.beta_min_deg = m.number_or("beta_min_deg", p.beta_min_deg, "deg", 0.0, 90.0);
     p.beta_max_deg = m.number_or("beta_max_deg", p.beta_max_deg, "deg", 0.0, 90.0);
     p.search_points = m.integer_or("search_points", p.search_points, 2, 100);
     return composite_overturning(p);
+  }
+  if (type == "corner_overturning") {
+    m.allow_only({"type", "height", "thickness", "unit_weight", "wall_length", "base_z", "top_weight", "thrust", "tie",
+                  "beta_deg", "unit_length", "course_height", "beta_min_deg", "beta_max_deg", "search_points"});
+    CornerOverturningParams p;
+    p.height = m.positive("height", "m");
+    p.thickness = m.positive("thickness", "m");
+    p.unit_weight = m.positive("unit_weight", "kN/m^3") * kN;
+    p.wall_length = m.positive("wall_length", "m");
+    p.base_z = m.number_or("base_z", 0.0, "m", 0.0);
+    p.top_weight = m.number_or("top_weight", 0.0, "kN", 0.0) * kN;
+    p.thrust = m.number_or("thrust", 0.0, "kN") * kN;
+    p.tie = m.number_or("tie", 0.0, "kN", 0.0) * kN;
+    if (m.find("beta_deg")) p.beta_deg = open_interval(m.at("beta_deg"), "deg", 0.0, 90.0);
+    if (m.find("unit_length")) p.unit_length = m.positive("unit_length", "m");
+    if (m.find("course_height")) p.course_height = m.positive("course_height", "m");
+    p.beta_min_deg = m.number_or("beta_min_deg", p.beta_min_deg, "deg", 0.0, 90.0);
+    p.beta_max_deg = m.number_or("beta_max_deg", p.beta_max_deg, "deg", 0.0, 90.0);
+    p.search_points = m.integer_or("search_points", p.search_points, 2, 100);
+    return corner_overturning(p);
   }
   m.allow_only({"type", "width", "height", "thickness", "unit_weight", "base_z", "ridge_weight", "ridge_thrust", "tie", "slices"});
   GableParams p;

@@ -1,9 +1,10 @@
 // mechanism_catalogue.cpp: chains of the classic out-of-plane mechanisms
 // (DPC-ReLUIS / regional repertories: ribaltamento semplice, flessione
-// verticale, ribaltamento composto, timpano).
+// verticale, ribaltamento composto, timpano, ribaltamento del cantonale).
 //
 // Notation: t thickness, h heights, z above the foundation; the outer face is
-// x = 0 and the wall lies at x < 0. beta wedge angle from the vertical. alpha0
+// x = 0 and the wall lies at x < 0. beta wedge angle from the vertical. Corner:
+// s (drawn as x) outward distance along the bisector, r = 1/sqrt(2). alpha0
 // activation multiplier [C8A.4.1]/[C8.7.1.1]; Z constraint height (C8A.4.9).
 #include "assess/mechanism_catalogue.hpp"
 
@@ -11,6 +12,7 @@
 #include "assess/kinematic_analysis.hpp"
 #include "assess/units.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -239,6 +241,35 @@ MechanismSet vertical_flexure(const VerticalFlexureParams& p) {
 }
 
 // ---------------------------------------------------------------- composite overturning
+namespace {
+// The wedge angles to analyse (deg): beta_deg; else from the texture,
+// tan beta = (unit_length / 2) / course_height; else a grid in
+// [beta_min_deg, beta_max_deg] (`searched` set).
+template <class P>
+std::vector<double> wedge_angles(const std::string& lab, const P& p, bool& searched) {
+  std::vector<double> betas;
+  if (p.beta_deg) {
+    betas.push_back(*p.beta_deg);
+  } else if (p.unit_length || p.course_height) {
+    if (!p.unit_length || !p.course_height)
+      throw InputError(lab + "the texture needs both unit_length and course_height (m)");
+    require_positive(*p.unit_length, lab + "unit_length", "m");
+    require_positive(*p.course_height, lab + "course_height", "m");
+    betas.push_back(std::atan(0.5 * *p.unit_length / *p.course_height) / units::deg);
+  } else {
+    searched = true;
+    if (!(p.beta_min_deg > 0.0 && p.beta_max_deg > p.beta_min_deg && p.beta_max_deg < 90.0))
+      throw InputError(lab + "expected 0 < beta_min_deg < beta_max_deg < 90 deg");
+    if (p.search_points < 2) throw InputError(lab + "search_points must be >= 2");
+    for (int i = 0; i < p.search_points; ++i)
+      betas.push_back(p.beta_min_deg + (p.beta_max_deg - p.beta_min_deg) * i / (p.search_points - 1));
+  }
+  for (double beta : betas)
+    if (!(beta > 0.0 && beta < 90.0)) throw InputError(lab + "beta_deg must lie in (0, 90) deg");
+  return betas;
+}
+}  // namespace
+
 MechanismSet composite_overturning(const CompositeOverturningParams& p) {
   const std::string lab = "composite_overturning: ";
   require_positive(p.height, lab + "height", "m");
@@ -253,26 +284,9 @@ MechanismSet composite_overturning(const CompositeOverturningParams& p) {
   MechanismSet set;
   set.type = "composite_overturning";
   set.parameter_name = "wedge angle beta from the vertical (deg)";
-  std::vector<double> betas;
-  if (p.beta_deg) {
-    betas.push_back(*p.beta_deg);
-  } else if (p.unit_length || p.course_height) {
-    if (!p.unit_length || !p.course_height)
-      throw InputError(lab + "the texture needs both unit_length and course_height (m)");
-    require_positive(*p.unit_length, lab + "unit_length", "m");
-    require_positive(*p.course_height, lab + "course_height", "m");
-    betas.push_back(std::atan(0.5 * *p.unit_length / *p.course_height) / units::deg);
-  } else {
-    set.searched = true;
-    if (!(p.beta_min_deg > 0.0 && p.beta_max_deg > p.beta_min_deg && p.beta_max_deg < 90.0))
-      throw InputError(lab + "expected 0 < beta_min_deg < beta_max_deg < 90 deg");
-    if (p.search_points < 2) throw InputError(lab + "search_points must be >= 2");
-    for (int i = 0; i < p.search_points; ++i)
-      betas.push_back(p.beta_min_deg + (p.beta_max_deg - p.beta_min_deg) * i / (p.search_points - 1));
-  }
+  const std::vector<double> betas = wedge_angles(lab, p, set.searched);
   const double t = p.thickness, z0 = p.base_z, zt = p.base_z + p.height;
   for (double beta : betas) {
-    if (!(beta > 0.0 && beta < 90.0)) throw InputError(lab + "beta_deg must lie in (0, 90) deg");
     // The wedge: triangle from the façade's inner face at the hinge level up
     // to the top, reaching inward by height * tan(beta) (bounded by the side wall).
     // When the side wall is too short the crack meets its end at zc and the
@@ -339,6 +353,58 @@ MechanismSet gable_overturning(const GableParams& p) {
   set.type = "gable_overturning";
   set.parameter_name = "-";
   set.candidates.push_back({"gable about its base", Chain(blocks, cons, loads), z0, 0.0});
+  return set;
+}
+
+// ---------------------------------------------------------------- corner overturning
+// Planar reduction [I] (docs/theory/kinematic.md §5): the wedge rotates about
+// a horizontal axis, so every point moves in a vertical plane parallel to the
+// bisector and the virtual work of the weights and of horizontal forces along
+// the bisector depends only on (s, z), s = outward distance along the bisector
+// from the axis. A plan point at depths (u, v) from the two outer faces has
+// s = -(u + v)/sqrt(2). Each piece is drawn in the (s, z) plane with its exact
+// weight, centroid and height distribution:
+//   pillar (u, v in [0, t]): rectangle s in [-sqrt(2) t, 0], length t/sqrt(2);
+//   arms (u in [t, t + reach(z)], v in [0, t], and the mirror one): the
+//   elevation triangle mapped by s = -(u + t/2)/sqrt(2), length 2 sqrt(2) t.
+MechanismSet corner_overturning(const CornerOverturningParams& p) {
+  const std::string lab = "corner_overturning: ";
+  require_positive(p.height, lab + "height", "m");
+  require_positive(p.thickness, lab + "thickness", "m");
+  require_positive(p.unit_weight, lab + "unit_weight", "kN/m^3");
+  require_positive(p.wall_length, lab + "wall_length", "m");
+  require_non_negative(p.base_z, lab + "base_z", "m");
+  require_non_negative(p.top_weight, lab + "top_weight", "kN");
+  require_non_negative(p.tie, lab + "tie", "kN");
+  MechanismSet set;
+  set.type = "corner_overturning";
+  set.parameter_name = "crack angle beta from the vertical (deg)";
+  const std::vector<double> betas = wedge_angles(lab, p, set.searched);
+  const double t = p.thickness, z0 = p.base_z, zt = p.base_z + p.height, r = 1.0 / std::sqrt(2.0);
+  const double s_arm = -1.5 * t * r;  // the arms' inner edge, u = t at mid-thickness
+  for (double beta : betas) {
+    const double tb = std::tan(beta * units::deg);
+    const double reach = std::min(p.height * tb, p.wall_length);
+    const double zc = z0 + reach / tb;  // where the crack meets the wall's end
+    Block pillar, arms;
+    pillar.name = "corner pillar";
+    arms.name = "wall arms";
+    pillar.unit_weight = arms.unit_weight = p.unit_weight;
+    pillar.length = t * r;
+    arms.length = 2.0 * t / r;
+    pillar.polygon = {V(0.0, z0), V(0.0, zt), V(-2.0 * t * r, zt), V(-2.0 * t * r, z0)};
+    arms.polygon = {V(s_arm, z0), V(s_arm, zt), V(s_arm - reach * r, zt)};
+    if (p.height * tb > p.wall_length) arms.polygon.push_back(V(s_arm - reach * r, zc));
+    std::vector<Constraint> cons{ground_hinge("corner hinge", 0, V(0.0, z0)),
+                                 hinge("weld bottom", 0, 1, V(s_arm, z0)), hinge("weld top", 0, 1, V(s_arm, zt))};
+    const V top(-t * r, zt);
+    std::vector<Load> loads;
+    if (p.top_weight > 0.0) loads.push_back(weight("top load", 0, top, p.top_weight));
+    if (p.thrust != 0.0) loads.push_back(force(LoadType::Force, "thrust", 0, top, V(p.thrust, 0.0)));
+    if (p.tie > 0.0) loads.push_back(force(LoadType::Tie, "ties (resultant)", 0, top, V(-p.tie / r, 0.0)));
+    set.candidates.push_back({"crack beta = " + fmt("%.1f", beta) + " deg", Chain({pillar, arms}, cons, loads),
+                              z0, beta});
+  }
   return set;
 }
 

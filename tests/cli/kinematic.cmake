@@ -23,3 +23,4 @@ assess_cli_error_test(kinematic_negative_thickness "/mechanism/storeys/0/thickne
 assess_cli_error_test(kinematic_not_activated "never activated: alpha0 = -" kinematic tests/cli/kinematic_bad/not_activated.json)
 assess_cli_error_test(kinematic_unknown_key "unknown key \"thicknes\" \\(did you mean \"thickness\"\\?\\)" kinematic tests/cli/kinematic_bad/unknown_key.json)
 assess_cli_error_test(kinematic_missing_file "kinematic|exist" kinematic tests/cli/kinematic_bad/none.json)
+assess_cli_test(kinematic_corner ARGS kinematic mechanisms/corner.json PASS "corner_overturning, governing candidate: crack beta = 38\\.7 deg")

@@ -177,3 +177,62 @@ TEST_CASE("composite overturning: the wedge's moments add to the façade's, alph
   const double expected = (Wf * t / 2 + Ww * (t + h * tb / 3)) / (Wf * h / 2 + Ww * 2 * h / 3);
   CHECK_CLOSE(assess::activation_multiplier(set.candidates[0].chain), expected, abs_tol(tol_alpha));
 }
+
+TEST_CASE("corner overturning: alpha0 and e* of the 3-D wedge by hand, about the axis normal to the bisector") {
+  // Symmetric corner, walls of thickness t, wedge height h, cracks at beta from
+  // the vertical starting at the other wall's inner face. Rotation theta = 1
+  // about the horizontal axis through the outer corner edge, normal to the
+  // bisector; a plan point at depths (u, v) from the outer faces has lever arm
+  // (u + v)/sqrt(2) about that axis (3-D moments, not the planar chain):
+  //   pillar (t x t x h): W_p = g t^2 h,        arm (t/2 + t/2)/sqrt2 = t/sqrt2, height h/2;
+  //   two arms (triangles of legs h, h tan b):  W_a = g t h^2 tan b,
+  //            arm (t + h tan b / 3 + t/2)/sqrt2, height 2h/3;
+  //   top weight N on the pillar's centre: arm t/sqrt2, height h;
+  //   thrust H along the bisector and two ties T along the walls (resultant
+  //   sqrt2 T along the bisector, inward) at height h.
+  // alpha0 = (sum W arm - H h + sqrt2 T h) / (sum W height)   [C8.7.1.1]
+  const double t = 0.5, h = 7.0, beta = 35.0, N = 20.0 * kN, H = 4.0 * kN, T = 6.0 * kN;
+  const double r = 1.0 / std::sqrt(2.0), tb = std::tan(beta * assess::units::deg);
+  const double Wp = gam * t * t * h, Wa = gam * t * h * h * tb;
+  assess::CornerOverturningParams p;
+  p.height = h;
+  p.thickness = t;
+  p.unit_weight = gam;
+  p.wall_length = 20.0;  // longer than h tan(beta): triangular arms
+  p.base_z = 2.0;
+  p.beta_deg = beta;
+  {
+    const auto set = assess::corner_overturning(p);
+    REQUIRE(set.candidates.size() == 1);
+    const double expected = (Wp * t * r + Wa * (1.5 * t + h * tb / 3) * r) / (Wp * h / 2 + Wa * 2 * h / 3);
+    CHECK_CLOSE(assess::activation_multiplier(set.candidates[0].chain), expected, abs_tol(tol_alpha));
+    CHECK(set.candidates[0].Z == 2.0);
+    // e* = (sum W dx)^2 / (sum W  sum W dx^2) [C8.7.1.5], dx = height above the
+    // axis: integral of z^2 dW = g t^2 h^3/3 (pillar) + g t tan b h^4/2 (arms).
+    const double sWdx = Wp * h / 2 + Wa * 2 * h / 3;
+    const double sWdx2 = gam * t * t * h * h * h / 3 + gam * t * tb * h * h * h * h / 2;
+    const auto res = assess::analyse_kinematic(set.candidates[0].chain);
+    CHECK_CLOSE(res.sum_W, Wp + Wa, rel_tol(tol_alpha));
+    CHECK_CLOSE(res.e_star, sWdx * sWdx / ((Wp + Wa) * sWdx2), abs_tol(tol_alpha));
+  }
+  SUBCASE("with a top weight, a hip-rafter thrust and two corner ties") {
+    p.top_weight = N;
+    p.thrust = H;
+    p.tie = T;
+    const auto set = assess::corner_overturning(p);
+    const double expected = (Wp * t * r + Wa * (1.5 * t + h * tb / 3) * r + N * t * r - H * h + std::sqrt(2.0) * T * h) /
+                            (Wp * h / 2 + Wa * 2 * h / 3 + N * h);
+    CHECK_CLOSE(assess::activation_multiplier(set.candidates[0].chain), expected, abs_tol(tol_alpha));
+  }
+  SUBCASE("walls shorter than h tan(beta): trapezoidal arms") {
+    // Arm of reach L < h tan b: triangle of legs L/tan b, L (apex at the
+    // bottom) plus the rectangle L x (h - L/tan b) above it.
+    const double L = 2.0, zc = L / tb;
+    p.wall_length = L;
+    const auto set = assess::corner_overturning(p);
+    const double Wtri = gam * t * zc * L, Wrect = gam * 2 * t * L * (h - zc);
+    const double resisting = Wp * t * r + Wtri * (1.5 * t + L / 3) * r + Wrect * (1.5 * t + L / 2) * r;
+    const double overturning = Wp * h / 2 + Wtri * 2 * zc / 3 + Wrect * (zc + h) / 2;
+    CHECK_CLOSE(assess::activation_multiplier(set.candidates[0].chain), resisting / overturning, abs_tol(tol_alpha));
+  }
+}

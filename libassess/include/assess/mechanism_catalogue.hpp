@@ -128,4 +128,37 @@ struct GableParams {
 };
 MechanismSet gable_overturning(const GableParams& p);
 
+/// Corner overturning (ribaltamento del cantonale), symmetric corner: two
+/// orthogonal walls of equal thickness, each cracked along a line at angle
+/// beta from the vertical that starts at the inner face of the other wall at
+/// the hinge level; the wedge rotates about the horizontal axis through the
+/// outer corner edge at the hinge level, normal to the corner's bisector, under
+/// a horizontal action along the bisector. The chain is the exact planar
+/// reduction in the bisector's vertical plane (x = outward distance along the
+/// bisector from the hinge axis), docs/theory/kinematic.md §5: a corner pillar
+/// (plan t x t) and the two arms (triangles, or trapezoids where the wall ends).
+struct CornerOverturningParams {
+  double height = 0.0;       ///< wedge height above the hinge (m)
+  double thickness = 0.0;    ///< thickness of both walls (m)
+  double unit_weight = 0.0;  ///< N/m^3
+  /// Length of each wall beyond the other wall's inner face (m): bounds the arm.
+  double wall_length = 0.0;
+  double base_z = 0.0;       ///< hinge height above the foundation (m)
+  /// Weight carried on top of the corner (hip rafter, floor) at the pillar's
+  /// centre (N), bearing and seismic.
+  double top_weight = 0.0;
+  /// Horizontal thrust at the top along the bisector, outward (N) (hip rafter).
+  double thrust = 0.0;
+  /// Force of EACH of the two tie rods along the walls anchored at the corner
+  /// top (N); their resultant along the bisector is sqrt(2) tie, inward.
+  double tie = 0.0;
+  /// Crack angle from the vertical (deg), as CompositeOverturningParams.
+  std::optional<double> beta_deg;
+  std::optional<double> unit_length;     ///< m
+  std::optional<double> course_height;   ///< m
+  double beta_min_deg = 10.0, beta_max_deg = 60.0;
+  int search_points = 6;
+};
+MechanismSet corner_overturning(const CornerOverturningParams& p);
+
 }  // namespace assess
