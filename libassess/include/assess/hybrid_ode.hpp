@@ -103,10 +103,11 @@ struct HybridOdeResult {
 };
 
 /// Integrates `sys` from (t0, y, mode) to t_end, locating events by
-/// re-stepping from the saved start of the step with a bracketing root
-/// finder (Illinois regula falsi with bisection safeguard) on the step size
-/// until the bracket is narrower than event_time_tol, applying the jump and
-/// resetting the stepper. `y` (size sys.dimension()) holds the final state.
+/// re-stepping from the saved start of the step until a bracket on the step
+/// size is narrower than event_time_tol (re-step sizes guessed from the cubic
+/// Hermite interpolant of the step, then Illinois regula falsi with bisection
+/// safeguard), applying the jump at the fired end of the bracket and resetting
+/// the stepper. `y` (size sys.dimension()) holds the final state.
 HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, double* y, int mode,
                                  const HybridOdeOptions& options = {});
 
