@@ -137,8 +137,9 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
   std::vector<double> y0(n), f0(n), f(n), ytry(n), ftry(n), yerr(n);
   std::vector<double> y1(n), f1(n), yb(n), yk(n), yh(n);  // event location
   std::vector<double> g_start, g_end;
+  std::vector<EventDirection> dirs;  // directions of the events of the current mode
   auto eval_events = [&](double tt, const double* yy, std::vector<double>& g) {
-    g.resize(sys.event_count(mode));
+    g.resize(dirs.size());
     for (std::size_t k = 0; k < g.size(); ++k) g[k] = sys.event(k, tt, yy, mode);
   };
   double t = t0;
@@ -149,8 +150,10 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
     res.mode = mode;
     return res;
   };
-  auto restart = [&]() {  // after a jump: fresh derivative and event values
+  auto restart = [&]() {  // after a jump: the mode's events, fresh derivative and event values
     gsl_odeiv2_step_reset(step.get());
+    dirs.resize(sys.event_count(mode));
+    for (std::size_t k = 0; k < dirs.size(); ++k) dirs[k] = sys.event_direction(k, mode);
     eval_events(t, y, g_start);
     return gsl_rhs(t, y, f.data(), &adapter) == GSL_SUCCESS;
   };
@@ -173,8 +176,11 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
   double h = std::min(options.h_initial, std::max(t_end - t0, 0.0));
   if (!restart()) return finish(HybridTermination::integrator_error, "right-hand side failed at the start");
 
+  // The next breakpoint after t stays valid while t has not reached it (t never decreases).
+  double next_bp = -std::numeric_limits<double>::infinity();
   while (t < t_end) {
-    double t_bp = std::min(sys.next_breakpoint(t), t_end);
+    if (!(t < next_bp)) next_bp = sys.next_breakpoint(t);
+    double t_bp = std::min(next_bp, t_end);
     if (!(t_bp > t)) t_bp = t_end;
     if (t_bp - t <= 4.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::fabs(t))) {
       t = t_bp;  // a sliver left by an event at a breakpoint: nothing to integrate
@@ -190,7 +196,7 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
       std::size_t k_hit = g_end.size();
       double best = t_next;
       for (std::size_t k = 0; k < g_end.size(); ++k) {
-        const EventDirection dir = sys.event_direction(k, mode);
+        const EventDirection dir = dirs[k];
         if (!fired(dir, g_start[k], g_end[k])) continue;
         auto g_of_t = [&](double tt) { return sys.event(k, tt, y0.data(), mode); };
         const double g_b = best == t_next ? g_end[k] : g_of_t(best);
@@ -254,7 +260,7 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
     eval_events(t, y, g_end);
     std::size_t k_hit = g_end.size();
     for (std::size_t k = 0; k < g_end.size(); ++k)
-      if (fired(sys.event_direction(k, mode), g_start[k], g_end[k])) {
+      if (fired(dirs[k], g_start[k], g_end[k])) {
         k_hit = k;
         break;
       }
@@ -274,7 +280,7 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
     double best_h = h_step;                       // earliest fired end so far
     std::copy(y1.begin(), y1.end(), yb.begin());  // the state there
     for (std::size_t k = k_hit; k < g_end.size(); ++k) {
-      const EventDirection dir = sys.event_direction(k, mode);
+      const EventDirection dir = dirs[k];
       if (!fired(dir, g_start[k], g_end[k])) continue;
       auto g_of_h = [&](double hh) {  // g_k after a real GSL step hh from (t_prev, y0)
         std::copy(y0.begin(), y0.end(), ytry.begin());

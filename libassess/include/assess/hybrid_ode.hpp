@@ -42,7 +42,8 @@ class HybridSystem {
   virtual std::size_t dimension() const = 0;
   /// dy/dt at (t, y) in `mode`. Return false if the derivative cannot be computed.
   virtual bool rhs(double t, const double* y, int mode, double* dydt) const = 0;
-  /// Number of event functions active in `mode`.
+  /// Number of event functions active in `mode`. The integrator reads the
+  /// count and the directions once per mode (at the start and after each jump).
   virtual std::size_t event_count(int mode) const = 0;
   /// Event function g_k(t, y) in `mode` and its direction.
   virtual double event(std::size_t k, double t, const double* y, int mode) const = 0;
@@ -55,7 +56,8 @@ class HybridSystem {
   virtual void on_step(double t0, const double* y0, const double* f0, double t1, const double* y1,
                        const double* f1, int mode) = 0;
   /// Next time > t at which the right-hand side is not smooth (e.g. a record
-  /// sample); the integrator never steps across it. +inf if none.
+  /// sample); the integrator never steps across it. +inf if none. Called
+  /// again only once t has reached the previous answer.
   virtual double next_breakpoint(double t) const = 0;
   /// True if dy/dt is identically zero in `mode` (e.g. a body at rest): the
   /// integrator then takes no Runge-Kutta steps, only evaluates the event
