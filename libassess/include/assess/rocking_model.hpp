@@ -129,7 +129,10 @@ class RockingModel {
   double theta_u_[2] = {0.0, 0.0};
   double theta_pk_[2] = {0.0, 0.0};
   // cached constants
-  double WR_ = 0.0, Wb_ = 0.0, M_ext_ = 0.0, inv_I0_ = 0.0, m_R_ = 0.0, kb3_ = 0.0, c_partial_ = 0.0, sin_a_ = 0.0, cos_a_ = 0.0;
+  double WR_ = 0.0, kb3_ = 0.0, c_partial_ = 0.0, cos_a_ = 0.0;
+  // the same per unit I0, for angular_acceleration: W R sin(alpha), W R cos(alpha), M_ext, W b,
+  // kb3_, c_partial_ (1/s^2) and m R cos(alpha), m R sin(alpha) (1/m)
+  double g_sin_ = 0.0, g_cos_ = 0.0, ext_ = 0.0, wb_ = 0.0, kb3_i_ = 0.0, cp_ = 0.0, u_cos_ = 0.0, u_sin_ = 0.0;
 };
 
 namespace detail {
@@ -160,21 +163,22 @@ inline void sin_cos(double x, double& sn, double& cs) {
 // Seed Eq. 1: I0 theta'' = -M(theta) + M_ext - (W/g) ug R cos(alpha s - theta), with
 // M = W R sin(alpha s - theta) [- s W b + (2/3) k b^3 theta (full contact)]
 //                              [- s (W/3) sqrt(2W/(k |theta|)) (partial contact)].
+// Expanding sin and cos(alpha s - theta) by the angle-difference formulas:
+// theta'' = P cos(theta) + Q sin(theta) + F(theta), with
+//   P = -(s W R sin(alpha) + m R cos(alpha) ug) / I0,  Q = (W R cos(alpha) - s m R sin(alpha) ug) / I0,
+//   F = M_ext / I0 + [s W b - (2/3) k b^3 theta] / I0 (full) or + s (W/3) sqrt(2W/(k s theta)) / I0 (partial);
+// P and Q do not depend on theta, which keeps the chain of operations after
+// sin(theta), cos(theta) and the square root short.
 inline double RockingModel::angular_acceleration(double theta, int pivot, bool partial, double ug) const {
   const double s = pivot >= 0 ? 1.0 : -1.0;
-  double st, ct;  // sin(alpha s - theta), cos(alpha s - theta) by the angle-difference formulas
-  detail::sin_cos(theta, st, ct);
-  const double sn = s * sin_a_ * ct - cos_a_ * st;
-  const double cs = cos_a_ * ct + s * sin_a_ * st;
-  double M = WR_ * sn;
+  const double P = -(s * g_sin_ + u_cos_ * ug), Q = g_cos_ - s * u_sin_ * ug;
+  double F = ext_;
   if (kb3_ > 0.0) {  // Winkler foundation
-    if (!partial) {
-      M += -s * Wb_ + kb3_ * theta;
-    } else {
-      M -= s * c_partial_ / std::sqrt(std::max(s * theta, 1e-300));
-    }
+    F += partial ? s * cp_ / std::sqrt(std::max(s * theta, 1e-300)) : s * wb_ - kb3_i_ * theta;
   }
-  return (M_ext_ - M - m_R_ * ug * cs) * inv_I0_;
+  double st, ct;
+  detail::sin_cos(theta, st, ct);
+  return (P * ct + Q * st) + F;
 }
 
 }  // namespace assess
