@@ -141,17 +141,21 @@ namespace detail {
 /// collapse) truncated Taylor series whose remainders are below 1e-20, i.e.
 /// exact to rounding: to x^7 / x^8 for |x| <= 1/64 (remainders x^9/9!, x^10/10!)
 /// and to x^13 / x^14 for |x| <= 1/4 (x^15/15!, x^16/16!). They cost a fraction
-/// of the library calls.
+/// of the library calls. Written x + x^3 p(x^2) and 1 + x^2 q(x^2) (the last
+/// addition rounds a small correction, as in Horner's rule), with p and q by
+/// Estrin's scheme (pairs of terms, then powers x^4, x^8): a shorter chain of
+/// dependent operations than Horner's rule.
 inline void sin_cos(double x, double& sn, double& cs) {
-  const double ax = std::fabs(x), x2 = x * x;
+  const double ax = std::fabs(x), x2 = x * x, x4 = x2 * x2;
   if (ax <= 1.0 / 64) {
-    sn = x * (1.0 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040))));
-    cs = 1.0 + x2 * (-0.5 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320))));
+    sn = x + (x * x2) * ((-1.0 / 6 + x2 * (1.0 / 120)) + x4 * (-1.0 / 5040));
+    cs = 1.0 + x2 * ((-0.5 + x2 * (1.0 / 24)) + x4 * (-1.0 / 720 + x2 * (1.0 / 40320)));
   } else if (ax <= 0.25) {
-    sn = x * (1.0 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 * (1.0 / 362880 +
-         x2 * (-1.0 / 39916800 + x2 * (1.0 / 6227020800.0)))))));
-    cs = 1.0 + x2 * (-0.5 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 + x2 * (-1.0 / 3628800 +
-         x2 * (1.0 / 479001600.0 + x2 * (-1.0 / 87178291200.0)))))));
+    const double x8 = x4 * x4;
+    sn = x + (x * x2) * (((-1.0 / 6 + x2 * (1.0 / 120)) + x4 * (-1.0 / 5040 + x2 * (1.0 / 362880))) +
+                         x8 * (-1.0 / 39916800 + x2 * (1.0 / 6227020800.0)));
+    cs = 1.0 + x2 * (((-0.5 + x2 * (1.0 / 24)) + x4 * (-1.0 / 720 + x2 * (1.0 / 40320))) +
+                     x8 * ((-1.0 / 3628800 + x2 * (1.0 / 479001600.0)) + x4 * (-1.0 / 87178291200.0)));
   } else {
     sn = std::sin(x);
     cs = std::cos(x);
