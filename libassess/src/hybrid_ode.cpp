@@ -9,16 +9,24 @@
 //   t, y, ftry      end of the step (ftry becomes f, the next start derivative)
 //   g_start, g_end  event functions at the start and at the end of the step
 //   hh              trial step size while locating an event from (t_prev, y0)
+//   y1, f1          end of a step in which an event fired (for the interpolant)
+//   best_h, yb      earliest fired end of an event bracket so far, its state
+//   yk              state of the last re-step that fell on the fired side
 //
 // Event location: a step across which some g_k changes sign in its direction
 // is re-taken from its saved start with gsl_odeiv2_step_apply and step sizes
-// chosen by an Illinois/bisection bracket on hh (bracket_root.hpp), until the
-// bracket is narrower than event_time_tol; the state at the fired end of the
-// bracket is handed to the system's jump map, then the stepper is reset (GSL
-// manual: step_reset "should be used whenever the next use of s will not be a
-// continuation of a previous step"). Re-stepping is valid for one-step
-// Runge-Kutta methods only, which is why only explicit RK steppers are offered
-// (research notes rocking.md §3.1).
+// hh that narrow a bracket on hh until it is narrower than event_time_tol.
+// The first hh are guesses from the cubic Hermite interpolant of the step:
+// its root, a Newton step from there with the real g_k and the interpolant's
+// slope, then the two ends of a bracket narrower than event_time_tol around
+// it, each checked by a real re-step; an Illinois/bisection search
+// (bracket_root.hpp) finishes, or does all the work when a guess misses. The
+// state at the fired end of the bracket, kept from its re-step, is handed to
+// the system's jump map, then the stepper is reset (GSL manual: step_reset
+// "should be used whenever the next use of s will not be a continuation of a
+// previous step"). Re-stepping is valid for one-step Runge-Kutta methods
+// only, which is why only explicit RK steppers are offered (research notes
+// rocking.md §3.1).
 #include "assess/hybrid_ode.hpp"
 
 #include "assess/error.hpp"
@@ -70,6 +78,15 @@ bool fired(EventDirection d, double g_start, double g_end) {
   return d == EventDirection::falling ? (g_start >= 0.0 && g_end < 0.0) : (g_start <= 0.0 && g_end > 0.0);
 }
 
+/// Cubic Hermite interpolant of a step of length h at s in [0, 1] from the
+/// values and derivatives at both ends, per component: out = H(s).
+void hermite(double h, double s, const double* y0, const double* f0, const double* y1, const double* f1,
+             double* out, std::size_t n) {
+  const double s2 = s * s, s3 = s2 * s;
+  const double c_y0 = 2 * s3 - 3 * s2 + 1, c_f0 = (s3 - 2 * s2 + s) * h, c_y1 = 3 * s2 - 2 * s3, c_f1 = (s3 - s2) * h;
+  for (std::size_t i = 0; i < n; ++i) out[i] = c_y0 * y0[i] + c_f0 * f0[i] + c_y1 * y1[i] + c_f1 * f1[i];
+}
+
 std::once_flag gsl_handler_once;
 
 }  // namespace
@@ -118,9 +135,11 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
   // y0/f0: start of the step; f: dy/dt at y (first same as last: the end
   // derivative of an accepted step is the start derivative of the next).
   std::vector<double> y0(n), f0(n), f(n), ytry(n), ftry(n), yerr(n);
+  std::vector<double> y1(n), f1(n), yb(n), yk(n), yh(n);  // event location
   std::vector<double> g_start, g_end;
+  std::vector<EventDirection> dirs;  // directions of the events of the current mode
   auto eval_events = [&](double tt, const double* yy, std::vector<double>& g) {
-    g.resize(sys.event_count(mode));
+    g.resize(dirs.size());
     for (std::size_t k = 0; k < g.size(); ++k) g[k] = sys.event(k, tt, yy, mode);
   };
   double t = t0;
@@ -131,8 +150,10 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
     res.mode = mode;
     return res;
   };
-  auto restart = [&]() {  // after a jump: fresh derivative and event values
+  auto restart = [&]() {  // after a jump: the mode's events, fresh derivative and event values
     gsl_odeiv2_step_reset(step.get());
+    dirs.resize(sys.event_count(mode));
+    for (std::size_t k = 0; k < dirs.size(); ++k) dirs[k] = sys.event_direction(k, mode);
     eval_events(t, y, g_start);
     return gsl_rhs(t, y, f.data(), &adapter) == GSL_SUCCESS;
   };
@@ -155,8 +176,11 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
   double h = std::min(options.h_initial, std::max(t_end - t0, 0.0));
   if (!restart()) return finish(HybridTermination::integrator_error, "right-hand side failed at the start");
 
+  // The next breakpoint after t stays valid while t has not reached it (t never decreases).
+  double next_bp = -std::numeric_limits<double>::infinity();
   while (t < t_end) {
-    double t_bp = std::min(sys.next_breakpoint(t), t_end);
+    if (!(t < next_bp)) next_bp = sys.next_breakpoint(t);
+    double t_bp = std::min(next_bp, t_end);
     if (!(t_bp > t)) t_bp = t_end;
     if (t_bp - t <= 4.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::fabs(t))) {
       t = t_bp;  // a sliver left by an event at a breakpoint: nothing to integrate
@@ -172,7 +196,7 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
       std::size_t k_hit = g_end.size();
       double best = t_next;
       for (std::size_t k = 0; k < g_end.size(); ++k) {
-        const EventDirection dir = sys.event_direction(k, mode);
+        const EventDirection dir = dirs[k];
         if (!fired(dir, g_start[k], g_end[k])) continue;
         auto g_of_t = [&](double tt) { return sys.event(k, tt, y0.data(), mode); };
         const double g_b = best == t_next ? g_end[k] : g_of_t(best);
@@ -236,7 +260,7 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
     eval_events(t, y, g_end);
     std::size_t k_hit = g_end.size();
     for (std::size_t k = 0; k < g_end.size(); ++k)
-      if (fired(sys.event_direction(k, mode), g_start[k], g_end[k])) {
+      if (fired(dirs[k], g_start[k], g_end[k])) {
         k_hit = k;
         break;
       }
@@ -248,39 +272,77 @@ HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, dou
     }
 
     // Locate the earliest of the fired events by re-stepping from (t_prev, y0).
+    // The end of the step (y, ftry) stays in y1, f1 for the dense interpolant.
+    std::copy(y, y + n, y1.begin());
+    f1.swap(ftry);
     const double h_step = t - t_prev;
     bool step_failed = false;
-    double best_h = h_step;
+    double best_h = h_step;                       // earliest fired end so far
+    std::copy(y1.begin(), y1.end(), yb.begin());  // the state there
     for (std::size_t k = k_hit; k < g_end.size(); ++k) {
-      const EventDirection dir = sys.event_direction(k, mode);
+      const EventDirection dir = dirs[k];
       if (!fired(dir, g_start[k], g_end[k])) continue;
-      auto g_of_h = [&](double hh) {
+      auto g_of_h = [&](double hh) {  // g_k after a real GSL step hh from (t_prev, y0)
         std::copy(y0.begin(), y0.end(), ytry.begin());
         ++res.event_steps;
         if (gsl_odeiv2_step_apply(step.get(), t_prev, hh, ytry.data(), yerr.data(), f0.data(), nullptr, &gsys) !=
             GSL_SUCCESS)
           step_failed = true;
-        return sys.event(k, t_prev + hh, ytry.data(), mode);
+        const double g = sys.event(k, t_prev + hh, ytry.data(), mode);
+        if (fired(dir, g_start[k], g)) std::copy(ytry.begin(), ytry.end(), yk.begin());  // a new bracket end b
+        return g;
+      };
+      auto g_dense = [&](double hh) {  // g_k on the cubic Hermite interpolant of the step
+        hermite(h_step, hh / h_step, y0.data(), f0.data(), y1.data(), f1.data(), yh.data(), n);
+        return sys.event(k, t_prev + hh, yh.data(), mode);
       };
       const double g_b = best_h == h_step ? g_end[k] : g_of_h(best_h);
       if (!fired(dir, g_start[k], g_b)) continue;  // fires only after an earlier event
-      const auto br = detail::shrink_bracket(g_of_h, {0.0, g_start[k], best_h, g_b}, options.event_time_tol);
+      detail::Bracket br{0.0, g_start[k], best_h, g_b};
+      auto narrow = [&](double hh) {  // a real step to hh inside the bracket narrows it
+        if (!(hh > br.a && hh < br.b)) return;
+        const double g = g_of_h(hh);
+        if (fired(dir, g_start[k], g)) br.b = hh, br.fb = g; else br.a = hh, br.fa = g;
+      };
+      // Guesses from the dense output, each checked by a real step: the root
+      // c1 of the interpolant; a Newton step from c1 with the real g_k(c1)
+      // and the interpolant's slope (central difference over 2e-6 of the
+      // step); then both ends of a bracket 0.8 event_time_tol wide around it.
+      // The bracketing search finishes, or does all the work when a guess misses.
+      const double gd_b = g_dense(br.b);
+      if (fired(dir, g_start[k], gd_b)) {
+        const double c1 =
+            detail::shrink_bracket(g_dense, {0.0, g_start[k], br.b, gd_b}, 1e-3 * options.event_time_tol).b;
+        narrow(c1);
+        if (c1 == br.a || c1 == br.b) {
+          const double d = 1e-6 * h_step;
+          const double slope = (g_dense(c1 + d) - g_dense(c1 - d)) / (2.0 * d);
+          const double c2 = c1 - (c1 == br.a ? br.fa : br.fb) / slope;
+          narrow(c2 - 0.4 * options.event_time_tol);
+          narrow(c2 + 0.4 * options.event_time_tol);
+        }
+      }
+      br = detail::shrink_bracket(g_of_h, br, options.event_time_tol);
       if (!step_failed && fired(dir, g_start[k], br.fb) && br.b <= best_h) {
+        if (br.b < best_h) std::copy(yk.begin(), yk.end(), yb.begin());  // br.b was the last fired re-step
         best_h = br.b;
         k_hit = k;
       }
     }
-    // State at the fired end of the bracket (with its derivative for on_step).
-    std::copy(y0.begin(), y0.end(), ytry.begin());
-    ++res.event_steps;
-    if (step_failed || gsl_odeiv2_step_apply(step.get(), t_prev, best_h, ytry.data(), yerr.data(), f0.data(),
-                                             ftry.data(), &gsys) != GSL_SUCCESS) {
+    if (step_failed) {
       t = t_prev;
       std::copy(y0.begin(), y0.end(), y);
       return finish(HybridTermination::integrator_error, "GSL step failed while locating an event");
     }
+    // The state at the fired end of the bracket, from a real GSL step, with
+    // its derivative (the same evaluation as GSL's dydt_out) for on_step.
     t = t_prev + best_h;
-    std::copy(ytry.begin(), ytry.end(), y);
+    std::copy(yb.begin(), yb.end(), y);
+    if (best_h == h_step) {
+      ftry.swap(f1);
+    } else if (gsl_rhs(t, y, ftry.data(), &adapter) != GSL_SUCCESS) {
+      return finish(HybridTermination::integrator_error, "right-hand side failed while locating an event");
+    }
     sys.on_step(t_prev, y0.data(), f0.data(), t, y, ftry.data(), mode);
 
     if (auto end = fire(k_hit)) return *end;

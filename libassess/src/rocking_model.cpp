@@ -85,11 +85,6 @@ RockingModel::RockingModel(const RockingBody& body, Foundation foundation, Sided
   }
 
   WR_ = W * body_.R;
-  Wb_ = W * b;
-  M_ext_ = body_.M_ext;
-  inv_I0_ = 1.0 / body_.I0;
-  m_R_ = m * body_.R;
-  sin_a_ = std::sin(body_.alpha);
   cos_a_ = std::cos(body_.alpha);
   if (!foundation_.is_rigid()) {
     const double k = foundation_.k;
@@ -97,6 +92,15 @@ RockingModel::RockingModel(const RockingBody& body, Foundation foundation, Sided
     kb3_ = 2.0 / 3.0 * k * b * b * b;
     c_partial_ = W / 3.0 * std::sqrt(2.0 * W / k);
   }
+  const double sin_a = std::sin(body_.alpha), I0 = body_.I0;
+  g_sin_ = WR_ * sin_a / I0;
+  g_cos_ = WR_ * cos_a_ / I0;
+  ext_ = body_.M_ext / I0;
+  wb_ = W * b / I0;
+  kb3_i_ = kb3_ / I0;
+  cp_ = c_partial_ / I0;
+  u_cos_ = m * body_.R * cos_a_ / I0;
+  u_sin_ = m * body_.R * sin_a / I0;
 
   // Peak and zero of the net restoring moment on each side. On [0, alpha] each
   // branch is concave, so the derivative decreases and the peak is unique.

@@ -160,3 +160,13 @@ TEST_CASE("the step limit ends a run with its own termination reason") {
   CHECK(r.steps == 50);
   CHECK(std::string(to_string(r.termination)) == "step_limit");
 }
+
+TEST_CASE("event location: guesses from the step's interpolant need 3 re-steps per impact of the ball") {
+  Ball ball(0.5);
+  HybridOdeOptions o;
+  o.max_events = 8;
+  double y[2] = {1.0, 0.0};
+  const HybridOdeResult r = integrate_hybrid(ball, 0.0, 10.0, y, 0, o);
+  CHECK(r.events == 8);
+  CHECK(r.event_steps <= 3 * r.events);
+}

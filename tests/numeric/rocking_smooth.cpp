@@ -1,7 +1,8 @@
 // Smooth block on a no-tension Winkler foundation (seed paper Eq. 1):
 // continuity at theta_cr, theta_u, peak moment and capacity (rocking.md §2.7),
 // energy demand/capacity (§2.8), free-oscillation period, convergence to the
-// rigid block as k grows, and invalid models.
+// rigid block as k grows, invalid models, and the equation of motion as coded
+// (angular_acceleration, sin_cos) against Eq. 1 with the library functions.
 // Block of rocking.md §2.7: b = 0.2 m, h = 1.0 m, gamma = 18 kN/m^3 (W = 14.4 kN/m).
 #include <doctest/doctest.h>
 
@@ -34,6 +35,11 @@ constexpr double kMomentTol = 0.05;
 constexpr double kPeriodTol = 1e-5;
 // moment continuity at theta_cr (N m/m): rounding of terms of size W b = 2880 N m/m.
 constexpr double kContinuityTol = 1e-9;
+// theta'' (rad/s^2): rounding of rearranged sums of terms of size W R / I0 = 7.2 rad/s^2
+// and larger (observed below 1e-12; a wrong term or sign would be >= 1e-3).
+constexpr double kAccelerationTol = 1e-12;
+// sin and cos (relative): 2 ulp, the Taylor remainders being below 1e-20.
+constexpr double kSinCosRelTol = 4.5e-16;
 
 const RockingBody kBlock = RockingBody::rectangle(0.4, 2.0, 18.0 * units::kN);
 
@@ -179,4 +185,37 @@ TEST_CASE("invalid models are refused with a clear message") {
   CHECK_THROWS_AS(RockingModel(kBlock, Foundation::rigid(), Sidedness::one_sided, Restitution::given(0.5)), InputError);
   CHECK_THROWS_AS(RockingBody::rectangle(0.0, 2.0, 18e3), InputError);
   CHECK_THROWS_AS(RockingBody::rectangle(0.4, -1.0, 18e3), InputError);
+}
+
+TEST_CASE("sin_cos matches the library sin and cos to 2 ulp on each branch") {
+  for (double x = -0.3; x <= 0.3; x += 1e-4) {
+    double sn = 0.0, cs = 0.0;
+    detail::sin_cos(x, sn, cs);
+    CAPTURE(x);
+    CHECK_CLOSE(sn, std::sin(x), rel_tol(kSinCosRelTol));
+    CHECK_CLOSE(cs, std::cos(x), rel_tol(kSinCosRelTol));
+  }
+}
+
+TEST_CASE("angular_acceleration is seed Eq. 1 with the restoring moment and library cos, rigid and smooth") {
+  const double m = kBlock.W / units::g;
+  for (const RockingModel& model : {smooth(1e9), RockingModel(kBlock, Foundation::rigid(), Sidedness::two_sided,
+                                                              Restitution::housner())}) {
+    for (int s : {+1, -1})
+      for (bool partial : {false, true})
+        for (double a : {1e-5, 3e-4, 0.01, 0.1, 0.2, 0.3})
+          for (double ug : {0.0, 2.5, -4.0}) {
+            if (partial && model.foundation().is_rigid()) continue;
+            const double theta = s * a;
+            // seed Eq. 1: I0 theta'' = -M(theta) + M_ext - (W/g) ug R cos(alpha s - theta)
+            const double expected = (kBlock.M_ext - model.restoring_moment(theta, s, partial) -
+                                     m * ug * kBlock.R * std::cos(kBlock.alpha * s - theta)) /
+                                    kBlock.I0;
+            CAPTURE(s);
+            CAPTURE(partial);
+            CAPTURE(theta);
+            CAPTURE(ug);
+            CHECK_CLOSE(model.angular_acceleration(theta, s, partial, ug), expected, abs_tol(kAccelerationTol));
+          }
+  }
 }

@@ -42,7 +42,8 @@ class HybridSystem {
   virtual std::size_t dimension() const = 0;
   /// dy/dt at (t, y) in `mode`. Return false if the derivative cannot be computed.
   virtual bool rhs(double t, const double* y, int mode, double* dydt) const = 0;
-  /// Number of event functions active in `mode`.
+  /// Number of event functions active in `mode`. The integrator reads the
+  /// count and the directions once per mode (at the start and after each jump).
   virtual std::size_t event_count(int mode) const = 0;
   /// Event function g_k(t, y) in `mode` and its direction.
   virtual double event(std::size_t k, double t, const double* y, int mode) const = 0;
@@ -55,7 +56,8 @@ class HybridSystem {
   virtual void on_step(double t0, const double* y0, const double* f0, double t1, const double* y1,
                        const double* f1, int mode) = 0;
   /// Next time > t at which the right-hand side is not smooth (e.g. a record
-  /// sample); the integrator never steps across it. +inf if none.
+  /// sample); the integrator never steps across it. +inf if none. Called
+  /// again only once t has reached the previous answer.
   virtual double next_breakpoint(double t) const = 0;
   /// True if dy/dt is identically zero in `mode` (e.g. a body at rest): the
   /// integrator then takes no Runge-Kutta steps, only evaluates the event
@@ -103,10 +105,11 @@ struct HybridOdeResult {
 };
 
 /// Integrates `sys` from (t0, y, mode) to t_end, locating events by
-/// re-stepping from the saved start of the step with a bracketing root
-/// finder (Illinois regula falsi with bisection safeguard) on the step size
-/// until the bracket is narrower than event_time_tol, applying the jump and
-/// resetting the stepper. `y` (size sys.dimension()) holds the final state.
+/// re-stepping from the saved start of the step until a bracket on the step
+/// size is narrower than event_time_tol (re-step sizes guessed from the cubic
+/// Hermite interpolant of the step, then Illinois regula falsi with bisection
+/// safeguard), applying the jump at the fired end of the bracket and resetting
+/// the stepper. `y` (size sys.dimension()) holds the final state.
 HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, double* y, int mode,
                                  const HybridOdeOptions& options = {});
 

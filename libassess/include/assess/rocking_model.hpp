@@ -129,7 +129,10 @@ class RockingModel {
   double theta_u_[2] = {0.0, 0.0};
   double theta_pk_[2] = {0.0, 0.0};
   // cached constants
-  double WR_ = 0.0, Wb_ = 0.0, M_ext_ = 0.0, inv_I0_ = 0.0, m_R_ = 0.0, kb3_ = 0.0, c_partial_ = 0.0, sin_a_ = 0.0, cos_a_ = 0.0;
+  double WR_ = 0.0, kb3_ = 0.0, c_partial_ = 0.0, cos_a_ = 0.0;
+  // the same per unit I0, for angular_acceleration: W R sin(alpha), W R cos(alpha), M_ext, W b,
+  // kb3_, c_partial_ (1/s^2) and m R cos(alpha), m R sin(alpha) (1/m)
+  double g_sin_ = 0.0, g_cos_ = 0.0, ext_ = 0.0, wb_ = 0.0, kb3_i_ = 0.0, cp_ = 0.0, u_cos_ = 0.0, u_sin_ = 0.0;
 };
 
 namespace detail {
@@ -138,17 +141,21 @@ namespace detail {
 /// collapse) truncated Taylor series whose remainders are below 1e-20, i.e.
 /// exact to rounding: to x^7 / x^8 for |x| <= 1/64 (remainders x^9/9!, x^10/10!)
 /// and to x^13 / x^14 for |x| <= 1/4 (x^15/15!, x^16/16!). They cost a fraction
-/// of the library calls.
+/// of the library calls. Written x + x^3 p(x^2) and 1 + x^2 q(x^2) (the last
+/// addition rounds a small correction, as in Horner's rule), with p and q by
+/// Estrin's scheme (pairs of terms, then powers x^4, x^8): a shorter chain of
+/// dependent operations than Horner's rule.
 inline void sin_cos(double x, double& sn, double& cs) {
-  const double ax = std::fabs(x), x2 = x * x;
+  const double ax = std::fabs(x), x2 = x * x, x4 = x2 * x2;
   if (ax <= 1.0 / 64) {
-    sn = x * (1.0 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040))));
-    cs = 1.0 + x2 * (-0.5 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320))));
+    sn = x + (x * x2) * ((-1.0 / 6 + x2 * (1.0 / 120)) + x4 * (-1.0 / 5040));
+    cs = 1.0 + x2 * ((-0.5 + x2 * (1.0 / 24)) + x4 * (-1.0 / 720 + x2 * (1.0 / 40320)));
   } else if (ax <= 0.25) {
-    sn = x * (1.0 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 * (1.0 / 362880 +
-         x2 * (-1.0 / 39916800 + x2 * (1.0 / 6227020800.0)))))));
-    cs = 1.0 + x2 * (-0.5 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 + x2 * (-1.0 / 3628800 +
-         x2 * (1.0 / 479001600.0 + x2 * (-1.0 / 87178291200.0)))))));
+    const double x8 = x4 * x4;
+    sn = x + (x * x2) * (((-1.0 / 6 + x2 * (1.0 / 120)) + x4 * (-1.0 / 5040 + x2 * (1.0 / 362880))) +
+                         x8 * (-1.0 / 39916800 + x2 * (1.0 / 6227020800.0)));
+    cs = 1.0 + x2 * (((-0.5 + x2 * (1.0 / 24)) + x4 * (-1.0 / 720 + x2 * (1.0 / 40320))) +
+                     x8 * ((-1.0 / 3628800 + x2 * (1.0 / 479001600.0)) + x4 * (-1.0 / 87178291200.0)));
   } else {
     sn = std::sin(x);
     cs = std::cos(x);
@@ -160,21 +167,22 @@ inline void sin_cos(double x, double& sn, double& cs) {
 // Seed Eq. 1: I0 theta'' = -M(theta) + M_ext - (W/g) ug R cos(alpha s - theta), with
 // M = W R sin(alpha s - theta) [- s W b + (2/3) k b^3 theta (full contact)]
 //                              [- s (W/3) sqrt(2W/(k |theta|)) (partial contact)].
+// Expanding sin and cos(alpha s - theta) by the angle-difference formulas:
+// theta'' = P cos(theta) + Q sin(theta) + F(theta), with
+//   P = -(s W R sin(alpha) + m R cos(alpha) ug) / I0,  Q = (W R cos(alpha) - s m R sin(alpha) ug) / I0,
+//   F = M_ext / I0 + [s W b - (2/3) k b^3 theta] / I0 (full) or + s (W/3) sqrt(2W/(k s theta)) / I0 (partial);
+// P and Q do not depend on theta, which keeps the chain of operations after
+// sin(theta), cos(theta) and the square root short.
 inline double RockingModel::angular_acceleration(double theta, int pivot, bool partial, double ug) const {
   const double s = pivot >= 0 ? 1.0 : -1.0;
-  double st, ct;  // sin(alpha s - theta), cos(alpha s - theta) by the angle-difference formulas
-  detail::sin_cos(theta, st, ct);
-  const double sn = s * sin_a_ * ct - cos_a_ * st;
-  const double cs = cos_a_ * ct + s * sin_a_ * st;
-  double M = WR_ * sn;
+  const double P = -(s * g_sin_ + u_cos_ * ug), Q = g_cos_ - s * u_sin_ * ug;
+  double F = ext_;
   if (kb3_ > 0.0) {  // Winkler foundation
-    if (!partial) {
-      M += -s * Wb_ + kb3_ * theta;
-    } else {
-      M -= s * c_partial_ / std::sqrt(std::max(s * theta, 1e-300));
-    }
+    F += partial ? s * cp_ / std::sqrt(std::max(s * theta, 1e-300)) : s * wb_ - kb3_i_ * theta;
   }
-  return (M_ext_ - M - m_R_ * ug * cs) * inv_I0_;
+  double st, ct;
+  detail::sin_cos(theta, st, ct);
+  return (P * ct + Q * st) + F;
 }
 
 }  // namespace assess
