@@ -46,7 +46,20 @@ std::string shortest(double v) {
   return buf;
 }
 
-[[noreturn]] void fail(const std::string& path, const std::string& what) { throw InputError(path + ": " + what); }
+// The JSON pointer of a path built as "records[1].file" (the notation used
+// while parsing): "/records/1/file", as in the case files' messages.
+std::string pointer(const std::string& path) {
+  std::string out = "/";
+  for (char c : path) {
+    if (c == '[' || c == '.') out += '/';
+    else if (c != ']') out += c;
+  }
+  return out;
+}
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+  throw InputError(pointer(path) + ": " + what);
+}
 
 double number(const json& j, const std::string& path) {
   if (!j.is_number()) fail(path, "expected a number, got " + j.dump());
@@ -405,7 +418,7 @@ Campaign::Campaign(CampaignSpec spec) : spec_(std::move(spec)) {
   const Sidedness side = spec_.one_sided ? Sidedness::one_sided : Sidedness::two_sided;
   for (std::size_t w = 0; w < spec_.walls.size(); ++w) {
     const CampaignWall& wall = spec_.walls[w];
-    const std::string p = "walls[" + std::to_string(w) + "] (" + wall.name + ")";
+    const std::string p = "/walls/" + std::to_string(w) + " (" + wall.name + ")";
     try {
       capacities_.push_back(free_wall_capacity(wall.b_m, wall.h_m, spec_.FC));
       const RockingBody body = RockingBody::rectangle(2.0 * wall.b_m, 2.0 * wall.h_m, wall.unit_weight_N_m3);

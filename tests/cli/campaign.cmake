@@ -14,7 +14,7 @@ add_test(NAME cli.campaign_threads_identical
           -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/campaign_compare.cmake)
 set_tests_properties(cli.campaign_threads_identical PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "identical results.csv \\(49 lines\\)")
 
-assess_cli_error_test(campaign_missing_record "records\\[1\\]\\.file: record file 'no_such_record.AT2' not found"
+assess_cli_error_test(campaign_missing_record "/records/1/file: record file 'no_such_record.AT2' not found"
   campaign tests/data/campaign/missing_record.json --out ${_campaign_out}/missing)
 assess_cli_error_test(campaign_no_file "cannot open campaign file" campaign tests/data/campaign/nonexistent.json --out ${_campaign_out}/none)
 

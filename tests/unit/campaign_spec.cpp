@@ -74,40 +74,40 @@ TEST_CASE("campaign spec: records by catalogue id") {
   CHECK(s.records[1].name == "RSN289_1");
   CHECK(s.records[1].path.find("spectra/records/RSN289_1.AT2") != std::string::npos);
   j["records"][1] = {{"id", "RSN999_NOWHERE"}};
-  CHECK(error_of(j).find("records[1].id: 'RSN999_NOWHERE' is not in the record catalogue") == 0);
+  CHECK(error_of(j).find("/records/1/id: 'RSN999_NOWHERE' is not in the record catalogue") == 0);
 }
 
 TEST_CASE("campaign spec: errors name the JSON path") {
   json j = tiny();
   j["records"][1]["file"] = "spectra/records/no_such_record.AT2";
-  CHECK(error_of(j).find("records[1].file: record file 'spectra/records/no_such_record.AT2' not found") == 0);
+  CHECK(error_of(j).find("/records/1/file: record file 'spectra/records/no_such_record.AT2' not found") == 0);
   j = tiny();
   j["walls"][1]["h"] = 0.1;
-  CHECK(error_of(j).find("walls[1].h") == 0);
+  CHECK(error_of(j).find("/walls/1/h") == 0);
   j = tiny();
   j["scale_factors"] = json::array({0.5, -1});
-  CHECK(error_of(j).find("scale_factors[1]") == 0);
+  CHECK(error_of(j).find("/scale_factors/1") == 0);
   j = tiny();
   j["restitution"] = json::array({"housner", 1.5});
-  CHECK(error_of(j).find("restitution[1]") == 0);
+  CHECK(error_of(j).find("/restitution/1") == 0);
   j = tiny();
   j["models"] = json::array({"elastic"});
-  CHECK(error_of(j).find("models[0]") == 0);
+  CHECK(error_of(j).find("/models/0") == 0);
   j = tiny();
   j["time_cov"] = 0.5;
-  CHECK(error_of(j).find("time_cov") == 0);
+  CHECK(error_of(j).find("/time_cov") == 0);
   j = tiny();
   j["integrator"] = {{"rel_tol", -1}};
-  CHECK(error_of(j).find("integrator.rel_tol") == 0);
+  CHECK(error_of(j).find("/integrator/rel_tol") == 0);
   j = tiny();
   j["walls"][0]["name"] = 12;
-  CHECK(error_of(j).find("walls[0].name: expected a string") == 0);
+  CHECK(error_of(j).find("/walls/0/name: expected a string") == 0);
   j = tiny();
   j["realisation"] = 3;  // typo
-  CHECK(error_of(j).find("realisation: unknown key") == 0);
+  CHECK(error_of(j).find("/realisation: unknown key") == 0);
   j = tiny();
   j.erase("k_kN_m3");
-  CHECK(error_of(j).find("walls[0]: the smooth model needs k_kN_m3") == 0);
+  CHECK(error_of(j).find("/walls/0: the smooth model needs k_kN_m3") == 0);
 }
 
 TEST_CASE("campaign index: compose inverts decompose, model is the fastest index") {
