@@ -146,6 +146,19 @@ MechanismSet parse_blocks(const JsonNode& m) {
   return set;
 }
 
+// The crack angle of a wedge (composite and corner overturning): given
+// (beta_deg), from the masonry texture (unit_length, course_height), or
+// searched between beta_min_deg and beta_max_deg.
+template <class Params>
+void parse_crack_angle(const JsonNode& m, Params& p) {
+  if (m.find("beta_deg")) p.beta_deg = open_interval(m.at("beta_deg"), "deg", 0.0, 90.0);
+  if (m.find("unit_length")) p.unit_length = m.positive("unit_length", "m");
+  if (m.find("course_height")) p.course_height = m.positive("course_height", "m");
+  p.beta_min_deg = m.number_or("beta_min_deg", p.beta_min_deg, "deg", 0.0, 90.0);
+  p.beta_max_deg = m.number_or("beta_max_deg", p.beta_max_deg, "deg", 0.0, 90.0);
+  p.search_points = m.integer_or("search_points", p.search_points, 2, 100);
+}
+
 MechanismSet parse_mechanism(const JsonNode& m) {
   const std::string type =
       m.choice("type", {"blocks", "simple_overturning", "vertical_flexure", "composite_overturning", "gable_overturning",
@@ -201,12 +214,7 @@ MechanismSet parse_mechanism(const JsonNode& m) {
     p.base_z = m.number_or("base_z", 0.0, "m", 0.0);
     p.top_weight = m.number_or("top_weight", 0.0, "kN", 0.0) * kN;
     p.tie = m.number_or("tie", 0.0, "kN", 0.0) * kN;
-    if (m.find("beta_deg")) p.beta_deg = open_interval(m.at("beta_deg"), "deg", 0.0, 90.0);
-    if (m.find("unit_length")) p.unit_length = m.positive("unit_length", "m");
-    if (m.find("course_height")) p.course_height = m.positive("course_height", "m");
-    p.beta_min_deg = m.number_or("beta_min_deg", p.beta_min_deg, "deg", 0.0, 90.0);
-    p.beta_max_deg = m.number_or("beta_max_deg", p.beta_max_deg, "deg", 0.0, 90.0);
-    p.search_points = m.integer_or("search_points", p.search_points, 2, 100);
+    parse_crack_angle(m, p);
     return composite_overturning(p);
   }
   if (type == "corner_overturning") {
@@ -221,12 +229,7 @@ MechanismSet parse_mechanism(const JsonNode& m) {
     p.top_weight = m.number_or("top_weight", 0.0, "kN", 0.0) * kN;
     p.thrust = m.number_or("thrust", 0.0, "kN") * kN;
     p.tie = m.number_or("tie", 0.0, "kN", 0.0) * kN;
-    if (m.find("beta_deg")) p.beta_deg = open_interval(m.at("beta_deg"), "deg", 0.0, 90.0);
-    if (m.find("unit_length")) p.unit_length = m.positive("unit_length", "m");
-    if (m.find("course_height")) p.course_height = m.positive("course_height", "m");
-    p.beta_min_deg = m.number_or("beta_min_deg", p.beta_min_deg, "deg", 0.0, 90.0);
-    p.beta_max_deg = m.number_or("beta_max_deg", p.beta_max_deg, "deg", 0.0, 90.0);
-    p.search_points = m.integer_or("search_points", p.search_points, 2, 100);
+    parse_crack_angle(m, p);
     return corner_overturning(p);
   }
   m.allow_only({"type", "width", "height", "thickness", "unit_weight", "base_z", "ridge_weight", "ridge_thrust", "tie", "slices"});
