@@ -25,3 +25,12 @@ assess_cli_test(run_dynamic_at_height ARGS run tests/cli/run_bad/gable_dynamic.j
   PASS "not applicable: the governing mechanism is at height")
 assess_cli_test(run_dynamic_multi_block ARGS run tests/cli/run_bad/flexure_dynamic.json
   PASS "not applicable: .*multi-block chains")
+
+# A case without a dynamic section: the report still loads, with its 3 plots
+# (spectra, capacity curve, D/C bars).
+add_test(NAME cli.run_kinematic_only_html_browser
+  COMMAND sh -c "\"$1\" run mechanisms/free_wall_laquila.json --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 3"
+          sh $<TARGET_FILE:assess_cli> ${CMAKE_CURRENT_BINARY_DIR}/free-wall-report.html
+  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.run_kinematic_only_html_browser PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77
+  ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
