@@ -84,10 +84,9 @@ void run(const RockingArgs& a) {
   if (a.overturn_at == "theta_u") opt.overturn = OverturnCriterion::theta_u;
   else if (a.overturn_at == "half_pi") opt.overturn = OverturnCriterion::half_pi;
   else throw InputError("--overturn-at must be 'theta_u' or 'half_pi'");
-  if (a.stepper == "rk8pd") opt.stepper = OdeStepper::rk8pd;
-  else if (a.stepper == "rkck") opt.stepper = OdeStepper::rkck;
-  else if (a.stepper == "rkf45") opt.stepper = OdeStepper::rkf45;
-  else throw InputError("--stepper must be rk8pd, rkck or rkf45");
+  const auto stepper = parse_stepper(a.stepper);
+  if (!stepper) throw InputError("--stepper must be rk8pd, rkck or rkf45");
+  opt.stepper = *stepper;
   opt.record_history = !a.history.empty();
 
   const RockingResult r = analyse(model, record, opt);

@@ -144,11 +144,9 @@ void parse_integrator(const json& j, const std::string& path, RockingOptions& o)
   for (const auto& [key, v] : j.items()) {
     const std::string p = path + "." + key;
     if (key == "stepper") {
-      const std::string s = v.is_string() ? v.get<std::string>() : "";
-      if (s == "rk8pd") o.stepper = OdeStepper::rk8pd;
-      else if (s == "rkck") o.stepper = OdeStepper::rkck;
-      else if (s == "rkf45") o.stepper = OdeStepper::rkf45;
-      else fail(p, "expected \"rk8pd\", \"rkck\" or \"rkf45\"");
+      const auto stepper = parse_stepper(v.is_string() ? v.get<std::string>() : "");
+      if (!stepper) fail(p, "expected \"rk8pd\", \"rkck\" or \"rkf45\"");
+      o.stepper = *stepper;
     } else if (key == "rel_tol") {
       o.rel_tol = positive(v, p, "-");
     } else if (key == "abs_tol") {

@@ -102,8 +102,7 @@ DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, co
   if (auto in = d.find("integrator")) {
     in->allow_only({"stepper", "rel_tol", "abs_tol"});
     if (in->has("stepper")) {
-      const std::string st = in->choice("stepper", {"rk8pd", "rkck", "rkf45"});
-      s.options.stepper = st == "rkck" ? OdeStepper::rkck : st == "rkf45" ? OdeStepper::rkf45 : OdeStepper::rk8pd;
+      s.options.stepper = *parse_stepper(in->choice("stepper", {"rk8pd", "rkck", "rkf45"}));
     }
     s.options.rel_tol = in->number_or("rel_tol", s.options.rel_tol, "(-)", 1e-14, 1e-2);
     s.options.abs_tol = in->number_or("abs_tol", s.options.abs_tol, "rad", 1e-16, 1e-2);

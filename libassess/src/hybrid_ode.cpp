@@ -104,6 +104,13 @@ void HybridOdeOptions::validate() const {
   if (max_events <= 0) throw InputError("max_events must be positive");
 }
 
+std::optional<OdeStepper> parse_stepper(const std::string& name) {
+  if (name == "rk8pd") return OdeStepper::rk8pd;
+  if (name == "rkck") return OdeStepper::rkck;
+  if (name == "rkf45") return OdeStepper::rkf45;
+  return std::nullopt;
+}
+
 const char* to_string(HybridTermination t) {
   switch (t) {
     case HybridTermination::completed: return "completed";

@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <string>
 
 namespace assess {
@@ -22,6 +23,10 @@ enum class OdeStepper {
   rkck,   ///< Cash-Karp (4, 5)
   rkf45   ///< Runge-Kutta-Fehlberg (4, 5)
 };
+
+/// The stepper named "rk8pd", "rkck" or "rkf45"; none for another name (the
+/// caller reports it with the name of its own field or option).
+std::optional<OdeStepper> parse_stepper(const std::string& name);
 
 /// Direction in which an event function must cross zero to fire.
 enum class EventDirection {
