@@ -100,16 +100,17 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   a.kinematic = run_kinematic_case(kase);
   a.checks = a.kinematic.checks;
   const Site site(*kase.site);
+  a.site_description = site.describe();
+  a.VR = site.VR();
   for (LimitState ls : all_limit_states) {
     if (!kase.site->given.empty() && !kase.site->given.count(ls)) continue;
     a.actions[ls] = site.action(ls);
+    a.spectra.emplace(ls, ElasticSpectrum(a.actions[ls].hazard, kase.site->conditions, 5.0));
   }
   a.periods = log_spaced_periods(0.02, 4.0, 48);
   a.periods.insert(a.periods.begin(), 0.0);
-  for (const auto& [ls, act] : a.actions) {
-    const ElasticSpectrum s(act.hazard, kase.site->conditions, 5.0);
+  for (const auto& [ls, s] : a.spectra)
     for (double T : a.periods) a.site_Se[ls].push_back(s.Se(T));
-  }
   if (kase.dynamic.is_null()) return a;
 
   a.dynamic = parse_dynamic(kase.dynamic, kase.file, directory_of(kase.file));
@@ -143,7 +144,7 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   a.model = models.front();
   a.dynamic_applies = true;
 
-  const ElasticSpectrum target = site.spectrum(LimitState::SLV, 5.0);
+  const ElasticSpectrum& target = a.spectra.at(LimitState::SLV);
   std::vector<Record> recs;
   load_records(a, d, opt, target, gov.result, recs);
 

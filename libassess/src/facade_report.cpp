@@ -58,12 +58,12 @@ std::string facade_text(const FacadeAssessment& a) {
     const SiteSpec& sp = *a.kase.site;
     o += "\n== Site and seismic action (NTC 2018 §2.4, §3.2) ==\n";
     o += format("site: %s; soil %s, topography %s; VN = %.0f years, CU = %.2f, VR = %.1f years\n",
-                Site(sp).describe().c_str(), to_string(sp.conditions.soil).c_str(),
-                to_string(sp.conditions.topography).c_str(), sp.vn_years, sp.cu, Site(sp).VR());
+                a.site_description.c_str(), to_string(sp.conditions.soil).c_str(),
+                to_string(sp.conditions.topography).c_str(), sp.vn_years, sp.cu, a.VR);
     o += format("  %-4s %8s %9s %8s %7s %7s %6s %6s %6s %6s %6s %6s %6s\n", "LS", "P_VR %", "TR (yr)", "ag (g)", "F0",
                 "TC* s", "SS", "CC", "ST", "S", "TB s", "TC s", "TD s");
     for (const auto& [ls, act] : a.actions) {
-      const ElasticSpectrum s(act.hazard, sp.conditions, 5.0);
+      const ElasticSpectrum& s = a.spectra.at(ls);
       o += format("  %-4s %8.0f %9.2f %8.4f %7.4f %7.4f %6.3f %6.3f %6.3f %6.3f %6.3f %6.3f %6.3f\n",
                   to_string(ls).c_str(), act.PVR * 100, act.TR, s.ag_g(), s.F0(), s.Tc_star(), s.SS(), s.CC(), s.ST(),
                   s.S(), s.TB(), s.TC(), s.TD());
@@ -141,12 +141,12 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
   j["case_file"] = a.kase.file;
   if (a.kase.site) {
     const SiteSpec& sp = *a.kase.site;
-    nlohmann::json s{{"description", Site(sp).describe()}, {"soil", to_string(sp.conditions.soil)},
+    nlohmann::json s{{"description", a.site_description}, {"soil", to_string(sp.conditions.soil)},
                      {"topography", to_string(sp.conditions.topography)}, {"VN", sp.vn_years}, {"CU", sp.cu},
-                     {"VR", Site(sp).VR()}};
+                     {"VR", a.VR}};
     nlohmann::json ls_arr = nlohmann::json::array();
     for (const auto& [ls, act] : a.actions) {
-      const ElasticSpectrum e(act.hazard, sp.conditions, 5.0);
+      const ElasticSpectrum& e = a.spectra.at(ls);
       ls_arr.push_back({{"limit_state", to_string(ls)}, {"PVR", act.PVR}, {"TR", act.TR}, {"ag_g", e.ag_g()},
                         {"F0", e.F0()}, {"Tc_star", e.Tc_star()}, {"SS", e.SS()}, {"CC", e.CC()}, {"ST", e.ST()},
                         {"S", e.S()}, {"TB", e.TB()}, {"TC", e.TC()}, {"TD", e.TD()}});
@@ -261,12 +261,12 @@ std::string facade_html(const FacadeAssessment& a) {
   if (a.kase.site) {
     h.add_heading("Site and seismic action (NTC 2018 §2.4, §3.2)");
     const SiteSpec& sp = *a.kase.site;
-    h.add_paragraph("Site: " + Site(sp).describe() + "; soil " + to_string(sp.conditions.soil) + ", topography " +
+    h.add_paragraph("Site: " + a.site_description + "; soil " + to_string(sp.conditions.soil) + ", topography " +
                     to_string(sp.conditions.topography) + "; VN = " + fixed(sp.vn_years, 0) + " years, CU = " +
-                    fixed(sp.cu, 2) + ", VR = " + fixed(Site(sp).VR(), 1) + " years.");
+                    fixed(sp.cu, 2) + ", VR = " + fixed(a.VR, 1) + " years.");
     std::vector<std::vector<std::string>> rows;
     for (const auto& [ls, act] : a.actions) {
-      const ElasticSpectrum s(act.hazard, sp.conditions, 5.0);
+      const ElasticSpectrum& s = a.spectra.at(ls);
       rows.push_back({to_string(ls), fixed(act.PVR * 100, 0), fixed(act.TR, 1), fixed(s.ag_g(), 4), fixed(s.F0(), 3),
                       fixed(s.Tc_star(), 3), fixed(s.SS(), 3), fixed(s.CC(), 3), fixed(s.ST(), 2), fixed(s.S(), 3),
                       fixed(s.TB(), 3), fixed(s.TC(), 3), fixed(s.TD(), 3)});

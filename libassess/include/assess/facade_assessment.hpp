@@ -63,7 +63,10 @@ struct RestitutionSummary {
 struct FacadeAssessment {
   CaseFile kase;
   KinematicCaseResult kinematic;
-  std::map<LimitState, SeismicAction> actions;  ///< all four limit states (with a site)
+  std::map<LimitState, SeismicAction> actions;  ///< the site's limit states (all four from the grid)
+  std::map<LimitState, ElasticSpectrum> spectra;  ///< 5 % elastic spectrum of each of them
+  std::string site_description;                   ///< Site::describe()
+  double VR = 0.0;                                ///< reference period (years)
   /// Dynamic part (present when the case has a "dynamic" section).
   std::optional<DynamicSpec> dynamic;
   bool dynamic_applies = false;
