@@ -4,11 +4,11 @@
 // progress on stderr, then writes the summary and the plots.
 #include "commands.hpp"
 
-#include <assess/campaign.hpp>
-#include <assess/campaign_report.hpp>
-#include <assess/campaign_runner.hpp>
-#include <assess/error.hpp>
-#include <assess/plot.hpp>
+#include <assess/campaign/campaign.hpp>
+#include <assess/campaign/campaign_report.hpp>
+#include <assess/campaign/campaign_runner.hpp>
+#include <assess/support/error.hpp>
+#include <assess/report/plot.hpp>
 
 #include <atomic>
 #include <chrono>

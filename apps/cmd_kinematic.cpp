@@ -3,10 +3,10 @@
 // NTC 2008 / NTC 2018. Parses, calls the library, prints.
 #include "commands.hpp"
 
-#include <assess/case_file.hpp>
-#include <assess/kinematic_report.hpp>
-#include <assess/error.hpp>
-#include <assess/units.hpp>
+#include <assess/assessment/case_file.hpp>
+#include <assess/report/kinematic_report.hpp>
+#include <assess/support/error.hpp>
+#include <assess/support/units.hpp>
 
 #include <nlohmann/json.hpp>
 

@@ -3,10 +3,10 @@
 // recorded accelerogram. Parses, calls the library, prints.
 #include "commands.hpp"
 
-#include <assess/error.hpp>
-#include <assess/record_io.hpp>
-#include <assess/rocking_analysis.hpp>
-#include <assess/units.hpp>
+#include <assess/support/error.hpp>
+#include <assess/records/record_io.hpp>
+#include <assess/dynamics/rocking_analysis.hpp>
+#include <assess/support/units.hpp>
 
 #include <nlohmann/json.hpp>
 

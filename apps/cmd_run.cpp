@@ -3,10 +3,10 @@
 // dynamic rocking analysis — side by side. Parses, calls, prints.
 #include "commands.hpp"
 
-#include <assess/case_file.hpp>
-#include <assess/error.hpp>
-#include <assess/facade_assessment.hpp>
-#include <assess/facade_report.hpp>
+#include <assess/assessment/case_file.hpp>
+#include <assess/support/error.hpp>
+#include <assess/assessment/facade_assessment.hpp>
+#include <assess/report/facade_report.hpp>
 
 #include <fstream>
 #include <iostream>

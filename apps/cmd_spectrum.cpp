@@ -2,9 +2,9 @@
 // Parses the options, builds a Site, prints a Spettri-NTC-like table or JSON.
 #include "commands.hpp"
 
-#include <assess/error.hpp>
-#include <assess/site.hpp>
-#include <assess/units.hpp>
+#include <assess/support/error.hpp>
+#include <assess/hazard/site.hpp>
+#include <assess/support/units.hpp>
 
 #include <nlohmann/json.hpp>
 

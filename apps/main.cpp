@@ -1,7 +1,7 @@
 // assess: command-line front end of libassess.
 #include "commands.hpp"
 
-#include <assess/error.hpp>
+#include <assess/support/error.hpp>
 
 #include <cstdio>
 #include <exception>

@@ -5,10 +5,10 @@
 //
 // Usage: bench_campaign [REALISATIONS=100] [THREADS=2]
 // The campaign file is mechanisms/campaign-seed-3.2.json under data_dir().
-#include <assess/campaign.hpp>
-#include <assess/campaign_runner.hpp>
-#include <assess/hazard.hpp>
-#include <assess/response_spectrum.hpp>
+#include <assess/campaign/campaign.hpp>
+#include <assess/campaign/campaign_runner.hpp>
+#include <assess/hazard/hazard.hpp>
+#include <assess/records/response_spectrum.hpp>
 
 #include <chrono>
 #include <ctime>

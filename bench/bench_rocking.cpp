@@ -4,10 +4,10 @@
 // Prints ms per analysis (best of N repeats), steps and right-hand-side
 // evaluations per analysis, and theta_max against a run at 1000x tighter
 // tolerances. Usage: bench_rocking [repeats] [rel_tol abs_tol] [stepper]
-#include <assess/hazard.hpp>
-#include <assess/record_io.hpp>
-#include <assess/rocking_analysis.hpp>
-#include <assess/units.hpp>
+#include <assess/hazard/hazard.hpp>
+#include <assess/records/record_io.hpp>
+#include <assess/dynamics/rocking_analysis.hpp>
+#include <assess/support/units.hpp>
 
 #include <algorithm>
 #include <chrono>

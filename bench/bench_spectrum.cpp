@@ -1,8 +1,8 @@
 // bench_spectrum: hazard grid load time and one site lookup + full spectrum.
 // Targets (issue 2): grid load < 50 ms; lookup + spectrum < 10 us.
 // Usage: bench_spectrum [grid.csv]
-#include <assess/hazard.hpp>
-#include <assess/spectrum.hpp>
+#include <assess/hazard/hazard.hpp>
+#include <assess/hazard/spectrum.hpp>
 
 #include <algorithm>
 #include <chrono>

@@ -1,8 +1,8 @@
 // Times one 5 %-damped response spectrum of 100 periods (0.02-4 s, log
 // spaced) for a 16000-sample synthetic record at dt = 0.005 s (80 s).
-#include "assess/record.hpp"
-#include "assess/response_spectrum.hpp"
-#include "assess/units.hpp"
+#include "assess/records/record.hpp"
+#include "assess/records/response_spectrum.hpp"
+#include "assess/support/units.hpp"
 
 #include <chrono>
 #include <cmath>

@@ -4,9 +4,9 @@
 // against the amplitude (no dissipation, two-sided). Writes fig2a.svg,
 // fig2b.svg and fig2.csv into the folder given (default: .).
 // Usage: example_seed_fig2 [OUTDIR]
-#include <assess/plot.hpp>
-#include <assess/rocking_analysis.hpp>
-#include <assess/units.hpp>
+#include <assess/report/plot.hpp>
+#include <assess/dynamics/rocking_analysis.hpp>
+#include <assess/support/units.hpp>
 
 #include <cmath>
 #include <cstdio>

@@ -5,12 +5,12 @@
 
 #include "check_close.hpp"
 
-#include "assess/campaign.hpp"
-#include "assess/campaign_runner.hpp"
-#include "assess/free_wall_capacity.hpp"
-#include "assess/record_io.hpp"
-#include "assess/response_spectrum.hpp"
-#include "assess/rocking_analysis.hpp"
+#include "assess/campaign/campaign.hpp"
+#include "assess/campaign/campaign_runner.hpp"
+#include "assess/kinematic/free_wall_capacity.hpp"
+#include "assess/records/record_io.hpp"
+#include "assess/records/response_spectrum.hpp"
+#include "assess/dynamics/rocking_analysis.hpp"
 
 #include <string>
 

@@ -5,9 +5,9 @@
 
 #include "check_close.hpp"
 
-#include "assess/error.hpp"
-#include "assess/free_wall_capacity.hpp"
-#include "assess/units.hpp"
+#include "assess/support/error.hpp"
+#include "assess/kinematic/free_wall_capacity.hpp"
+#include "assess/support/units.hpp"
 
 #include <cmath>
 

@@ -4,10 +4,10 @@
 
 #include "check_close.hpp"
 
-#include <assess/error.hpp>
-#include <assess/hazard.hpp>
-#include <assess/seismic_action.hpp>
-#include <assess/site.hpp>
+#include <assess/support/error.hpp>
+#include <assess/hazard/hazard.hpp>
+#include <assess/hazard/seismic_action.hpp>
+#include <assess/hazard/site.hpp>
 
 #include <algorithm>
 #include <string>

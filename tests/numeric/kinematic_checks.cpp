@@ -5,11 +5,11 @@
 
 #include "check_close.hpp"
 
-#include <assess/code_checks.hpp>
-#include <assess/code_rules.hpp>
-#include <assess/kinematic_analysis.hpp>
-#include <assess/mechanism_catalogue.hpp>
-#include <assess/units.hpp>
+#include <assess/kinematic/code_checks.hpp>
+#include <assess/kinematic/code_rules.hpp>
+#include <assess/kinematic/kinematic_analysis.hpp>
+#include <assess/kinematic/mechanism_catalogue.hpp>
+#include <assess/support/units.hpp>
 
 #include <cmath>
 

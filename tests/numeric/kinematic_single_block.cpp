@@ -6,9 +6,9 @@
 
 #include "check_close.hpp"
 
-#include <assess/chain.hpp>
-#include <assess/kinematic_analysis.hpp>
-#include <assess/units.hpp>
+#include <assess/kinematic/chain.hpp>
+#include <assess/kinematic/kinematic_analysis.hpp>
+#include <assess/support/units.hpp>
 
 #include <cmath>
 

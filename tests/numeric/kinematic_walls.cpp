@@ -5,9 +5,9 @@
 
 #include "check_close.hpp"
 
-#include <assess/kinematic_analysis.hpp>
-#include <assess/mechanism_catalogue.hpp>
-#include <assess/units.hpp>
+#include <assess/kinematic/kinematic_analysis.hpp>
+#include <assess/kinematic/mechanism_catalogue.hpp>
+#include <assess/support/units.hpp>
 
 #include <cmath>
 

@@ -4,12 +4,12 @@
 
 #include "check_close.hpp"
 
-#include <assess/record_io.hpp>
+#include <assess/records/record_io.hpp>
 
-#include "assess/error.hpp"
-#include "assess/record.hpp"
-#include "assess/response_spectrum.hpp"
-#include "assess/units.hpp"
+#include "assess/support/error.hpp"
+#include "assess/records/record.hpp"
+#include "assess/records/response_spectrum.hpp"
+#include "assess/support/units.hpp"
 
 #include <algorithm>
 #include <cmath>

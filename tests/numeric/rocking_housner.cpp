@@ -6,8 +6,8 @@
 
 #include "check_close.hpp"
 
-#include <assess/rocking_analysis.hpp>
-#include <assess/units.hpp>
+#include <assess/dynamics/rocking_analysis.hpp>
+#include <assess/support/units.hpp>
 
 #include <cmath>
 #include <vector>

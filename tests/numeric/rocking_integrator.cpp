@@ -5,7 +5,7 @@
 
 #include "check_close.hpp"
 
-#include <assess/hybrid_ode.hpp>
+#include <assess/dynamics/hybrid_ode.hpp>
 
 #include <algorithm>
 #include <cmath>

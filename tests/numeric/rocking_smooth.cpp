@@ -8,9 +8,9 @@
 
 #include "check_close.hpp"
 
-#include <assess/error.hpp>
-#include <assess/rocking_analysis.hpp>
-#include <assess/units.hpp>
+#include <assess/support/error.hpp>
+#include <assess/dynamics/rocking_analysis.hpp>
+#include <assess/support/units.hpp>
 
 #include <algorithm>
 #include <cmath>

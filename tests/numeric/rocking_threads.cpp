@@ -4,9 +4,9 @@
 
 #include "check_close.hpp"
 
-#include <assess/record_io.hpp>
-#include <assess/rocking_analysis.hpp>
-#include <assess/units.hpp>
+#include <assess/records/record_io.hpp>
+#include <assess/dynamics/rocking_analysis.hpp>
+#include <assess/support/units.hpp>
 
 #include <thread>
 #include <vector>

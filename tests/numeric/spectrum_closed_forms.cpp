@@ -4,9 +4,9 @@
 
 #include "check_close.hpp"
 
-#include <assess/error.hpp>
-#include <assess/spectrum.hpp>
-#include <assess/units.hpp>
+#include <assess/support/error.hpp>
+#include <assess/hazard/spectrum.hpp>
+#include <assess/support/units.hpp>
 
 #include <cmath>
 

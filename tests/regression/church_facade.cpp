@@ -7,7 +7,7 @@
 
 #include "check_close.hpp"
 
-#include <assess/facade_assessment.hpp>
+#include <assess/assessment/facade_assessment.hpp>
 
 #include <string>
 

@@ -5,10 +5,10 @@
 
 #include "check_close.hpp"
 
-#include "assess/campaign.hpp"
-#include "assess/campaign_report.hpp"
-#include "assess/campaign_runner.hpp"
-#include "assess/error.hpp"
+#include "assess/campaign/campaign.hpp"
+#include "assess/campaign/campaign_report.hpp"
+#include "assess/campaign/campaign_runner.hpp"
+#include "assess/support/error.hpp"
 
 #include <unistd.h>
 

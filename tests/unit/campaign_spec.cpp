@@ -4,8 +4,8 @@
 
 #include "check_close.hpp"
 
-#include "assess/campaign.hpp"
-#include "assess/error.hpp"
+#include "assess/campaign/campaign.hpp"
+#include "assess/support/error.hpp"
 
 #include <cmath>
 #include <string>

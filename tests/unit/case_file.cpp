@@ -7,9 +7,9 @@
 
 #include "check_close.hpp"
 
-#include <assess/case_file.hpp>
-#include <assess/code_rules.hpp>
-#include <assess/error.hpp>
+#include <assess/assessment/case_file.hpp>
+#include <assess/kinematic/code_rules.hpp>
+#include <assess/support/error.hpp>
 
 #include <nlohmann/json.hpp>
 

@@ -5,10 +5,10 @@
 
 #include "check_close.hpp"
 
-#include <assess/chain.hpp>
-#include <assess/error.hpp>
-#include <assess/kinematic_analysis.hpp>
-#include <assess/mechanism_catalogue.hpp>
+#include <assess/kinematic/chain.hpp>
+#include <assess/support/error.hpp>
+#include <assess/kinematic/kinematic_analysis.hpp>
+#include <assess/kinematic/mechanism_catalogue.hpp>
 
 #include <string>
 

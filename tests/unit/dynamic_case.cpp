@@ -2,8 +2,8 @@
 // JSON path, the expected type or range and the unit.
 #include <doctest/doctest.h>
 
-#include <assess/dynamic_case.hpp>
-#include <assess/error.hpp>
+#include <assess/assessment/dynamic_case.hpp>
+#include <assess/support/error.hpp>
 
 #include <nlohmann/json.hpp>
 

@@ -6,9 +6,9 @@
 
 #include "check_close.hpp"
 
-#include "assess/error.hpp"
-#include "assess/html_report.hpp"
-#include "assess/plot.hpp"
+#include "assess/support/error.hpp"
+#include "assess/report/html_report.hpp"
+#include "assess/report/plot.hpp"
 
 #include <cstdlib>
 #include <filesystem>

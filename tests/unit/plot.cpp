@@ -4,8 +4,8 @@
 
 #include "check_close.hpp"
 
-#include "assess/error.hpp"
-#include "assess/plot.hpp"
+#include "assess/support/error.hpp"
+#include "assess/report/plot.hpp"
 
 #include <cstdlib>
 #include <string>

@@ -5,10 +5,10 @@
 
 #include "check_close.hpp"
 
-#include <assess/error.hpp>
-#include <assess/record_catalogue.hpp>
-#include <assess/record_io.hpp>
-#include <assess/units.hpp>
+#include <assess/support/error.hpp>
+#include <assess/records/record_catalogue.hpp>
+#include <assess/records/record_io.hpp>
+#include <assess/support/units.hpp>
 
 #include <string>
 

@@ -5,9 +5,9 @@
 
 #include "check_close.hpp"
 
-#include <assess/error.hpp>
-#include <assess/rocking_model.hpp>
-#include <assess/units.hpp>
+#include <assess/support/error.hpp>
+#include <assess/dynamics/rocking_model.hpp>
+#include <assess/support/units.hpp>
 
 #include <cmath>
 

@@ -5,11 +5,11 @@
 
 #include "check_close.hpp"
 
-#include <assess/chain.hpp>
-#include <assess/error.hpp>
-#include <assess/mechanism_catalogue.hpp>
-#include <assess/rocking_from_chain.hpp>
-#include <assess/units.hpp>
+#include <assess/kinematic/chain.hpp>
+#include <assess/support/error.hpp>
+#include <assess/kinematic/mechanism_catalogue.hpp>
+#include <assess/dynamics/rocking_from_chain.hpp>
+#include <assess/support/units.hpp>
 
 #include <cmath>
 

@@ -5,8 +5,8 @@
 // (rocking.md §1.1), one-sided only outward (ug < 0).
 #include <doctest/doctest.h>
 
-#include <assess/rocking_model.hpp>
-#include <assess/units.hpp>
+#include <assess/dynamics/rocking_model.hpp>
+#include <assess/support/units.hpp>
 
 #include <cmath>
 

@@ -3,8 +3,8 @@
 
 #include "check_close.hpp"
 
-#include <assess/error.hpp>
-#include <assess/seismic_action.hpp>
+#include <assess/support/error.hpp>
+#include <assess/hazard/seismic_action.hpp>
 
 using namespace assess;
 using assess::test::abs_tol;

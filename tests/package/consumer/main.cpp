@@ -1,5 +1,5 @@
 // A downstream program: the NTC 2018 return period of SLV for VN = 50, CU = 1.
-#include <assess/seismic_action.hpp>
+#include <assess/hazard/seismic_action.hpp>
 #include <cmath>
 #include <cstdio>
 int main() {

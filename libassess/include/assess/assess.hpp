@@ -1,0 +1,54 @@
+// Umbrella header: every public header of libassess, module by module
+// (docs/architecture.md). Prefer the single headers in library code.
+#pragma once
+
+// support
+#include <assess/support/error.hpp>
+#include <assess/support/json_input.hpp>
+#include <assess/support/units.hpp>
+
+// hazard
+#include <assess/hazard/hazard.hpp>
+#include <assess/hazard/seismic_action.hpp>
+#include <assess/hazard/site.hpp>
+#include <assess/hazard/spectrum.hpp>
+
+// kinematic
+#include <assess/kinematic/chain.hpp>
+#include <assess/kinematic/code_checks.hpp>
+#include <assess/kinematic/code_rules.hpp>
+#include <assess/kinematic/floor_spectrum.hpp>
+#include <assess/kinematic/free_wall_capacity.hpp>
+#include <assess/kinematic/kinematic_analysis.hpp>
+#include <assess/kinematic/mechanism_catalogue.hpp>
+
+// records
+#include <assess/records/ground_motion.hpp>
+#include <assess/records/record.hpp>
+#include <assess/records/record_catalogue.hpp>
+#include <assess/records/record_io.hpp>
+#include <assess/records/record_selection.hpp>
+#include <assess/records/response_spectrum.hpp>
+
+// dynamics
+#include <assess/dynamics/hybrid_ode.hpp>
+#include <assess/dynamics/rocking_analysis.hpp>
+#include <assess/dynamics/rocking_body.hpp>
+#include <assess/dynamics/rocking_from_chain.hpp>
+#include <assess/dynamics/rocking_model.hpp>
+
+// assessment
+#include <assess/assessment/case_file.hpp>
+#include <assess/assessment/dynamic_case.hpp>
+#include <assess/assessment/facade_assessment.hpp>
+
+// report
+#include <assess/report/facade_report.hpp>
+#include <assess/report/html_report.hpp>
+#include <assess/report/kinematic_report.hpp>
+#include <assess/report/plot.hpp>
+
+// campaign
+#include <assess/campaign/campaign.hpp>
+#include <assess/campaign/campaign_report.hpp>
+#include <assess/campaign/campaign_runner.hpp>

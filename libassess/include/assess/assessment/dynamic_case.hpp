@@ -1,0 +1,57 @@
+// dynamic_case.hpp: the "dynamic" section of a façade case file (schema
+// version 1, docs/user/case-file.md): rocking model, restitution values,
+// sidedness, polarity, overturning criterion, and the records (listed or
+// selected from the shipped catalogue to match the site spectrum).
+#pragma once
+
+#include "assess/dynamics/rocking_analysis.hpp"
+#include "assess/dynamics/rocking_model.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace assess {
+
+/// A record listed in the case file.
+struct ListedRecord {
+  std::string file;       ///< resolved path
+  std::string json_path;  ///< "/dynamic/records/2" (for messages)
+  double scale = 1.0;     ///< linear scale factor (-)
+};
+
+/// "Select N records compatible with the site spectrum" (REXEL's rule).
+struct RecordSelectionSpec {
+  int count = 7;                      ///< N
+  std::optional<double> T_min, T_max;  ///< period range (s); default: around the mechanism's periods
+  double max_scale = 5.0;             ///< largest scale factor allowed (-)
+  std::string catalogue;              ///< catalogue.json (default: data_dir()/spectra/records/catalogue.json)
+};
+
+enum class Polarity { normal, reversed, both };
+
+/// The dynamic section, validated.
+struct DynamicSpec {
+  bool smooth = true;                  ///< smooth (Winkler) or rigid (Housner) block
+  double k = 0.0;                      ///< Winkler modulus (N/m^3), smooth only
+  Sidedness sidedness = Sidedness::one_sided;
+  std::vector<Restitution> restitutions;  ///< one analysis set per value
+  Polarity polarity = Polarity::normal;
+  RockingOptions options;              ///< overturning criterion, integrator, tail
+  std::vector<ListedRecord> records;   ///< listed records (empty if selected)
+  std::optional<RecordSelectionSpec> selection;
+};
+
+/// Parses `doc` (the value of the "dynamic" key). Errors name `file` and the
+/// JSON path (e.g. /dynamic/records/2/scale), the expected type or range and
+/// unit; unknown keys are errors with a suggestion. Record paths are resolved
+/// against `case_dir`, then against data_dir().
+DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, const std::string& case_dir);
+
+/// "e = -0.48", "Housner", "one-sided theory", "none".
+std::string describe(const Restitution& r);
+std::string to_string(Polarity p);
+
+}  // namespace assess

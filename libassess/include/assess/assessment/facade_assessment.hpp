@@ -1,0 +1,97 @@
+// facade_assessment.hpp: the façade assessment of one case file: the code's
+// linear (strength) and non-linear (displacement) kinematic checks and the
+// non-linear dynamic rocking analysis under real records, side by side
+// (seed paper §4, Fig. 8; Circ. 2019 C8.7.1.2.1.9).
+#pragma once
+
+#include "assess/assessment/case_file.hpp"
+#include "assess/assessment/dynamic_case.hpp"
+#include "assess/records/record_selection.hpp"
+#include "assess/dynamics/rocking_from_chain.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace assess {
+
+struct FacadeOptions {
+  /// Continue with the records that can be read when some cannot (the
+  /// failures are listed in the result); default: a record that cannot be
+  /// read is an error.
+  bool keep_going = false;
+  /// Keep theta(t) of every analysis (for plots). Default true.
+  bool histories = true;
+};
+
+/// A record used by the dynamic analysis.
+struct RecordUsed {
+  std::string name, file, event, station, component;
+  double scale = 1.0;    ///< scale factor applied (-)
+  double pga = 0.0;      ///< PGA of the scaled record (m/s^2)
+  std::string json_path; ///< where it was listed ("" if selected)
+};
+
+/// One time-history analysis.
+struct DynamicRun {
+  std::size_t record = 0;       ///< index in FacadeAssessment::records
+  bool reversed = false;        ///< polarity flipped
+  std::size_t restitution = 0;  ///< index in DynamicSpec::restitutions
+  double e = 0.0;               ///< coefficient used (velocity ratio)
+  RockingResult result;
+  double theta_ratio = 0.0;     ///< theta_max / theta_u (-)
+  double d_control = 0.0;       ///< peak horizontal displacement of the control point (m)
+  double d_star = 0.0;          ///< the same in the equivalent SDOF [C8.7.1.4] (m)
+  bool collapse = false;        ///< overturned, or d_control >= dk0 (the threshold d0 of C8.7.1.2.1.9)
+};
+
+/// The analyses of one restitution value, summarised (seed Fig. 8; Circ. 2019 C8.7.1.2.1.9).
+struct RestitutionSummary {
+  std::size_t restitution = 0;
+  double e = 0.0;
+  int analyses = 0;
+  int overturned = 0;
+  double mean_dc = 0.0, min_dc = 0.0, max_dc = 0.0;  ///< energy demand/capacity (-)
+  double mean_theta_ratio = 0.0;                     ///< mean theta_max/theta_u (-)
+  /// Mean over the records of the peak d* (envelope of the polarities) (m).
+  double mean_d_star = 0.0;
+  bool any_collapse = false;      ///< d0 exceeded (or overturning) in some analysis
+  bool slv_satisfied = false;     ///< no collapse and mean d* <= d_SLV
+  double dc_slv = 0.0;            ///< mean d* / d_SLV (-)
+};
+
+struct FacadeAssessment {
+  CaseFile kase;
+  KinematicCaseResult kinematic;
+  std::map<LimitState, SeismicAction> actions;  ///< the site's limit states (all four from the grid)
+  std::map<LimitState, ElasticSpectrum> spectra;  ///< 5 % elastic spectrum of each of them
+  std::string site_description;                   ///< Site::describe()
+  double VR = 0.0;                                ///< reference period (years)
+  /// Dynamic part (present when the case has a "dynamic" section).
+  std::optional<DynamicSpec> dynamic;
+  bool dynamic_applies = false;
+  std::string dynamic_note;  ///< why it does not apply, or remarks
+  std::optional<ChainRockingBody> body;
+  std::optional<RockingModel> model;  ///< model of the first restitution value (geometry, theta_u, capacity)
+  std::vector<RecordUsed> records;
+  std::optional<SelectionResult> selection;
+  PeriodRange selection_range{};
+  std::vector<std::string> record_failures;  ///< "<path>: <message>" of records skipped (--keep-going)
+  std::vector<DynamicRun> runs;
+  std::vector<RestitutionSummary> summaries;
+  /// Every check: the kinematic rows of both editions, then "dynamic" rows.
+  std::vector<CheckRow> checks;
+
+  // Curves for the report (computed here so the report never recomputes physics).
+  std::vector<double> periods;                         ///< s (0 first, then log-spaced to 4 s)
+  std::map<LimitState, std::vector<double>> site_Se;   ///< 5 % elastic Se at `periods` (m/s^2)
+  std::vector<std::vector<double>> record_psa;         ///< scaled 5 % PSA of each record at `periods` (m/s^2)
+  std::vector<double> mean_psa;                        ///< their mean (m/s^2)
+  std::vector<double> mr_theta, mr_moment;             ///< moment-rotation curve of the body: rad, N m/m
+};
+
+/// Runs the whole assessment of a case. Throws InputError for bad input
+/// (naming the JSON path); physical outcomes are results.
+FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& options = {});
+
+}  // namespace assess

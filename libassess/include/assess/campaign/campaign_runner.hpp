@@ -1,0 +1,75 @@
+// campaign_runner.hpp: runs a campaign on a pool of threads, streaming the
+// rows of results.csv to disk in id order as they finish, resumable, and
+// splittable into parts (one per MPI rank) that merge into the same file.
+#pragma once
+
+#include "assess/campaign/campaign.hpp"
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace assess {
+
+/// Settings of a campaign run, with documented defaults.
+struct CampaignRunOptions {
+  unsigned threads = 0;     ///< worker threads; 0 = std::thread::hardware_concurrency() (default)
+  std::uint64_t limit = 0;  ///< run only the analyses with id < limit; 0 = all (default)
+  bool resume = false;      ///< continue an existing results file after its last complete row (default false)
+  /// Partition for distributed runs: this process runs the groups g with
+  /// g mod parts == part (a group shares wall, record, scale, realisation).
+  /// Defaults 0 of 1: everything.
+  int part = 0;
+  int parts = 1;
+  /// Called after rows are written, with (analyses done, analyses to do) in
+  /// this part, counting rows found on resume. Called from one thread at a time.
+  std::function<void(std::uint64_t done, std::uint64_t total)> progress;
+  /// If set, checked before each group: once true, no new group starts, the
+  /// groups under way finish and are written, and run_campaign returns with
+  /// `interrupted` set (e.g. set from a SIGINT handler; lock-free, so
+  /// signal-safe). Default none.
+  const std::atomic<bool>* cancel = nullptr;
+
+  /// @throws InputError naming the invalid field
+  void validate() const;
+};
+
+/// What a run did.
+struct CampaignRunSummary {
+  std::uint64_t total = 0;    ///< analyses of this part (within the limit)
+  std::uint64_t resumed = 0;  ///< rows already present when resuming
+  std::uint64_t run = 0;      ///< analyses run now
+  std::uint64_t failed = 0;   ///< of which failed (status "failed")
+  double seconds = 0.0;       ///< wall-clock time of this run (s)
+  bool interrupted = false;   ///< stopped by options.cancel before the end
+};
+
+/// The header of results.csv (column names with units).
+std::string campaign_csv_header();
+/// One CSV line (without newline) for a row.
+std::string campaign_csv_row(const AnalysisRow& row);
+/// Parses one line written by campaign_csv_row. @throws InputError if malformed.
+AnalysisRow parse_campaign_csv_row(const std::string& line);
+/// Reads every row of a results file. @throws InputError if the header differs.
+std::vector<AnalysisRow> read_campaign_csv(const std::string& path);
+
+/// The results file of part `part` of `parts` in out_dir: results.csv when
+/// parts == 1, else results.part<part>of<parts>.csv.
+std::string campaign_part_path(const std::string& out_dir, int part, int parts);
+
+/// Runs (or resumes) the campaign's analyses of the options' part into
+/// campaign_part_path(out_dir, ...), and writes out_dir/campaign.json (the
+/// normalised spec). Rows are written in id order and flushed as soon as the
+/// rows before them are done, so an interrupted run leaves a valid prefix.
+/// @throws InputError if out_dir cannot be written, or when resuming a file
+///   whose header or campaign.json differs from this campaign's.
+CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out_dir,
+                                const CampaignRunOptions& options);
+
+/// Merges the part files (each in increasing id order) into one file in id
+/// order, identical to a single-process run. @throws InputError on a bad part.
+void merge_campaign_parts(const std::vector<std::string>& part_paths, const std::string& out_path);
+
+}  // namespace assess

@@ -1,0 +1,66 @@
+// code_checks.hpp: the checks of a local mechanism by NTC 2008 (Circ.
+// 617/2009 C8A.4) and NTC 2018 (Circ. 2019 §C8.7.1.2.1.5-.8), at ground
+// level and at height, linear (strength) and non-linear (displacement).
+#pragma once
+
+#include "assess/kinematic/floor_spectrum.hpp"
+#include "assess/hazard/hazard.hpp"
+#include "assess/kinematic/kinematic_analysis.hpp"
+#include "assess/hazard/seismic_action.hpp"
+#include "assess/hazard/spectrum.hpp"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace assess {
+
+enum class CodeEdition { NTC2008, NTC2018 };
+std::string to_string(CodeEdition c);       ///< "NTC2008", "NTC2018"
+CodeEdition parse_code_edition(const std::string& s);  ///< InputError otherwise
+
+/// One check: demand, capacity (same unit), dc = demand / capacity, verdict
+/// dc <= 1. For NTC 2018 also the capacity in PGA terms: the ag on rock that
+/// the mechanism withstands, F0 and TC* held at the limit state's values.
+struct CheckRow {
+  std::string code;         ///< "NTC2008" | "NTC2018"
+  std::string limit_state;  ///< "SLD" | "SLV" | "SLC"
+  std::string kind;         ///< "strength" | "displacement"
+  std::string location;     ///< "ground" | "height"
+  std::string clause;       ///< clause and certainty tag
+  std::string formula;      ///< the demand, in words ("ag S / q", "SDe(Ts)" ...)
+  double demand = 0.0;
+  double capacity = 0.0;
+  std::string unit;         ///< "m/s2" | "m"
+  double dc = 0.0;
+  bool satisfied = false;
+  bool has_pga = false;     ///< NTC 2018 rows
+  double ag_capacity_g = 0.0;  ///< ag the mechanism withstands (g); inf if never reached
+  double ag_demand_g = 0.0;    ///< ag of the site for the limit state (g)
+  double dc_pga = 0.0;         ///< ag_demand / ag_capacity
+};
+
+/// What the checks need besides the analysis.
+struct CheckInput {
+  /// Hazard (ag in g, F0, TC* in s) per limit state; SLD and SLV for NTC
+  /// 2008, SLD, SLV and SLC for NTC 2018.
+  std::map<LimitState, HazardParams> hazard;
+  SiteConditions site;
+  /// Height Z (m) of the constraint centroid above the foundation; 0 = ground level.
+  double Z = 0.0;
+  /// The building, required when Z > 0.
+  std::optional<BuildingModel> building;
+  double q = 2.0;                    ///< behaviour factor (code_rules::q_local_mechanism)
+  double damping_SLV_pct = 8.0;      ///< xi of the mechanism at SLV (%)
+  double damping_SLC_pct = 10.0;     ///< xi of the mechanism at SLC (%)
+  std::vector<CodeEdition> codes{CodeEdition::NTC2008, CodeEdition::NTC2018};
+  void validate() const;             ///< InputError naming the missing item
+};
+
+/// Every check of the requested editions. The analysis must have activated
+/// (alpha0 > 0) and, for the displacement checks, a complete curve; otherwise
+/// only the strength checks are returned.
+std::vector<CheckRow> run_code_checks(const KinematicResult& r, const CheckInput& in);
+
+}  // namespace assess

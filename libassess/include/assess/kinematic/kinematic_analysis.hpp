@@ -1,0 +1,131 @@
+// kinematic_analysis.hpp: linear and non-linear kinematic analysis of a chain
+// of rigid blocks: alpha0, M*, e*, a0* and the capacity curve with d0*, du*,
+// Ts (NTC 2008, Circ. 617/2009 C8A.4) and d_SLV, d_SLC, T_SLV, T_SLC
+// (NTC 2018, Circ. 2019 §C8.7.1.2.1).
+#pragma once
+
+#include "assess/kinematic/chain.hpp"
+
+#include <Eigen/Dense>
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace assess {
+
+/// How alpha varies with the control displacement d_k.
+enum class CurveModel {
+  /// alpha(d_k) from the equilibrium of the chain in its finite-displacement
+  /// configuration (default; Circ. 2019 §C8.7.1.2.1.2).
+  FiniteDisplacement,
+  /// alpha = alpha0 (1 - d_k / d_k0), the straight line of C8A.4.5 through the
+  /// same end points (d_k0 still from the finite displacements).
+  Linearised,
+};
+
+/// Settings of the analysis.
+struct KinematicOptions {
+  /// Confidence factor FC (-), >= 1 (code_rules::confidence_factor).
+  double FC = 1.35;
+  CurveModel curve_model = CurveModel::FiniteDisplacement;
+  /// Number of points of the reported capacity curve, >= 3.
+  int curve_points = 41;
+  /// Control point: a material point (m) of block `control_block`. With
+  /// control_block = -1 (default) it is the centroid of the seismic weights
+  /// when that lies on a block and moves outward, else the seismic weight point
+  /// with the largest W dx.
+  int control_block = -1;
+  Eigen::Vector2d control_point{0.0, 0.0};
+  /// Caps on the equivalent displacement d* (m) for local incompatibilities
+  /// (beam unseating ...): du* (2008), d_SLV and d_SLC (2018). Infinity = none.
+  double du_cap = std::numeric_limits<double>::infinity();
+  double d_SLV_cap = std::numeric_limits<double>::infinity();
+  double d_SLC_cap = std::numeric_limits<double>::infinity();
+  /// Throws InputError naming the field.
+  void validate() const;
+};
+
+/// The virtual-work contribution of one load (virtual displacements with the
+/// normalisation of Chain::virtual_displacement: largest rotation 1 rad).
+struct LoadWork {
+  Load load;          ///< the load (self weights included)
+  double dx = 0.0;    ///< horizontal virtual displacement of its point (m/rad)
+  double dz = 0.0;    ///< vertical virtual displacement, up positive (m/rad)
+  double W_dx = 0.0;  ///< W dx of a seismic weight (N m/rad), else 0
+  /// W dx^2 of a seismic weight (N m^2/rad^2), else 0; for a self weight the
+  /// integral of dx^2 dW over the block (distributed mass, see vertical_gyration_sq).
+  double W_dx2 = 0.0;
+  /// Virtual work of the load's non-seismic force (N m/rad): -W dz for a
+  /// weight on the chain, F . delta for a force or tie, -F |dx| for friction.
+  double work = 0.0;
+};
+
+/// One point of the capacity curve.
+struct CapacityPoint {
+  double dk = 0.0;       ///< horizontal displacement of the control point (m)
+  double alpha = 0.0;    ///< load multiplier (-)
+  double d_star = 0.0;   ///< equivalent SDOF displacement d* (m) [C8A.4.5]/[C8.7.1.4]
+  double a_star = 0.0;   ///< spectral acceleration a* (m/s^2) [C8A.4.4]/[C8.7.1.3]
+};
+
+enum class CurveTermination {
+  Complete,        ///< the curve reaches alpha = 0 at d_k0
+  NotActivated,    ///< alpha0 <= 0: the mechanism never activates (no curve)
+  NoZeroCrossing,  ///< alpha stays > 0 up to the largest displacement explored
+  NewtonFailure,   ///< the finite-displacement configuration could not be found
+};
+std::string to_string(CurveTermination t);
+
+/// Every intermediate quantity of the analysis.
+struct KinematicResult {
+  // Linear kinematic analysis.
+  std::vector<LoadWork> loads;
+  double sum_W = 0.0;       ///< sum of the seismic weights P + Q (N)
+  double sum_W_dx = 0.0;    ///< sum W dx (N m/rad)
+  double sum_W_dx2 = 0.0;   ///< sum W dx^2 (N m^2/rad^2)
+  double work_other = 0.0;  ///< virtual work of the non-seismic forces (N m/rad)
+  double alpha0 = 0.0;      ///< activation multiplier (-) [C8A.4.1]/[C8.7.1.1]
+  bool activates = false;   ///< alpha0 > 0
+  double M_star = 0.0;      ///< participating mass M* (kg) [C8A.4.2]
+  double e_star = 0.0;      ///< participating mass fraction e* (-) [C8A.4.3]/[C8.7.1.5]
+  double FC = 0.0;          ///< confidence factor used (-)
+  double a0_star = 0.0;     ///< spectral activation acceleration a0* (m/s^2) [C8A.4.4]/[C8.7.1.3]
+  // Control point.
+  int control_block = -1;
+  Eigen::Vector2d control_point{0.0, 0.0};  ///< m
+  double dx_k = 0.0;        ///< its horizontal virtual displacement (m/rad)
+  double d_star_per_dk = 0.0;  ///< d*/d_k = sum W dx^2 / (dx_k sum W dx) (-)
+  // Non-linear kinematic analysis.
+  CurveModel curve_model = CurveModel::FiniteDisplacement;
+  CurveTermination termination = CurveTermination::NotActivated;
+  std::string message;        ///< why the curve is incomplete, if it is
+  double dk0 = 0.0;           ///< control displacement at alpha = 0 (m)
+  double d0_star = 0.0;       ///< d* at alpha = 0 (m)
+  std::vector<CapacityPoint> curve;  ///< from d* = 0 to d0*
+  // NTC 2008 (Circ. 617/2009 C8A.4).
+  double du_star = 0.0;   ///< ultimate displacement du* (m)
+  double ds_star = 0.0;   ///< secant displacement ds* (m)
+  double as_star = 0.0;   ///< a*(ds*) (m/s^2)
+  double Ts = 0.0;        ///< secant period 2 pi sqrt(ds*/as*) (s)
+  // NTC 2018 (Circ. 2019 §C8.7.1.2.1.6, .8).
+  double d_SLV = 0.0, a_SLV = 0.0, T_SLV = 0.0;  ///< m, m/s^2, s [C8.7.1.10]
+  double d_SLC = 0.0, a_SLC = 0.0, T_SLC = 0.0;  ///< m, m/s^2, s [C8.7.1.11]
+
+  bool curve_complete() const { return termination == CurveTermination::Complete; }
+};
+
+/// Load multiplier alpha in the configuration q (Chain coordinates), by
+/// virtual work with the virtual displacements of that configuration:
+/// alpha = -(work of the non-seismic forces) / (sum W dx).
+double load_multiplier(const Chain& chain, const Eigen::VectorXd& q);
+
+/// Virtual-work table of the loads in configuration q.
+std::vector<LoadWork> load_works(const Chain& chain, const Eigen::VectorXd& q);
+
+/// Runs the linear and non-linear analysis. Never throws for a mechanism that
+/// does not activate (termination NotActivated); throws InputError for bad
+/// options or a control point not on its block.
+KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& options = {});
+
+}  // namespace assess

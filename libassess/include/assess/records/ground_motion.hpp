@@ -1,0 +1,58 @@
+// ground_motion.hpp: the ground acceleration driving a rocking analysis,
+// either a sampled record (piecewise linear between samples) or a given
+// function of time (pulses, free vibration).
+#pragma once
+
+#include "assess/records/record.hpp"
+
+#include <functional>
+#include <limits>
+#include <vector>
+
+namespace assess {
+
+/// Ground acceleration ug''(t) (m/s^2, positive outward) over [0, duration].
+class GroundMotion {
+ public:
+  /// A record, scaled by `scale` and, if `reverse`, with flipped polarity
+  /// (the record's positive direction becomes inward). Breakpoints at every sample.
+  /// @param scale dimensionless factor, finite
+  static GroundMotion from_record(const Record& record, double scale = 1.0, bool reverse = false);
+  /// A function of time (m/s^2) on [0, duration_s], with the times (s) where
+  /// it is not smooth. The integrator takes steps of at most max_step_s (s,
+  /// default 0.01 s) so that a lift-off threshold crossed only briefly (while
+  /// the body rests and its state does not limit the step) is not stepped over.
+  static GroundMotion from_function(std::function<double(double)> acc_m_s2, double duration_s,
+                                    std::vector<double> breakpoints_s = {}, double max_step_s = 0.01);
+  /// No excitation for duration_s (free rocking).
+  static GroundMotion none(double duration_s);
+
+  /// ug''(t) (m/s^2); 0 outside [0, duration] for records.
+  double acc(double t) const {
+    if (!samples_.empty()) {
+      if (t < 0.0) return 0.0;
+      const double x = t * inv_dt_;
+      const long i = static_cast<long>(x);  // signed: a single conversion instruction
+      if (static_cast<std::size_t>(i) + 1 >= samples_.size()) return t <= duration_ ? samples_.back() : 0.0;
+      return samples_[i] + (x - double(i)) * (samples_[i + 1] - samples_[i]);
+    }
+    return fn_ ? fn_(t) : 0.0;
+  }
+  /// Next breakpoint strictly after t (s), +inf if none.
+  double next_breakpoint(double t) const;
+  double duration() const { return duration_; }  ///< s
+  /// Largest integration step that resolves the excitation (s): +inf for
+  /// records (every sample is a breakpoint), max_step_s for functions.
+  double max_step() const { return max_step_; }
+  double pga() const;                             ///< max |ug''| over the samples (m/s^2); records only, else 0
+
+ private:
+  std::vector<double> samples_;  // m/s^2, already scaled
+  double dt_ = 0.0, inv_dt_ = 0.0;
+  std::function<double(double)> fn_;
+  std::vector<double> breakpoints_;
+  double duration_ = 0.0;
+  double max_step_ = std::numeric_limits<double>::infinity();
+};
+
+}  // namespace assess

@@ -1,0 +1,45 @@
+// record_io.hpp: readers of accelerogram files into Record (SI units).
+//
+// Formats (spectra/records/README.md §4): PEER AT2 with all its header
+// variants and line endings (LF, CRLF, CR CR LF); ESM / ITACA ASCII with the
+// variable "DYNA" KEY: value header; GEM / ITACA processed fixed-width
+// `.cor.acc`; plain one- or two-column text with a declared time step and
+// unit. Every error names the file (and line) and what was expected.
+#pragma once
+
+#include "assess/records/record.hpp"
+
+#include <string>
+
+namespace assess {
+
+/// Unit of the acceleration values in a file.
+enum class AccelerationUnit {
+  g,      ///< multiples of standard gravity g_n = 9.80665 m/s^2
+  m_s2,   ///< m/s^2
+  cm_s2   ///< cm/s^2 (gal)
+};
+
+/// Parses "g", "m/s2", "m/s^2", "cm/s2", "cm/s^2", "gal".
+/// @throws InputError for anything else
+AccelerationUnit parse_acceleration_unit(const std::string& text);
+/// Factor converting a value in `unit` to m/s^2.
+double to_m_s2(AccelerationUnit unit);
+
+/// Reads an accelerogram, detecting its format from the content (PEER AT2,
+/// ESM/ITACA ASCII, GEM .cor.acc). Values are converted to m/s^2.
+/// @throws InputError for an unknown format, a truncated record (fewer
+///   values than the header declares), a non-numeric value, dt <= 0.
+Record read_record(const std::string& path);
+
+/// Reads a plain text record: one value per line, or two columns (time in s,
+/// acceleration) whose time spacing must equal dt. Blank lines and lines
+/// starting with '#' are skipped.
+/// @param dt_s time step (s), > 0
+/// @param unit unit of the acceleration values
+Record read_plain_record(const std::string& path, double dt_s, AccelerationUnit unit);
+
+/// Factor that scales `record` to a peak ground acceleration target_pga_m_s2 (m/s^2, > 0).
+double scale_factor_to_pga(const Record& record, double target_pga_m_s2);
+
+}  // namespace assess

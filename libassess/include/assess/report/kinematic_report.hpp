@@ -1,0 +1,32 @@
+// kinematic_report.hpp: text and JSON reports of a kinematic case and of
+// check rows (report layer: formatting only, no physics).
+#pragma once
+
+#include "assess/assessment/case_file.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace assess {
+
+/// printf-style formatting into a std::string.
+std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
+/// "verificato / satisfied" or "non verificato / not satisfied".
+const char* verdict(bool satisfied);
+
+/// A check row as JSON: code, limit_state, kind, location, demand, capacity,
+/// unit, dc, satisfied, clause, formula (+ ag_capacity_g, ag_demand_g, dc_pga).
+nlohmann::json to_json(const CheckRow& r);
+/// The kinematic result as JSON (keys alpha0, M_star (t), e_star, a0_star
+/// (m/s2), d0_star, du_star (m), Ts (s), d_SLV, d_SLC (m), T_SLV, T_SLC (s),
+/// capacity_curve [{d_star, a_star}], checks [...], loads, candidates).
+nlohmann::json kinematic_json(const CaseFile& c, const KinematicCaseResult& res);
+/// The readable kinematic report: every intermediate quantity with its clause,
+/// the capacity curve and the checks table.
+std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res);
+/// The checks table alone.
+std::string checks_text(const std::vector<CheckRow>& checks);
+
+}  // namespace assess

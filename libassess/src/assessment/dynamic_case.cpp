@@ -1,0 +1,146 @@
+// dynamic_case.cpp: parsing of the "dynamic" section of a case file.
+#include "assess/assessment/dynamic_case.hpp"
+
+#include "assess/support/error.hpp"
+#include "assess/hazard/hazard.hpp"
+#include "assess/support/json_input.hpp"
+#include "assess/support/units.hpp"
+
+#include <cstdio>
+#include <sys/stat.h>
+
+namespace assess {
+
+namespace {
+
+bool exists(const std::string& p) {
+  struct stat st;
+  return ::stat(p.c_str(), &st) == 0;
+}
+
+// A record file: absolute, else relative to the case file, else to the data dir.
+std::string resolve(const std::string& f, const std::string& case_dir) {
+  if (!f.empty() && f[0] == '/') return f;
+  const std::string a = (case_dir.empty() ? std::string(".") : case_dir) + "/" + f;
+  if (exists(a)) return a;
+  const std::string b = data_dir() + "/" + f;
+  if (exists(b)) return b;
+  return a;  // reported as missing by the reader, with this path
+}
+
+Restitution parse_restitution(const JsonNode& n) {
+  if (n.value().is_string()) {
+    const std::string s = n.as_string();
+    if (s == "housner") return Restitution::housner();
+    if (s == "one-sided-theory") return Restitution::one_sided_theory();
+    if (s == "none") return Restitution::none();
+    n.fail("expected a coefficient of restitution in [-1, 1] (-) or one of \"housner\", \"one-sided-theory\", "
+           "\"none\", got \"" + s + "\"");
+  }
+  return Restitution::given(n.as_number("(-, ratio of angular velocities after/before impact)", -1.0, 1.0));
+}
+
+}  // namespace
+
+std::string describe(const Restitution& r) {
+  switch (r.kind) {
+    case Restitution::Kind::value: {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "e = %.3g", r.e);
+      return buf;
+    }
+    case Restitution::Kind::housner: return "Housner";
+    case Restitution::Kind::one_sided_theory: return "one-sided theory";
+    case Restitution::Kind::none: return "none";
+  }
+  return "?";
+}
+
+std::string to_string(Polarity p) {
+  switch (p) {
+    case Polarity::normal: return "normal";
+    case Polarity::reversed: return "reversed";
+    case Polarity::both: return "both";
+  }
+  return "?";
+}
+
+DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, const std::string& case_dir) {
+  const JsonNode d(doc, file, "/dynamic");
+  if (!d.is_object()) d.fail("expected an object");
+  d.allow_only({"model", "k", "sidedness", "restitution", "polarity", "overturn_at", "records", "select",
+                "tail_s", "integrator"});
+  DynamicSpec s;
+  s.smooth = d.has("model") ? d.choice("model", {"smooth", "rigid"}) == "smooth" : true;
+  if (s.smooth) {
+    s.k = d.positive("k", "kN/m3 (Winkler modulus of the base)") * units::kN;
+  } else if (d.has("k")) {
+    d.at("k").fail("a Winkler modulus is only used by the smooth model; remove it or set \"model\": \"smooth\"");
+  }
+  s.sidedness = d.has("sidedness") && d.choice("sidedness", {"one-sided", "two-sided"}) == "two-sided"
+                    ? Sidedness::two_sided
+                    : Sidedness::one_sided;
+  if (d.has("restitution")) {
+    const JsonNode r = d.at("restitution");
+    if (r.value().is_array()) {
+      for (const JsonNode& e : d.array("restitution", 1)) s.restitutions.push_back(parse_restitution(e));
+    } else {
+      s.restitutions.push_back(parse_restitution(r));
+    }
+  } else {
+    s.restitutions.push_back(s.sidedness == Sidedness::one_sided ? Restitution::one_sided_theory()
+                                                                  : Restitution::housner());
+  }
+  if (d.has("polarity")) {
+    const std::string p = d.choice("polarity", {"normal", "reversed", "both"});
+    s.polarity = p == "both" ? Polarity::both : p == "reversed" ? Polarity::reversed : Polarity::normal;
+  }
+  if (d.has("overturn_at"))
+    s.options.overturn = d.choice("overturn_at", {"theta_u", "half_pi"}) == "half_pi" ? OverturnCriterion::half_pi
+                                                                                      : OverturnCriterion::theta_u;
+  s.options.tail_s = d.number_or("tail_s", 0.0, "s (free motion after the record)", 0.0, 600.0);
+  if (auto in = d.find("integrator")) {
+    in->allow_only({"stepper", "rel_tol", "abs_tol"});
+    if (in->has("stepper")) {
+      s.options.stepper = *parse_stepper(in->choice("stepper", {"rk8pd", "rkck", "rkf45"}));
+    }
+    s.options.rel_tol = in->number_or("rel_tol", s.options.rel_tol, "(-)", 1e-14, 1e-2);
+    s.options.abs_tol = in->number_or("abs_tol", s.options.abs_tol, "rad", 1e-16, 1e-2);
+  }
+  if (d.has("records") == d.has("select"))
+    d.fail("give either \"records\" (a list of {\"file\", \"scale\"}) or \"select\" ({\"count\": N}), not both "
+           "and not neither");
+  if (d.has("records")) {
+    const std::vector<JsonNode> recs = d.array("records", 0);
+    if (recs.empty()) d.at("records").fail("expected at least one record {\"file\": ..., \"scale\": ...}");
+    for (const JsonNode& r : recs) {
+      r.allow_only({"file", "scale"});
+      ListedRecord lr;
+      lr.file = resolve(r.string("file"), case_dir);
+      lr.scale = r.has("scale") ? r.number("scale", "(-, linear scale factor)", 1e-6, 100.0) : 1.0;
+      if (!(lr.scale > 0.0)) r.at("scale").fail("expected a scale factor > 0 (-)");
+      lr.json_path = r.path();
+      s.records.push_back(lr);
+    }
+  } else {
+    const JsonNode sel = d.at("select");
+    sel.allow_only({"count", "period_range_s", "max_scale", "catalogue"});
+    RecordSelectionSpec rs;
+    rs.count = sel.integer_or("count", 7, 1, 50);
+    rs.max_scale = sel.number_or("max_scale", 5.0, "(-)", 1.0, 100.0);
+    if (sel.has("period_range_s")) {
+      const std::vector<JsonNode> pr = sel.array("period_range_s", 2);
+      if (pr.size() != 2) sel.at("period_range_s").fail("expected [T_min, T_max] in s");
+      rs.T_min = pr[0].as_number("s", 0.01, 10.0);
+      rs.T_max = pr[1].as_number("s", 0.01, 10.0);
+      if (!(*rs.T_max > *rs.T_min)) sel.at("period_range_s").fail("expected T_min < T_max (s)");
+    }
+    rs.catalogue = sel.has("catalogue") ? resolve(sel.string("catalogue"), case_dir)
+                                        : data_dir() + "/spectra/records/catalogue.json";
+    s.selection = rs;
+  }
+  s.options.validate();
+  return s;
+}
+
+}  // namespace assess

@@ -1,0 +1,405 @@
+// campaign_runner.cpp: thread pool, ordered streaming CSV, resume and merge
+// of campaign parts.
+//
+// Notation:
+//   group   analyses sharing wall, record, scale and realisation (one applied
+//           record, one response spectrum); the unit of work of a thread and
+//           of the partition between MPI ranks (group mod parts == part)
+//   task    the ids of one group still to run, [first, end)
+//   reorder buffer: rows of finished tasks wait until every earlier task is
+//           written, so the file is always a prefix of the part's id sequence
+#include "assess/campaign/campaign_runner.hpp"
+
+#include "assess/support/error.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+namespace assess {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* const kColumns[] = {
+    "id",          "wall",           "b_m",          "h_m",          "unit_weight_kN_m3",
+    "k_kN_m3",     "record",         "scale",        "realisation",  "time_mult",
+    "amp_mult",    "restitution",    "model",        "pga_m_s2",     "a0_star_m_s2",
+    "du_star_m",   "Ts_s",           "SDe_Ts_m",     "dc_strength",  "dc_displacement",
+    "e",           "theta_u_rad",    "theta_max_rad", "theta_max_over_theta_u", "t_theta_max_s",
+    "overturned",  "impacts",        "dc_energy",    "termination",  "status",
+    "reason"};
+constexpr std::size_t kNumColumns = sizeof(kColumns) / sizeof(kColumns[0]);
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+std::string quoted(const std::string& s) {
+  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"') out += "\"\"";
+    else if (c == '\n' || c == '\r') out += ' ';
+    else out += c;
+  }
+  return out + "\"";
+}
+
+std::vector<std::string> split_csv(const std::string& line) {
+  std::vector<std::string> f(1);
+  bool q = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (q) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') f.back() += '"', ++i;
+      else if (c == '"') q = false;
+      else f.back() += c;
+    } else if (c == '"') {
+      q = true;
+    } else if (c == ',') {
+      f.emplace_back();
+    } else {
+      f.back() += c;
+    }
+  }
+  return f;
+}
+
+double to_double(const std::string& s) {
+  std::size_t n = 0;
+  const double v = std::stod(s, &n);
+  if (n != s.size()) throw std::invalid_argument(s);
+  return v;
+}
+
+struct Task {
+  std::uint64_t first, end;
+};
+
+}  // namespace
+
+void CampaignRunOptions::validate() const {
+  if (parts < 1) throw InputError("parts must be >= 1");
+  if (part < 0 || part >= parts) throw InputError("part must lie in [0, parts)");
+}
+
+std::string campaign_csv_header() {
+  std::string h;
+  for (std::size_t i = 0; i < kNumColumns; ++i) h += (i ? "," : "") + std::string(kColumns[i]);
+  return h;
+}
+
+std::string campaign_csv_row(const AnalysisRow& r) {
+  std::string s;
+  auto put = [&s](const std::string& v) { s += s.empty() ? v : "," + v; };
+  put(std::to_string(r.id));
+  put(quoted(r.wall));
+  put(num(r.b_m));
+  put(num(r.h_m));
+  put(num(r.unit_weight_kN_m3));
+  put(r.k_kN_m3 ? num(*r.k_kN_m3) : "");
+  put(quoted(r.record));
+  put(num(r.scale));
+  put(std::to_string(r.realisation));
+  put(num(r.time_mult));
+  put(num(r.amp_mult));
+  put(quoted(r.restitution));
+  put(r.model);
+  for (double v : {r.pga_m_s2, r.a0_star_m_s2, r.du_star_m, r.Ts_s, r.SDe_Ts_m, r.dc_strength, r.dc_displacement})
+    put(r.has_code ? num(v) : "");
+  if (r.has_dynamics) {
+    put(r.e ? num(*r.e) : "");
+    for (double v : {r.theta_u_rad, r.theta_max_rad, r.theta_ratio, r.t_theta_max_s}) put(num(v));
+    put(r.overturned ? "1" : "0");
+    put(std::to_string(r.impacts));
+    put(num(r.dc_energy));
+    put(r.termination);
+  } else {
+    for (int i = 0; i < 9; ++i) s += ",";
+  }
+  put(r.ok ? "ok" : "failed");
+  put(quoted(r.reason));
+  return s;
+}
+
+AnalysisRow parse_campaign_csv_row(const std::string& line) {
+  const std::vector<std::string> f = split_csv(line);
+  if (f.size() != kNumColumns)
+    throw InputError("campaign row has " + std::to_string(f.size()) + " fields, expected " +
+                     std::to_string(kNumColumns) + ": " + line.substr(0, 80));
+  AnalysisRow r;
+  try {
+    std::size_t i = 0;
+    std::size_t n = 0;
+    r.id = std::stoull(f[i++], &n);
+    if (n != f[0].size()) throw std::invalid_argument("id");
+    r.wall = f[i++];
+    r.b_m = to_double(f[i++]);
+    r.h_m = to_double(f[i++]);
+    r.unit_weight_kN_m3 = to_double(f[i++]);
+    if (!f[i].empty()) r.k_kN_m3 = to_double(f[i]);
+    ++i;
+    r.record = f[i++];
+    r.scale = to_double(f[i++]);
+    r.realisation = std::stoi(f[i++]);
+    r.time_mult = to_double(f[i++]);
+    r.amp_mult = to_double(f[i++]);
+    r.restitution = f[i++];
+    r.model = f[i++];
+    r.has_code = !f[i].empty();
+    if (r.has_code) {
+      r.pga_m_s2 = to_double(f[i]);
+      r.a0_star_m_s2 = to_double(f[i + 1]);
+      r.du_star_m = to_double(f[i + 2]);
+      r.Ts_s = to_double(f[i + 3]);
+      r.SDe_Ts_m = to_double(f[i + 4]);
+      r.dc_strength = to_double(f[i + 5]);
+      r.dc_displacement = to_double(f[i + 6]);
+    }
+    i += 7;
+    r.has_dynamics = !f[i + 8].empty();
+    if (r.has_dynamics) {
+      if (!f[i].empty()) r.e = to_double(f[i]);
+      r.theta_u_rad = to_double(f[i + 1]);
+      r.theta_max_rad = to_double(f[i + 2]);
+      r.theta_ratio = to_double(f[i + 3]);
+      r.t_theta_max_s = to_double(f[i + 4]);
+      r.overturned = f[i + 5] == "1";
+      r.impacts = std::stol(f[i + 6]);
+      r.dc_energy = to_double(f[i + 7]);
+      r.termination = f[i + 8];
+    }
+    i += 9;
+    if (f[i] != "ok" && f[i] != "failed") throw std::invalid_argument("status");
+    r.ok = f[i++] == "ok";
+    r.reason = f[i];
+  } catch (const std::exception&) {
+    throw InputError("malformed campaign row: " + line.substr(0, 80));
+  }
+  return r;
+}
+
+std::vector<AnalysisRow> read_campaign_csv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError("cannot open campaign results '" + path + "'");
+  std::string line;
+  if (!std::getline(in, line) || line != campaign_csv_header())
+    throw InputError("'" + path + "' is not a campaign results file (its header differs)");
+  std::vector<AnalysisRow> rows;
+  while (std::getline(in, line))
+    if (!line.empty()) rows.push_back(parse_campaign_csv_row(line));
+  return rows;
+}
+
+std::string campaign_part_path(const std::string& out_dir, int part, int parts) {
+  if (parts == 1) return out_dir + "/results.csv";
+  return out_dir + "/results.part" + std::to_string(part) + "of" + std::to_string(parts) + ".csv";
+}
+
+namespace {
+
+// The complete rows at the start of an existing part file that follow the
+// expected id sequence; returns their count and the byte offset after them.
+std::pair<std::uint64_t, std::uint64_t> valid_prefix(const std::string& path, const std::vector<Task>& tasks) {
+  std::ifstream in(path, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string header = campaign_csv_header() + "\n";
+  if (text.compare(0, header.size(), header) != 0)
+    throw InputError("cannot resume '" + path + "': its header is not this version's results header");
+  std::uint64_t offset = header.size(), count = 0;
+  std::size_t t = 0;
+  std::uint64_t next = tasks.empty() ? 0 : tasks[0].first;
+  while (t < tasks.size()) {
+    const std::size_t nl = text.find('\n', offset);
+    if (nl == std::string::npos) break;  // an incomplete last line is dropped
+    AnalysisRow row;
+    try {
+      row = parse_campaign_csv_row(text.substr(offset, nl - offset));
+    } catch (const InputError&) {
+      break;
+    }
+    if (row.id != next) break;
+    offset = nl + 1;
+    ++count;
+    if (++next == tasks[t].end && ++t < tasks.size()) next = tasks[t].first;
+  }
+  return {count, offset};
+}
+
+}  // namespace
+
+CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out_dir,
+                                const CampaignRunOptions& options) {
+  options.validate();
+  const auto start = std::chrono::steady_clock::now();
+  const CampaignSpec& spec = campaign.spec();
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  if (ec || !fs::is_directory(out_dir)) throw InputError("cannot create output directory '" + out_dir + "'");
+
+  // The normalised spec: a resumed run must be the same campaign.
+  const std::string spec_path = out_dir + "/campaign.json";
+  const std::string spec_text = to_json(spec).dump(2) + "\n";
+  if (options.resume && fs::exists(spec_path)) {
+    std::ifstream in(spec_path);
+    std::string old((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (old != spec_text)
+      throw InputError("cannot resume: '" + spec_path + "' describes a different campaign (the inputs changed)");
+  } else {
+    // Written by every part to a private name and renamed: identical content, atomic replacement.
+    const std::string tmp = spec_path + ".tmp" + std::to_string(options.part);
+    std::ofstream(tmp) << spec_text;
+    fs::rename(tmp, spec_path, ec);
+    if (ec) throw InputError("cannot write '" + spec_path + "'");
+  }
+
+  // The tasks of this part: one per group; `all` ignores the limit (a resumed
+  // file may hold more rows than this run asks for: they are kept).
+  const std::uint64_t end = options.limit > 0 ? std::min(options.limit, spec.size()) : spec.size();
+  const std::uint64_t G = spec.group_size();
+  std::vector<Task> all, tasks;
+  CampaignRunSummary summary;
+  for (std::uint64_t g = std::uint64_t(options.part); g * G < spec.size(); g += std::uint64_t(options.parts)) {
+    all.push_back({g * G, std::min((g + 1) * G, spec.size())});
+    if (g * G < end) {
+      tasks.push_back({g * G, std::min((g + 1) * G, end)});
+      summary.total += tasks.back().end - tasks.back().first;
+    }
+  }
+
+  const std::string path = campaign_part_path(out_dir, options.part, options.parts);
+  std::ofstream out;
+  if (options.resume && fs::exists(path)) {
+    const auto [count, offset] = valid_prefix(path, all);
+    fs::resize_file(path, offset, ec);  // drops a partly written last line
+    if (ec) throw InputError("cannot truncate '" + path + "' to its complete rows");
+    summary.resumed = std::min(count, summary.total);
+    std::uint64_t skip = summary.resumed;
+    std::size_t t = 0;
+    while (t < tasks.size() && skip >= tasks[t].end - tasks[t].first) skip -= tasks[t].end - tasks[t].first, ++t;
+    tasks.erase(tasks.begin(), tasks.begin() + std::ptrdiff_t(t));
+    if (!tasks.empty()) tasks.front().first += skip;
+    out.open(path, std::ios::binary | std::ios::app);
+  } else {
+    // A part run must not silently replace a merged results.csv either.
+    for (const std::string& p : {path, campaign_part_path(out_dir, 0, 1)})
+      if (fs::exists(p) && !options.resume)
+        throw InputError("'" + p + "' exists: pass --resume to continue it, or choose another output directory");
+    out.open(path, std::ios::binary | std::ios::trunc);
+    out << campaign_csv_header() << "\n";
+  }
+  if (!out) throw InputError("cannot write '" + path + "'");
+  out.flush();
+
+  std::uint64_t done = summary.resumed;
+  if (options.progress) options.progress(done, summary.total);
+
+  std::mutex mutex;
+  std::map<std::size_t, std::string> pending;  // task index -> its rows, waiting for earlier tasks
+  std::size_t next_write = 0;
+  std::atomic<std::size_t> next_task{0};
+  std::atomic<bool> stop{false};
+  std::exception_ptr error;
+
+  auto worker = [&] {
+    try {
+      for (std::size_t t; !stop && !(options.cancel && options.cancel->load()) && (t = next_task++) < tasks.size();) {
+        const std::vector<AnalysisRow> rows = campaign.evaluate(tasks[t].first, tasks[t].end);
+        std::string text;
+        std::uint64_t failed = 0;
+        for (const auto& r : rows) {
+          text += campaign_csv_row(r) + "\n";
+          failed += r.ok ? 0 : 1;
+        }
+        std::lock_guard<std::mutex> lock(mutex);
+        summary.failed += failed;
+        pending.emplace(t, std::move(text));
+        bool wrote = false;
+        for (auto it = pending.begin(); it != pending.end() && it->first == next_write; it = pending.erase(it)) {
+          out << it->second;
+          done += tasks[next_write].end - tasks[next_write].first;
+          ++next_write;
+          wrote = true;
+        }
+        if (wrote) {
+          out.flush();
+          if (!out) throw InputError("cannot write '" + path + "' (disk full?)");
+          if (options.progress) options.progress(done, summary.total);
+        }
+      }
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!error) error = std::current_exception();
+      stop = true;
+    }
+  };
+  unsigned n = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+  n = unsigned(std::min<std::size_t>(n, std::max<std::size_t>(tasks.size(), 1)));
+  std::vector<std::thread> pool;
+  for (unsigned i = 1; i < n; ++i) pool.emplace_back(worker);
+  worker();
+  for (auto& th : pool) th.join();
+  if (error) std::rethrow_exception(error);
+
+  summary.run = done - summary.resumed;
+  summary.interrupted = done < summary.total;
+  summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return summary;
+}
+
+void merge_campaign_parts(const std::vector<std::string>& part_paths, const std::string& out_path) {
+  struct Part {
+    std::ifstream in;
+    std::string line;
+    std::uint64_t id = 0;
+    bool live = false;
+  };
+  std::vector<Part> parts(part_paths.size());
+  auto advance = [](Part& p, const std::string& name) {
+    p.live = false;
+    while (std::getline(p.in, p.line)) {
+      if (p.line.empty()) continue;
+      p.id = parse_campaign_csv_row(p.line).id;
+      p.live = true;
+      return;
+    }
+    if (!p.in.eof()) throw InputError("cannot read '" + name + "'");
+  };
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    parts[i].in.open(part_paths[i], std::ios::binary);
+    std::string header;
+    if (!parts[i].in || !std::getline(parts[i].in, header) || header != campaign_csv_header())
+      throw InputError("'" + part_paths[i] + "' is not a campaign results part");
+    advance(parts[i], part_paths[i]);
+  }
+  const std::string tmp = out_path + ".tmp";
+  std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+  out << campaign_csv_header() << "\n";
+  for (;;) {
+    Part* best = nullptr;
+    std::size_t bi = 0;
+    for (std::size_t i = 0; i < parts.size(); ++i)
+      if (parts[i].live && (!best || parts[i].id < best->id)) best = &parts[i], bi = i;
+    if (!best) break;
+    out << best->line << "\n";
+    advance(*best, part_paths[bi]);
+  }
+  out.close();
+  if (!out) throw InputError("cannot write '" + tmp + "'");
+  std::error_code ec;
+  fs::rename(tmp, out_path, ec);
+  if (ec) throw InputError("cannot write '" + out_path + "'");
+}
+
+}  // namespace assess

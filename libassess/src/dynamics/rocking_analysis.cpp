@@ -1,0 +1,320 @@
+// rocking_analysis.cpp: the rocking wall as a hybrid system (state theta,
+// theta'; mode = pivot side and contact branch) integrated by
+// integrate_hybrid, and the results of the seed paper (§3.2, Fig. 3).
+//
+// Notation (seed paper Eq. 1, research notes rocking.md §1):
+//   y[0] = theta (rad), y[1] = omega = theta' (rad/s)
+//   mode 0: at rest on the base; mode s*1: rocking on pivot s (rigid, or smooth
+//   in full contact |theta| <= theta_cr); mode s*2: smooth, partial contact.
+//   e: restitution (velocity ratio) applied at theta = 0 (rocking.md §1.2-1.3)
+//   Events per mode (all "falling" unless stated):
+//     rest:     lift about s = +1 (and -1 if two-sided): s theta''(0) rising through 0
+//     rocking:  impact s theta = 0; ultimate rotation theta_u - s theta;
+//               pi/2 - s theta (half_pi criterion); branch switch at theta_cr.
+#include "assess/dynamics/rocking_analysis.hpp"
+
+#include "assess/support/error.hpp"
+#include "assess/support/units.hpp"
+#include "support/bracket_root.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace assess {
+namespace {
+
+enum class Ev { lift_out, lift_in, impact, theta_u, half_pi, branch };
+
+/// Quintic Hermite interpolation on a step of length h from the values, first
+/// and second derivatives at both ends; s in [0, 1].
+struct Quintic {
+  double p0, m0, a0, p1, m1, a1, h;
+  double value(double s) const {
+    const double s2 = s * s, s3 = s2 * s, s4 = s3 * s, s5 = s4 * s;
+    return (1 - 10 * s3 + 15 * s4 - 6 * s5) * p0 + (s - 6 * s3 + 8 * s4 - 3 * s5) * h * m0 +
+           (0.5 * s2 - 1.5 * s3 + 1.5 * s4 - 0.5 * s5) * h * h * a0 + (0.5 * s3 - s4 + 0.5 * s5) * h * h * a1 +
+           (-4 * s3 + 7 * s4 - 3 * s5) * h * m1 + (10 * s3 - 15 * s4 + 6 * s5) * p1;
+  }
+  double slope(double s) const {  // d/ds
+    const double s2 = s * s, s3 = s2 * s, s4 = s3 * s;
+    return (-30 * s2 + 60 * s3 - 30 * s4) * p0 + (1 - 18 * s2 + 32 * s3 - 15 * s4) * h * m0 +
+           (s - 4.5 * s2 + 6 * s3 - 2.5 * s4) * h * h * a0 + (1.5 * s2 - 4 * s3 + 2.5 * s4) * h * h * a1 +
+           (-12 * s2 + 28 * s3 - 15 * s4) * h * m1 + (30 * s2 - 60 * s3 + 30 * s4) * p1;
+  }
+};
+
+class RockingSystem final : public HybridSystem {
+ public:
+  RockingSystem(const RockingModel& model, const GroundMotion& motion, const RockingOptions& opt)
+      : model_(model), motion_(motion), opt_(opt), smooth_(!model.foundation().is_rigid()),
+        two_sided_(model.sidedness() == Sidedness::two_sided) {
+    for (int m = -2; m <= 2; ++m) n_events_[m + 2] = events(m, kinds_[m + 2]);
+  }
+
+  std::size_t dimension() const override { return 2; }
+
+  bool rhs(double t, const double* y, int mode, double* dydt) const override {
+    if (mode == 0) {
+      dydt[0] = dydt[1] = 0.0;
+      return true;
+    }
+    dydt[0] = y[1];
+    dydt[1] = model_.angular_acceleration(y[0], mode > 0 ? 1 : -1, std::abs(mode) == 2, motion_.acc(t));
+    return std::isfinite(dydt[1]);
+  }
+
+  std::size_t event_count(int mode) const override { return n_events_[mode + 2]; }
+  EventDirection event_direction(std::size_t k, int mode) const override {
+    const Ev e = event_kind(k, mode);
+    return (e == Ev::lift_out || e == Ev::lift_in) ? EventDirection::rising : EventDirection::falling;
+  }
+
+  double event(std::size_t k, double t, const double* y, int mode) const override {
+    const double s = mode >= 0 ? 1.0 : -1.0;
+    switch (event_kind(k, mode)) {
+      case Ev::lift_out: return model_.angular_acceleration(0.0, +1, false, motion_.acc(t));
+      case Ev::lift_in: return -model_.angular_acceleration(0.0, -1, false, motion_.acc(t));
+      case Ev::impact: return s * y[0];
+      case Ev::theta_u: return model_.theta_u(int(s)) - s * y[0];
+      case Ev::half_pi: return 0.5 * units::pi - s * y[0];
+      case Ev::branch:
+        return std::abs(mode) == 1 ? model_.theta_cr() - s * y[0] : s * y[0] - model_.theta_cr();
+    }
+    return 1.0;
+  }
+
+  EventAction on_event(std::size_t k, double t, double* y, int& mode) override {
+    const int s = mode >= 0 ? 1 : -1;
+    switch (event_kind(k, mode)) {
+      case Ev::lift_out:
+      case Ev::lift_in:
+        mode = event_kind(k, mode) == Ev::lift_out ? +1 : -1;
+        y[0] = y[1] = 0.0;
+        break;
+      case Ev::impact: {
+        ++impacts_;
+        y[0] = 0.0;  // project onto the switching surface
+        const double w = model_.has_restitution() ? model_.impact(y[1]) : y[1];
+        if (model_.has_restitution() && std::fabs(w) < opt_.rest_velocity) {
+          // Zeno: the impacts would accumulate; rest unless the excitation lifts the body.
+          const double ug = motion_.acc(t);
+          if (model_.lifts(+1, ug)) {
+            mode = +1, y[1] = w > 0.0 ? w : 0.0;
+          } else if (two_sided_ && model_.lifts(-1, ug)) {
+            mode = -1, y[1] = w < 0.0 ? w : 0.0;
+          } else {
+            mode = 0, y[1] = 0.0;
+          }
+        } else {
+          y[1] = w;
+          mode = w >= 0.0 ? +1 : -1;
+        }
+        break;
+      }
+      case Ev::theta_u:
+        ke_theta_u_ = 0.5 * model_.body().I0 * y[1] * y[1];
+        if (opt_.overturn == OverturnCriterion::theta_u) return overturn(t);
+        return EventAction::proceed;
+      case Ev::half_pi: return overturn(t);
+      case Ev::branch: mode = std::abs(mode) == 1 ? 2 * s : s; return EventAction::proceed;
+    }
+    push_history(t, y);  // the state after a jump (impact, lift-off)
+    return EventAction::proceed;
+  }
+
+  void on_step(double t0, const double* y0, const double* f0, double t1, const double* y1, const double* f1,
+               int) override {
+    consider_peak(t0, y0[0]);
+    consider_peak(t1, y1[0]);
+    if (y0[1] * y1[1] < 0.0) {  // theta' changes sign: an extremum inside the step
+      const Quintic q{y0[0], f0[0], f0[1], y1[0], f1[0], f1[1], t1 - t0};
+      const double d0 = q.slope(0.0), d1 = q.slope(1.0);
+      if (d0 * d1 < 0.0) {
+        auto slope = [&](double s) { return q.slope(s); };
+        const auto br = detail::shrink_bracket(slope, {0.0, d0, 1.0, d1}, 1e-13);
+        const double s = 0.5 * (br.a + br.b);
+        consider_peak(t0 + s * (t1 - t0), q.value(s));
+      }
+    }
+    push_history(t1, y1);
+  }
+
+  double next_breakpoint(double t) const override { return motion_.next_breakpoint(t); }
+  bool stationary(int mode) const override { return mode == 0; }  // at rest on the base
+
+  void push_history(double t, const double* y) {
+    if (!opt_.record_history) return;
+    res_.history.t.push_back(t);
+    res_.history.theta.push_back(y[0]);
+    res_.history.omega.push_back(y[1]);
+  }
+
+  RockingResult& result() { return res_; }
+  long impacts() const { return impacts_; }
+  double ke_theta_u() const { return ke_theta_u_; }
+
+ private:
+  // Events active in a mode, in a fixed order; returns their number and, if
+  // out != nullptr, writes the kinds.
+  std::size_t events(int mode, Ev* out) const {
+    std::size_t n = 0;
+    auto add = [&](Ev e) {
+      if (out) out[n] = e;
+      ++n;
+    };
+    if (mode == 0) {
+      add(Ev::lift_out);
+      if (two_sided_) add(Ev::lift_in);
+      return n;
+    }
+    add(Ev::impact);
+    add(Ev::theta_u);
+    if (opt_.overturn == OverturnCriterion::half_pi) add(Ev::half_pi);
+    if (smooth_) add(Ev::branch);
+    return n;
+  }
+  Ev event_kind(std::size_t k, int mode) const { return kinds_[mode + 2][k]; }
+
+  void consider_peak(double t, double theta) {
+    if (std::fabs(theta) > res_.theta_max) {
+      res_.theta_max = std::fabs(theta);
+      res_.t_theta_max = t;
+      res_.theta_max_side = theta >= 0.0 ? +1 : -1;
+    }
+  }
+
+  EventAction overturn(double t) {
+    res_.overturned = true;
+    res_.t_overturn = t;
+    return EventAction::stop;
+  }
+
+  const RockingModel& model_;
+  const GroundMotion& motion_;
+  const RockingOptions& opt_;
+  bool smooth_, two_sided_;
+  Ev kinds_[5][6];  // event kinds per mode (-2..2)
+  std::size_t n_events_[5];
+  RockingResult res_;
+  long impacts_ = 0;
+  double ke_theta_u_ = 0.0;
+};
+
+}  // namespace
+
+void RockingOptions::validate() const {
+  auto positive = [](double v, const char* what) {
+    if (!(std::isfinite(v) && v > 0.0)) throw InputError(std::string(what) + " must be a positive number");
+  };
+  positive(rel_tol, "relative tolerance");
+  positive(abs_tol, "absolute tolerance (rad, rad/s)");
+  positive(event_time_tol, "event time tolerance (s)");
+  positive(rest_velocity, "rest velocity (rad/s)");
+  if (!std::isfinite(scale)) throw InputError("scale factor must be finite");
+  if (!(std::isfinite(tail_s) && tail_s >= 0.0)) throw InputError("tail duration must be >= 0 (s)");
+  if (max_steps <= 0 || max_events <= 0) throw InputError("step and event limits must be positive");
+}
+
+const char* to_string(RockingTermination t) {
+  switch (t) {
+    case RockingTermination::completed: return "completed";
+    case RockingTermination::overturned: return "overturned";
+    case RockingTermination::step_limit: return "step_limit";
+    case RockingTermination::event_limit: return "event_limit";
+    case RockingTermination::integrator_error: return "integrator_error";
+  }
+  return "unknown";
+}
+
+std::string RockingResult::brief_report() const {
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "%s: theta_max = %.6g rad at t = %.6g s (theta_max/theta_u = %.4g), impacts = %ld, "
+                "D/C = %.4g%s",
+                to_string(termination), theta_max, t_theta_max, theta_u > 0 ? theta_max / theta_u : 0.0,
+                impacts, dc, overturned ? ", overturned" : "");
+  return buf;
+}
+
+RockingResult analyse(const RockingModel& model, const GroundMotion& motion, const RockingOptions& options,
+                      const RockingInitialState& initial) {
+  options.validate();
+  if (!(std::isfinite(initial.theta) && std::isfinite(initial.omega)))
+    throw InputError("initial rotation (rad) and angular velocity (rad/s) must be finite");
+  const bool one_sided = model.sidedness() == Sidedness::one_sided;
+  if (one_sided && (initial.theta < 0.0 || (initial.theta == 0.0 && initial.omega < 0.0)))
+    throw InputError("one-sided rocking starts with theta >= 0 (rad) moving outward");
+
+  RockingSystem sys(model, motion, options);
+  double y[2] = {initial.theta, initial.omega};
+  int mode = 0;
+  if (initial.theta != 0.0 || initial.omega != 0.0) {
+    const int s = initial.theta != 0.0 ? (initial.theta > 0.0 ? 1 : -1) : (initial.omega > 0.0 ? 1 : -1);
+    const bool partial = !model.foundation().is_rigid() && std::fabs(initial.theta) > model.theta_cr();
+    mode = partial ? 2 * s : s;
+  } else if (model.lifts(+1, motion.acc(0.0))) {
+    mode = +1;
+  } else if (model.lifts(-1, motion.acc(0.0))) {
+    mode = -1;
+  }
+  sys.push_history(0.0, y);
+
+  HybridOdeOptions hopt;
+  hopt.stepper = options.stepper;
+  hopt.rel_tol = options.rel_tol;
+  hopt.abs_tol = options.abs_tol;
+  hopt.event_time_tol = options.event_time_tol;
+  hopt.max_steps = options.max_steps;
+  hopt.max_events = options.max_events;
+  hopt.h_max = motion.max_step();
+  const HybridOdeResult h = integrate_hybrid(sys, 0.0, motion.duration() + options.tail_s, y, mode, hopt);
+
+  RockingResult r = std::move(sys.result());
+  r.steps = h.steps;
+  r.rejected_steps = h.rejected_steps;
+  r.event_steps = h.event_steps;
+  r.rhs_evaluations = h.rhs_evaluations;
+  r.t_end = h.t;
+  r.impacts = sys.impacts();
+  r.alpha = model.body().alpha;
+  if (!model.foundation().is_rigid()) r.theta_cr = model.theta_cr();
+  if (model.has_restitution()) r.restitution = model.restitution();
+  r.message = h.message;
+  switch (h.termination) {
+    case HybridTermination::completed: r.termination = RockingTermination::completed; break;
+    case HybridTermination::stopped_by_event:
+      r.termination = RockingTermination::overturned;
+      r.message = "overturned";
+      break;
+    case HybridTermination::step_limit: r.termination = RockingTermination::step_limit; break;
+    case HybridTermination::event_limit: r.termination = RockingTermination::event_limit; break;
+    case HybridTermination::integrator_error: r.termination = RockingTermination::integrator_error; break;
+  }
+  const int side = r.theta_max_side;
+  r.theta_u = model.theta_u(side);
+  r.capacity = model.work(r.theta_u, side);
+  if (r.overturned) {
+    r.kinetic_energy_overturn = sys.ke_theta_u();
+    r.energy_demand = r.capacity + r.kinetic_energy_overturn;  // seed §3.2
+  } else {
+    r.energy_demand = model.energy_demand(r.theta_max, side);
+  }
+  r.dc = r.energy_demand / r.capacity;
+  // Centroid displacement for a rotation theta_max about the toe: R [sin(alpha) - sin(alpha - theta)].
+  const RockingBody& b = model.body();
+  r.d_max = b.R * std::fabs(std::sin(b.alpha) - std::sin(b.alpha - r.theta_max));
+  return r;
+}
+
+RockingResult analyse(const RockingModel& model, const Record& record, const RockingOptions& options) {
+  options.validate();
+  return analyse(model, GroundMotion::from_record(record, options.scale, options.reverse), options);
+}
+
+RockingResult analyse_free(const RockingModel& model, const RockingInitialState& initial, double duration_s,
+                           const RockingOptions& options) {
+  return analyse(model, GroundMotion::none(duration_s), options, initial);
+}
+
+}  // namespace assess

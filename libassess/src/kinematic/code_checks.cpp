@@ -1,0 +1,192 @@
+// code_checks.cpp: checks of local mechanisms by NTC 2008 (Circ. 617/2009
+// C8A.4) and NTC 2018 (Circ. 2019 §C8.7.1.2.1.5-.8).
+//
+// Notation: a0* spectral activation acceleration (m/s^2); du*, Ts (2008);
+// d_SLV, T_SLV, d_SLC, T_SLC (2018); ag (g) on rock, S = SS ST; Se, SDe the
+// elastic spectra (m/s^2, m) [3.2.2], [3.2.10]; q behaviour factor; psi = Z/H,
+// gamma = 3N/(2N+1); T1 building period; a_Z floor acceleration [C7.2.7-8];
+// S_eZ floor spectrum [C7.2.5-6]; ag_cap the ag that the mechanism withstands
+// (F0, TC* of the limit state held fixed, docs/theory/kinematic.md §PGA).
+#include "assess/kinematic/code_checks.hpp"
+
+#include "assess/kinematic/code_rules.hpp"
+#include "assess/support/error.hpp"
+#include "assess/support/units.hpp"
+#include "support/root_find.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+namespace assess {
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+CheckRow row(CodeEdition code, LimitState ls, const char* kind, const char* location, std::string clause,
+             std::string formula, double demand, double capacity, const char* unit) {
+  CheckRow r;
+  r.code = to_string(code);
+  r.limit_state = to_string(ls);
+  r.kind = kind;
+  r.location = location;
+  r.clause = std::move(clause);
+  r.formula = std::move(formula);
+  r.demand = demand;
+  r.capacity = capacity;
+  r.unit = unit;
+  r.dc = demand / capacity;
+  r.satisfied = r.dc <= 1.0;
+  return r;
+}
+
+HazardParams with_ag(HazardParams h, double ag_g) {
+  h.ag_g = ag_g;
+  return h;
+}
+
+// The ag (g) at which demand(ag) = capacity: demand grows with ag. Brackets by
+// doubling from 0.001 g up to 20 g; inf if never reached.
+double solve_ag(const std::function<double(double)>& demand, double capacity) {
+  double lo = 1e-6, hi = 1e-3;
+  while (demand(hi) < capacity) {
+    lo = hi;
+    hi *= 2.0;
+    if (hi > 20.0) return inf;
+  }
+  return detail::brent_root([&](double ag) { return demand(ag) - capacity; }, lo, hi, 1e-10);
+}
+
+void set_pga(CheckRow& r, double ag_cap, double ag_site) {
+  r.has_pga = true;
+  r.ag_capacity_g = ag_cap;
+  r.ag_demand_g = ag_site;
+  r.dc_pga = ag_site / ag_cap;
+}
+
+}  // namespace
+
+std::string to_string(CodeEdition c) { return c == CodeEdition::NTC2008 ? "NTC2008" : "NTC2018"; }
+
+CodeEdition parse_code_edition(const std::string& s) {
+  if (s == "NTC2008") return CodeEdition::NTC2008;
+  if (s == "NTC2018") return CodeEdition::NTC2018;
+  throw InputError("code edition '" + s + "': expected \"NTC2008\" or \"NTC2018\"");
+}
+
+void CheckInput::validate() const {
+  if (!(Z >= 0.0)) throw InputError("height Z of the mechanism: expected >= 0 m");
+  if (Z > 0.0) {
+    if (!building) throw InputError("a mechanism at height Z > 0 m needs the building (H, storeys, T1)");
+    building->validate();
+    if (Z > building->H) throw InputError("height Z of the mechanism exceeds the building height H");
+  }
+  if (!(q >= 1.0)) throw InputError("behaviour factor q: expected >= 1");
+  for (CodeEdition c : codes) {
+    std::vector<LimitState> need{LimitState::SLD, LimitState::SLV};
+    if (c == CodeEdition::NTC2018) need.push_back(LimitState::SLC);
+    for (LimitState ls : need)
+      if (!hazard.count(ls))
+        throw InputError(to_string(c) + " checks need the hazard of " + to_string(ls));
+  }
+}
+
+std::vector<CheckRow> run_code_checks(const KinematicResult& r, const CheckInput& in) {
+  in.validate();
+  std::vector<CheckRow> rows;
+  if (!r.activates) return rows;
+  const bool at_height = in.Z > 0.0;
+  const bool nonlinear = r.curve_complete();
+  const double two_pi = 2.0 * units::pi;
+
+  for (CodeEdition code : in.codes) {
+    const HazardParams& hSLD = in.hazard.at(LimitState::SLD);
+    const HazardParams& hSLV = in.hazard.at(LimitState::SLV);
+    if (code == CodeEdition::NTC2008) {
+      const ElasticSpectrum sSLD(hSLD, in.site), sSLV(hSLV, in.site);
+      if (!at_height) {
+        rows.push_back(row(code, LimitState::SLD, "strength", "ground", "C8A.4 SLD [R]", "ag S",
+                           sSLD.PGA(), r.a0_star, "m/s2"));
+      } else {
+        const BuildingModel& b = *in.building;
+        const double psi = code_rules::psi_first_mode(in.Z, b.H), gam = code_rules::gamma_first_mode(b.storeys);
+        rows.push_back(row(code, LimitState::SLD, "strength", "height", "C8A.4 SLD at height [R]",
+                           "Se(T1) psi gamma", sSLD.Se(b.T1) * psi * gam, r.a0_star, "m/s2"));
+      }
+      if (!at_height || code_rules::height_also_checks_ground_2008)
+        rows.push_back(row(code, LimitState::SLV, "strength", "ground", "C8A.4.9 [V-S]", "ag S / q",
+                           sSLV.PGA() / in.q, r.a0_star, "m/s2"));
+      if (at_height) {
+        const BuildingModel& b = *in.building;
+        const double psi = code_rules::psi_first_mode(in.Z, b.H), gam = code_rules::gamma_first_mode(b.storeys);
+        rows.push_back(row(code, LimitState::SLV, "strength", "height", "C8A.4.10 [V-S]",
+                           "Se(T1) psi gamma / q", sSLV.Se(b.T1) * psi * gam / in.q, r.a0_star, "m/s2"));
+      }
+      if (nonlinear) {
+        if (!at_height || code_rules::height_also_checks_ground_2008)
+          rows.push_back(row(code, LimitState::SLV, "displacement", "ground", "C8A.4.11 [R]", "SDe(Ts)",
+                             sSLV.SDe(r.Ts), r.du_star, "m"));
+        if (at_height) {
+          const BuildingModel& b = *in.building;
+          const double psi = code_rules::psi_first_mode(in.Z, b.H), gam = code_rules::gamma_first_mode(b.storeys);
+          rows.push_back(row(code, LimitState::SLV, "displacement", "height", "C8A.4.12 [R]",
+                             "SDe(T1) psi gamma (Ts/T1)^2 / sqrt((1 - Ts/T1)^2 + 0.02 Ts/T1)",
+                             code_rules::demand_at_height_2008(sSLV.SDe(b.T1), psi, gam, r.Ts, b.T1), r.du_star,
+                             "m"));
+        }
+      }
+      continue;
+    }
+
+    // NTC 2018 / Circ. 2019.
+    const HazardParams& hSLC = in.hazard.at(LimitState::SLC);
+    const char* loc = at_height ? "height" : "ground";
+    // Peak acceleration demand (m/s^2) for a hazard: ag S at ground, a_Z at height.
+    auto peak = [&](const HazardParams& h) {
+      if (!at_height) return ElasticSpectrum(h, in.site).PGA();
+      return FloorSpectrum(h, in.site, *in.building, in.Z, 5.0).a_Z();
+    };
+    // Displacement demand (m) at period T and mechanism damping xi.
+    auto disp = [&](const HazardParams& h, double T, double xi) {
+      if (!at_height) return ElasticSpectrum(h, in.site, xi).SDe(T);
+      const FloorSpectrum fs(h, in.site, *in.building, in.Z, xi);
+      const double b = code_rules::floor_spectrum_b, T1 = in.building->T1;
+      double d = fs.SDe(T);  // [C8.7.1.12]
+      if (T > b * T1) d = std::max(d, fs.Se(T1) * b * b * T1 * T1 / (two_pi * two_pi));
+      return d;
+    };
+    auto ag_activation = [&](const HazardParams& h) {  // [C8.7.1.8] with ag S or [C7.2.8]
+      return solve_ag([&](double ag) { return peak(with_ag(h, ag)); }, r.a0_star);
+    };
+    const std::string peak_name = at_height ? "a_Z [C7.2.7-8]" : "ag S";
+
+    CheckRow sld = row(code, LimitState::SLD, "strength", loc, "C8.7.1.2.1.5 [C8.7.1.8] [V-T]", peak_name,
+                       peak(hSLD), r.a0_star, "m/s2");
+    const double ag_SLD_cap = ag_activation(hSLD);
+    set_pga(sld, ag_SLD_cap, hSLD.ag_g);
+    rows.push_back(sld);
+
+    CheckRow slv = row(code, LimitState::SLV, "strength", loc, "C8.7.1.2.1.7 [V-T]", peak_name + " / q",
+                       peak(hSLV) / in.q, r.a0_star, "m/s2");
+    set_pga(slv, in.q * ag_activation(hSLV), hSLV.ag_g);
+    rows.push_back(slv);
+
+    if (nonlinear) {
+      const std::string dname = at_height ? "S_eZ(T) T^2/4pi^2 [C8.7.1.12]" : "SDe(T) [3.2.10]";
+      struct Ls { LimitState ls; const HazardParams* h; double d, T, xi; const char* clause; };
+      for (const Ls& x : {Ls{LimitState::SLV, &hSLV, r.d_SLV, r.T_SLV, in.damping_SLV_pct, "C8.7.1.2.1.8 [C8.7.1.10] [V-T]"},
+                          Ls{LimitState::SLC, &hSLC, r.d_SLC, r.T_SLC, in.damping_SLC_pct, "C8.7.1.2.1.8 [C8.7.1.11] [V-T]"}}) {
+        CheckRow c = row(code, x.ls, "displacement", loc, x.clause, dname + ", xi " + std::to_string(int(x.xi)) + " %",
+                         disp(*x.h, x.T, x.xi), x.d, "m");
+        double ag_cap = solve_ag([&](double ag) { return disp(with_ag(*x.h, ag), x.T, x.xi); }, x.d);
+        ag_cap = std::max(ag_cap, ag_activation(*x.h));  // "if ag,SLV < ag,SLD use ag,SLD"
+        set_pga(c, ag_cap, x.h->ag_g);
+        rows.push_back(c);
+      }
+    }
+  }
+  return rows;
+}
+
+}  // namespace assess

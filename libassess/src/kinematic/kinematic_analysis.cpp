@@ -1,0 +1,259 @@
+// kinematic_analysis.cpp: linear and non-linear kinematic analysis of a chain
+// of rigid blocks (Circ. 617/2009 C8A.4.1-C8A.4.5; Circ. 2019 [C8.7.1.1],
+// [C8.7.1.3]-[C8.7.1.5], §C8.7.1.2.1.6, [C8.7.1.10]-[C8.7.1.11]).
+//
+// Notation (code symbol -> name here):
+//   P_i, Q_j (weights whose masses take part)  -> seismic weights W (N)
+//   delta_x,i, delta_y,i (virtual displacements) -> dx, dz (m per rad)
+//   F_h delta_h, L_fi                          -> work_other (N m per rad)
+//   alpha0      activation multiplier          -> alpha0
+//   M*          participating mass (kg)        -> M_star
+//   e*          participating mass fraction    -> e_star
+//   a0*         spectral activation accel.     -> a0_star (m/s^2)
+//   FC          confidence factor              -> FC
+//   d_k, d_k0   control-point displacement, its value at alpha = 0 -> dk, dk0 (m)
+//   d*, d0*     equivalent SDOF displacement   -> d_star, d0_star (m)
+//   du*, ds*, as*, Ts (2008); d_SLV, d_SLC, T_SLV, T_SLC (2018)
+#include "assess/kinematic/kinematic_analysis.hpp"
+
+#include "assess/kinematic/code_rules.hpp"
+#include "assess/support/error.hpp"
+#include "assess/support/units.hpp"
+#include "support/root_find.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace assess {
+namespace {
+
+bool is_seismic_weight(const Load& l) {
+  return (l.type == LoadType::SelfWeight || l.type == LoadType::Weight) && l.seismic;
+}
+
+// Equilibrium path of the chain, parametrised by the control displacement d_k.
+struct Path {
+  const Chain& chain;
+  int block;
+  Eigen::Vector2d point;
+  std::vector<double> dk;            // marched samples
+  std::vector<Eigen::VectorXd> q;    // their configurations
+
+  // Configuration at control displacement d (m), from the nearest sample below.
+  bool configuration(double d, Eigen::VectorXd& out) const {
+    std::size_t i = 0;
+    while (i + 1 < dk.size() && dk[i + 1] <= d) ++i;
+    return chain.solve_configuration(block, point, d, q[i], out);
+  }
+  double alpha(double d) const {
+    Eigen::VectorXd qd;
+    if (!configuration(d, qd)) return std::nan("");
+    return load_multiplier(chain, qd);
+  }
+};
+
+}  // namespace
+
+std::string to_string(CurveTermination t) {
+  switch (t) {
+    case CurveTermination::Complete: return "complete";
+    case CurveTermination::NotActivated: return "not activated";
+    case CurveTermination::NoZeroCrossing: return "no zero crossing";
+    case CurveTermination::NewtonFailure: return "Newton failure";
+  }
+  return "?";
+}
+
+void KinematicOptions::validate() const {
+  if (!(FC >= 1.0) || !std::isfinite(FC))
+    throw InputError("confidence factor FC = " + std::to_string(FC) + ": expected >= 1");
+  if (curve_points < 3)
+    throw InputError("curve_points = " + std::to_string(curve_points) + ": expected >= 3");
+  if (!(du_cap > 0.0)) throw InputError("du* cap: expected > 0 m");
+  if (!(d_SLV_cap > 0.0)) throw InputError("d_SLV cap: expected > 0 m");
+  if (!(d_SLC_cap > 0.0)) throw InputError("d_SLC cap: expected > 0 m");
+}
+
+std::vector<LoadWork> load_works(const Chain& chain, const Eigen::VectorXd& q) {
+  const Eigen::VectorXd v = chain.virtual_displacement(q);
+  std::vector<LoadWork> out;
+  for (const Load& l : chain.loads()) {
+    LoadWork w;
+    w.load = l;
+    const Eigen::Vector2d d = chain.position_jacobian(l.block, l.point, q) * v;
+    w.dx = d.x();
+    w.dz = d.y();
+    switch (l.type) {
+      case LoadType::SelfWeight:
+      case LoadType::Weight:
+        if (l.seismic) {
+          w.W_dx = l.weight * w.dx;
+          // A block's weight is distributed over its area: integral dx^2 dW.
+          const double dphi = l.type == LoadType::SelfWeight ? v(3 * l.block + 2) : 0.0;
+          const double r2 = l.type == LoadType::SelfWeight ? chain.vertical_gyration_sq(l.block, q) : 0.0;
+          w.W_dx2 = l.weight * (w.dx * w.dx + dphi * dphi * r2);
+        }
+        if (l.type == LoadType::SelfWeight || l.vertical) w.work = -l.weight * w.dz;
+        break;
+      case LoadType::Force:
+      case LoadType::Tie: w.work = l.force.dot(d); break;
+      case LoadType::Friction: w.work = -l.force.x() * std::fabs(w.dx); break;
+    }
+    out.push_back(w);
+  }
+  return out;
+}
+
+// [C8A.4.1] / [C8.7.1.1]: alpha sum W dx + sum(other work) = 0.
+double load_multiplier(const Chain& chain, const Eigen::VectorXd& q) {
+  double sum_W_dx = 0.0, work = 0.0;
+  for (const LoadWork& w : load_works(chain, q)) {
+    sum_W_dx += w.W_dx;
+    work += w.work;
+  }
+  return -work / sum_W_dx;
+}
+
+KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& opt) {
+  opt.validate();
+  KinematicResult R;
+  R.FC = opt.FC;
+  R.curve_model = opt.curve_model;
+  const Eigen::VectorXd q0 = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(chain.n_coordinates()));
+  const Eigen::VectorXd v0 = chain.virtual_displacement(q0);
+
+  // Linear kinematic analysis.
+  R.loads = load_works(chain, q0);
+  Eigen::Vector2d Wp(0.0, 0.0);
+  for (const LoadWork& w : R.loads) {
+    R.sum_W_dx += w.W_dx;
+    R.sum_W_dx2 += w.W_dx2;
+    R.work_other += w.work;
+    if (is_seismic_weight(w.load)) {
+      R.sum_W += w.load.weight;
+      Wp += w.load.weight * w.load.point;
+    }
+  }
+  R.alpha0 = -R.work_other / R.sum_W_dx;                        // [C8A.4.1]
+  R.M_star = R.sum_W_dx * R.sum_W_dx / (units::g * R.sum_W_dx2); // [C8A.4.2]
+  R.e_star = units::g * R.M_star / R.sum_W;                      // [C8A.4.3] = [C8.7.1.5]
+  R.a0_star = R.alpha0 * units::g / (R.e_star * R.FC);           // [C8A.4.4] / [C8.7.1.3]
+  R.activates = R.alpha0 > 0.0;
+
+  // Control point.
+  auto dx_of = [&](int b, const Eigen::Vector2d& p) {
+    return (chain.position_jacobian(b, p, q0) * v0).x();
+  };
+  double max_dx = 0.0;
+  for (const LoadWork& w : R.loads) max_dx = std::max(max_dx, std::fabs(w.dx));
+  const double dx_min = 1e-6 * max_dx;
+  if (opt.control_block >= 0) {
+    if (opt.control_block >= static_cast<int>(chain.blocks().size()))
+      throw InputError("control point: block index " + std::to_string(opt.control_block) +
+                       " does not exist");
+    if (!chain.contains(opt.control_block, opt.control_point))
+      throw InputError("control point: the point is not on block " +
+                       std::to_string(opt.control_block));
+    if (!(dx_of(opt.control_block, opt.control_point) > dx_min))
+      throw InputError("control point: it must move outward (dx > 0) in the mechanism");
+    R.control_block = opt.control_block;
+    R.control_point = opt.control_point;
+  } else {
+    const Eigen::Vector2d g = Wp / R.sum_W;
+    for (int b : chain.blocks_containing(g))
+      if (dx_of(b, g) > dx_min) {
+        R.control_block = b;
+        R.control_point = g;
+        break;
+      }
+    if (R.control_block < 0) {
+      double best = 0.0;
+      for (const LoadWork& w : R.loads)
+        if (w.W_dx > best) {
+          best = w.W_dx;
+          R.control_block = w.load.block;
+          R.control_point = w.load.point;
+        }
+    }
+  }
+  R.dx_k = dx_of(R.control_block, R.control_point);
+  R.d_star_per_dk = R.sum_W_dx2 / (R.dx_k * R.sum_W_dx);  // [C8A.4.5] / [C8.7.1.4]
+
+  if (!R.activates) {
+    R.termination = CurveTermination::NotActivated;
+    R.message = "alpha0 <= 0: the mechanism is not activated by any horizontal action";
+    return R;
+  }
+
+  // Non-linear analysis: march d_k until alpha changes sign, then Brent.
+  Path path{chain, R.control_block, R.control_point, {0.0}, {q0}};
+  const double h = chain.size() / 1000.0;
+  const int max_steps = 3000;
+  R.termination = CurveTermination::NoZeroCrossing;
+  R.message = "alpha stays > 0 up to d_k = 3 times the size of the chain";
+  for (int i = 1; i <= max_steps; ++i) {
+    const Eigen::VectorXd& qp = path.q.back();
+    const Eigen::VectorXd vp = chain.virtual_displacement(qp);
+    const double dxk = (chain.position_jacobian(R.control_block, R.control_point, qp) * vp).x();
+    const Eigen::VectorXd guess = std::fabs(dxk) > dx_min ? Eigen::VectorXd(qp + vp * (h / dxk)) : qp;
+    Eigen::VectorXd qn;
+    const double dk = i * h;
+    if (!chain.solve_configuration(R.control_block, R.control_point, dk, guess, qn)) {
+      R.termination = CurveTermination::NewtonFailure;
+      R.message = "no finite-displacement configuration found at d_k = " + std::to_string(dk) + " m";
+      break;
+    }
+    const double a = load_multiplier(chain, qn);
+    path.dk.push_back(dk);
+    path.q.push_back(qn);
+    if (!(a > 0.0)) {
+      const double lo = dk - h;
+      R.dk0 = a == 0.0 ? dk
+                       : detail::brent_root([&](double d) { return path.alpha(d); }, lo, dk,
+                                            1e-13 * chain.size());
+      if (!std::isfinite(R.dk0)) {
+        R.termination = CurveTermination::NewtonFailure;
+        R.message = "the zero of alpha could not be refined";
+      } else {
+        R.termination = CurveTermination::Complete;
+        R.message.clear();
+      }
+      break;
+    }
+  }
+  if (!R.curve_complete()) return R;
+  R.d0_star = R.d_star_per_dk * R.dk0;
+
+  const double a_scale = units::g / (R.e_star * R.FC);
+  // a*(d*) (m/s^2) from the chosen curve model.
+  auto a_star_at = [&](double d_star) {
+    const double dk = d_star / R.d_star_per_dk;
+    const double alpha = opt.curve_model == CurveModel::Linearised ? R.alpha0 * (1.0 - dk / R.dk0)
+                                                                    : path.alpha(dk);
+    return alpha * a_scale;
+  };
+  for (int j = 0; j < opt.curve_points; ++j) {
+    CapacityPoint p;
+    p.d_star = R.d0_star * j / (opt.curve_points - 1);
+    p.dk = p.d_star / R.d_star_per_dk;
+    p.a_star = j == 0 ? R.a0_star : j == opt.curve_points - 1 ? 0.0 : a_star_at(p.d_star);
+    p.alpha = p.a_star / a_scale;
+    R.curve.push_back(p);
+  }
+
+  // NTC 2008 (C8A.4, §6 of docs/theory/kinematic.md).
+  R.du_star = std::min(code_rules::du_over_d0_2008 * R.d0_star, opt.du_cap);
+  R.ds_star = code_rules::ds_over_du_2008 * R.du_star;
+  R.as_star = a_star_at(R.ds_star);
+  R.Ts = 2.0 * units::pi * std::sqrt(R.ds_star / R.as_star);
+  // NTC 2018 (Circ. 2019 §C8.7.1.2.1.6, [C8.7.1.10], [C8.7.1.11]).
+  R.d_SLV = std::min(code_rules::dSLV_over_d0_2018 * R.d0_star, opt.d_SLV_cap);
+  R.a_SLV = a_star_at(R.d_SLV);
+  R.T_SLV = code_rules::T_SLV_factor_of_pi * units::pi * std::sqrt(R.d_SLV / R.a_SLV);
+  R.d_SLC = std::min(code_rules::dSLC_over_d0_2018 * R.d0_star, opt.d_SLC_cap);
+  R.a_SLC = a_star_at(R.d_SLC);
+  R.T_SLC = code_rules::T_SLC_factor_of_pi * units::pi * std::sqrt(R.d_SLC / R.a_SLC);
+  return R;
+}
+
+}  // namespace assess

@@ -1,0 +1,459 @@
+// facade_report.cpp: text, JSON and HTML reports of a façade assessment.
+#include "assess/report/facade_report.hpp"
+
+#include "assess/report/html_report.hpp"
+#include "assess/report/kinematic_report.hpp"
+#include "assess/report/plot.hpp"
+#include "assess/support/units.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace assess {
+
+namespace {
+
+constexpr double g = units::g;
+
+const CandidateResult& governing(const FacadeAssessment& a) {
+  return a.kinematic.candidates[a.kinematic.governing];
+}
+
+std::string record_label(const FacadeAssessment& a, const DynamicRun& r) {
+  return a.records[r.record].name + (r.reversed ? " (reversed)" : "");
+}
+
+// One value per approach, seed Eq. 8 and Fig. 8.
+struct Approach {
+  std::string name;
+  double dc;
+};
+
+std::vector<Approach> comparison(const FacadeAssessment& a) {
+  std::vector<Approach> out;
+  for (const CheckRow& c : a.checks) {
+    if (c.limit_state != "SLV" || c.location != "ground") continue;
+    if (c.kind == "dynamic") continue;
+    out.push_back({c.code + " SLV " + c.kind, c.dc});
+  }
+  if (a.dynamic) {
+    for (const RestitutionSummary& s : a.summaries) {
+      const std::string e = describe(a.dynamic->restitutions[s.restitution]);
+      out.push_back({"dynamic energy D/C, " + e, s.mean_dc});
+      out.push_back({"dynamic C8.7.1.2.1.9, " + e, s.dc_slv});
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+// ------------------------------------------------------------------ text
+
+std::string facade_text(const FacadeAssessment& a) {
+  std::string o;
+  o += format("assess run: %s\n", a.kase.file.c_str());
+  if (!a.kase.project.empty()) o += format("project: %s\n", a.kase.project.c_str());
+  if (a.kase.site) {
+    const SiteSpec& sp = *a.kase.site;
+    o += "\n== Site and seismic action (NTC 2018 §2.4, §3.2) ==\n";
+    o += format("site: %s; soil %s, topography %s; VN = %.0f years, CU = %.2f, VR = %.1f years\n",
+                a.site_description.c_str(), to_string(sp.conditions.soil).c_str(),
+                to_string(sp.conditions.topography).c_str(), sp.vn_years, sp.cu, a.VR);
+    o += format("  %-4s %8s %9s %8s %7s %7s %6s %6s %6s %6s %6s %6s %6s\n", "LS", "P_VR %", "TR (yr)", "ag (g)", "F0",
+                "TC* s", "SS", "CC", "ST", "S", "TB s", "TC s", "TD s");
+    for (const auto& [ls, act] : a.actions) {
+      const ElasticSpectrum& s = a.spectra.at(ls);
+      o += format("  %-4s %8.0f %9.2f %8.4f %7.4f %7.4f %6.3f %6.3f %6.3f %6.3f %6.3f %6.3f %6.3f\n",
+                  to_string(ls).c_str(), act.PVR * 100, act.TR, s.ag_g(), s.F0(), s.Tc_star(), s.SS(), s.CC(), s.ST(),
+                  s.S(), s.TB(), s.TC(), s.TD());
+    }
+  }
+  o += "\n== Kinematic analysis (Circ. 617/2009 C8A.4; Circ. 7/2019 C8.7.1) ==\n";
+  KinematicCaseResult kin = a.kinematic;
+  kin.checks.clear();
+  std::string kt = kinematic_text(a.kase, kin);
+  const auto cut = kt.find("\nno site in the case");
+  if (cut != std::string::npos) kt.erase(cut);
+  o += kt;
+  if (!a.checks.empty()) o += "\n== Checks ==\n" + checks_text(a.checks);
+
+  if (a.dynamic) {
+    o += "\n== Non-linear dynamic analysis (rocking; seed Eq. 1; Circ. 2019 C8.7.1.2.1.9) ==\n";
+    if (!a.dynamic_applies) {
+      o += "not applicable: " + a.dynamic_note + "\n";
+    } else {
+      const RockingBody& b = a.body->body;
+      const RockingModel& m = *a.model;
+      o += format("model: %s, %s; W = %.3f kN/m, b = %.4f m, R = %.4f m, alpha = %.5f rad, I0 = %.2f kg m2/m, "
+                  "M_ext = %.3f kN m/m\n",
+                  a.dynamic->smooth ? "smooth block on a Winkler foundation" : "rigid (Housner) block",
+                  m.sidedness() == Sidedness::one_sided ? "one-sided" : "two-sided", b.W / units::kN, b.b, b.R,
+                  b.alpha, b.I0, b.M_ext / units::kN);
+      if (a.dynamic->smooth)
+        o += format("       k = %.4g kN/m3, theta_cr = %.3e rad, ", a.dynamic->k / units::kN, m.theta_cr());
+      else
+        o += "       ";
+      o += format("theta_u = %.5f rad, peak moment %.3f kN m/m, energy capacity %.4f kJ/m\n", m.theta_u(+1),
+                  m.peak_moment(+1) / units::kN, m.capacity() / units::kN);
+      if (a.selection) {
+        o += format("records: %d selected from the catalogue, compatible with the SLV spectrum (5 %%) over "
+                    "%.2f-%.2f s: %s\n",
+                    int(a.records.size()), a.selection_range.T_min, a.selection_range.T_max,
+                    a.selection->message.c_str());
+      }
+      for (const std::string& f : a.record_failures) o += "  record skipped: " + f + "\n";
+      o += format("  %-34s %7s %9s  %-18s\n", "record", "scale", "PGA (g)", "event / station");
+      for (const RecordUsed& r : a.records)
+        o += format("  %-34s %7.3f %9.4f  %s / %s\n", r.name.c_str(), r.scale, r.pga / g, r.event.c_str(),
+                    r.station.c_str());
+      o += format("\n  %-34s %-18s %9s %7s %9s %8s %8s %10s  %s\n", "record", "restitution", "th/th_u", "impacts",
+                  "overturn", "energy", "d* (m)", "t_end (s)", "termination");
+      for (const DynamicRun& r : a.runs)
+        o += format("  %-34s %-18s %9.4f %7ld %9s %8.4f %8.4f %10.3f  %s\n", record_label(a, r).c_str(),
+                    describe(a.dynamic->restitutions[r.restitution]).c_str(), r.theta_ratio, r.result.impacts,
+                    r.result.overturned ? "yes" : "no", r.result.dc, r.d_star, r.result.t_end,
+                    to_string(r.result.termination));
+      o += format("\n  summary per restitution (energy D/C = demand/capacity, seed §3.2; Circ. 2019 acceptance: "
+                  "d0 never exceeded and mean peak d* <= d_SLV = %.4f m):\n",
+                  governing(a).result.d_SLV);
+      o += format("  %-18s %6s %6s %10s %10s %10s %12s %8s  %s\n", "restitution", "runs", "overt.", "mean D/C",
+                  "max D/C", "mean th/u", "mean d* (m)", "D/C d*", "verdict (C8.7.1.2.1.9)");
+      for (const RestitutionSummary& s : a.summaries)
+        o += format("  %-18s %6d %6d %10.4f %10.4f %10.4f %12.4f %8.3f  %s\n",
+                    describe(a.dynamic->restitutions[s.restitution]).c_str(), s.analyses, s.overturned, s.mean_dc,
+                    s.max_dc, s.mean_theta_ratio, s.mean_d_star, s.dc_slv, verdict(s.slv_satisfied));
+    }
+  }
+  const std::vector<Approach> cmp = comparison(a);
+  if (!cmp.empty()) {
+    o += "\n== Demand/capacity by approach (SLV, seed Fig. 8) ==\n";
+    for (const Approach& x : cmp) o += format("  %-48s D/C = %7.3f  %s\n", x.name.c_str(), x.dc, x.dc <= 1 ? "<= 1" : "> 1");
+  }
+  return o;
+}
+
+// ------------------------------------------------------------------ JSON
+
+nlohmann::json facade_json(const FacadeAssessment& a) {
+  nlohmann::json j;
+  j["project"] = a.kase.project;
+  j["case_file"] = a.kase.file;
+  if (a.kase.site) {
+    const SiteSpec& sp = *a.kase.site;
+    nlohmann::json s{{"description", a.site_description}, {"soil", to_string(sp.conditions.soil)},
+                     {"topography", to_string(sp.conditions.topography)}, {"VN", sp.vn_years}, {"CU", sp.cu},
+                     {"VR", a.VR}};
+    nlohmann::json ls_arr = nlohmann::json::array();
+    for (const auto& [ls, act] : a.actions) {
+      const ElasticSpectrum& e = a.spectra.at(ls);
+      ls_arr.push_back({{"limit_state", to_string(ls)}, {"PVR", act.PVR}, {"TR", act.TR}, {"ag_g", e.ag_g()},
+                        {"F0", e.F0()}, {"Tc_star", e.Tc_star()}, {"SS", e.SS()}, {"CC", e.CC()}, {"ST", e.ST()},
+                        {"S", e.S()}, {"TB", e.TB()}, {"TC", e.TC()}, {"TD", e.TD()}});
+    }
+    s["limit_states"] = ls_arr;
+    j["site"] = s;
+  }
+  j["kinematic"] = kinematic_json(a.kase, a.kinematic);
+  nlohmann::json checks = nlohmann::json::array();
+  for (const CheckRow& c : a.checks) checks.push_back(to_json(c));
+  j["checks"] = checks;
+  if (a.dynamic) {
+    nlohmann::json d;
+    d["applies"] = a.dynamic_applies;
+    d["note"] = a.dynamic_note;
+    if (a.dynamic_applies) {
+      const RockingBody& b = a.body->body;
+      const RockingModel& m = *a.model;
+      d["model"] = {{"type", a.dynamic->smooth ? "smooth" : "rigid"},
+                    {"k_kN_m3", a.dynamic->smooth ? nlohmann::json(a.dynamic->k / units::kN) : nlohmann::json(nullptr)},
+                    {"sidedness", m.sidedness() == Sidedness::one_sided ? "one-sided" : "two-sided"},
+                    {"polarity", to_string(a.dynamic->polarity)},
+                    {"W_kN_m", b.W / units::kN}, {"b", b.b}, {"R", b.R}, {"alpha", b.alpha}, {"I0", b.I0},
+                    {"M_ext_kNm_m", b.M_ext / units::kN},
+                    {"theta_cr", a.dynamic->smooth ? nlohmann::json(m.theta_cr()) : nlohmann::json(nullptr)},
+                    {"theta_u", m.theta_u(+1)}, {"peak_moment_kNm_m", m.peak_moment(+1) / units::kN},
+                    {"capacity_kJ_m", m.capacity() / units::kN}};
+      nlohmann::json recs = nlohmann::json::array();
+      for (const RecordUsed& r : a.records)
+        recs.push_back({{"name", r.name}, {"file", r.file}, {"event", r.event}, {"station", r.station},
+                        {"component", r.component}, {"scale", r.scale}, {"pga_g", r.pga / g}});
+      d["records"] = recs;
+      d["record_failures"] = a.record_failures;
+      if (a.selection)
+        d["selection"] = {{"status", to_string(a.selection->status)},
+                          {"T_min", a.selection_range.T_min},
+                          {"T_max", a.selection_range.T_max},
+                          {"min_ratio", a.selection->min_ratio},
+                          {"max_ratio", a.selection->max_ratio},
+                          {"band_satisfied", a.selection->band_satisfied},
+                          {"message", a.selection->message}};
+      nlohmann::json runs = nlohmann::json::array();
+      for (const DynamicRun& r : a.runs)
+        runs.push_back({{"record", a.records[r.record].name},
+                        {"scale", a.records[r.record].scale},
+                        {"reversed", r.reversed},
+                        {"restitution", r.e},
+                        {"theta_max", r.result.theta_max},
+                        {"t_theta_max", r.result.t_theta_max},
+                        {"theta_u", r.result.theta_u},
+                        {"theta_ratio", r.theta_ratio},
+                        {"overturned", r.result.overturned},
+                        {"t_overturn", r.result.t_overturn ? nlohmann::json(*r.result.t_overturn) : nlohmann::json(nullptr)},
+                        {"impacts", r.result.impacts},
+                        {"dc", r.result.dc},
+                        {"energy_demand_kJ_m", r.result.energy_demand / units::kN},
+                        {"capacity_kJ_m", r.result.capacity / units::kN},
+                        {"d_control", r.d_control},
+                        {"d_star", r.d_star},
+                        {"collapse", r.collapse},
+                        {"termination", to_string(r.result.termination)}});
+      d["analyses"] = runs;
+      nlohmann::json sums = nlohmann::json::array();
+      for (const RestitutionSummary& s : a.summaries)
+        sums.push_back({{"restitution", describe(a.dynamic->restitutions[s.restitution])},
+                        {"e", s.e},
+                        {"analyses", s.analyses},
+                        {"overturned", s.overturned},
+                        {"mean_dc", s.mean_dc},
+                        {"min_dc", s.min_dc},
+                        {"max_dc", s.max_dc},
+                        {"mean_theta_ratio", s.mean_theta_ratio},
+                        {"mean_d_star", s.mean_d_star},
+                        {"d_SLV", governing(a).result.d_SLV},
+                        {"dc_slv", s.dc_slv},
+                        {"any_collapse", s.any_collapse},
+                        {"slv_satisfied", s.slv_satisfied}});
+      d["summary"] = sums;
+    }
+    j["dynamic"] = d;
+  }
+  nlohmann::json cmp = nlohmann::json::array();
+  for (const Approach& x : comparison(a)) cmp.push_back({{"approach", x.name}, {"dc", x.dc}});
+  j["comparison"] = cmp;
+  return j;
+}
+
+// ------------------------------------------------------------------ HTML
+
+namespace {
+
+std::string fixed(double v, int prec) { return format("%.*f", prec, v); }
+
+PlotSeries series(std::string name, PlotSeries::Style style, std::vector<double> x = {}, std::vector<double> y = {}) {
+  PlotSeries s;
+  s.name = std::move(name);
+  s.style = style;
+  s.x = std::move(x);
+  s.y = std::move(y);
+  return s;
+}
+
+}  // namespace
+
+std::string facade_html(const FacadeAssessment& a) {
+  HtmlReport h("libassess — " + (a.kase.project.empty() ? a.kase.file : a.kase.project));
+  h.add_paragraph("Case file: " + a.kase.file + ". Generated by assess run. Every number below can be redone by hand "
+                  "from the quantities listed; clauses are cited next to each quantity.");
+  const KinematicResult& k = governing(a).result;
+
+  // 1. Site and spectra.
+  if (a.kase.site) {
+    h.add_heading("Site and seismic action (NTC 2018 §2.4, §3.2)");
+    const SiteSpec& sp = *a.kase.site;
+    h.add_paragraph("Site: " + a.site_description + "; soil " + to_string(sp.conditions.soil) + ", topography " +
+                    to_string(sp.conditions.topography) + "; VN = " + fixed(sp.vn_years, 0) + " years, CU = " +
+                    fixed(sp.cu, 2) + ", VR = " + fixed(a.VR, 1) + " years.");
+    std::vector<std::vector<std::string>> rows;
+    for (const auto& [ls, act] : a.actions) {
+      const ElasticSpectrum& s = a.spectra.at(ls);
+      rows.push_back({to_string(ls), fixed(act.PVR * 100, 0), fixed(act.TR, 1), fixed(s.ag_g(), 4), fixed(s.F0(), 3),
+                      fixed(s.Tc_star(), 3), fixed(s.SS(), 3), fixed(s.CC(), 3), fixed(s.ST(), 2), fixed(s.S(), 3),
+                      fixed(s.TB(), 3), fixed(s.TC(), 3), fixed(s.TD(), 3)});
+    }
+    h.add_table({"LS", "P_VR (%)", "TR (years)", "ag (g)", "F0", "TC* (s)", "SS", "CC", "ST", "S", "TB (s)", "TC (s)",
+                 "TD (s)"},
+                rows);
+    Plot p;
+    p.title = "Elastic spectra (5 %) and record spectra";
+    p.x_label = "T (s)";
+    p.y_label = "Se, PSA (g)";
+    for (const auto& [ls, se] : a.site_Se) {
+      PlotSeries s;
+      s.name = "Se " + to_string(ls);
+      s.x = a.periods;
+      for (double v : se) s.y.push_back(v / g);
+      s.highlight = ls == LimitState::SLV;
+      p.series.push_back(s);
+    }
+    for (std::size_t i = 0; i < a.record_psa.size(); ++i) {
+      PlotSeries s;
+      s.name = i == 0 ? "records (scaled)" : "";
+      s.x = a.periods;
+      for (double v : a.record_psa[i]) s.y.push_back(v / g);
+      s.style = PlotSeries::Style::Dashed;
+      s.color = "#999999";
+      p.series.push_back(s);
+    }
+    if (!a.mean_psa.empty()) {
+      PlotSeries s;
+      s.name = "mean of the records";
+      s.x = a.periods;
+      for (double v : a.mean_psa) s.y.push_back(v / g);
+      s.highlight = true;
+      s.color = "#000000";
+      p.series.push_back(s);
+    }
+    h.add_svg(render_svg(p), "The four limit-state elastic spectra (NTC 2018 [3.2.2], 5 %) with the scaled record "
+                             "spectra and their mean.", "fig-spectra");
+  }
+
+  // 2. Kinematic.
+  h.add_heading("Kinematic analysis (Circ. 617/2009 C8A.4; Circ. 7/2019 C8.7.1)");
+  h.add_paragraph("Mechanism: " + a.kase.mechanism.type + ", governing candidate: " + governing(a).label + ".");
+  h.add_table({"quantity", "value", "unit", "clause"},
+              {{"alpha0", fixed(k.alpha0, 6), "-", "C8A.4.1 / C8.7.1.1"},
+               {"M*", fixed(k.M_star / units::tonne, 4), "t", "C8A.4.2"},
+               {"e*", fixed(k.e_star, 4), "-", "C8A.4.3 / C8.7.1.5"},
+               {"FC", fixed(k.FC, 2), "-", a.kase.knowledge_level},
+               {"a0*", fixed(k.a0_star, 4), "m/s2", "C8A.4.4 / C8.7.1.3"},
+               {"dk0", fixed(k.dk0, 4), "m", "C8A.4.5"},
+               {"d0*", fixed(k.d0_star, 4), "m", "C8A.4.5 / C8.7.1.4"},
+               {"du* = d_SLV", fixed(k.du_star, 4), "m", "C8A.4 / C8.7.1.2.1.6"},
+               {"Ts", fixed(k.Ts, 4), "s", "C8A.4 (2009)"},
+               {"T_SLV", fixed(k.T_SLV, 4), "s", "C8.7.1.10"},
+               {"d_SLC", fixed(k.d_SLC, 4), "m", "C8.7.1.2.1.6"},
+               {"T_SLC", fixed(k.T_SLC, 4), "s", "C8.7.1.11"}});
+  if (!k.curve.empty()) {
+    Plot p;
+    p.title = "Capacity curve of the equivalent oscillator";
+    p.x_label = "d* (m)";
+    p.y_label = "a* (m/s2)";
+    PlotSeries c = series("a*(d*)", PlotSeries::Style::Line);
+    for (const CapacityPoint& q : k.curve) c.x.push_back(q.d_star), c.y.push_back(q.a_star);
+    c.highlight = true;
+    p.series.push_back(c);
+    for (const CheckRow& row : a.checks) {
+      if (row.kind != "displacement" || row.location != "ground") continue;
+      p.series.push_back(series(row.code + " " + row.limit_state + " capacity", PlotSeries::Style::Dashed,
+                                {row.capacity, row.capacity}, {0.0, k.a0_star}));
+      p.series.push_back(series(row.code + " " + row.limit_state + " demand", PlotSeries::Style::Line,
+                                {row.demand, row.demand}, {0.0, k.a0_star}));
+    }
+    h.add_svg(render_svg(p), "Capacity curve a*-d* (C8A.4.5 / C8.7.1.4) with the displacement capacities (dashed) "
+                             "and demands (solid) of the ground-level checks.", "fig-capacity");
+  }
+
+  // 3. Checks.
+  if (!a.checks.empty()) {
+    h.add_heading("Checks");
+    std::vector<std::vector<std::string>> rows;
+    for (const CheckRow& c : a.checks)
+      rows.push_back({c.code, c.limit_state, c.kind, c.location, format("%.4g", c.demand), format("%.4g", c.capacity),
+                      c.unit, fixed(c.dc, 3), verdict(c.satisfied), c.formula + "; " + c.clause});
+    h.add_table({"code", "LS", "kind", "where", "demand", "capacity", "unit", "D/C", "verdict", "formula / clause"},
+                rows);
+  }
+
+  // 4. Dynamic.
+  if (a.dynamic) {
+    h.add_heading("Non-linear dynamic analysis (rocking)");
+    if (!a.dynamic_applies) {
+      h.add_paragraph("Not applicable: " + a.dynamic_note);
+    } else {
+      const RockingModel& m = *a.model;
+      h.add_paragraph(std::string(a.dynamic->smooth ? "Smooth block on a no-tension Winkler foundation"
+                                                    : "Rigid (Housner) block") +
+                      " (seed Eq. 1), " + (m.sidedness() == Sidedness::one_sided ? "one-sided" : "two-sided") +
+                      " rocking; W = " + fixed(m.body().W / units::kN, 2) + " kN/m, b = " + fixed(m.body().b, 3) +
+                      " m, R = " + fixed(m.body().R, 3) + " m, alpha = " + fixed(m.body().alpha, 5) +
+                      " rad, theta_u = " + fixed(m.theta_u(+1), 5) + " rad, energy capacity " +
+                      fixed(m.capacity() / units::kN, 4) + " kJ/m.");
+      Plot mr;
+      mr.title = "Moment-rotation curve of the rocking body";
+      mr.x_label = "theta (rad)";
+      mr.y_label = "M (kN m/m)";
+      PlotSeries s = series("restoring moment", PlotSeries::Style::Line, a.mr_theta);
+      for (double v : a.mr_moment) s.y.push_back(v / units::kN);
+      s.highlight = true;
+      mr.series.push_back(s);
+      h.add_svg(render_svg(mr), "Net restoring moment about the toe up to theta_u; the area under it is the energy "
+                                "capacity (seed §3.2, Fig. 3).", "fig-moment-rotation");
+      std::vector<std::vector<std::string>> rrows;
+      for (const RecordUsed& r : a.records)
+        rrows.push_back({r.name, r.event, r.station, r.component, fixed(r.scale, 3), fixed(r.pga / g, 4)});
+      h.add_table({"record", "event", "station", "component", "scale", "PGA (g)"}, rrows);
+      if (a.selection)
+        h.add_paragraph("Selection (REXEL's rule, mean within -10 %/+30 % of the SLV spectrum over " +
+                        fixed(a.selection_range.T_min, 2) + "-" + fixed(a.selection_range.T_max, 2) +
+                        " s): " + a.selection->message);
+      std::vector<std::vector<std::string>> srows;
+      for (const RestitutionSummary& x : a.summaries)
+        srows.push_back({describe(a.dynamic->restitutions[x.restitution]), std::to_string(x.analyses),
+                         std::to_string(x.overturned), fixed(x.mean_dc, 3), fixed(x.max_dc, 3),
+                         fixed(x.mean_d_star, 4), fixed(x.dc_slv, 3), verdict(x.slv_satisfied)});
+      h.add_table({"restitution", "analyses", "overturned", "mean energy D/C", "max energy D/C", "mean peak d* (m)",
+                   "D/C (d_SLV)", "C8.7.1.2.1.9"},
+                  srows);
+      for (std::size_t ie = 0; ie < a.dynamic->restitutions.size(); ++ie) {
+        Plot th;
+        th.title = "theta/theta_u, " + describe(a.dynamic->restitutions[ie]);
+        th.x_label = "t (s)";
+        th.y_label = "theta/theta_u (-)";
+        // Show the strong motion: up to 10 s after the latest peak (long
+        // records have minutes of near-silence after it).
+        double t_show = 0.0, t_last = 0.0;
+        for (const DynamicRun& r : a.runs)
+          if (r.restitution == ie) t_show = std::max(t_show, r.result.t_theta_max), t_last = std::max(t_last, r.result.t_end);
+        th.x_min = 0.0;
+        th.x_max = std::min(t_last, t_show + 10.0);
+        if (!(th.x_max > 0.0)) th.x_max = 1.0;
+        for (const DynamicRun& r : a.runs) {
+          if (r.restitution != ie || r.result.history.t.empty()) continue;
+          PlotSeries s = series(record_label(a, r), PlotSeries::Style::Line);
+          const std::vector<double>& t = r.result.history.t;
+          const std::size_t n = std::size_t(std::upper_bound(t.begin(), t.end(), th.x_max) - t.begin());
+          const std::size_t step = std::max<std::size_t>(1, n / 3000);  // keep the SVG small
+          for (std::size_t i = 0; i < n; i += step) {
+            s.x.push_back(t[i]);
+            s.y.push_back(r.result.history.theta[i] / r.result.theta_u);
+          }
+          th.series.push_back(s);
+        }
+        if (!th.series.empty())
+          h.add_svg(render_svg(th), "Normalised rotation histories, " + describe(a.dynamic->restitutions[ie]) + ".",
+                    "fig-history-" + std::to_string(ie));
+      }
+    }
+  }
+
+  // 5. D/C of all approaches.
+  const std::vector<Approach> cmp = comparison(a);
+  if (!cmp.empty()) {
+    h.add_heading("Demand/capacity by approach (SLV, seed Fig. 8)");
+    Plot b;
+    b.title = "D/C of the strength, displacement and dynamic approaches";
+    b.y_label = "D/C (-)";
+    b.x_label = "";
+    PlotSeries bars = series("D/C", PlotSeries::Style::Bars);
+    for (std::size_t i = 0; i < cmp.size(); ++i) {
+      bars.x.push_back(double(i));
+      bars.y.push_back(cmp[i].dc);
+      b.x_tic_labels.push_back({double(i), std::to_string(i + 1)});
+    }
+    b.series.push_back(bars);
+    double dc_max = 1.0;
+    for (const Approach& x : cmp) dc_max = std::max(dc_max, x.dc);
+    b.y_min = 0.0;
+    b.y_max = 1.1 * dc_max;
+    b.series.push_back(series("D/C = 1", PlotSeries::Style::Dashed, {-0.5, double(cmp.size()) - 0.5}, {1.0, 1.0}));
+    std::vector<std::vector<std::string>> rows;
+    for (std::size_t i = 0; i < cmp.size(); ++i)
+      rows.push_back({std::to_string(i + 1), cmp[i].name, fixed(cmp[i].dc, 3), cmp[i].dc <= 1 ? "<= 1" : "> 1"});
+    h.add_svg(render_svg(b), "Demand/capacity ratios by approach (numbers as in the table below).", "fig-dc");
+    h.add_table({"#", "approach", "D/C", ""}, rows);
+  }
+  return h.str();
+}
+
+}  // namespace assess

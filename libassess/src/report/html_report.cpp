@@ -1,0 +1,105 @@
+// html_report.cpp: self-contained printable HTML5 report builder.
+#include "assess/report/html_report.hpp"
+
+#include "report/xml_escape.hpp"
+
+#include "assess/support/error.hpp"
+
+#include <algorithm>
+#include <regex>
+
+namespace assess {
+
+namespace {
+
+using detail::xml_escape;
+
+// Print-friendly inline style sheet: A4 pages, a page break before each
+// section but the first, figures and table rows never split across pages.
+constexpr const char* kCss = R"(
+  @page { size: A4; margin: 18mm 16mm; }
+  body { font-family: sans-serif; font-size: 11pt; line-height: 1.4; max-width: 180mm; margin: 1em auto; color: #111; }
+  h1 { font-size: 18pt; margin-bottom: 0.2em; }
+  h2 { font-size: 14pt; border-bottom: 1px solid #999; margin-top: 1.6em; }
+  h3 { font-size: 12pt; } h4 { font-size: 11pt; }
+  table { border-collapse: collapse; margin: 0.6em 0; font-size: 10pt; }
+  caption { caption-side: top; text-align: left; font-style: italic; padding-bottom: 0.3em; }
+  th, td { border: 1px solid #bbb; padding: 0.2em 0.5em; text-align: left; vertical-align: top; }
+  th { background: #eee; }
+  figure { margin: 1em 0; break-inside: avoid; page-break-inside: avoid; }
+  figure svg { width: 100%; height: auto; max-width: 170mm; display: block; }
+  figcaption { font-size: 10pt; font-style: italic; margin-top: 0.3em; }
+  tr { break-inside: avoid; page-break-inside: avoid; }
+  @media print {
+    body { margin: 0; max-width: none; }
+    h2.section-break { break-before: page; page-break-before: always; }
+  }
+)";
+
+}  // namespace
+
+HtmlReport::HtmlReport(std::string title) : title_(std::move(title)) {}
+
+void HtmlReport::add_heading(const std::string& text, int level) {
+  if (level < 2 || level > 4) throw InputError("HtmlReport: heading level must be 2..4");
+  const std::string tag = "h" + std::to_string(level);
+  std::string cls;
+  if (level == 2) {
+    if (has_section_) cls = " class=\"section-break\"";
+    has_section_ = true;
+  }
+  body_ += "<" + tag + cls + ">" + xml_escape(text) + "</" + tag + ">\n";
+}
+
+void HtmlReport::add_paragraph(const std::string& text) { body_ += "<p>" + xml_escape(text) + "</p>\n"; }
+
+void HtmlReport::add_table(const std::vector<std::string>& header,
+                           const std::vector<std::vector<std::string>>& rows, const std::string& caption) {
+  for (const auto& r : rows)
+    if (r.size() != header.size())
+      throw InputError("HtmlReport: table row has " + std::to_string(r.size()) + " cells, header has " +
+                       std::to_string(header.size()));
+  body_ += "<table>\n";
+  if (!caption.empty()) body_ += "<caption>" + xml_escape(caption) + "</caption>\n";
+  body_ += "<thead><tr>";
+  for (const auto& h : header) body_ += "<th>" + xml_escape(h) + "</th>";
+  body_ += "</tr></thead>\n<tbody>\n";
+  for (const auto& r : rows) {
+    body_ += "<tr>";
+    for (const auto& c : r) body_ += "<td>" + xml_escape(c) + "</td>";
+    body_ += "</tr>\n";
+  }
+  body_ += "</tbody>\n</table>\n";
+}
+
+void HtmlReport::add_svg(const std::string& svg, const std::string& caption, const std::string& id) {
+  static const std::regex id_re("[A-Za-z][A-Za-z0-9_-]*");
+  if (!std::regex_match(id, id_re)) throw InputError("HtmlReport: figure id '" + id + "' is not a valid id");
+  if (std::find(figure_ids_.begin(), figure_ids_.end(), id) != figure_ids_.end())
+    throw InputError("HtmlReport: duplicate figure id '" + id + "'");
+  const auto begin = svg.find("<svg");
+  const auto end = svg.rfind("</svg>");
+  if (begin == std::string::npos || end == std::string::npos || end < begin)
+    throw InputError("HtmlReport: figure '" + id + "' is not an SVG document");
+  std::string body = svg.substr(begin, end + 6 - begin);
+  // Make the SVG's ids unique on the page: id="x" -> id="<fig>-x", and the
+  // references href="#x", url(#x) likewise.
+  static const std::regex ids(R"(\bid=(["']))"), hrefs(R"(href=(["'])#)");
+  body = std::regex_replace(body, ids, "id=$1" + id + "-");
+  body = std::regex_replace(body, hrefs, "href=$1#" + id + "-");
+  static const std::regex urls(R"(url\(#)");
+  body = std::regex_replace(body, urls, "url(#" + id + "-");
+  body_ += "<figure id=\"" + id + "\">\n" + body + "\n";
+  if (!caption.empty()) body_ += "<figcaption>" + xml_escape(caption) + "</figcaption>\n";
+  body_ += "</figure>\n";
+  figure_ids_.push_back(id);
+}
+
+std::string HtmlReport::str() const {
+  return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+         "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
+         xml_escape(title_) + "</title>\n<style>" + kCss + "</style>\n</head>\n<body>\n<h1>" + xml_escape(title_) +
+         "</h1>\n" + body_ + "</body>\n</html>\n";
+}
+
+}  // namespace assess

@@ -1,0 +1,174 @@
+// kinematic_report.cpp: text and JSON reports of a kinematic case (report
+// layer: formats the results, never recomputes physics).
+#include "assess/report/kinematic_report.hpp"
+
+#include "assess/support/units.hpp"
+
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+
+namespace assess {
+
+std::string format(const char* fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  va_list ap2;
+  va_copy(ap2, ap);
+  const int n = std::vsnprintf(nullptr, 0, fmt, ap);
+  va_end(ap);
+  std::string s(static_cast<std::size_t>(n > 0 ? n : 0), '\0');
+  if (n > 0) std::vsnprintf(s.data(), s.size() + 1, fmt, ap2);
+  va_end(ap2);
+  return s;
+}
+
+const char* verdict(bool satisfied) {
+  return satisfied ? "verificato / satisfied" : "non verificato / not satisfied";
+}
+
+namespace {
+constexpr double g = units::g;
+
+}  // namespace
+
+nlohmann::json to_json(const CheckRow& r) {
+  nlohmann::json j{{"code", r.code},         {"limit_state", r.limit_state}, {"kind", r.kind},
+                   {"location", r.location}, {"demand", r.demand},           {"capacity", r.capacity},
+                   {"unit", r.unit},         {"dc", r.dc},                   {"satisfied", r.satisfied},
+                   {"clause", r.clause},     {"formula", r.formula}};
+  if (r.has_pga) {
+    j["ag_capacity_g"] = std::isfinite(r.ag_capacity_g) ? nlohmann::json(r.ag_capacity_g) : nlohmann::json(nullptr);
+    j["ag_demand_g"] = r.ag_demand_g;
+    j["dc_pga"] = r.dc_pga;
+  }
+  return j;
+}
+
+nlohmann::json kinematic_json(const CaseFile& c, const KinematicCaseResult& out) {
+  const CandidateResult& gc = out.candidates[out.governing];
+  const KinematicResult& r = gc.result;
+  nlohmann::json j;
+  j["project"] = c.project;
+  j["mechanism"] = c.mechanism.type;
+  j["governing"] = gc.label;
+  j["Z"] = gc.Z;
+  j["alpha0"] = r.alpha0;
+  j["FC"] = r.FC;
+  j["knowledge_level"] = c.knowledge_level;
+  j["M_star"] = r.M_star / units::tonne;
+  j["e_star"] = r.e_star;
+  j["a0_star"] = r.a0_star;
+  j["sum_W_dx"] = r.sum_W_dx / units::kN;
+  j["sum_W_dx2"] = r.sum_W_dx2 / units::kN;
+  j["sum_W"] = r.sum_W / units::kN;
+  j["dk0"] = r.dk0;
+  j["d0_star"] = r.d0_star;
+  j["du_star"] = r.du_star;
+  j["ds_star"] = r.ds_star;
+  j["as_star"] = r.as_star;
+  j["Ts"] = r.Ts;
+  j["d_SLV"] = r.d_SLV;
+  j["a_SLV"] = r.a_SLV;
+  j["T_SLV"] = r.T_SLV;
+  j["d_SLC"] = r.d_SLC;
+  j["a_SLC"] = r.a_SLC;
+  j["T_SLC"] = r.T_SLC;
+  j["curve_model"] = r.curve_model == CurveModel::Linearised ? "linearised" : "finite_displacement";
+  nlohmann::json loads = nlohmann::json::array();
+  for (const LoadWork& w : r.loads)
+    loads.push_back({{"name", w.load.name}, {"type", to_string(w.load.type)}, {"x", w.load.point.x()},
+                     {"z", w.load.point.y()}, {"weight", w.load.weight / units::kN}, {"dx", w.dx}, {"dz", w.dz},
+                     {"W_dx", w.W_dx / units::kN}, {"W_dx2", w.W_dx2 / units::kN}, {"work", w.work / units::kN}});
+  j["loads"] = loads;
+  nlohmann::json curve = nlohmann::json::array();
+  for (const CapacityPoint& p : r.curve)
+    curve.push_back({{"d_star", p.d_star}, {"a_star", p.a_star}, {"dk", p.dk}, {"alpha", p.alpha}});
+  j["capacity_curve"] = curve;
+  nlohmann::json cands = nlohmann::json::array();
+  for (const CandidateResult& cr : out.candidates)
+    cands.push_back({{"label", cr.label}, {"parameter", cr.parameter}, {"Z", cr.Z}, {"alpha0", cr.result.alpha0},
+                     {"a0_star", cr.result.a0_star}});
+  j["candidates"] = cands;
+  nlohmann::json checks = nlohmann::json::array();
+  for (const CheckRow& row : out.checks) checks.push_back(to_json(row));
+  j["checks"] = checks;
+  return j;
+}
+
+std::string checks_text(const std::vector<CheckRow>& checks) {
+  std::string out;
+  out += format("checks (D/C = demand / capacity; satisfied if D/C <= 1):\n");
+  out += format("  %-8s %-4s %-12s %-7s %12s %12s %-5s %7s %10s %10s %7s  %-30s %s\n", "code", "LS", "kind", "where",
+              "demand", "capacity", "unit", "D/C", "ag,cap(g)", "ag,site(g)", "D/C ag", "verdict", "demand formula / clause");
+  for (const CheckRow& x : checks) {
+    char pga[64] = "";
+    if (x.has_pga) std::snprintf(pga, sizeof pga, "%10.5f %10.5f %7.3f", x.ag_capacity_g, x.ag_demand_g, x.dc_pga);
+    else std::snprintf(pga, sizeof pga, "%10s %10s %7s", "-", "-", "-");
+    out += format("  %-8s %-4s %-12s %-7s %12.6f %12.6f %-5s %7.3f %s  %-30s %s; %s\n", x.code.c_str(),
+                x.limit_state.c_str(), x.kind.c_str(), x.location.c_str(), x.demand, x.capacity, x.unit.c_str(), x.dc,
+                pga, verdict(x.satisfied), x.formula.c_str(), x.clause.c_str());
+  }
+  return out;
+}
+
+std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res) {
+  std::string out;
+  const CandidateResult& gc = res.candidates[res.governing];
+  const KinematicResult& r = gc.result;
+  out += format("case: %s\n", c.file.c_str());
+  if (!c.project.empty()) out += format("project: %s\n", c.project.c_str());
+  out += format("mechanism: %s, governing candidate: %s (Z = %.3f m)\n", c.mechanism.type.c_str(), gc.label.c_str(), gc.Z);
+  if (res.candidates.size() > 1) {
+    out += format("\ncandidates (%s searched; governing = smallest alpha0):\n", c.mechanism.parameter_name.c_str());
+    out += format("  %-48s %12s %12s\n", "candidate", "alpha0 (-)", "a0* (m/s2)");
+    for (std::size_t i = 0; i < res.candidates.size(); ++i)
+      out += format("  %-48s %12.6f %12.6f%s\n", res.candidates[i].label.c_str(), res.candidates[i].result.alpha0,
+                  res.candidates[i].result.a0_star, i == res.governing ? "  <- governing" : "");
+  }
+  out += format("\nvirtual displacements (largest block rotation = 1 rad; x outward, z up):\n");
+  out += format("  %-28s %-11s %9s %9s %11s %10s %10s %12s %12s %12s\n", "load", "type", "x (m)", "z (m)", "W (kN)",
+              "dx (m)", "dz (m)", "W dx (kNm)", "W dx2 (kNm2)", "work (kNm)");
+  for (const LoadWork& w : r.loads)
+    out += format("  %-28s %-11s %9.4f %9.4f %11.4f %10.5f %10.5f %12.5f %12.5f %12.5f\n", w.load.name.c_str(),
+                to_string(w.load.type).c_str(), w.load.point.x(), w.load.point.y(),
+                (w.load.type == LoadType::Weight || w.load.type == LoadType::SelfWeight ? w.load.weight : w.load.force.norm()) / units::kN,
+                w.dx, w.dz, w.W_dx / units::kN, w.W_dx2 / units::kN, w.work / units::kN);
+  out += format("\nlinear kinematic analysis:\n");
+  out += format("  sum W (seismic weights P + Q)          %14.6f kN\n", r.sum_W / units::kN);
+  out += format("  sum W dx                               %14.6f kN m\n", r.sum_W_dx / units::kN);
+  out += format("  sum W dx^2                             %14.6f kN m^2\n", r.sum_W_dx2 / units::kN);
+  out += format("  work of the other forces               %14.6f kN m\n", r.work_other / units::kN);
+  out += format("  alpha0         [C8A.4.1 / C8.7.1.1]    %14.6f -\n", r.alpha0);
+  out += format("  M*             [C8A.4.2]               %14.6f t\n", r.M_star / units::tonne);
+  out += format("  e*             [C8A.4.3 / C8.7.1.5]    %14.6f -\n", r.e_star);
+  out += format("  FC (%s)                               %14.2f -\n", c.knowledge_level.c_str(), r.FC);
+  out += format("  a0* = alpha0 g/(e* FC) [C8A.4.4 / C8.7.1.3] %9.6f m/s2 (%.5f g)\n", r.a0_star, r.a0_star / g);
+  if (!r.activates) return out;
+  out += format("\nnon-linear kinematic analysis (%s curve):\n",
+              r.curve_model == CurveModel::Linearised ? "linearised" : "finite-displacement");
+  out += format("  control point (block %d) x %.4f m, z %.4f m, dx_k = %.6f m\n", r.control_block, r.control_point.x(),
+              r.control_point.y(), r.dx_k);
+  if (!r.curve_complete()) {
+    out += format("  curve incomplete: %s\n", r.message.c_str());
+    return out;
+  }
+  out += format("  dk0 (alpha = 0)                        %14.6f m\n", r.dk0);
+  out += format("  d*/dk          [C8A.4.5 / C8.7.1.4]    %14.6f -\n", r.d_star_per_dk);
+  out += format("  d0*                                    %14.6f m\n", r.d0_star);
+  out += format("  NTC 2008: du* = %.6f m, ds* = %.6f m, as* = %.6f m/s2, Ts = %.6f s\n", r.du_star, r.ds_star,
+              r.as_star, r.Ts);
+  out += format("  NTC 2018: d_SLV = %.6f m, a(d_SLV) = %.6f m/s2, T_SLV = %.6f s [C8.7.1.10]\n", r.d_SLV, r.a_SLV, r.T_SLV);
+  out += format("            d_SLC = %.6f m, a(d_SLC) = %.6f m/s2, T_SLC = %.6f s [C8.7.1.11]\n", r.d_SLC, r.a_SLC, r.T_SLC);
+  out += format("\ncapacity curve:\n  %10s %10s %12s %12s\n", "dk (m)", "alpha (-)", "d* (m)", "a* (m/s2)");
+  for (const CapacityPoint& p : r.curve)
+    out += format("  %10.5f %10.6f %12.6f %12.6f\n", p.dk, p.alpha, p.d_star, p.a_star);
+  if (res.checks.empty()) {
+    out += "\nno site in the case: no code checks\n";
+    return out;
+  }
+  out += "\n" + checks_text(res.checks);
+  return out;
+}
+
+}  // namespace assess

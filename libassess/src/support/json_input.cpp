@@ -1,0 +1,174 @@
+// json_input.cpp: path-tracking JSON reader (input errors name file, JSON
+// path, expected type or range, and unit).
+#include "assess/support/json_input.hpp"
+
+#include "assess/support/error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace assess {
+namespace {
+std::string num(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+const char* type_name(const nlohmann::json& j) { return j.type_name(); }
+}  // namespace
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    cur[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j)
+      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+    std::swap(prev, cur);
+  }
+  return prev[b.size()];
+}
+
+nlohmann::json read_json_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open the file");
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(path + ": not valid JSON: " + e.what());
+  }
+}
+
+JsonNode::JsonNode(const nlohmann::json& value, std::string file, std::string path)
+    : value_(&value), file_(std::move(file)), path_(std::move(path)) {}
+
+void JsonNode::fail(const std::string& message) const {
+  throw InputError(file_ + ": " + (path_.empty() ? "/" : path_) + ": " + message);
+}
+
+bool JsonNode::has(const std::string& key) const { return value_->is_object() && value_->contains(key); }
+
+void JsonNode::allow_only(std::initializer_list<const char*> allowed) const {
+  if (!value_->is_object()) fail(std::string("expected an object, got ") + type_name(*value_));
+  for (auto it = value_->begin(); it != value_->end(); ++it) {
+    const std::string& k = it.key();
+    if (std::any_of(allowed.begin(), allowed.end(), [&](const char* a) { return k == a; })) continue;
+    std::string best;
+    std::size_t dbest = 1000;
+    for (const char* a : allowed) {
+      const std::size_t d = edit_distance(k, a);
+      if (d < dbest) {
+        dbest = d;
+        best = a;
+      }
+    }
+    std::string msg = "unknown key \"" + k + "\"";
+    if (dbest <= std::max<std::size_t>(2, k.size() / 3)) msg += " (did you mean \"" + best + "\"?)";
+    std::string list;
+    for (const char* a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+    JsonNode(*value_, file_, path_).fail(msg + "; expected one of: " + list);
+  }
+}
+
+JsonNode JsonNode::at(const std::string& key) const {
+  if (!value_->is_object()) fail(std::string("expected an object, got ") + type_name(*value_));
+  if (!value_->contains(key)) fail("missing required key \"" + key + "\"");
+  return JsonNode((*value_)[key], file_, path_ + "/" + key);
+}
+
+JsonNode JsonNode::at(std::size_t i) const {
+  return JsonNode((*value_)[i], file_, path_ + "/" + std::to_string(i));
+}
+
+std::optional<JsonNode> JsonNode::find(const std::string& key) const {
+  if (!has(key) || (*value_)[key].is_null()) return std::nullopt;
+  return JsonNode((*value_)[key], file_, path_ + "/" + key);
+}
+
+std::vector<JsonNode> JsonNode::array(const std::string& key, std::size_t min_size) const {
+  const JsonNode a = at(key);
+  if (!a.value_->is_array()) a.fail(std::string("expected an array, got ") + type_name(*a.value_));
+  if (a.value_->size() < min_size) a.fail("expected at least " + std::to_string(min_size) + " elements");
+  std::vector<JsonNode> out;
+  for (std::size_t i = 0; i < a.value_->size(); ++i) out.push_back(a.at(i));
+  return out;
+}
+
+double JsonNode::as_number(const char* unit, double lo, double hi) const {
+  if (!value_->is_number())
+    fail(std::string("expected a number (") + unit + "), got " + type_name(*value_));
+  const double v = value_->get<double>();
+  if (!std::isfinite(v) || v < lo || v > hi) {
+    std::string range = lo > -1e300 && hi < 1e300 ? "in [" + num(lo) + ", " + num(hi) + "]"
+                        : lo > -1e300            ? ">= " + num(lo)
+                                                 : "<= " + num(hi);
+    fail("value " + num(v) + " out of range: expected " + range + " " + unit);
+  }
+  return v;
+}
+
+std::string JsonNode::as_string() const {
+  if (!value_->is_string()) fail(std::string("expected a string, got ") + type_name(*value_));
+  return value_->get<std::string>();
+}
+
+double JsonNode::number(const std::string& key, const char* unit, double lo, double hi) const {
+  return at(key).as_number(unit, lo, hi);
+}
+
+double JsonNode::number_or(const std::string& key, double fallback, const char* unit, double lo,
+                           double hi) const {
+  const auto n = find(key);
+  return n ? n->as_number(unit, lo, hi) : fallback;
+}
+
+double JsonNode::positive(const std::string& key, const char* unit) const {
+  const JsonNode n = at(key);
+  const double v = n.as_number(unit);
+  if (!(v > 0.0)) n.fail("value " + num(v) + " out of range: expected > 0 " + unit);
+  return v;
+}
+
+int JsonNode::integer(const std::string& key, int lo, int hi) const {
+  const JsonNode n = at(key);
+  if (!n.value_->is_number_integer()) n.fail(std::string("expected an integer, got ") + type_name(*n.value_));
+  const long long v = n.value_->get<long long>();
+  if (v < lo || v > hi)
+    n.fail("value " + std::to_string(v) + " out of range: expected " + std::to_string(lo) + ".." + std::to_string(hi));
+  return static_cast<int>(v);
+}
+
+int JsonNode::integer_or(const std::string& key, int fallback, int lo, int hi) const {
+  return find(key) ? integer(key, lo, hi) : fallback;
+}
+
+std::string JsonNode::string(const std::string& key) const { return at(key).as_string(); }
+
+std::string JsonNode::choice(const std::string& key, std::initializer_list<const char*> choices) const {
+  const JsonNode n = at(key);
+  const std::string s = n.as_string();
+  std::string list;
+  for (const char* c : choices) {
+    if (s == c) return s;
+    list += (list.empty() ? "\"" : ", \"") + std::string(c) + "\"";
+  }
+  n.fail("\"" + s + "\": expected one of " + list);
+}
+
+bool JsonNode::boolean_or(const std::string& key, bool fallback) const {
+  const auto n = find(key);
+  if (!n) return fallback;
+  if (!n->value_->is_boolean()) n->fail(std::string("expected true or false, got ") + type_name(*n->value_));
+  return n->value_->get<bool>();
+}
+
+Eigen::Vector2d JsonNode::as_point(const char* unit) const {
+  if (!value_->is_array() || value_->size() != 2) fail(std::string("expected a point [x, z] (") + unit + ")");
+  return Eigen::Vector2d(at(std::size_t{0}).as_number(unit), at(std::size_t{1}).as_number(unit));
+}
+
+Eigen::Vector2d JsonNode::point(const std::string& key) const { return at(key).as_point("m"); }
+
+}  // namespace assess
