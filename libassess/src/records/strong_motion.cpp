@@ -47,3 +47,16 @@ double significant_duration(const Record& r, double lo, double hi) {
 }
 
 }  // namespace assess
+
+namespace assess {
+
+Record strong_motion_part(const Record& r, double fraction) {
+  Record out = r;
+  if (r.acc.empty()) return out;
+  const double t = arias_time(r, fraction);
+  const std::size_t last = std::min(r.acc.size() - 1, static_cast<std::size_t>(std::ceil(t / r.dt - 1e-9)));
+  out.acc.resize(last + 1);
+  return out;
+}
+
+}  // namespace assess

@@ -25,3 +25,12 @@ double arias_time(const Record& record, double fraction);
 double significant_duration(const Record& record, double lo = 0.05, double hi = 0.95);
 
 }  // namespace assess
+
+namespace assess {
+
+/// The record up to the end of its strong motion: the first sample at or
+/// after arias_time(record, fraction) (default 99.9 % of the Arias
+/// intensity), inclusive. Same dt, name and metadata; never empty.
+Record strong_motion_part(const Record& record, double fraction = 0.999);
+
+}  // namespace assess
