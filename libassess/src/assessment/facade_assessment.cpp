@@ -95,6 +95,8 @@ void load_records(FacadeAssessment& a, const DynamicSpec& d, const FacadeOptions
   so.max_per_event = rs.max_per_event;
   so.max_per_station = rs.max_per_station;
   a.selection_max_pga_ratio = rs.max_pga_ratio;
+  a.selection_max_scale = rs.max_scale;
+  a.selection_max_mean_scale = rs.max_mean_scale;
   // Range of the SLV check: the secant periods the mechanism passes through
   // up to its SLV displacement, Ts [C8.7.1.2.1.7] to T_SLV [C8.7.1.10]
   // (docs/theory/record-selection.md §2.3).

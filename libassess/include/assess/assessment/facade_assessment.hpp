@@ -92,6 +92,7 @@ struct FacadeAssessment {
   std::size_t selection_candidates = 0;         ///< records passing the catalogue filters
   std::vector<std::string> selection_site_classes;  ///< classes accepted in the end (empty = any)
   double selection_max_pga_ratio = 0.0;         ///< the PGA guard used (-)
+  double selection_max_scale = 0.0, selection_max_mean_scale = 0.0;  ///< scale limits used (-)
   bool trimmed = false;       ///< records integrated to 99.9 % Arias + free tail
   double free_tail_s = 0.0;   ///< free-rocking tail after the excitation (s)
   std::vector<std::string> record_failures;  ///< "<path>: <message>" of records skipped (--keep-going)
