@@ -240,6 +240,10 @@ void run_select(const RecordsArgs& a) {
       r["rank"] = s.rank;
       j["records"].push_back(r);
     }
+    j["rejected"] = nlohmann::ordered_json::array();
+    for (const auto& r : fr.rejected) j["rejected"].push_back({{"id", r.name}, {"reason", r.reason}});
+    for (const auto& r : res.rejected)
+      j["rejected"].push_back({{"id", fr.kept[r.index].id}, {"scale", r.scale}, {"reason", r.reason}});
     j["periods_s"] = res.periods;
     j["target_m_s2"] = res.target;
     j["mean_psa_m_s2"] = res.mean_psa;

@@ -16,3 +16,7 @@ assess_cli_error_test(records_show_unknown "record 'nope' is not in the catalogu
 assess_cli_error_test(records_bad_site_class "--site-class 'Q': expected A, B, C, D or E" records list --site-class Q)
 assess_cli_error_test(records_select_no_site "give the site as --lat/--lon or as --ag" records select)
 assess_cli_error_test(records_build_missing "cannot open record metadata table 'nope.csv'" records build --metadata nope.csv)
+assess_cli_error_test(run_select_bad_class "/dynamic/select/site_classes/0.*expected a site class" run tests/cli/run_bad/select_bad_class.json)
+assess_cli_error_test(run_select_bad_mw "/dynamic/select/Mw.*min <= max" run tests/cli/run_bad/select_bad_mw.json)
+assess_cli_test(run_church_why_chosen ARGS run mechanisms/church-facade.json
+  PASS "mean scale 1\\.70[0-9] <= 2\\.00, largest scaled PGA 0\\.55[0-9] g <= 2\\.50 ag S.*warning: site class relaxed from C.*dev rank Mw.*integrated to 99\\.9 %")

@@ -344,8 +344,38 @@ std::string facade_html(const FacadeAssessment& a) {
       s.color = "#000000";
       p.series.push_back(s);
     }
+    std::string band_caption;
+    if (a.selection && !a.selection->periods.empty()) {
+      // Compatibility band of NTC 2018 §3.2.3.6 over the selection range, and the range itself.
+      const SelectionResult& sel = *a.selection;
+      for (double f : {0.9, 1.3}) {
+        PlotSeries s;
+        s.name = f < 1.0 ? "band -10 %/+30 % of Se " + a.selection_limit_state : "";
+        s.x = sel.periods;
+        for (double v : sel.target) s.y.push_back(f * v / g);
+        s.style = PlotSeries::Style::Dashed;
+        s.color = "#2ca02c";
+        p.series.push_back(s);
+      }
+      double top = 0.0;
+      for (const auto& [ls, se] : a.site_Se)
+        for (double v : se) top = std::max(top, v / g);
+      for (double T : {a.selection_range.T_min, a.selection_range.T_max}) {
+        PlotSeries s;
+        s.name = T == a.selection_range.T_min ? "period range of the selection" : "";
+        s.x = {T, T};
+        s.y = {0.0, top};
+        s.style = PlotSeries::Style::Dashed;
+        s.color = "#d62728";
+        p.series.push_back(s);
+      }
+      band_caption = format(" Green: the band 0.9-1.3 Se %s over the selection range %.2f-%.2f s (red), where the "
+                            "mean must stay (mean/Se in [%.3f, %.3f]).",
+                            a.selection_limit_state.c_str(), a.selection_range.T_min, a.selection_range.T_max,
+                            a.selection->min_ratio, a.selection->max_ratio);
+    }
     h.add_svg(render_svg(p), "The four limit-state elastic spectra (NTC 2018 [3.2.2], 5 %) with the scaled record "
-                             "spectra and their mean.", "fig-spectra");
+                             "spectra and their mean." + band_caption, "fig-spectra");
   }
 
   // 2. Kinematic.
