@@ -203,7 +203,11 @@ void run_select(const RecordsArgs& a) {
   const CatalogueFilterResult fr = filter_catalogue(cat.entries, f);
   std::vector<Record> cands;
   std::vector<CandidateInfo> info;
-  for (const auto& e : fr.kept) cands.push_back(cat.load(e)), info.push_back(candidate_info(e));
+  std::vector<std::string> errors;
+  cands = cat.load_all(fr.kept, errors);
+  for (std::size_t i = 0; i < errors.size(); ++i)
+    if (!errors[i].empty()) throw InputError(errors[i]);
+  for (const auto& e : fr.kept) info.push_back(candidate_info(e));
   if (cands.empty()) throw InputError("no record of the catalogue passes the filters (see `assess records list`)");
   SelectionOptions so;
   so.n_records = a.count;

@@ -31,7 +31,9 @@ int main() {
     const CatalogueFilterResult fr = filter_catalogue(cat.entries, f);
     std::vector<Record> recs;
     std::vector<CandidateInfo> info;
-    for (const auto& e : fr.kept) recs.push_back(cat.load(e)), info.push_back(candidate_info(e));
+    std::vector<std::string> errors;
+    recs = cat.load_all(fr.kept, errors);
+    for (const auto& e : fr.kept) info.push_back(candidate_info(e));
     const auto t1 = clock::now();
     SelectionOptions so;
     so.range = rocking_period_range(std::min(kin.Ts, kin.T_SLV), std::max(kin.Ts, kin.T_SLV));

@@ -74,15 +74,18 @@ void load_records(FacadeAssessment& a, const DynamicSpec& d, const FacadeOptions
   std::vector<Record> candidates;
   std::vector<CatalogueEntry> entries;
   std::vector<CandidateInfo> info;
-  for (const CatalogueEntry& e : fr.kept) {
-    try {
-      candidates.push_back(cat.load(e));
-      entries.push_back(e);
-      info.push_back(candidate_info(e));
-    } catch (const InputError& err) {
-      if (!opt.keep_going) throw;
-      a.record_failures.push_back(e.file + ": " + err.what());
+  std::vector<std::string> errors;
+  std::vector<Record> loaded = cat.load_all(fr.kept, errors);
+  for (std::size_t i = 0; i < fr.kept.size(); ++i) {
+    const CatalogueEntry& e = fr.kept[i];
+    if (!errors[i].empty()) {
+      if (!opt.keep_going) throw InputError(a.kase.file + ": /dynamic/select: catalogue record " + e.file + ": " + errors[i]);
+      a.record_failures.push_back(e.file + ": " + errors[i]);
+      continue;
     }
+    candidates.push_back(std::move(loaded[i]));
+    entries.push_back(e);
+    info.push_back(candidate_info(e));
   }
   a.selection_candidates = candidates.size();
   if (candidates.empty())

@@ -12,6 +12,7 @@
 #include "assess/records/strong_motion.hpp"
 #include "assess/support/error.hpp"
 #include "assess/support/units.hpp"
+#include "support/parallel_for.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -146,6 +147,20 @@ Record RecordCatalogue::load(const std::string& id_or_file) const {
   const CatalogueEntry* e = find(id_or_file);
   if (!e) throw InputError("record '" + id_or_file + "' is not in the catalogue of " + directory);
   return load(*e);
+}
+
+std::vector<Record> RecordCatalogue::load_all(const std::vector<CatalogueEntry>& entries,
+                                              std::vector<std::string>& errors) const {
+  std::vector<Record> out(entries.size());
+  errors.assign(entries.size(), "");
+  detail::parallel_for(entries.size(), [&](std::size_t i) {
+    try {
+      out[i] = load(entries[i]);
+    } catch (const InputError& e) {
+      errors[i] = e.what();
+    }
+  });
+  return out;
 }
 
 RecordCatalogue build_catalogue(const std::string& table) {

@@ -52,6 +52,10 @@ struct RecordCatalogue {
   Record load(const std::string& id_or_file) const;
   /// Same for an entry.
   Record load(const CatalogueEntry& entry) const;
+  /// Reads the records of `entries` on all cores, in order. A file that
+  /// cannot be read leaves an empty Record and its message in errors[i]
+  /// ("" for the others); nothing is thrown for unreadable files.
+  std::vector<Record> load_all(const std::vector<CatalogueEntry>& entries, std::vector<std::string>& errors) const;
 };
 
 /// Site class of NTC 2018 Tab. 3.2.II (= EC8 Tab. 3.1) implied by Vs30 (m/s):
