@@ -123,42 +123,19 @@ class RockingSystem final : public HybridSystem {
                                                : -model_.angular_acceleration(0.0, -1, false, motion_.acc(t));
   }
 
+  // The jump map: one named step per kind of event (lift-off, impact,
+  // ultimate rotation, branch switch); the state after a lift-off or an impact
+  // goes to the history.
   EventAction on_event(std::size_t k, double t, double* y, int& mode) override {
-    const int s = mode >= 0 ? 1 : -1;
     switch (event_kind(k, mode)) {
-      case Ev::lift_out:
-      case Ev::lift_in:
-        mode = event_kind(k, mode) == Ev::lift_out ? +1 : -1;
-        y[0] = y[1] = 0.0;
-        break;
-      case Ev::impact: {
-        ++impacts_;
-        y[0] = 0.0;  // project onto the switching surface
-        const double w = model_.has_restitution() ? model_.impact(y[1]) : y[1];
-        if (model_.has_restitution() && std::fabs(w) < opt_.rest_velocity) {
-          // Zeno: the impacts would accumulate; rest unless the excitation lifts the body.
-          const double ug = motion_.acc(t);
-          if (model_.lifts(+1, ug)) {
-            mode = +1, y[1] = w > 0.0 ? w : 0.0;
-          } else if (two_sided_ && model_.lifts(-1, ug)) {
-            mode = -1, y[1] = w < 0.0 ? w : 0.0;
-          } else {
-            mode = 0, y[1] = 0.0;
-          }
-        } else {
-          y[1] = w;
-          mode = w >= 0.0 ? +1 : -1;
-        }
-        break;
-      }
-      case Ev::theta_u:
-        ke_theta_u_ = 0.5 * model_.body().I0 * y[1] * y[1];
-        if (opt_.overturn == OverturnCriterion::theta_u) return overturn(t);
-        return EventAction::proceed;
+      case Ev::lift_out: lift_off(+1, y, mode); break;
+      case Ev::lift_in: lift_off(-1, y, mode); break;
+      case Ev::impact: impact(t, y, mode); break;
+      case Ev::theta_u: return reach_theta_u(t, y);
       case Ev::half_pi: return overturn(t);
-      case Ev::branch: mode = std::abs(mode) == 1 ? 2 * s : s; return EventAction::proceed;
+      case Ev::branch: switch_branch(mode); return EventAction::proceed;
     }
-    push_history(t, y);  // the state after a jump (impact, lift-off)
+    push_history(t, y);
     return EventAction::proceed;
   }
 
@@ -252,6 +229,48 @@ class RockingSystem final : public HybridSystem {
       res_.t_theta_max = t;
       res_.theta_max_side = theta >= 0.0 ? +1 : -1;
     }
+  }
+
+  // The body leaves its base about pivot s from rest.
+  static void lift_off(int s, double* y, int& mode) {
+    mode = s;
+    y[0] = y[1] = 0.0;
+  }
+
+  // Impact at theta = 0 (rocking.md §1.2-1.3): the velocity jump w = e w-,
+  // the pivot changes to the side of w; a post-impact velocity below
+  // rest_velocity (Zeno: impacts would accumulate) leaves the body at rest
+  // unless the excitation lifts it at once.
+  void impact(double t, double* y, int& mode) {
+    ++impacts_;
+    y[0] = 0.0;  // project onto the switching surface
+    const double w = model_.has_restitution() ? model_.impact(y[1]) : y[1];
+    if (!(model_.has_restitution() && std::fabs(w) < opt_.rest_velocity)) {
+      y[1] = w;
+      mode = w >= 0.0 ? +1 : -1;
+      return;
+    }
+    const double ug = motion_.acc(t);
+    if (model_.lifts(+1, ug)) {
+      mode = +1, y[1] = w > 0.0 ? w : 0.0;
+    } else if (two_sided_ && model_.lifts(-1, ug)) {
+      mode = -1, y[1] = w < 0.0 ? w : 0.0;
+    } else {
+      mode = 0, y[1] = 0.0;
+    }
+  }
+
+  // |theta| = theta_u: keep the kinetic energy there (seed §3.2, the demand of
+  // an overturned wall); the end of the analysis under the theta_u criterion.
+  EventAction reach_theta_u(double t, const double* y) {
+    ke_theta_u_ = 0.5 * model_.body().I0 * y[1] * y[1];
+    return opt_.overturn == OverturnCriterion::theta_u ? overturn(t) : EventAction::proceed;
+  }
+
+  // Full <-> partial contact at |theta| = theta_cr, same pivot.
+  static void switch_branch(int& mode) {
+    const int s = mode >= 0 ? 1 : -1;
+    mode = std::abs(mode) == 1 ? 2 * s : s;
   }
 
   EventAction overturn(double t) {

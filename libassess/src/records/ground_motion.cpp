@@ -65,10 +65,11 @@ bool GroundMotion::linear_piece(double t, LinearPiece& out) const {
     out = {t, 0.0, 0.0};
     return true;
   }
-  // The interval [t_i, t_i+1] whose end is next_breakpoint(t): the same index
+  // The interval [t_k, t_k+1] whose end is next_breakpoint(t): the same index
   // rule, so piece and breakpoint never disagree on a rounded sample time.
-  const double i = next_breakpoint(t) * inv_dt_ - 1.0;
-  const auto k = static_cast<std::size_t>(std::llround(i));
+  long j = static_cast<long>(t * inv_dt_) + 1;  // floor + 1 for t >= 0
+  if (double(j) * dt_ <= t) ++j;
+  const auto k = static_cast<std::size_t>(j - 1);
   out.origin = double(k) * dt_;
   if (k + 1 >= samples_.size()) {  // past the last sample: acc() is zero (the tail)
     out.a0 = out.a1 = 0.0;
