@@ -145,7 +145,7 @@ class Integration {
         t_ = t_bp;  // a sliver left by an event at a breakpoint: nothing to integrate
         continue;
       }
-      std::optional<HybridOdeResult> end = sys_.stationary(mode_) ? advance_at_rest(t_bp) : take_step(t_bp);
+      std::optional<HybridOdeResult> end = stationary_ ? advance_at_rest(t_bp) : take_step(t_bp);
       if (end) return *end;
     }
     return finish(HybridTermination::completed, "");
@@ -187,8 +187,7 @@ class Integration {
     return gsl_odeiv2_step_apply(step_.get(), t - origin_, h, y, yerr_.data(), dydt_in, dydt_out, &gsys_);
   }
 
-  void eval_events(double t, const double* y, std::vector<double>& g) {
-    g.resize(dirs_.size());
+  void eval_events(double t, const double* y, std::vector<double>& g) {  // g sized by restart()
     if (!g.empty()) sys_.events(t, y, mode_, g.data());
   }
 
@@ -198,6 +197,9 @@ class Integration {
     gsl_odeiv2_step_reset(step_.get());
     dirs_.resize(sys_.event_count(mode_));
     for (std::size_t k = 0; k < dirs_.size(); ++k) dirs_[k] = sys_.event_direction(k, mode_);
+    g_start_.resize(dirs_.size());
+    g_end_.resize(dirs_.size());
+    stationary_ = sys_.stationary(mode_);
     use_kernel();
     eval_events(t_, y_, g_start_);
     return eval_rhs(t_, y_, f_.data()) && std::all_of(f_.begin(), f_.end(), [](double v) { return std::isfinite(v); });
@@ -417,6 +419,7 @@ class Integration {
   double origin_ = 0.0;  // s: GSL's time is t - origin
   HybridOdeResult res_;
   bool step_failed_ = false;
+  bool stationary_ = false;  // sys.stationary(mode), read once per mode
   // y0/f0: start of the step; f: dy/dt at y (first same as last: the end
   // derivative of an accepted step is the start derivative of the next).
   std::vector<double> y0_, f0_, f_, ytry_, ftry_, yerr_;

@@ -78,7 +78,8 @@ class HybridSystem {
   /// True if dy/dt is identically zero in `mode` (e.g. a body at rest): the
   /// integrator then takes no Runge-Kutta steps, only evaluates the event
   /// functions at the breakpoints (at most h_max apart) and locates a sign
-  /// change in time with the state held constant. Default: false.
+  /// change in time with the state held constant. Read once per mode (at the
+  /// start and after each jump). Default: false.
   virtual bool stationary(int /*mode*/) const { return false; }
 
   // Optional fast paths (defaults: none; results are the same either way).
