@@ -9,6 +9,7 @@
 
 #include "check_close.hpp"
 
+#include <assess/dynamics/hybrid_ode.hpp>
 #include <assess/dynamics/rocking_analysis.hpp>
 #include <assess/records/ground_motion.hpp>
 #include <assess/support/units.hpp>
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 using namespace assess;
@@ -102,4 +104,47 @@ TEST_CASE("a record through the kernel and the same record as a function give th
     CHECK_CLOSE(a.theta_max, b.theta_max, rel_tol(kThetaMaxRelTol));
     CHECK_CLOSE(a.t_theta_max, b.t_theta_max, abs_tol(kTimeTol));
   }
+}
+
+namespace {
+
+/// y' = 1 through a kernel that returns NaN from t = 0.5 s on (a kernel does
+/// not check its results): the integrator must stop with integrator_error at
+/// the step that produced it, not carry NaN on.
+class NanAfterHalf final : public HybridSystem {
+ public:
+  std::size_t dimension() const override { return 1; }
+  bool rhs(double t, const double*, int, double* f) const override {
+    f[0] = t < 0.5 ? 1.0 : std::numeric_limits<double>::quiet_NaN();
+    return true;
+  }
+  RhsKernel rhs_kernel(int, double t) override {
+    origin_ = t;
+    return {&kernel, this, t};
+  }
+  static int kernel(double tau, const double*, double* f, void* ctx) {
+    const double t = tau + static_cast<NanAfterHalf*>(ctx)->origin_;
+    f[0] = t < 0.5 ? 1.0 : std::numeric_limits<double>::quiet_NaN();
+    return 0;
+  }
+  std::size_t event_count(int) const override { return 0; }
+  double event(std::size_t, double, const double*, int) const override { return 1.0; }
+  EventDirection event_direction(std::size_t, int) const override { return EventDirection::falling; }
+  EventAction on_event(std::size_t, double, double*, int&) override { return EventAction::proceed; }
+  void on_step(double, const double*, const double*, double, const double*, const double*, int) override {}
+  double next_breakpoint(double t) const override { return 0.1 * (std::floor(t / 0.1 + 1e-9) + 1.0); }
+
+ private:
+  double origin_ = 0.0;
+};
+
+}  // namespace
+
+TEST_CASE("a kernel that yields NaN ends the integration with integrator_error at that step") {
+  NanAfterHalf sys;
+  double y[1] = {0.0};
+  const HybridOdeResult r = integrate_hybrid(sys, 0.0, 1.0, y, 0);
+  CHECK(r.termination == HybridTermination::integrator_error);
+  CHECK(r.t < 0.5 + 0.1);                 // stopped at the first step past t = 0.5 s
+  CHECK(r.message.find("non-finite") != std::string::npos);
 }
