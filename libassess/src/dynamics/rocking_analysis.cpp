@@ -94,7 +94,13 @@ class RockingSystem final : public HybridSystem {
   }
 
   void events(double t, const double* y, int mode, double* g) const override {
-    for (std::size_t k = 0, n = n_events_[mode + 2]; k < n; ++k) g[k] = event(k, t, y, mode);
+    if (mode == 0) {  // at rest: lift-off about +1 (and -1), with ug''(t) looked up once
+      const double ug = motion_.acc(t);
+      g[0] = model_.angular_acceleration(0.0, +1, false, ug);
+      if (two_sided_) g[1] = -model_.angular_acceleration(0.0, -1, false, ug);
+      return;
+    }
+    for (std::size_t k = 0, n = n_events_[mode + 2]; k < n; ++k) g[k] = ev_a_[mode + 2][k] + ev_b_[mode + 2][k] * y[0];
   }
 
   // Dense output for event location: theta by the quintic Hermite interpolant
