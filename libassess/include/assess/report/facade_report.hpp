@@ -4,6 +4,7 @@
 #pragma once
 
 #include "assess/assessment/facade_assessment.hpp"
+#include "assess/report/messages.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -22,11 +23,33 @@ std::string facade_text(const FacadeAssessment& a);
 /// "comparison" (D/C per approach, seed Fig. 8).
 nlohmann::json facade_json(const FacadeAssessment& a);
 
-/// Self-contained HTML report with SVG plots drawn by gnuplot: the four
-/// limit-state spectra with the record spectra and their mean; the capacity
-/// curve a*-d* with the displacement demands; the moment-rotation curve of the
-/// rocking body; theta/theta_u time histories; the D/C bar chart.
+/// What the HTML relazione needs besides the assessment.
+struct ReportOptions {
+  Lang lang = Lang::it;     ///< language of the text (--lang)
+  std::string date;         ///< date printed in the header; empty: today (UTC, YYYY-MM-DD)
+  std::string case_text;    ///< the case file's text, echoed in the appendix; empty: a note
+};
+
+/// One line of the verdict box: the worst check of a code.
+struct CodeVerdict {
+  std::string code;          ///< "NTC2008", "NTC2018"
+  bool satisfied = true;     ///< every check of the code satisfied and trusted
+  double dc = 0.0;           ///< largest D/C over the code's checks (NaN if one is not finite)
+  std::size_t governing = 0; ///< index in FacadeAssessment::checks of the governing check
+  int checks = 0, failing = 0;
+};
+/// The verdict per code from the list of checks (worst D/C over all of a
+/// code's checks, ground and at height, kinematic and dynamic; a D/C that is
+/// not finite counts as failing and governs). Formatting only: reads the rows.
+std::vector<CodeVerdict> code_verdicts(const FacadeAssessment& a);
+
+/// The relazione as a self-contained, printable HTML page (A4): verdict box
+/// per code, site and spectra, a drawing of the mechanism, the virtual-work
+/// and candidates tables, the kinematic quantities and the ADRS plot, the
+/// checks, the dynamic analysis (compatibility of the records, theta/theta_u
+/// histories, summary), the grouped D/C bars, the legend of the clause tags
+/// and the case file. Plots are drawn by gnuplot.
 /// @throws InputError if gnuplot is missing (names the package gnuplot-nox)
-std::string facade_html(const FacadeAssessment& a);
+std::string facade_html(const FacadeAssessment& a, const ReportOptions& options = {});
 
 }  // namespace assess
