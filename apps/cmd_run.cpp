@@ -19,7 +19,7 @@ namespace {
 
 struct RunArgs {
   std::string file, html, pdf, lang = "it";
-  bool json = false, keep_going = false;
+  bool json = false, keep_going = false, wide = false;
 };
 
 void run(const RunArgs& a) {
@@ -50,7 +50,7 @@ void run(const RunArgs& a) {
   if (a.json)
     std::cout << facade_json(res).dump(2) << "\n";
   else
-    std::cout << facade_text(res) << (a.html.empty() ? "" : "\nHTML report written to " + a.html + "\n")
+    std::cout << facade_text(res, a.wide ? TextWidth::wide : TextWidth::columns120) << (a.html.empty() ? "" : "\nHTML report written to " + a.html + "\n")
               << (a.pdf.empty() ? "" : "PDF report written to " + a.pdf + "\n");
 }
 
@@ -65,6 +65,7 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--pdf", args->pdf, "also print the same report to a PDF file (A4, headless Chromium)");
   cmd->add_option("--lang", args->lang,
                   "language of the HTML/PDF report: it (default: the relazione is filed in Italy) or en");
+  cmd->add_flag("--wide", args->wide, "one line per table row however long (default: tables within 120 columns)");
   cmd->add_flag("--keep-going", args->keep_going, "continue with the readable records when some cannot be read");
   cmd->callback([args] { run(*args); });
 }

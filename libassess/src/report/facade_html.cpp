@@ -136,7 +136,7 @@ void add_site(const Ctx& c) {
                     num(s.Tc_star(), 3), num(s.SS(), 3), num(s.CC(), 3), num(s.ST(), 2), num(s.S(), 3),
                     num(s.TB(), 3), num(s.TC(), 3), num(s.TD(), 3)});
   }
-  c.h.add_table({c.t("site.ls"), HtmlCell("P_VR (%)", "num"), HtmlCell("TR", "num", c.t("site.years")),
+  c.h.add_cell_table({c.t("site.ls"), HtmlCell("P_VR (%)", "num"), HtmlCell("TR", "num", c.t("site.years")),
                  HtmlCell("ag (g)", "num"), HtmlCell("F0", "num"), HtmlCell("TC* (s)", "num"), HtmlCell("SS", "num"),
                  HtmlCell("CC", "num"), HtmlCell("ST", "num"), HtmlCell("S", "num"), HtmlCell("TB (s)", "num"),
                  HtmlCell("TC (s)", "num"), HtmlCell("TD (s)", "num")},
@@ -190,7 +190,7 @@ void add_mechanism(const Ctx& c) {
                   num(c.k().sum_W / units::kN, 2, "gov"), HtmlCell("", "gov"), HtmlCell("", "gov"),
                   num(c.k().sum_W_dx / units::kN, 3, "gov"), num(c.k().sum_W_dx2 / units::kN, 3, "gov"),
                   num(c.k().work_other / units::kN, 3, "gov")});
-  c.h.add_table({c.t("mech.load"), c.t("mech.kind"), HtmlCell("x (m)", "num"), HtmlCell("z (m)", "num"),
+  c.h.add_cell_table({c.t("mech.load"), c.t("mech.kind"), HtmlCell("x (m)", "num"), HtmlCell("z (m)", "num"),
                  HtmlCell("W, F (kN)", "num"), HtmlCell("δx (m)", "num"), HtmlCell("δz (m)", "num"),
                  HtmlCell("W·δx (kN m)", "num"), HtmlCell("W·δx² (kN m²)", "num"),
                  HtmlCell(c.t("mech.work") + " (kN m)", "num")},
@@ -207,7 +207,7 @@ void add_mechanism(const Ctx& c) {
                        num(cr.result.alpha0, 4, gov), num(cr.result.a0_star, 3, gov),
                        HtmlCell(i == gi ? c.t("mech.governs") : "", gov)});
     }
-    c.h.add_table({c.t("mech.candidate"), HtmlCell(a.kase.mechanism.parameter_name, "num"), HtmlCell("Z (m)", "num"),
+    c.h.add_cell_table({c.t("mech.candidate"), HtmlCell(a.kase.mechanism.parameter_name, "num"), HtmlCell("Z (m)", "num"),
                    HtmlCell("α0 (-)", "num"), HtmlCell("a0* (m/s²)", "num"), ""},
                   crows, format(c.t("mech.candidates_cap").c_str(), a.kase.mechanism.parameter_name.c_str()));
   }
@@ -236,7 +236,7 @@ void add_kinematic(const Ctx& c) {
     rows.push_back(row("kin.dSLC", k.d_SLC, 4, "m", "C8.7.1.2.1.6"));
     rows.push_back(row("kin.TSLC", k.T_SLC, 3, "s", "C8.7.1.11"));
   }
-  c.h.add_table({c.t("kin.quantity"), HtmlCell(c.t("kin.value"), "num"), c.t("kin.unit"), c.t("kin.clause")}, rows,
+  c.h.add_cell_table({c.t("kin.quantity"), HtmlCell(c.t("kin.value"), "num"), c.t("kin.unit"), c.t("kin.clause")}, rows,
                 "");
   if (!k.curve_complete()) {
     c.h.add_paragraph(c.t("kin.incomplete") + ": " + k.message);
@@ -327,7 +327,7 @@ void add_checks(const Ctx& c) {
                               : HtmlCell("—", "num"),
                     HtmlCell(c.t(fails ? "fail" : "ok"), fails ? "fail" : "ok")});
   }
-  c.h.add_table({c.t("checks.code"), c.t("checks.check"), HtmlCell(c.t("checks.demand"), "num"),
+  c.h.add_cell_table({c.t("checks.code"), c.t("checks.check"), HtmlCell(c.t("checks.demand"), "num"),
                  HtmlCell(c.t("checks.capacity"), "num"), c.t("kin.unit"), HtmlCell("D/C", "num"),
                  HtmlCell(c.t("checks.ag"), "num"), c.t("checks.outcome")},
                 rows, "", "checks");
@@ -472,7 +472,7 @@ void add_dynamic(const Ctx& c) {
   std::vector<std::vector<HtmlCell>> rrows;
   for (const RecordUsed& r : a.records)
     rrows.push_back({r.name, r.event, r.station, r.component, num(r.scale, 3), num(r.pga / g, 4)});
-  c.h.add_table({c.t("dyn.record"), c.t("dyn.event"), c.t("dyn.station"), c.t("dyn.component"),
+  c.h.add_cell_table({c.t("dyn.record"), c.t("dyn.event"), c.t("dyn.station"), c.t("dyn.component"),
                  HtmlCell(c.t("dyn.scale"), "num"), HtmlCell("PGA (g)", "num")},
                 rrows, "");
   for (const std::string& f : a.record_failures) c.h.add_paragraph(c.t("dyn.skipped") + ": " + f);
@@ -492,7 +492,7 @@ void add_dynamic(const Ctx& c) {
                      num(x.max_dc, 3), num(x.mean_d_star, 4), dc_cell(x.dc_slv, fails),
                      HtmlCell(c.t(fails ? "fail" : "ok"), fails ? "fail" : "ok")});
   }
-  c.h.add_table({c.t("dyn.restitution"), HtmlCell(c.t("dyn.analyses"), "num"), HtmlCell(c.t("dyn.overturned"), "num"),
+  c.h.add_cell_table({c.t("dyn.restitution"), HtmlCell(c.t("dyn.analyses"), "num"), HtmlCell(c.t("dyn.overturned"), "num"),
                  HtmlCell(c.t("dyn.mean_dc"), "num"), HtmlCell(c.t("dyn.max_dc"), "num"),
                  HtmlCell(c.t("dyn.mean_d"), "num"), HtmlCell(c.t("dyn.dc_slv"), "num"), c.t("checks.outcome")},
                 srows, "");
@@ -564,7 +564,7 @@ void add_comparison(const Ctx& c) {
   p.y_min = 0.0;
   p.y_max = 1.25 * dc_max;
   c.h.add_svg(render_svg(p), c.t("cmp.fig"), "fig-dc");
-  c.h.add_table({c.t("cmp.approach"), c.t("checks.check"), HtmlCell("D/C", "num")}, rows, "");
+  c.h.add_cell_table({c.t("cmp.approach"), c.t("checks.check"), HtmlCell("D/C", "num")}, rows, "");
 }
 
 void add_legend(const Ctx& c) {

@@ -49,16 +49,21 @@ std::vector<Approach> comparison(const FacadeAssessment& a) {
 
 // ------------------------------------------------------------------ text
 
-std::string facade_text(const FacadeAssessment& a) {
+std::string facade_text(const FacadeAssessment& a, TextWidth width) {
+  const bool wide = width == TextWidth::wide;
+  // Long prose lines wrapped to 120 columns (continuation indented by `ind`).
+  auto para = [&](const std::string& line, std::size_t ind) { return wide ? line : wrap_text(line, ind); };
   std::string o;
   o += format("assess run: %s\n", a.kase.file.c_str());
   if (!a.kase.project.empty()) o += format("project: %s\n", a.kase.project.c_str());
   if (a.kase.site) {
     const SiteSpec& sp = *a.kase.site;
     o += "\n== Site and seismic action (NTC 2018 §2.4, §3.2) ==\n";
-    o += format("site: %s; soil %s, topography %s; VN = %.0f years, CU = %.2f, VR = %.1f years\n",
-                a.site_description.c_str(), to_string(sp.conditions.soil).c_str(),
-                to_string(sp.conditions.topography).c_str(), sp.vn_years, sp.cu, a.VR);
+    o += para(format("site: %s; soil %s, topography %s; VN = %.0f years, CU = %.2f, VR = %.1f years",
+                     a.site_description.c_str(), to_string(sp.conditions.soil).c_str(),
+                     to_string(sp.conditions.topography).c_str(), sp.vn_years, sp.cu, a.VR),
+                6) +
+         "\n";
     if (!sp.comune.empty()) o += "note: " + comune_note() + "\n";
     o += format("  %-4s %8s %9s %8s %7s %7s %6s %6s %6s %6s %6s %6s %6s\n", "LS", "P_VR %", "TR (yr)", "ag (g)", "F0",
                 "TC* s", "SS", "CC", "ST", "S", "TB s", "TC s", "TD s");
@@ -72,11 +77,11 @@ std::string facade_text(const FacadeAssessment& a) {
   o += "\n== Kinematic analysis (Circ. 617/2009 C8A.4; Circ. 7/2019 C8.7.1) ==\n";
   KinematicCaseResult kin = a.kinematic;
   kin.checks.clear();
-  std::string kt = kinematic_text(a.kase, kin);
+  std::string kt = kinematic_text(a.kase, kin, width);
   const auto cut = kt.find("\nno site in the case");
   if (cut != std::string::npos) kt.erase(cut);
   o += kt;
-  if (!a.checks.empty()) o += "\n== Checks ==\n" + checks_text(a.checks);
+  if (!a.checks.empty()) o += "\n== Checks ==\n" + checks_text(a.checks, width);
 
   if (a.dynamic) {
     o += "\n== Non-linear dynamic analysis (rocking; seed Eq. 1; Circ. 2019 C8.7.1.2.1.9) ==\n";
@@ -85,42 +90,54 @@ std::string facade_text(const FacadeAssessment& a) {
     } else {
       const RockingBody& b = a.body->body;
       const RockingModel& m = *a.model;
-      o += format("model: %s, %s; W = %.3f kN/m, b = %.4f m, R = %.4f m, alpha = %.5f rad, I0 = %.2f kg m2/m, "
-                  "M_ext = %.3f kN m/m\n",
+      o += para(format("model: %s, %s; W = %.3f kN/m, b = %.4f m, R = %.4f m, alpha = %.5f rad, I0 = %.2f kg m2/m, "
+                  "M_ext = %.3f kN m/m",
                   a.dynamic->smooth ? "smooth block on a Winkler foundation" : "rigid (Housner) block",
                   m.sidedness() == Sidedness::one_sided ? "one-sided" : "two-sided", b.W / units::kN, b.b, b.R,
-                  b.alpha, b.I0, b.M_ext / units::kN);
+                  b.alpha, b.I0, b.M_ext / units::kN), 7) + "\n";
+      std::string line = "       ";
       if (a.dynamic->smooth)
-        o += format("       k = %.4g kN/m3, theta_cr = %.3e rad, ", a.dynamic->k / units::kN, m.theta_cr());
-      else
-        o += "       ";
-      o += format("theta_u = %.5f rad, peak moment %.3f kN m/m, energy capacity %.4f kJ/m\n", m.theta_u(+1),
-                  m.peak_moment(+1) / units::kN, m.capacity() / units::kN);
+        line += format("k = %.4g kN/m3, theta_cr = %.3e rad, ", a.dynamic->k / units::kN, m.theta_cr());
+      line += format("theta_u = %.5f rad, peak moment %.3f kN m/m, energy capacity %.4f kJ/m", m.theta_u(+1),
+                     m.peak_moment(+1) / units::kN, m.capacity() / units::kN);
+      o += para(line, 7) + "\n";
       if (a.selection) {
-        o += format("records: %d selected from the catalogue, compatible with the SLV spectrum (5 %%) over "
-                    "%.2f-%.2f s: %s\n",
-                    int(a.records.size()), a.selection_range.T_min, a.selection_range.T_max,
-                    a.selection->message.c_str());
+        o += para(format("records: %d selected from the catalogue, compatible with the SLV spectrum (5 %%) over "
+                         "%.2f-%.2f s: %s",
+                         int(a.records.size()), a.selection_range.T_min, a.selection_range.T_max,
+                         a.selection->message.c_str()),
+                  9) +
+             "\n";
       }
       for (const std::string& f : a.record_failures) o += "  record skipped: " + f + "\n";
-      o += format("  %-34s %7s %9s  %-18s\n", "record", "scale", "PGA (g)", "event / station");
+      const int rw = wide ? 34 : 32;  // record column
+      o += format("  %-*s %7s %9s  %-18s\n", rw, "record", "scale", "PGA (g)", "event / station");
       for (const RecordUsed& r : a.records)
-        o += format("  %-34s %7.3f %9.4f  %s / %s\n", r.name.c_str(), r.scale, r.pga / g, r.event.c_str(),
-                    r.station.c_str());
-      o += format("\n  %-34s %-18s %9s %7s %9s %8s %8s %10s  %s\n", "record", "restitution", "th/th_u", "impacts",
-                  "overturn", "energy", "d* (m)", "t_end (s)", "termination");
+        o += para(format("  %-*s %7.3f %9.4f  %s / %s", rw, r.name.c_str(), r.scale, r.pga / g, r.event.c_str(),
+                         r.station.c_str()),
+                  rw + 22) +
+             "\n";
+      o += format(wide ? "\n  %-*s %-18s %9s %7s %9s %8s %8s %10s  %s\n" : "\n  %-*s %-12s %7s %7s %8s %7s %7s %9s  %s\n",
+                  rw, "record", "restitution", "th/th_u", "impacts", "overturn", "energy", "d* (m)", "t_end (s)",
+                  "termination");
       for (const DynamicRun& r : a.runs)
-        o += format("  %-34s %-18s %9.4f %7ld %9s %8.4f %8.4f %10.3f  %s\n", record_label(a, r).c_str(),
+        o += format(wide ? "  %-*s %-18s %9.4f %7ld %9s %8.4f %8.4f %10.3f  %s\n"
+                         : "  %-*s %-12s %7.4f %7ld %8s %7.4f %7.4f %9.3f  %s\n",
+                    rw, record_label(a, r).c_str(),
                     describe(a.dynamic->restitutions[r.restitution]).c_str(), r.theta_ratio, r.result.impacts,
                     r.result.overturned ? "yes" : "no", r.result.dc, r.d_star, r.result.t_end,
                     to_string(r.result.termination));
-      o += format("\n  summary per restitution (energy D/C = demand/capacity, seed §3.2; Circ. 2019 acceptance: "
-                  "d0 never exceeded and mean peak d* <= d_SLV = %.4f m):\n",
-                  governing(a).result.d_SLV);
-      o += format("  %-18s %6s %6s %10s %10s %10s %12s %8s  %s\n", "restitution", "runs", "overt.", "mean D/C",
-                  "max D/C", "mean th/u", "mean d* (m)", "D/C d*", "verdict (C8.7.1.2.1.9)");
+      o += "\n" + para(format("  summary per restitution (energy D/C = demand/capacity, seed §3.2; Circ. 2019 "
+                              "acceptance: d0 never exceeded and mean peak d* <= d_SLV = %.4f m):",
+                              governing(a).result.d_SLV),
+                       4) +
+           "\n";
+      o += format(wide ? "  %-18s %6s %6s %10s %10s %10s %12s %8s  %s\n" : "  %-12s %5s %6s %9s %9s %9s %11s %7s  %s\n",
+                  "restitution", "runs", "overt.", "mean D/C", "max D/C", "mean th/u", "mean d* (m)", "D/C d*",
+                  "verdict (C8.7.1.2.1.9)");
       for (const RestitutionSummary& s : a.summaries)
-        o += format("  %-18s %6d %6d %10.4f %10.4f %10.4f %12.4f %8.3f  %s\n",
+        o += format(wide ? "  %-18s %6d %6d %10.4f %10.4f %10.4f %12.4f %8.3f  %s\n"
+                         : "  %-12s %5d %6d %9.4f %9.4f %9.4f %11.4f %7.3f  %s\n",
                     describe(a.dynamic->restitutions[s.restitution]).c_str(), s.analyses, s.overturned, s.mean_dc,
                     s.max_dc, s.mean_theta_ratio, s.mean_d_star, s.dc_slv, verdict(s.slv_satisfied));
     }
@@ -128,7 +145,8 @@ std::string facade_text(const FacadeAssessment& a) {
   const std::vector<Approach> cmp = comparison(a);
   if (!cmp.empty()) {
     o += "\n== Demand/capacity by approach (SLV, seed Fig. 8) ==\n";
-    for (const Approach& x : cmp) o += format("  %-48s D/C = %7.3f  %s\n", x.name.c_str(), x.dc, x.dc <= 1 ? "<= 1" : "> 1");
+    for (const Approach& x : cmp)
+      o += format("  %-48s D/C = %7.3f  %s\n", x.name.c_str(), x.dc, x.dc <= 1 ? "<= 1" : "> 1");
   }
   return o;
 }

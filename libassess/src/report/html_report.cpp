@@ -137,7 +137,7 @@ void HtmlReport::add_svg_grid(const std::vector<std::pair<std::string, std::stri
   figure_ids_.push_back(id);
 }
 
-void HtmlReport::add_table(const std::vector<HtmlCell>& header, const std::vector<std::vector<HtmlCell>>& rows,
+void HtmlReport::add_cell_table(const std::vector<HtmlCell>& header, const std::vector<std::vector<HtmlCell>>& rows,
                            const std::string& caption, const std::string& cls) {
   for (const auto& r : rows)
     if (r.size() != header.size())

@@ -96,29 +96,83 @@ nlohmann::json kinematic_json(const CaseFile& c, const KinematicCaseResult& out)
   return j;
 }
 
-std::string checks_text(const std::vector<CheckRow>& checks) {
+std::string wrap_text(const std::string& text, std::size_t indent, std::size_t width) {
+  auto columns = [](const std::string& w) {
+    std::size_t n = 0;
+    for (unsigned char ch : w) n += (ch & 0xC0) != 0x80;
+    return n;
+  };
+  // Leading blanks are kept as they are (the first line's indentation).
+  std::size_t pos = text.find_first_not_of(' ');
+  if (pos == std::string::npos) return text;
+  std::string out, line = text.substr(0, pos);
+  std::size_t len = pos;
+  bool first = true;
+  while (pos <= text.size()) {
+    std::size_t next = text.find(' ', pos);
+    if (next == std::string::npos) next = text.size();
+    const std::string word = text.substr(pos, next - pos);
+    const std::size_t wl = columns(word);
+    if (!first && len + 1 + wl > width) {
+      out += line + "\n";
+      line = std::string(indent, ' ') + word;
+      len = indent + wl;
+    } else {
+      line += (first ? "" : " ") + word;
+      len += (first ? 0 : 1) + wl;
+    }
+    first = false;
+    pos = next + 1;
+  }
+  return out + line;
+}
+
+std::string checks_text(const std::vector<CheckRow>& checks, TextWidth width) {
   std::string out;
   out += format("checks (D/C = demand / capacity; satisfied if D/C <= 1):\n");
-  out += format("  %-8s %-4s %-12s %-7s %12s %12s %-5s %7s %10s %10s %7s  %-30s %s\n", "code", "LS", "kind", "where",
-              "demand", "capacity", "unit", "D/C", "ag,cap(g)", "ag,site(g)", "D/C ag", "verdict", "demand formula / clause");
+  if (width == TextWidth::wide) {
+    out += format("  %-8s %-4s %-12s %-7s %12s %12s %-5s %7s %10s %10s %7s  %-30s %s\n", "code", "LS", "kind", "where",
+                  "demand", "capacity", "unit", "D/C", "ag,cap(g)", "ag,site(g)", "D/C ag", "verdict",
+                  "demand formula / clause");
+    for (const CheckRow& x : checks) {
+      char pga[64] = "";
+      if (x.has_pga) std::snprintf(pga, sizeof pga, "%10.5f %10.5f %7.3f", x.ag_capacity_g, x.ag_demand_g, x.dc_pga);
+      else std::snprintf(pga, sizeof pga, "%10s %10s %7s", "-", "-", "-");
+      out += format("  %-8s %-4s %-12s %-7s %12.6f %12.6f %-5s %7.3f %s  %-30s %s; %s\n", x.code.c_str(),
+                    x.limit_state.c_str(), x.kind.c_str(), x.location.c_str(), x.demand, x.capacity, x.unit.c_str(),
+                    x.dc, pga, verdict(x.satisfied), x.formula.c_str(), x.clause.c_str());
+    }
+    return out;
+  }
+  // 120 columns: the numbers on one line (98 columns), the verdict, the
+  // demand formula and the clause on the next, wrapped.
+  out += format("  %-8s %-4s %-12s %-7s %10s %10s %-5s %7s %9s %9s %7s\n", "code", "LS", "kind", "where", "demand",
+                "capacity", "unit", "D/C", "ag,cap(g)", "ag,site", "D/C ag");
+  out += format("  %-8s %s\n", "", "verdict; demand formula; clause");
   for (const CheckRow& x : checks) {
     char pga[64] = "";
-    if (x.has_pga) std::snprintf(pga, sizeof pga, "%10.5f %10.5f %7.3f", x.ag_capacity_g, x.ag_demand_g, x.dc_pga);
-    else std::snprintf(pga, sizeof pga, "%10s %10s %7s", "-", "-", "-");
-    out += format("  %-8s %-4s %-12s %-7s %12.6f %12.6f %-5s %7.3f %s  %-30s %s; %s\n", x.code.c_str(),
-                x.limit_state.c_str(), x.kind.c_str(), x.location.c_str(), x.demand, x.capacity, x.unit.c_str(), x.dc,
-                pga, verdict(x.satisfied), x.formula.c_str(), x.clause.c_str());
+    if (x.has_pga) std::snprintf(pga, sizeof pga, "%9.5f %9.5f %7.3f", x.ag_capacity_g, x.ag_demand_g, x.dc_pga);
+    else std::snprintf(pga, sizeof pga, "%9s %9s %7s", "-", "-", "-");
+    out += format("  %-8s %-4s %-12s %-7s %10.6f %10.6f %-5s %7.3f %s\n", x.code.c_str(), x.limit_state.c_str(),
+                  x.kind.c_str(), x.location.c_str(), x.demand, x.capacity, x.unit.c_str(), x.dc, pga);
+    out += wrap_text(format("  %-8s %s; %s; %s", "", verdict(x.satisfied), x.formula.c_str(), x.clause.c_str()), 11) +
+           "\n";
   }
   return out;
 }
 
-std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res) {
+std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res, TextWidth width) {
+  const bool wide = width == TextWidth::wide;
   std::string out;
   const CandidateResult& gc = res.candidates[res.governing];
   const KinematicResult& r = gc.result;
   out += format("case: %s\n", c.file.c_str());
   if (!c.project.empty()) out += format("project: %s\n", c.project.c_str());
-  out += format("mechanism: %s, governing candidate: %s (Z = %.3f m)\n", c.mechanism.type.c_str(), gc.label.c_str(), gc.Z);
+  {
+    const std::string m = format("mechanism: %s, governing candidate: %s (Z = %.3f m)", c.mechanism.type.c_str(),
+                                 gc.label.c_str(), gc.Z);
+    out += (wide ? m : wrap_text(m, 11)) + "\n";
+  }
   if (res.candidates.size() > 1) {
     out += format("\ncandidates (%s searched; governing = smallest alpha0):\n", c.mechanism.parameter_name.c_str());
     out += format("  %-48s %12s %12s\n", "candidate", "alpha0 (-)", "a0* (m/s2)");
@@ -127,13 +181,34 @@ std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res) {
                   res.candidates[i].result.a0_star, i == res.governing ? "  <- governing" : "");
   }
   out += format("\nvirtual displacements (largest block rotation = 1 rad; x outward, z up):\n");
-  out += format("  %-28s %-11s %9s %9s %11s %10s %10s %12s %12s %12s\n", "load", "type", "x (m)", "z (m)", "W (kN)",
-              "dx (m)", "dz (m)", "W dx (kNm)", "W dx2 (kNm2)", "work (kNm)");
-  for (const LoadWork& w : r.loads)
-    out += format("  %-28s %-11s %9.4f %9.4f %11.4f %10.5f %10.5f %12.5f %12.5f %12.5f\n", w.load.name.c_str(),
-                to_string(w.load.type).c_str(), w.load.point.x(), w.load.point.y(),
-                (w.load.type == LoadType::Weight || w.load.type == LoadType::SelfWeight ? w.load.weight : w.load.force.norm()) / units::kN,
-                w.dx, w.dz, w.W_dx / units::kN, w.W_dx2 / units::kN, w.work / units::kN);
+  if (wide) {
+    out += format("  %-28s %-11s %9s %9s %11s %10s %10s %12s %12s %12s\n", "load", "type", "x (m)", "z (m)", "W (kN)",
+                  "dx (m)", "dz (m)", "W dx (kNm)", "W dx2 (kNm2)", "work (kNm)");
+    for (const LoadWork& w : r.loads)
+      out += format("  %-28s %-11s %9.4f %9.4f %11.4f %10.5f %10.5f %12.5f %12.5f %12.5f\n", w.load.name.c_str(),
+                    to_string(w.load.type).c_str(), w.load.point.x(), w.load.point.y(),
+                    (w.load.type == LoadType::Weight || w.load.type == LoadType::SelfWeight ? w.load.weight
+                                                                                             : w.load.force.norm()) /
+                        units::kN,
+                    w.dx, w.dz, w.W_dx / units::kN, w.W_dx2 / units::kN, w.work / units::kN);
+  } else {
+    // 120 columns: a load name longer than its column goes on a line of its own.
+    out += format("  %-22s %-11s %8s %8s %10s %8s %8s %11s %12s %11s\n", "load", "type", "x (m)", "z (m)", "W (kN)",
+                  "dx (m)", "dz (m)", "W dx (kNm)", "W dx2(kNm2)", "work (kNm)");
+    for (const LoadWork& w : r.loads) {
+      std::string name = w.load.name;
+      if (name.size() > 22) {
+        out += "  " + name + "\n";
+        name.clear();
+      }
+      out += format("  %-22s %-11s %8.3f %8.3f %10.3f %8.4f %8.4f %11.4f %12.4f %11.4f\n", name.c_str(),
+                    to_string(w.load.type).c_str(), w.load.point.x(), w.load.point.y(),
+                    (w.load.type == LoadType::Weight || w.load.type == LoadType::SelfWeight ? w.load.weight
+                                                                                             : w.load.force.norm()) /
+                        units::kN,
+                    w.dx, w.dz, w.W_dx / units::kN, w.W_dx2 / units::kN, w.work / units::kN);
+    }
+  }
   out += format("\nlinear kinematic analysis:\n");
   out += format("  sum W (seismic weights P + Q)          %14.6f kN\n", r.sum_W / units::kN);
   out += format("  sum W dx                               %14.6f kN m\n", r.sum_W_dx / units::kN);
@@ -167,7 +242,7 @@ std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res) {
     out += "\nno site in the case: no code checks\n";
     return out;
   }
-  out += "\n" + checks_text(res.checks);
+  out += "\n" + checks_text(res.checks, width);
   return out;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "assess/assessment/facade_assessment.hpp"
+#include "assess/report/kinematic_report.hpp"
 #include "assess/report/messages.hpp"
 
 #include <nlohmann/json.hpp>
@@ -15,7 +16,8 @@ namespace assess {
 /// Readable report: site block per limit state, kinematic block with every
 /// intermediate quantity, the checks table (kinematic and dynamic rows, verdicts
 /// in Italian and English), the dynamic table and the D/C of all approaches.
-std::string facade_text(const FacadeAssessment& a);
+/// Tables within 120 columns unless `width` is TextWidth::wide; the site block once.
+std::string facade_text(const FacadeAssessment& a, TextWidth width = TextWidth::columns120);
 
 /// The same content as JSON: keys "project", "site", "kinematic" (the keys of
 /// `assess kinematic --json`), "checks" (kinematic and "kind": "dynamic" rows),

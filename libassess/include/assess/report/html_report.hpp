@@ -42,7 +42,7 @@ class HtmlReport {
   void add_svg(const std::string& svg, const std::string& caption, const std::string& id);
 
   /// A table of cells with classes (see HtmlCell); `cls` is the table's class.
-  void add_table(const std::vector<HtmlCell>& header, const std::vector<std::vector<HtmlCell>>& rows,
+  void add_cell_table(const std::vector<HtmlCell>& header, const std::vector<std::vector<HtmlCell>>& rows,
                  const std::string& caption, const std::string& cls = "");
   /// Several SVG documents side by side in one figure (small multiples),
   /// each with a short label; ids are prefixed with `id`-<n>.
