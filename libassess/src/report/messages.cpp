@@ -238,6 +238,29 @@ const std::map<std::string, Entry>& catalogue() {
       {"appendix.heading", {"Appendice — file del caso", "Appendix — case file"}},
       {"appendix.note", {"Il file di ingresso, riportato integralmente.", "The input file, in full."}},
       {"appendix.missing", {"(testo del file non disponibile)", "(file text not available)"}},
+      // Campaign index (English: campaigns are research output).
+      {"camp.title", {"Campagna parametrica", "Parametric campaign"}},
+      {"camp.intro", {"%llu analisi su %llu della campagna, %llu non riuscite. Tabelle da summary.json; risultati "
+                      "completi in results.csv.",
+                      "%llu analyses of the %llu of the campaign, %llu failed. Tables from summary.json; every "
+                      "result in results.csv."}},
+      {"camp.by_model", {"Per modello", "By model"}},
+      {"camp.by_scale", {"Per modello e fattore di scala", "By model and scale factor"}},
+      {"camp.code_vs_dynamic", {"Verifiche della norma contro D/C dinamico (Lipo & de Felice 2017, Fig. 5)",
+                                "Code checks against the dynamic D/C (Lipo & de Felice 2017, Fig. 5)"}},
+      {"camp.model", {"modello", "model"}},
+      {"camp.failed", {"non riuscite", "failed"}},
+      {"camp.moved", {"in moto", "moved"}},
+      {"camp.moved_fraction", {"frazione in moto", "fraction moved"}},
+      {"camp.overturned_fraction", {"frazione ribaltata", "fraction overturned"}},
+      {"camp.code_check", {"verifica", "code check"}},
+      {"camp.considered", {"considerate", "considered"}},
+      {"camp.correlation", {"correlazione", "correlation"}},
+      {"camp.same_verdict", {"stesso esito", "same verdict"}},
+      {"camp.code_below", {"norma sotto dinamica", "code below dynamic"}},
+      {"camp.figures", {"Figure", "Figures"}},
+      {"camp.files", {"File: results.csv (una riga per analisi), summary.json (queste tabelle), *.svg (le figure).",
+                      "Files: results.csv (one row per analysis), summary.json (these tables), *.svg (the figures)."}},
       // Units in tables.
       {"unit.kN", {"kN", "kN"}},
   };
