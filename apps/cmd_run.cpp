@@ -29,10 +29,7 @@ void run(const RunArgs& a) {
   opt.keep_going = a.keep_going;
   opt.histories = !a.html.empty() || !a.pdf.empty();
   const FacadeAssessment res = assess_facade(c, opt);
-  const CandidateResult& gc = res.kinematic.candidates[res.kinematic.governing];
-  if (!gc.result.activates)
-    throw InputError(a.file + ": the mechanism (" + gc.label + ") is never activated: alpha0 = " +
-                     std::to_string(gc.result.alpha0) + " <= 0");
+  print_warnings(res.warnings);
   if (!a.html.empty() || !a.pdf.empty()) {
     ReportOptions ro;
     ro.lang = lang;
@@ -47,11 +44,14 @@ void run(const RunArgs& a) {
     }
     if (!a.pdf.empty()) html_to_pdf(page, a.pdf);
   }
-  if (a.json)
-    std::cout << facade_json(res).dump(2) << "\n";
-  else
-    std::cout << facade_text(res, a.wide ? TextWidth::wide : TextWidth::columns120) << (a.html.empty() ? "" : "\nHTML report written to " + a.html + "\n")
+  if (a.json) {
+    nlohmann::json j = facade_json(res);
+    std::cout << stamp_version(j).dump(2) << "\n";
+  } else {
+    std::cout << facade_text(res, a.wide ? TextWidth::wide : TextWidth::columns120)
+              << (a.html.empty() ? "" : "\nHTML report written to " + a.html + "\n")
               << (a.pdf.empty() ? "" : "PDF report written to " + a.pdf + "\n");
+  }
 }
 
 }  // namespace

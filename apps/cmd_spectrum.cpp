@@ -311,7 +311,7 @@ void run(const SpectrumArgs& a) {
         j["lon"] = *spec.lon;
         j["note"] = comune_note();
       }
-      std::cout << j.dump(2) << "\n";
+      std::cout << stamp_version(j).dump(2) << "\n";
     } else {
       nlohmann::json j;
       j["site"] = site.describe();
@@ -325,7 +325,7 @@ void run(const SpectrumArgs& a) {
       nlohmann::json arr = nlohmann::json::array();
       for (std::size_t i = 0; i < cols.size(); ++i) arr.push_back(column_json(cols[i], spectra[i], periods, a.q));
       j["limit_states"] = arr;
-      std::cout << j.dump(2) << "\n";
+      std::cout << stamp_version(j).dump(2) << "\n";
     }
   } else {
     print_table(site, cols, spectra, periods, a.q);

@@ -1,7 +1,8 @@
-// The report's verdict box (code_verdicts) and message catalogue: the worst
-// check of each code governs, at height as well as at ground level; a failing
-// check is never hidden; a D/C that cannot be trusted (not finite) counts as
-// failing and governs; every catalogue entry exists in Italian and English.
+// The report's verdict box (governing_verdict_row over the assessment's
+// summary rows) and message catalogue: the worst row of each code governs, at
+// height as well as at ground level; a failing row is never hidden; a row that
+// cannot be trusted (no verdict, D/C not finite) governs; every catalogue
+// entry exists in Italian and English.
 #include <doctest/doctest.h>
 
 #include "assess/report/facade_report.hpp"
@@ -15,61 +16,43 @@
 using namespace assess;
 
 namespace {
-CheckRow row(const std::string& code, const std::string& ls, const std::string& kind, const std::string& where,
-             double dc, bool satisfied) {
-  CheckRow r;
+VerdictRow row(const std::string& code, const std::string& approach, const std::string& where, double dc,
+               bool satisfied, bool no_verdict = false) {
+  VerdictRow r;
   r.code = code;
-  r.limit_state = ls;
-  r.kind = kind;
+  r.approach = approach;
+  r.limit_state = "SLV";
   r.location = where;
   r.dc = dc;
   r.satisfied = satisfied;
+  r.no_verdict = no_verdict;
   return r;
 }
 }  // namespace
 
-TEST_CASE("verdict per code: the largest D/C over ground and height governs") {
-  FacadeAssessment a;
-  a.checks = {row("NTC2008", "SLV", "strength", "ground", 0.50, true),
-              row("NTC2008", "SLV", "strength", "height", 1.40, false),
-              row("NTC2018", "SLV", "strength", "ground", 0.80, true),
-              row("NTC2018", "SLC", "displacement", "ground", 0.95, true)};
-  const auto v = code_verdicts(a);
-  REQUIRE(v.size() == 2);
-  CHECK(v[0].code == "NTC2008");
-  CHECK_FALSE(v[0].satisfied);
-  CHECK(v[0].governing == 1);  // the failing check at height
-  CHECK(v[0].dc == 1.40);      // copied from the row, not computed
-  CHECK(v[0].checks == 2);
-  CHECK(v[0].failing == 1);
-  CHECK(v[1].code == "NTC2018");
-  CHECK(v[1].satisfied);
-  CHECK(v[1].governing == 3);
-  CHECK(v[1].failing == 0);
+TEST_CASE("verdict box: the largest D/C of the code governs, at height as well as at ground level") {
+  Verdict v;
+  v.rows = {row("NTC2008", "strength", "ground", 0.50, true), row("NTC2008", "displacement", "height", 1.40, false),
+            row("NTC2018", "strength", "ground", 0.80, true), row("NTC2018", "displacement", "ground", 0.95, true)};
+  CHECK(governing_verdict_row(v, "NTC2008") == 1);
+  CHECK(governing_verdict_row(v, "NTC2018") == 3);
+  CHECK(governing_verdict_row(v, "NTC2025") == -1);
 }
 
-TEST_CASE("a failing check with D/C < 1 (d0 exceeded in a dynamic run) still fails the code and governs") {
-  FacadeAssessment a;
-  a.checks = {row("NTC2018", "SLV", "strength", "ground", 0.90, true),
-              row("NTC2018", "SLV", "dynamic", "ground", 0.60, false)};
-  const auto v = code_verdicts(a);
-  REQUIRE(v.size() == 1);
-  CHECK_FALSE(v[0].satisfied);
-  CHECK(v[0].governing == 1);
+TEST_CASE("verdict box: a failing row with D/C < 1 (d0 exceeded) governs over a larger satisfied D/C") {
+  Verdict v;
+  v.rows = {row("NTC2018", "strength", "ground", 0.90, true), row("NTC2018", "dynamic", "ground", 0.60, false)};
+  CHECK(governing_verdict_row(v, "NTC2018") == 1);
 }
 
-TEST_CASE("a D/C that is not finite cannot be trusted: the code fails and that check governs") {
-  FacadeAssessment a;
-  a.checks = {row("NTC2018", "SLV", "strength", "ground", 3.0, false),
-              row("NTC2018", "SLC", "displacement", "ground", std::numeric_limits<double>::quiet_NaN(), true)};
-  const auto v = code_verdicts(a);
-  REQUIRE(v.size() == 1);
-  CHECK_FALSE(v[0].satisfied);
-  CHECK(v[0].governing == 1);
-  CHECK(v[0].failing == 2);
+TEST_CASE("verdict box: a row without a verdict or with a D/C that is not finite cannot be trusted and governs") {
+  Verdict v;
+  v.rows = {row("NTC2018", "strength", "ground", 3.0, false),
+            row("NTC2018", "displacement", "ground", std::numeric_limits<double>::quiet_NaN(), false)};
+  CHECK(governing_verdict_row(v, "NTC2018") == 1);
+  v.rows[1] = row("NTC2018", "dynamic", "ground", 0.5, false, true);
+  CHECK(governing_verdict_row(v, "NTC2018") == 1);
 }
-
-TEST_CASE("no checks (no site): no verdict") { CHECK(code_verdicts(FacadeAssessment{}).empty()); }
 
 TEST_CASE("message catalogue: every key in both languages, Italian code terms") {
   const auto keys = message_keys();

@@ -56,7 +56,17 @@ struct Ctx {
   const KinematicResult& k() const { return gc().result; }
   /// "verifica allo SLV, lineare (resistenza), al piede"
   std::string check_name(const CheckRow& c) const {
-    return t("checks.verifica") + " " + c.limit_state + ", " + t("kind." + c.kind) + ", " + t("where." + c.location);
+    return t("checks.verifica") + " " + c.limit_state + ", " + kind_name(c.kind) + ", " + t("where." + c.location);
+  }
+  /// "lineare (resistenza)" ... for a kind of check or an approach.
+  std::string kind_name(const std::string& kind) const {
+    for (const char* k : {"strength", "displacement", "dynamic", "dynamic energy"})
+      if (kind == k) return t("kind." + kind);
+    return kind;
+  }
+  /// "verifica allo SLV, lineare (resistenza), al piede" for a summary row.
+  std::string row_name(const VerdictRow& r) const {
+    return t("checks.verifica") + " " + r.limit_state + ", " + kind_name(r.approach) + ", " + t("where." + r.location);
   }
   std::string restitution(std::size_t i) const { return describe(a.dynamic->restitutions[i]); }
   std::string record_label(const DynamicRun& r) const {
@@ -94,25 +104,33 @@ void add_header(const Ctx& c) {
 }
 
 void add_verdict_box(const Ctx& c) {
-  const std::vector<CodeVerdict> vs = code_verdicts(c.a);
+  const Verdict& v = c.a.verdict;
   std::string html = "<section class=\"verdicts\" aria-label=\"" + xml_escape(c.t("verdict.heading")) + "\">\n";
-  html += "<h2 class=\"verdicts-heading\" style=\"border:none;margin-top:0.4em\">" + xml_escape(c.t("verdict.heading")) + "</h2>\n";
-  html += "<div class=\"verdicts\">\n";
-  if (vs.empty()) html += "<p>" + xml_escape(c.t("verdict.no_checks")) + "</p>\n";
-  for (const CodeVerdict& v : vs) {
-    const CheckRow& row = c.a.checks[v.governing];
-    html += std::string("<div class=\"verdict ") + (v.satisfied ? "ok" : "fail") + "\" data-code=\"" +
-            xml_escape(v.code) + "\">\n";
-    html += "<div class=\"code\">" + xml_escape(code_name(v.code)) + " — " + std::to_string(v.checks) + " " +
-            xml_escape(c.t("verdict.checks")) + ", " + std::to_string(v.failing) + " " +
-            xml_escape(c.t("verdict.failing")) + "</div>\n";
-    html += "<div class=\"outcome\">" + xml_escape(c.t(v.satisfied ? "verdict.ok" : "verdict.fail")) +
-            " <span class=\"" + (v.satisfied ? "dc-ok" : "dc-fail") + "\">D/C = " + xml_escape(fixed(v.dc, 3)) +
-            "</span></div>\n";
-    html += "<div class=\"governing\">" + xml_escape(c.t("verdict.governing")) + ": " + xml_escape(c.check_name(row)) +
-            " (" + xml_escape(row.clause) + ")";
-    if (!std::isfinite(row.dc)) html += " — " + xml_escape(c.t("verdict.untrusted"));
-    html += "</div>\n</div>\n";
+  html += "<h2 class=\"verdicts-heading\" style=\"border:none;margin-top:0.4em\">" + xml_escape(c.t("verdict.heading")) +
+          "</h2>\n<div class=\"verdicts\">\n";
+  if (v.overall.empty()) html += "<p>" + xml_escape(c.t("verdict.no_checks")) + "</p>\n";
+  for (const CodeVerdict& cv : v.overall) {
+    const int gi = governing_verdict_row(v, cv.code);
+    const bool ok = cv.satisfied && std::isfinite(cv.max_dc);
+    html += std::string("<div class=\"verdict ") + (ok ? "ok" : "fail") + "\" data-code=\"" + xml_escape(cv.code) +
+            "\">\n";
+    html += "<div class=\"code\">" + xml_escape(code_name(cv.code)) + " — " + std::to_string(cv.checks) + " " +
+            xml_escape(c.t("verdict.checks")) + ", " + std::to_string(cv.failing) + " " +
+            xml_escape(c.t("verdict.failing"));
+    if (cv.no_verdict > 0) html += ", " + std::to_string(cv.no_verdict) + " " + xml_escape(c.t("verdict.no_verdict"));
+    html += "</div>\n";
+    html += "<div class=\"outcome\">" + xml_escape(c.t(ok ? "verdict.ok" : "verdict.fail")) + " <span class=\"" +
+            (ok ? "dc-ok" : "dc-fail") + "\">D/C = " + xml_escape(fixed(cv.max_dc, 3)) + "</span></div>\n";
+    if (gi >= 0) {
+      const VerdictRow& r = v.rows[std::size_t(gi)];
+      html += "<div class=\"governing\">" + xml_escape(c.t("verdict.governing")) + ": " +
+              xml_escape(c.row_name(r)) + ", D/C = " + xml_escape(fixed(r.dc, 3)) + " (" + xml_escape(r.clause) +
+              (r.candidate.empty() ? "" : "; " + xml_escape(r.candidate)) + ")";
+      if (r.no_verdict || !std::isfinite(r.dc)) html += " — " + xml_escape(c.t("verdict.untrusted"));
+      if (!r.note.empty()) html += " — " + xml_escape(r.note);
+      html += "</div>\n";
+    }
+    html += "</div>\n";
   }
   html += "</div>\n<p class=\"meta\">" + xml_escape(c.t("verdict.note")) + "</p>\n</section>";
   c.h.add_raw_html(html);
@@ -196,20 +214,38 @@ void add_mechanism(const Ctx& c) {
                  HtmlCell(c.t("mech.work") + " (kN m)", "num")},
                 rows, c.t("mech.vw_cap"));
 
-  // Candidates.
+  // Candidates (the governing one of each code: the largest D/C over its checks, Circ. 2019 C8.7.1).
   if (a.kinematic.candidates.size() > 1) {
     c.h.add_heading(c.t("mech.candidates"), 3);
+    std::vector<HtmlCell> head{c.t("mech.candidate"), HtmlCell(a.kase.mechanism.parameter_name, "num"),
+                               HtmlCell("Z (m)", "num"), HtmlCell("α0 (-)", "num"), HtmlCell("a0* (m/s²)", "num")};
+    for (const auto& [code, g] : a.kinematic.governing_by_code) head.push_back(HtmlCell("D/C " + code_name(code), "num"));
+    if (!a.kinematic.governing_by_code.empty()) head.push_back(HtmlCell("ag,cap (g)", "num"));
+    head.push_back(c.t("mech.governs"));
     std::vector<std::vector<HtmlCell>> crows;
     for (std::size_t i = 0; i < a.kinematic.candidates.size(); ++i) {
       const CandidateResult& cr = a.kinematic.candidates[i];
-      const std::string gov = i == gi ? "gov" : "";
-      crows.push_back({HtmlCell(cr.label, gov), num(cr.parameter, 3, gov), num(cr.Z, 2, gov),
-                       num(cr.result.alpha0, 4, gov), num(cr.result.a0_star, 3, gov),
-                       HtmlCell(i == gi ? c.t("mech.governs") : "", gov)});
+      std::string gov;
+      for (const auto& [code, g] : a.kinematic.governing_by_code)
+        if (g == i) gov += (gov.empty() ? "" : ", ") + code_name(code);
+      if (a.kinematic.governing_by_code.empty() && i == gi) gov = "α0 min";
+      const std::string cls = gov.empty() ? "" : "gov";
+      std::vector<HtmlCell> row{HtmlCell(cr.label, cls), num(cr.parameter, 3, cls), num(cr.Z, 2, cls),
+                                num(cr.result.alpha0, 4, cls), num(cr.result.a0_star, 3, cls)};
+      for (const auto& [code, g] : a.kinematic.governing_by_code) {
+        const auto it = cr.max_dc.find(code);
+        if (it == cr.max_dc.end()) row.push_back(HtmlCell("—", "num " + cls));
+        else {
+          HtmlCell d = dc_cell(it->second, !(it->second <= 1.0));
+          d.cls += cls.empty() ? "" : " " + cls;
+          row.push_back(d);
+        }
+      }
+      if (!a.kinematic.governing_by_code.empty()) row.push_back(num(cr.ag_capacity_min_g, 4, cls));
+      row.push_back(HtmlCell(gov, cls));
+      crows.push_back(row);
     }
-    c.h.add_cell_table({c.t("mech.candidate"), HtmlCell(a.kase.mechanism.parameter_name, "num"), HtmlCell("Z (m)", "num"),
-                   HtmlCell("α0 (-)", "num"), HtmlCell("a0* (m/s²)", "num"), ""},
-                  crows, format(c.t("mech.candidates_cap").c_str(), a.kase.mechanism.parameter_name.c_str()));
+    c.h.add_cell_table(head, crows, format(c.t("mech.candidates_cap").c_str(), a.kase.mechanism.parameter_name.c_str()));
   }
 }
 
@@ -341,7 +377,7 @@ void add_records_compatibility(const Ctx& c) {
   p.title = c.t("dyn.compat_title");
   p.x_label = "T (s)";
   p.y_label = "Se, PSA (g)";
-  const PeriodRange& rg = a.selection_range;
+  const PeriodRange& rg = a.compatibility.computed ? a.compatibility.range : a.selection_range;
   if (rg.T_max > rg.T_min) {
     PlotSeries band = series(c.t("dyn.band"), PlotSeries::Style::Band);
     for (std::size_t i = 0; i < a.periods.size(); ++i) {
@@ -480,6 +516,7 @@ void add_dynamic(const Ctx& c) {
     c.h.add_paragraph(format(c.t("dyn.selection").c_str(), fixed(a.selection_range.T_min, 2).c_str(),
                              fixed(a.selection_range.T_max, 2).c_str()) +
                       a.selection->message);
+  if (a.compatibility.computed) c.h.add_paragraph(c.t("dyn.compat_msg") + ": " + a.compatibility.message + ".");
   add_records_compatibility(c);
   c.h.add_heading(c.t("dyn.histories"), 3);
   add_histories(c);
@@ -488,68 +525,78 @@ void add_dynamic(const Ctx& c) {
   std::vector<std::vector<HtmlCell>> srows;
   for (const RestitutionSummary& x : a.summaries) {
     const bool fails = !x.slv_satisfied || !std::isfinite(x.dc_slv);
-    srows.push_back({c.restitution(x.restitution), num(x.analyses, 0), num(x.overturned, 0), num(x.mean_dc, 3),
-                     num(x.max_dc, 3), num(x.mean_d_star, 4), dc_cell(x.dc_slv, fails),
-                     HtmlCell(c.t(fails ? "fail" : "ok"), fails ? "fail" : "ok")});
+    srows.push_back({c.restitution(x.restitution), num(x.analyses, 0),
+                     HtmlCell(std::to_string(x.overturned) + " / " + std::to_string(x.analyses), "num"),
+                     num(x.mean_dc, 3), num(x.max_dc, 3), num(x.mean_d_star, 4), num(x.max_d_star, 4), x.rule,
+                     x.no_verdict ? HtmlCell("—", "num") : dc_cell(x.dc_slv, fails),
+                     x.no_verdict ? HtmlCell(c.t("verdict.no_verdict_short"), "fail")
+                                  : HtmlCell(c.t(fails ? "fail" : "ok"), fails ? "fail" : "ok")});
   }
-  c.h.add_cell_table({c.t("dyn.restitution"), HtmlCell(c.t("dyn.analyses"), "num"), HtmlCell(c.t("dyn.overturned"), "num"),
-                 HtmlCell(c.t("dyn.mean_dc"), "num"), HtmlCell(c.t("dyn.max_dc"), "num"),
-                 HtmlCell(c.t("dyn.mean_d"), "num"), HtmlCell(c.t("dyn.dc_slv"), "num"), c.t("checks.outcome")},
-                srows, "");
+  c.h.add_cell_table({c.t("dyn.restitution"), HtmlCell(c.t("dyn.analyses"), "num"),
+                      HtmlCell(c.t("dyn.overturned"), "num"), HtmlCell(c.t("dyn.mean_dc"), "num"),
+                      HtmlCell(c.t("dyn.max_dc"), "num"), HtmlCell(c.t("dyn.mean_d"), "num"),
+                      HtmlCell(c.t("dyn.max_d"), "num"), c.t("dyn.rule"), HtmlCell(c.t("dyn.dc_slv"), "num"),
+                      c.t("checks.outcome")},
+                     srows, c.t("dyn.summary_cap"));
 }
 
-// Grouped D/C bars (Lipo & de Felice 2017, Fig. 8): one group per code and
-// kind of analysis, one named bar per check at SLV; dynamic groups per
-// restitution coefficient (energy D/C and C8.7.1.2.1.9).
+// Grouped D/C bars (Lipo & de Felice 2017, Fig. 8) of the summary by approach
+// built in the assessment (assessment/verdict.hpp): one group per code, one
+// named bar per approach (limit state, location, restitution), the line D/C = 1;
+// then the summary table and the overall verdict per code.
 void add_comparison(const Ctx& c) {
-  struct Bar {
-    std::string name;
-    double dc;
-  };
-  struct Group {
-    std::string name;
-    std::vector<Bar> bars;
-  };
-  std::vector<Group> groups;
-  auto group = [&](const std::string& name) -> Group& {
-    for (Group& gr : groups)
-      if (gr.name == name) return gr;
-    groups.push_back({name, {}});
-    return groups.back();
-  };
-  for (const CheckRow& r : c.a.checks) {
-    if (r.limit_state != "SLV" || r.kind == "dynamic") continue;
-    group(code_name(r.code) + " " + c.t("cmp.group_" + r.kind)).bars.push_back({c.t("where." + r.location), r.dc});
-  }
-  if (c.a.dynamic && c.a.dynamic_applies)
-    for (const RestitutionSummary& s : c.a.summaries) {
-      Group& gr = group(c.t("cmp.group_dynamic") + ", " + c.restitution(s.restitution));
-      gr.bars.push_back({c.t("dyn.energy_dc"), s.mean_dc});
-      gr.bars.push_back({"C8.7.1.2.1.9", s.dc_slv});
-    }
-  if (groups.empty()) return;
+  const Verdict& v = c.a.verdict;
+  if (v.rows.empty()) return;
   c.h.add_heading(c.t("cmp.heading"));
   Plot p;
   p.title = c.t("cmp.title");
   p.y_label = "D/C (-)";
   p.bar_width = 0.8;
   p.rotate_x_tic_labels = true;
-  p.height = 460;
-  p.key = "outside right top";
+  p.height = 480;
   p.width = 720;
-  static const char* colours[] = {"#1f5fbf", "#d9730d", "#2b7a2b", "#8a3ea8", "#7f7f7f", "#17becf", "#bcbd22", "#8c564b"};
+  p.key = "outside right top";
+  static const char* colours[] = {"#1f5fbf", "#d9730d", "#2b7a2b", "#8a3ea8", "#7f7f7f", "#17becf"};
+  auto bar_name = [&](const VerdictRow& r) {
+    std::string n = c.kind_name(r.approach) + " " + r.limit_state;
+    if (r.location == "height") n += " (" + c.t("where.height") + ")";
+    if (r.approach == "dynamic" || r.approach == "dynamic energy") n += ", " + r.clause.substr(r.clause.rfind(", ") + 2);
+    return n;
+  };
+  // Short tick labels under the bars (the table below names each row in full).
+  auto short_name = [&](const VerdictRow& r) {
+    std::string n = c.t("short." + std::string(r.approach == "dynamic energy" ? "energy" : r.approach)) + " " +
+                    r.limit_state;
+    if (r.location == "height") n += " " + c.t("short.height");
+    if (r.approach == "dynamic" || r.approach == "dynamic energy") {
+      const std::string e = r.clause.substr(r.clause.rfind(", ") + 2);
+      n += " " + (e.rfind("e = ", 0) == 0 ? "e=" + e.substr(4) : e);
+    }
+    return n;
+  };
+  std::vector<std::string> groups;
+  for (const VerdictRow& r : v.rows)
+    if (std::find(groups.begin(), groups.end(), r.code) == groups.end()) groups.push_back(r.code);
   double x = 0.0, dc_max = 1.0;
   std::vector<std::vector<HtmlCell>> rows;
   for (std::size_t gi = 0; gi < groups.size(); ++gi) {
-    PlotSeries bars = series(groups[gi].name, PlotSeries::Style::Bars);
-    bars.color = colours[gi % 8];
-    for (const Bar& b : groups[gi].bars) {
+    PlotSeries bars = series(groups[gi] == "seed" ? c.t("cmp.group_seed") : code_name(groups[gi]), PlotSeries::Style::Bars);
+    bars.color = colours[gi % 6];
+    for (const VerdictRow& r : v.rows) {
+      if (r.code != groups[gi]) continue;
+      const double dc = std::isfinite(r.dc) ? r.dc : 0.0;
       bars.x.push_back(x);
-      bars.y.push_back(std::isfinite(b.dc) ? b.dc : 0.0);
-      p.x_tic_labels.push_back({x, b.name});
-      dc_max = std::max(dc_max, std::isfinite(b.dc) ? b.dc : 0.0);
-      const bool fails = !std::isfinite(b.dc) || b.dc > 1.0;
-      rows.push_back({groups[gi].name, b.name, dc_cell(b.dc, fails)});
+      bars.y.push_back(dc);
+      p.x_tic_labels.push_back({x, short_name(r)});
+      dc_max = std::max(dc_max, dc);
+      const bool fails = !r.satisfied || r.no_verdict || !std::isfinite(r.dc);
+      std::string note = r.candidate.empty() ? r.clause : r.candidate + "; " + r.clause;
+      if (!r.note.empty()) note += "; " + r.note;
+      rows.push_back({groups[gi] == "seed" ? c.t("cmp.group_seed") : code_name(r.code), HtmlCell(bar_name(r), "", note),
+                      r.no_verdict ? HtmlCell("—", "num") : dc_cell(r.dc, fails),
+                      r.code == "seed" ? HtmlCell(r.satisfied ? "≤ 1" : "> 1", r.satisfied ? "ok" : "fail")
+                      : r.no_verdict   ? HtmlCell(c.t("verdict.no_verdict_short"), "fail")
+                                       : HtmlCell(c.t(fails ? "fail" : "ok"), fails ? "fail" : "ok")});
       x += 1.0;
     }
     p.series.push_back(bars);
@@ -564,7 +611,24 @@ void add_comparison(const Ctx& c) {
   p.y_min = 0.0;
   p.y_max = 1.25 * dc_max;
   c.h.add_svg(render_svg(p), c.t("cmp.fig"), "fig-dc");
-  c.h.add_cell_table({c.t("cmp.approach"), c.t("checks.check"), HtmlCell("D/C", "num")}, rows, "");
+  c.h.add_cell_table({c.t("checks.code"), c.t("cmp.approach"), HtmlCell("D/C", "num"), c.t("checks.outcome")}, rows,
+                     c.t("cmp.table_cap"));
+  std::vector<std::vector<HtmlCell>> orows;
+  for (const CodeVerdict& cv : v.overall) {
+    const bool ok = cv.satisfied && std::isfinite(cv.max_dc);
+    orows.push_back({code_name(cv.code), HtmlCell(c.t(ok ? "verdict.ok" : "verdict.fail"), ok ? "ok" : "fail"),
+                     HtmlCell(std::to_string(cv.failing) + " / " + std::to_string(cv.checks), "num"),
+                     num(cv.no_verdict, 0), dc_cell(cv.max_dc, !ok)});
+  }
+  c.h.add_cell_table({c.t("checks.code"), c.t("cmp.overall"), HtmlCell(c.t("cmp.failing"), "num"),
+                      HtmlCell(c.t("verdict.no_verdict"), "num"), HtmlCell(c.t("cmp.max_dc"), "num")},
+                     orows, "");
+}
+
+void add_warnings(const Ctx& c) {
+  if (c.a.warnings.empty()) return;
+  c.h.add_heading(c.t("warnings.heading"), 2, false);
+  for (const std::string& w : c.a.warnings) c.h.add_paragraph(w);
 }
 
 void add_legend(const Ctx& c) {
@@ -582,34 +646,17 @@ void add_appendix(const Ctx& c) {
 
 }  // namespace
 
-std::vector<CodeVerdict> code_verdicts(const FacadeAssessment& a) {
-  // Rank of a check for "governing": a D/C that is not finite (cannot be
-  // trusted) first, then failing checks, then the largest D/C.
-  auto rank = [](const CheckRow& r) {
-    if (!std::isfinite(r.dc)) return std::make_pair(2, 0.0);
-    return std::make_pair(check_fails(r) ? 1 : 0, r.dc);
+int governing_verdict_row(const Verdict& v, const std::string& code) {
+  auto rank = [](const VerdictRow& r) {
+    if (r.no_verdict || !std::isfinite(r.dc)) return std::make_pair(2, 0.0);
+    return std::make_pair(r.satisfied ? 0 : 1, r.dc);
   };
-  std::vector<CodeVerdict> out;
-  for (std::size_t i = 0; i < a.checks.size(); ++i) {
-    const CheckRow& r = a.checks[i];
-    auto it = std::find_if(out.begin(), out.end(), [&](const CodeVerdict& v) { return v.code == r.code; });
-    if (it == out.end()) {
-      CodeVerdict v;
-      v.code = r.code;
-      v.governing = i;
-      v.dc = r.dc;
-      out.push_back(v);
-      it = out.end() - 1;
-    }
-    CodeVerdict& v = *it;
-    ++v.checks;
-    const bool fails = check_fails(r);
-    if (fails) ++v.failing;
-    v.satisfied = v.satisfied && !fails;
-    if (rank(r) > rank(a.checks[v.governing])) v.governing = i;
-    v.dc = a.checks[v.governing].dc;
+  int best = -1;
+  for (std::size_t i = 0; i < v.rows.size(); ++i) {
+    if (v.rows[i].code != code) continue;
+    if (best < 0 || rank(v.rows[i]) > rank(v.rows[std::size_t(best)])) best = int(i);
   }
-  return out;
+  return best;
 }
 
 std::string facade_html(const FacadeAssessment& a, const ReportOptions& options) {
@@ -625,6 +672,7 @@ std::string facade_html(const FacadeAssessment& a, const ReportOptions& options)
   add_checks(c);
   add_dynamic(c);
   add_comparison(c);
+  add_warnings(c);
   add_legend(c);
   add_appendix(c);
   return h.str();

@@ -37,6 +37,10 @@ nlohmann::json to_json(const CheckRow& r) {
                    {"location", r.location}, {"demand", r.demand},           {"capacity", r.capacity},
                    {"unit", r.unit},         {"dc", r.dc},                   {"satisfied", r.satisfied},
                    {"clause", r.clause},     {"formula", r.formula}};
+  if (!r.candidate.empty()) j["candidate"] = r.candidate;
+  if (r.no_verdict) j["satisfied"] = nullptr;
+  if (!r.note.empty()) j["note"] = r.note;
+  if (!std::isfinite(r.dc)) j["dc"] = nullptr;
   if (r.has_pga) {
     j["ag_capacity_g"] = std::isfinite(r.ag_capacity_g) ? nlohmann::json(r.ag_capacity_g) : nlohmann::json(nullptr);
     j["ag_demand_g"] = r.ag_demand_g;
@@ -86,10 +90,33 @@ nlohmann::json kinematic_json(const CaseFile& c, const KinematicCaseResult& out)
     curve.push_back({{"d_star", p.d_star}, {"a_star", p.a_star}, {"dk", p.dk}, {"alpha", p.alpha}});
   j["capacity_curve"] = curve;
   nlohmann::json cands = nlohmann::json::array();
-  for (const CandidateResult& cr : out.candidates)
-    cands.push_back({{"label", cr.label}, {"parameter", cr.parameter}, {"Z", cr.Z}, {"alpha0", cr.result.alpha0},
-                     {"a0_star", cr.result.a0_star}});
+  for (std::size_t i = 0; i < out.candidates.size(); ++i) {
+    const CandidateResult& cr = out.candidates[i];
+    nlohmann::json cj{{"label", cr.label}, {"parameter", cr.parameter}, {"Z", cr.Z}, {"alpha0", cr.result.alpha0},
+                      {"a0_star", cr.result.a0_star}};
+    nlohmann::json dc = nlohmann::json::object(), gov = nlohmann::json::array();
+    for (const auto& [code, v] : cr.max_dc) dc[code] = std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+    for (const auto& [code, gi] : out.governing_by_code)
+      if (gi == i) gov.push_back(code);
+    cj["governing_dc"] = dc;
+    cj["governing_for"] = gov;
+    if (!cr.checks.empty())
+      cj["ag_capacity_min_g"] =
+          std::isfinite(cr.ag_capacity_min_g) ? nlohmann::json(cr.ag_capacity_min_g) : nlohmann::json(nullptr);
+    nlohmann::json rows = nlohmann::json::array();
+    for (const CheckRow& row : cr.checks) rows.push_back(to_json(row));
+    cj["checks"] = rows;
+    cands.push_back(cj);
+  }
   j["candidates"] = cands;
+  j["governing_rule"] = out.checks.empty() ? "smallest alpha0 (no site: no checks)"
+                                           : "largest D/C over the candidate's checks, per code (Circ. 2019 C8.7.1, "
+                                             "C8A.4: the most unfavourable mechanism)";
+  nlohmann::json gbc = nlohmann::json::object();
+  for (const auto& [code, gi] : out.governing_by_code) gbc[code] = out.candidates[gi].label;
+  j["governing_by_code"] = gbc;
+  if (!out.checks.empty()) j["summary"] = to_json(out.verdict);
+  j["warnings"] = out.warnings;
   nlohmann::json checks = nlohmann::json::array();
   for (const CheckRow& row : out.checks) checks.push_back(to_json(row));
   j["checks"] = checks;
@@ -127,6 +154,43 @@ std::string wrap_text(const std::string& text, std::size_t indent, std::size_t w
   return out + line;
 }
 
+/// Items joined by "; " and packed into lines of at most `width` columns,
+/// breaking between items (an item longer than a line is wrapped at blanks);
+/// the first line starts with `first`, the others with `indent` blanks.
+std::string wrap_items(const std::string& first, const std::vector<std::string>& items, std::size_t indent,
+                       std::size_t width = 120) {
+  auto columns = [](const std::string& w) {
+    std::size_t n = 0;
+    for (unsigned char ch : w) n += (ch & 0xC0) != 0x80;
+    return n;
+  };
+  std::string out, line = first;
+  bool empty = true;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const std::string item = items[i] + (i + 1 < items.size() ? ";" : "");
+    if (!empty && columns(line) + 1 + columns(item) > width) {
+      out += wrap_text(line, indent, width) + "\n";
+      line = std::string(indent, ' ') + item;
+    } else {
+      line += (empty ? "" : " ") + item;
+    }
+    empty = false;
+  }
+  return out + wrap_text(line, indent, width);
+}
+
+std::vector<std::string> split_items(const std::string& s) {
+  std::vector<std::string> out;
+  std::size_t pos = 0;
+  while (true) {
+    const std::size_t next = s.find("; ", pos);
+    out.push_back(s.substr(pos, next == std::string::npos ? std::string::npos : next - pos));
+    if (next == std::string::npos) break;
+    pos = next + 2;
+  }
+  return out;
+}
+
 std::string checks_text(const std::vector<CheckRow>& checks, TextWidth width) {
   std::string out;
   out += format("checks (D/C = demand / capacity; satisfied if D/C <= 1):\n");
@@ -138,9 +202,10 @@ std::string checks_text(const std::vector<CheckRow>& checks, TextWidth width) {
       char pga[64] = "";
       if (x.has_pga) std::snprintf(pga, sizeof pga, "%10.5f %10.5f %7.3f", x.ag_capacity_g, x.ag_demand_g, x.dc_pga);
       else std::snprintf(pga, sizeof pga, "%10s %10s %7s", "-", "-", "-");
-      out += format("  %-8s %-4s %-12s %-7s %12.6f %12.6f %-5s %7.3f %s  %-30s %s; %s\n", x.code.c_str(),
+      out += format("  %-8s %-4s %-12s %-7s %12.6f %12.6f %-5s %7.3f %s  %-30s %s; %s%s\n", x.code.c_str(),
                     x.limit_state.c_str(), x.kind.c_str(), x.location.c_str(), x.demand, x.capacity, x.unit.c_str(),
-                    x.dc, pga, verdict(x.satisfied), x.formula.c_str(), x.clause.c_str());
+                    x.dc, pga, x.no_verdict ? "no verdict" : verdict(x.satisfied), x.formula.c_str(),
+                    x.clause.c_str(), x.note.empty() ? "" : ("; " + x.note).c_str());
     }
     return out;
   }
@@ -155,7 +220,10 @@ std::string checks_text(const std::vector<CheckRow>& checks, TextWidth width) {
     else std::snprintf(pga, sizeof pga, "%9s %9s %7s", "-", "-", "-");
     out += format("  %-8s %-4s %-12s %-7s %10.6f %10.6f %-5s %7.3f %s\n", x.code.c_str(), x.limit_state.c_str(),
                   x.kind.c_str(), x.location.c_str(), x.demand, x.capacity, x.unit.c_str(), x.dc, pga);
-    out += wrap_text(format("  %-8s %s; %s; %s", "", verdict(x.satisfied), x.formula.c_str(), x.clause.c_str()), 11) +
+    out += wrap_items(std::string(11, ' '),
+                      split_items(std::string(x.no_verdict ? "no verdict" : verdict(x.satisfied)) + "; " + x.formula +
+                                  "; " + x.clause + (x.note.empty() ? "" : "; " + x.note)),
+                      11) +
            "\n";
   }
   return out;
@@ -174,11 +242,38 @@ std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res, Te
     out += (wide ? m : wrap_text(m, 11)) + "\n";
   }
   if (res.candidates.size() > 1) {
-    out += format("\ncandidates (%s searched; governing = smallest alpha0):\n", c.mechanism.parameter_name.c_str());
-    out += format("  %-48s %12s %12s\n", "candidate", "alpha0 (-)", "a0* (m/s2)");
-    for (std::size_t i = 0; i < res.candidates.size(); ++i)
-      out += format("  %-48s %12.6f %12.6f%s\n", res.candidates[i].label.c_str(), res.candidates[i].result.alpha0,
-                  res.candidates[i].result.a0_star, i == res.governing ? "  <- governing" : "");
+    const bool checked = !res.governing_by_code.empty();
+    const std::string head = format("\ncandidates (%s searched; governing = %s):", c.mechanism.parameter_name.c_str(),
+                  checked ? "largest D/C over its checks, per code (Circ. 2019 C8.7.1; C8A.4: the most unfavourable "
+                            "mechanism; NTC 2018: the lowest ag capacity)"
+                          : "smallest alpha0 (no site: no checks)");
+    out += (wide ? head : wrap_text(head, 2)) + "\n";
+    // 120 columns: narrower number columns; a long label on a line of its own.
+    const int lw = wide ? 44 : 40;
+    out += format(wide ? "  %-*s %11s %11s" : "  %-*s %10s %10s", lw, "candidate", "alpha0 (-)", "a0* (m/s2)");
+    for (const auto& [code, gi] : res.governing_by_code)
+      out += format(wide ? " %11s" : " %8s", ("D/C " + code.substr(3)).c_str());
+    if (checked) out += format(wide ? " %12s" : " %10s", "ag,cap (g)");
+    out += "\n";
+    for (std::size_t i = 0; i < res.candidates.size(); ++i) {
+      const CandidateResult& cr = res.candidates[i];
+      std::string label = cr.label;
+      if (!wide && label.size() > std::size_t(lw)) {
+        out += "  " + label + "\n";
+        label.clear();
+      }
+      out += format(wide ? "  %-*s %11.6f %11.6f" : "  %-*s %10.6f %10.5f", lw, label.c_str(), cr.result.alpha0,
+                    cr.result.a0_star);
+      std::string gov;
+      for (const auto& [code, gi] : res.governing_by_code) {
+        const auto it = cr.max_dc.find(code);
+        out += format(wide ? " %11.3f" : " %8.3f", it == cr.max_dc.end() ? 0.0 : it->second);
+        if (gi == i) gov += (gov.empty() ? "" : ", ") + (wide ? code : code.substr(3));
+      }
+      if (checked) out += format(wide ? " %12.5f" : " %10.5f", cr.ag_capacity_min_g);
+      if (!checked && i == res.governing) gov = "smallest alpha0";
+      out += gov.empty() ? "\n" : (wide ? "  <- governing (" : "  <- governing ") + gov + (wide ? ")\n" : "\n");
+    }
   }
   out += format("\nvirtual displacements (largest block rotation = 1 rad; x outward, z up):\n");
   if (wide) {
@@ -243,6 +338,78 @@ std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res, Te
     return out;
   }
   out += "\n" + checks_text(res.checks, width);
+  out += "\n" + verdict_text(res.verdict, width);
+  return out;
+}
+
+nlohmann::json to_json(const VerdictRow& r) {
+  return {{"code", r.code},
+          {"approach", r.approach},
+          {"limit_state", r.limit_state},
+          {"location", r.location},
+          {"dc", std::isfinite(r.dc) ? nlohmann::json(r.dc) : nlohmann::json(nullptr)},
+          {"satisfied", r.no_verdict ? nlohmann::json(nullptr) : nlohmann::json(r.satisfied)},
+          {"clause", r.clause},
+          {"candidate", r.candidate},
+          {"note", r.note},
+          {"checks", r.checks},
+          {"failing", r.failing}};
+}
+
+nlohmann::json to_json(const Verdict& v) {
+  nlohmann::json rows = nlohmann::json::array(), overall = nlohmann::json::array();
+  for (const VerdictRow& r : v.rows) rows.push_back(to_json(r));
+  for (const CodeVerdict& c : v.overall)
+    overall.push_back({{"code", c.code},
+                       {"satisfied", c.satisfied},
+                       {"checks", c.checks},
+                       {"failing", c.failing},
+                       {"no_verdict", c.no_verdict},
+                       {"max_dc", std::isfinite(c.max_dc) ? nlohmann::json(c.max_dc) : nlohmann::json(nullptr)}});
+  return {{"by_approach", rows}, {"overall", overall}};
+}
+
+std::string verdict_word(const VerdictRow& r) {
+  if (r.no_verdict) return "no verdict";
+  if (r.code == "seed") {
+    if (r.satisfied) return "<= 1, no overturning";
+    // Never "<= 1" while an analysis overturned (the note counts them).
+    return r.note.rfind("overturned in 0 ", 0) == 0 ? "> 1" : "collapse (overturned)";
+  }
+  return verdict(r.satisfied);
+}
+
+std::string verdict_text(const Verdict& v, TextWidth width) {
+  if (v.rows.empty()) return "";
+  const bool wide = width == TextWidth::wide;
+  auto para = [&](const std::string& line, std::size_t ind) { return wide ? line : wrap_text(line, ind); };
+  std::string out = para("summary by approach (the governing check of each code and approach: the largest D/C over "
+                         "every candidate, limit state and location; seed Fig. 8):",
+                         2) +
+                    "\n";
+  out += format("  %-8s %-15s %-4s %-7s %8s  %-31s %s\n", "code", "approach", "LS", "where", "D/C", "verdict",
+                "candidate; clause; notes");
+  for (const VerdictRow& r : v.rows) {
+    std::string tail = r.candidate.empty() ? r.clause : r.candidate + "; " + r.clause;
+    if (r.failing > 0 && r.checks > 1) tail += format("; %d of %d checks fail", r.failing, r.checks);
+    if (!r.note.empty()) tail += "; " + r.note;
+    const std::string dc = std::isfinite(r.dc) ? format("%8.3f", r.dc) : format("%8s", "n/a");
+    const std::string cols = format("  %-8s %-15s %-4s %-7s %s  %-31s", r.code.c_str(),
+                                    (r.code == "seed" ? std::string("energy (mean)") : r.approach).c_str(),
+                                    r.limit_state.c_str(), r.location.c_str(), dc.c_str(), verdict_word(r).c_str());
+    out += (wide ? cols + " " + tail : cols + "\n" + wrap_items(std::string(11, ' '), split_items(tail), 11)) + "\n";
+  }
+  out += para("overall verdict per code (not satisfied if any check of the code fails; the seed's energy D/C is not a "
+              "code check):",
+              2) +
+         "\n";
+  for (const CodeVerdict& c : v.overall) {
+    out += format("  %-8s %s: %d of %d checks fail, largest D/C %.3f", c.code.c_str(),
+                  c.satisfied ? "VERIFICATO / SATISFIED" : "NON VERIFICATO / NOT SATISFIED", c.failing, c.checks,
+                  c.max_dc);
+    if (c.no_verdict > 0) out += format(" (%d without a verdict)", c.no_verdict);
+    out += "\n";
+  }
   return out;
 }
 

@@ -48,6 +48,8 @@ const std::map<std::string, Entry>& catalogue() {
         "For each code the box gives the largest D/C over all its checks (ground and at height, linear, non-linear "
         "and dynamic): a single failing check makes the outcome NOT SATISFIED."}},
       {"verdict.no_checks", {"Nessuna verifica: il caso non ha un sito.", "No checks: the case has no site."}},
+      {"verdict.no_verdict", {"senza esito", "without a verdict"}},
+      {"verdict.no_verdict_short", {"nessun esito", "no verdict"}},
       {"ok", {"verificato", "satisfied"}},
       {"fail", {"non verificato", "not satisfied"}},
       // Site.
@@ -79,14 +81,16 @@ const std::map<std::string, Entry>& catalogue() {
       // Mechanism.
       {"mech.heading", {"Meccanismo di collasso", "Collapse mechanism"}},
       {"mech.type", {"Meccanismo", "Mechanism"}},
-      {"mech.governing", {"meccanismo che governa (α0 minimo)", "governing mechanism (smallest α0)"}},
+      {"mech.governing", {"candidato che governa (disegnato)", "governing candidate (drawn)"}},
       {"mech.fig", {"Schema del meccanismo generato dalla catena cinematica: blocchi, cerniere, carichi e spinte con "
                     "i loro valori, tiranti, punto di controllo, piani e quota della cerniera. x verso l'esterno.",
                     "The mechanism drawn from the kinematic chain: blocks, hinges, loads and thrusts with their values, "
                     "ties, control point, storeys and hinge level. x outward."}},
       {"mech.candidates", {"Meccanismi candidati", "Candidate mechanisms"}},
-      {"mech.candidates_cap", {"Candidati esaminati (parametro: %s); governa il candidato con α0 minimo.",
-                               "Candidates analysed (parameter: %s); the one with the smallest α0 governs."}},
+      {"mech.candidates_cap", {"Candidati esaminati (parametro: %s); per ciascuna norma governa il candidato con il D/C "
+                               "massimo sulle sue verifiche (Circ. 2019 C8.7.1; C8A.4: il meccanismo più sfavorevole).",
+                               "Candidates analysed (parameter: %s); for each code the candidate with the largest D/C "
+                               "over its checks governs (Circ. 2019 C8.7.1; C8A.4: the most unfavourable mechanism)."}},
       {"mech.candidate", {"candidato", "candidate"}},
       {"mech.governs", {"governa", "governs"}},
       {"mech.vw", {"Tabella dei lavori virtuali", "Virtual-work table"}},
@@ -158,6 +162,7 @@ const std::map<std::string, Entry>& catalogue() {
       {"kind.strength", {"lineare (resistenza)", "linear (strength)"}},
       {"kind.displacement", {"non lineare (spostamento)", "non-linear (displacement)"}},
       {"kind.dynamic", {"dinamica non lineare", "non-linear dynamic"}},
+      {"kind.dynamic energy", {"D/C energetico (Lipo & de Felice, non di norma)", "energy D/C (Lipo & de Felice, not a code check)"}},
       {"where.ground", {"al piede", "at ground level"}},
       {"where.height", {"in quota", "at height"}},
       {"checks.verifica", {"verifica allo", "check at"}},
@@ -209,22 +214,41 @@ const std::map<std::string, Entry>& catalogue() {
       {"dyn.max_dc", {"D/C energetico max", "max energy D/C"}},
       {"dyn.mean_d", {"d* di picco medio (m)", "mean peak d* (m)"}},
       {"dyn.dc_slv", {"D/C (d_SLV)", "D/C (d_SLV)"}},
-      {"dyn.energy_dc", {"D/C energetico medio", "mean energy D/C"}},
-      {"dyn.code_dc", {"C8.7.1.2.1.9 (d* medio / d_SLV)", "C8.7.1.2.1.9 (mean d* / d_SLV)"}},
+      {"dyn.max_d", {"d* di picco max (m)", "max peak d* (m)"}},
+      {"dyn.rule", {"regola (NTC 2018 §7.3.5)", "rule (NTC 2018 §7.3.5)"}},
+      {"dyn.summary_cap",
+       {"Il D/C energetico è la misura di Lipo & de Felice (2017, §3.2), non una verifica di norma. Verifica C8.7.1.2.1.9: "
+        "d0 mai superato e d* di picco ≤ d_SLV, combinando gli accelerogrammi secondo NTC 2018 §7.3.5 (media con "
+        "almeno 7, il più sfavorevole con 3–6, nessun esito con meno).",
+        "The energy D/C is the measure of Lipo & de Felice (2017, §3.2), not a code check. Check C8.7.1.2.1.9: d0 never "
+        "exceeded and peak d* ≤ d_SLV, the records combined by NTC 2018 §7.3.5 (mean with at least 7, the most "
+        "unfavourable with 3–6, no verdict with fewer)."}},
+      {"dyn.compat_msg", {"Accelerogrammi e spettro SLV", "Records and the SLV spectrum"}},
       {"dyn.skipped", {"accelerogramma escluso", "record skipped"}},
       // Comparison.
-      {"cmp.heading", {"Confronto D/C tra gli approcci allo SLV (Lipo & de Felice 2017, Fig. 8)",
-                       "D/C of the approaches at SLV (Lipo & de Felice 2017, Fig. 8)"}},
+      {"cmp.heading", {"Esito per approccio (Lipo & de Felice 2017, Fig. 8)",
+                       "Verdict by approach (Lipo & de Felice 2017, Fig. 8)"}},
       {"cmp.title", {"D/C per approccio", "D/C by approach"}},
-      {"cmp.fig", {"Rapporti domanda/capacità per approccio, raggruppati per norma e tipo di analisi; la linea "
-                   "tratteggiata è D/C = 1 (sopra: non verificato).",
-                   "Demand/capacity ratios by approach, grouped by code and kind of analysis; the dashed line is "
-                   "D/C = 1 (above: not satisfied)."}},
+      {"cmp.fig", {"Rapporti domanda/capacità della verifica che governa ciascun approccio, raggruppati per norma; "
+                   "la linea tratteggiata è D/C = 1 (sopra: non verificato).",
+                   "Demand/capacity ratio of the governing check of each approach, grouped by code; the dashed line "
+                   "is D/C = 1 (above: not satisfied)."}},
       {"cmp.approach", {"approccio", "approach"}},
-      {"cmp.group_strength", {"lineare", "linear"}},
-      {"cmp.group_displacement", {"non lineare", "non-linear"}},
-      {"cmp.group_dynamic", {"dinamica", "dynamic"}},
+      {"short.strength", {"lin.", "lin."}},
+      {"short.displacement", {"non lin.", "non-lin."}},
+      {"short.dynamic", {"din.", "dyn."}},
+      {"short.energy", {"energia", "energy"}},
+      {"short.height", {"(quota)", "(height)"}},
       {"cmp.line", {"D/C = 1", "D/C = 1"}},
+      {"cmp.group_seed", {"D/C energetico (Lipo & de Felice)", "energy D/C (Lipo & de Felice)"}},
+      {"cmp.table_cap", {"Sintesi per approccio: per ogni norma e approccio la verifica che governa (D/C massimo su "
+                         "tutti i candidati, stati limite e posizioni).",
+                         "Summary by approach: for each code and approach the governing check (largest D/C over every "
+                         "candidate, limit state and location)."}},
+      {"cmp.overall", {"esito complessivo", "overall verdict"}},
+      {"cmp.failing", {"verifiche non soddisfatte", "checks failing"}},
+      {"cmp.max_dc", {"D/C massimo", "largest D/C"}},
+      {"warnings.heading", {"Avvertenze", "Warnings"}},
       // Legend and appendix.
       {"legend.heading", {"Legenda delle etichette delle clausole", "Legend of the clause tags"}},
       {"legend.VT", {"[V-T]: verificata su una trascrizione pubblica del testo ufficiale.",

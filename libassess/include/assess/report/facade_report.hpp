@@ -32,18 +32,11 @@ struct ReportOptions {
   std::string case_text;    ///< the case file's text, echoed in the appendix; empty: a note
 };
 
-/// One line of the verdict box: the worst check of a code.
-struct CodeVerdict {
-  std::string code;          ///< "NTC2008", "NTC2018"
-  bool satisfied = true;     ///< every check of the code satisfied and trusted
-  double dc = 0.0;           ///< largest D/C over the code's checks (NaN if one is not finite)
-  std::size_t governing = 0; ///< index in FacadeAssessment::checks of the governing check
-  int checks = 0, failing = 0;
-};
-/// The verdict per code from the list of checks (worst D/C over all of a
-/// code's checks, ground and at height, kinematic and dynamic; a D/C that is
-/// not finite counts as failing and governs). Formatting only: reads the rows.
-std::vector<CodeVerdict> code_verdicts(const FacadeAssessment& a);
+/// The summary row (index in v.rows) that the verdict box of `code` names as
+/// governing: a row without a verdict or with a D/C that is not finite first
+/// (it cannot be trusted), then a failing row, then the largest D/C; -1 if the
+/// code has no row. Formatting only: picks among the assessment's rows.
+int governing_verdict_row(const Verdict& v, const std::string& code);
 
 /// The relazione as a self-contained, printable HTML page (A4): verdict box
 /// per code, site and spectra, a drawing of the mechanism, the virtual-work
