@@ -14,6 +14,7 @@
 #include "assess/campaign/campaign.hpp"
 
 #include "assess/support/error.hpp"
+#include "assess/support/json_input.hpp"
 #include "assess/hazard/hazard.hpp"
 #include "assess/records/record_catalogue.hpp"
 #include "assess/records/record_io.hpp"
@@ -25,6 +26,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 namespace assess {
 
@@ -328,14 +330,14 @@ CampaignSpec parse_campaign(const json& j, const std::string& base_dir) {
 }
 
 CampaignSpec read_campaign(const std::string& path) {
-  std::ifstream in(path);
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError("campaign file '" + path + "' is a directory");
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot open campaign file '" + path + "'");
-  json j;
-  try {
-    in >> j;
-  } catch (const json::exception& e) {
-    throw InputError("campaign file '" + path + "' is not valid JSON: " + e.what());
-  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  // Errors name the file and the JSON path ("campaign file 'c.json': /walls/0/b: number out of the range ...").
+  const json j = parse_json_text(text.str(), "campaign file '" + path + "'");
   const auto slash = path.find_last_of('/');
   try {
     return parse_campaign(j, slash == std::string::npos ? "." : path.substr(0, slash));
