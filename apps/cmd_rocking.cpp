@@ -63,7 +63,8 @@ nlohmann::json optional_json(const std::optional<double>& v) {
 void check_range(const char* option, double v, double lo, double hi, const char* unit) {
   if (std::isfinite(v) && v >= lo && v <= hi) return;
   char buf[200];
-  std::snprintf(buf, sizeof buf, "%s must lie in [%g, %g] %s, got %g", option, lo, hi, unit, v);
+  if (std::isnan(v)) std::snprintf(buf, sizeof buf, "%s must lie in [%g, %g] %s, got not-a-number", option, lo, hi, unit);
+  else std::snprintf(buf, sizeof buf, "%s must lie in [%g, %g] %s, got %g", option, lo, hi, unit, v);
   throw InputError(buf);
 }
 
@@ -76,7 +77,8 @@ void run(const RockingArgs& a) {
   if (!(std::isfinite(a.scale) && a.scale > 0.0 && a.scale <= limits::scale_max))
     check_range("--scale", a.scale, 0.0, limits::scale_max, "(-, > 0)");
   if (a.dt_given && !(std::isfinite(a.dt) && a.dt > 0.0))
-    throw InputError("--dt: time step must be positive (s), got " + std::to_string(a.dt));
+    throw InputError(std::isnan(a.dt) ? std::string("--dt: time step must be positive (s), got not-a-number")
+                                      : "--dt: time step must be positive (s), got " + std::to_string(a.dt));
   if (!std::isnan(a.k_kN) && a.model == "smooth")
     check_range("--k", a.k_kN, 0.0, limits::winkler_k_max_N_m3 / units::kN, "kN/m^3 (a stiffer base is rigid: use --model rigid)");
   const RockingBody body = RockingBody::rectangle(a.thickness, a.height, a.unit_weight_kN * units::kN);

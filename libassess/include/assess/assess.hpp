@@ -31,6 +31,7 @@
 #include <assess/records/response_spectrum.hpp>
 
 // dynamics
+#include <assess/dynamics/analysis_limits.hpp>
 #include <assess/dynamics/hybrid_ode.hpp>
 #include <assess/dynamics/rocking_analysis.hpp>
 #include <assess/dynamics/rocking_body.hpp>
@@ -52,3 +53,4 @@
 #include <assess/campaign/campaign.hpp>
 #include <assess/campaign/campaign_report.hpp>
 #include <assess/campaign/campaign_runner.hpp>
+#include <assess/campaign/output_lock.hpp>

@@ -205,6 +205,10 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
     for (const DynamicRun& r : a.runs) {
       if (r.restitution != ie) continue;
       ++s.analyses;
+      if (!succeeded(r.result)) {  // its numbers are not results
+        ++s.failed;
+        continue;
+      }
       s.overturned += r.result.overturned ? 1 : 0;
       s.mean_dc += r.result.dc;
       s.min_dc = std::min(s.min_dc, r.result.dc);
@@ -213,12 +217,17 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
       s.any_collapse = s.any_collapse || r.collapse;
       envelope[r.record] = std::max(envelope[r.record], r.d_star);
     }
-    s.mean_dc /= s.analyses;
-    s.mean_theta_ratio /= s.analyses;
-    for (const auto& [rec, dmax] : envelope) s.mean_d_star += dmax;
-    s.mean_d_star /= double(envelope.size());
+    const int trusted = s.analyses - s.failed;
+    if (trusted > 0) {
+      s.mean_dc /= trusted;
+      s.mean_theta_ratio /= trusted;
+      for (const auto& [rec, dmax] : envelope) s.mean_d_star += dmax;
+      s.mean_d_star /= double(envelope.size());
+    } else {
+      s.min_dc = 0.0;
+    }
     s.dc_slv = kin.d_SLV > 0 ? s.mean_d_star / kin.d_SLV : 0.0;
-    s.slv_satisfied = !s.any_collapse && s.mean_d_star <= kin.d_SLV;
+    s.slv_satisfied = s.failed == 0 && !s.any_collapse && s.mean_d_star <= kin.d_SLV;
     a.summaries.push_back(s);
 
     CheckRow row;
@@ -228,7 +237,10 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
     row.location = "ground";
     row.clause = "C8.7.1.2.1.9 [V-T], " + describe(d.restitutions[ie]);
     row.formula = std::string("mean of peak d* over ") + std::to_string(envelope.size()) + " records" +
-                  (s.any_collapse ? "; d0 exceeded in " + std::to_string(s.overturned) + " analyses" : "; d0 never exceeded");
+                  (s.any_collapse ? "; d0 exceeded in " + std::to_string(s.overturned) + " analyses" : "; d0 never exceeded") +
+                  (s.failed ? "; " + std::to_string(s.failed) + " of " + std::to_string(s.analyses) +
+                                  " analyses FAILED (not verified)"
+                            : std::string());
     row.demand = s.mean_d_star;
     row.capacity = kin.d_SLV;
     row.unit = "m";

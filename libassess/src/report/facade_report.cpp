@@ -110,6 +110,11 @@ std::string facade_text(const FacadeAssessment& a) {
       o += format("\n  %-34s %-18s %9s %7s %9s %8s %8s %10s  %s\n", "record", "restitution", "th/th_u", "impacts",
                   "overturn", "energy", "d* (m)", "t_end (s)", "termination");
       for (const DynamicRun& r : a.runs)
+        if (!succeeded(r.result))  // a failed analysis shows no numbers
+          o += format("  %-34s %-18s FAILED (%s): %s\n", record_label(a, r).c_str(),
+                      describe(a.dynamic->restitutions[r.restitution]).c_str(), to_string(r.result.termination),
+                      r.result.message.c_str());
+        else
         o += format("  %-34s %-18s %9.4f %7ld %9s %8.4f %8.4f %10.3f  %s\n", record_label(a, r).c_str(),
                     describe(a.dynamic->restitutions[r.restitution]).c_str(), r.theta_ratio, r.result.impacts,
                     r.result.overturned ? "yes" : "no", r.result.dc, r.d_star, r.result.t_end,
@@ -207,12 +212,14 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
                         {"d_control", r.d_control},
                         {"d_star", r.d_star},
                         {"collapse", r.collapse},
-                        {"termination", to_string(r.result.termination)}});
+                        {"termination", to_string(r.result.termination)},
+                        {"failed", !succeeded(r.result)}});
       d["analyses"] = runs;
       nlohmann::json sums = nlohmann::json::array();
       for (const RestitutionSummary& s : a.summaries)
         sums.push_back({{"restitution", describe(a.dynamic->restitutions[s.restitution])},
                         {"e", s.e},
+                        {"failed", s.failed},
                         {"analyses", s.analyses},
                         {"overturned", s.overturned},
                         {"mean_dc", s.mean_dc},

@@ -51,12 +51,16 @@ struct RestitutionSummary {
   double e = 0.0;
   int analyses = 0;
   int overturned = 0;
+  /// Analyses that failed (step or event limit, integrator error): left out
+  /// of the statistics, and the check is then not satisfied (a result that
+  /// cannot be trusted is a failure).
+  int failed = 0;
   double mean_dc = 0.0, min_dc = 0.0, max_dc = 0.0;  ///< energy demand/capacity (-)
   double mean_theta_ratio = 0.0;                     ///< mean theta_max/theta_u (-)
   /// Mean over the records of the peak d* (envelope of the polarities) (m).
   double mean_d_star = 0.0;
   bool any_collapse = false;      ///< d0 exceeded (or overturning) in some analysis
-  bool slv_satisfied = false;     ///< no collapse and mean d* <= d_SLV
+  bool slv_satisfied = false;     ///< no failed analysis, no collapse and mean d* <= d_SLV
   double dc_slv = 0.0;            ///< mean d* / d_SLV (-)
 };
 
