@@ -46,8 +46,17 @@ std::string stem(const std::string& path) {
   return f;
 }
 
-/// Lines of a file with every '\r' removed (LF, CRLF and CR CR LF endings).
-std::vector<std::string> read_lines(const std::string& path) {
+/// Lines of a text with every '\r' removed (LF, CRLF and CR CR LF endings).
+std::vector<std::string> split_lines(std::string text) {
+  text.erase(std::remove(text.begin(), text.end(), '\r'), text.end());
+  std::vector<std::string> lines;
+  std::istringstream is(text);
+  for (std::string line; std::getline(is, line);) lines.push_back(line);
+  return lines;
+}
+
+/// The content of a record file.
+std::string read_text(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw InputError(path + ": is a directory, expected a record file");
@@ -55,12 +64,7 @@ std::vector<std::string> read_lines(const std::string& path) {
   if (!in) throw InputError("cannot open record file '" + path + "'");
   std::ostringstream ss;
   ss << in.rdbuf();
-  std::string text = ss.str();
-  text.erase(std::remove(text.begin(), text.end(), '\r'), text.end());
-  std::vector<std::string> lines;
-  std::istringstream is(text);
-  for (std::string line; std::getline(is, line);) lines.push_back(line);
-  return lines;
+  return ss.str();
 }
 
 /// Appends the numbers of `line`, times `factor`, to `out`. Numbers may
@@ -329,8 +333,10 @@ double to_m_s2(AccelerationUnit unit) {
   return 1.0;
 }
 
-Record read_record(const std::string& path) {
-  const std::vector<std::string> lines = read_lines(path);
+Record read_record(const std::string& path) { return parse_record_text(read_text(path), path); }
+
+Record parse_record_text(const std::string& text, const std::string& path) {
+  const std::vector<std::string> lines = split_lines(text);
   Record r;
   bool dyna = false, cor = false, at2 = false;
   for (std::size_t i = 0; i < lines.size() && i < 12; ++i) {
@@ -352,7 +358,13 @@ Record read_record(const std::string& path) {
 Record read_plain_record(const std::string& path, double dt_s, AccelerationUnit unit) {
   if (!(std::isfinite(dt_s) && dt_s > 0.0))
     throw InputError(path + ": time step must be positive (s), got " + std::to_string(dt_s));
-  const std::vector<std::string> lines = read_lines(path);
+  return parse_plain_record_text(read_text(path), path, dt_s, unit);
+}
+
+Record parse_plain_record_text(const std::string& text, const std::string& path, double dt_s, AccelerationUnit unit) {
+  if (!(std::isfinite(dt_s) && dt_s > 0.0))
+    throw InputError(path + ": time step must be positive (s), got " + std::to_string(dt_s));
+  const std::vector<std::string> lines = split_lines(text);
   Record r;
   r.format = "plain";
   r.dt = dt_s;
