@@ -39,6 +39,10 @@ Record read_record(const std::string& path);
 /// @param unit unit of the acceleration values
 Record read_plain_record(const std::string& path, double dt_s, AccelerationUnit unit);
 
+/// Reads a plain two-column record (time in s, acceleration in `unit`) whose
+/// time step is the spacing of its time column, checked for uniformity as in
+/// read_plain_record(path, dt, unit).
+Record read_plain_record(const std::string& path, AccelerationUnit unit);
 /// The same readers on a file's content (`path` names it in messages): for
 /// records held in memory, and for the fuzzers of fuzz/.
 Record parse_record_text(const std::string& text, const std::string& path);
