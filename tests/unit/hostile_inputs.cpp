@@ -236,7 +236,7 @@ TEST_CASE("defect 11: one set of bounds on tail, tolerances, scale and steps") {
                        InputError);
   j = campaign_json();
   j["unit_weight_kN_m3"] = 1e300;
-  CHECK_THROWS_WITH_AS(parse_campaign(j, kCampaignDir), doctest::Contains("/unit_weight_kN_m3: a unit weight must be <= 100"),
+  CHECK_THROWS_WITH_AS(parse_campaign(j, kCampaignDir), doctest::Contains("/unit_weight_kN_m3: a unit weight must be <= 10000 kN/m^3"),
                        InputError);
 }
 

@@ -293,7 +293,7 @@ SiteSpec parse_site(const JsonNode& s) {
   return spec;
 }
 
-// Unit weights at most limits::unit_weight_max_N_m3 (100 kN/m^3): 1e300
+// Unit weights at most limits::unit_weight_max_N_m3 (1e4 kN/m^3): 1e300
 // made every weight, energy and period inf ("period T = inf s").
 void check_unit_weights(const JsonNode& mech) {
   const double hi = limits::unit_weight_max_N_m3 / kN;

@@ -114,6 +114,15 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 // O(n) for a chain. Returns false if the factorisation fails.
 bool sparse_least_squares(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
   const Eigen::Index m = A.rows(), n = A.cols();
+  if (n <= jacobi_svd_max_coordinates) {
+    // Small chains: a dense Householder QR (O(m n^2), no allocation of a
+    // sparse factorisation's workspace), the least-squares solution for a
+    // full column rank.
+    const Eigen::MatrixXd D(A);
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(D);
+    x = qr.solve(b);
+    return x.allFinite();
+  }
   std::vector<Eigen::Triplet<double>> t;
   t.reserve(std::size_t(m + 2 * A.nonZeros()));
   for (Eigen::Index i = 0; i < m; ++i) t.emplace_back(i, i, 1.0);

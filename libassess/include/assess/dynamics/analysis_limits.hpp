@@ -25,8 +25,11 @@
 //                            kN/m^3 gave theta_max = 1.6e134 rad); measured:
 //                            at theta_cr = 29 abs_tol theta_max is within
 //                            1e-3 of a run 1e5 times tighter.
-//   unit weight (0, 1e5] N/m^3 (100 kN/m^3, above steel's 78.5): keeps W,
-//                            energies and periods finite.
+//   unit weight (0, 1e7] N/m^3 (1e4 kN/m^3, a hundred times steel's 78.5):
+//                            keeps W, energies and periods finite (1e300 gave
+//                            "period T = inf s"); a plausible but wrong value
+//                            (1800, kg/m^3 typed as kN/m^3) is a warning of
+//                            assessment/plausibility.hpp, not an error.
 #pragma once
 
 namespace assess::limits {
@@ -41,6 +44,6 @@ constexpr double max_steps_max = 1e9;       ///< steps
 constexpr double max_events_max = 1e9;      ///< events
 constexpr double winkler_k_max_N_m3 = 1e12; ///< N/m^3 (= 1e9 kN/m^3)
 constexpr double theta_cr_min_over_abs_tol = 10.0;  ///< -
-constexpr double unit_weight_max_N_m3 = 1e5;        ///< N/m^3 (= 100 kN/m^3)
+constexpr double unit_weight_max_N_m3 = 1e7;        ///< N/m^3 (= 1e4 kN/m^3)
 
 }  // namespace assess::limits
