@@ -7,6 +7,7 @@
 #include <assess/campaign/campaign.hpp>
 #include <assess/campaign/campaign_report.hpp>
 #include <assess/campaign/campaign_runner.hpp>
+#include <assess/campaign/output_lock.hpp>
 #include <assess/support/error.hpp>
 #include <assess/report/plot.hpp>
 
@@ -17,6 +18,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <unistd.h>
 
@@ -33,6 +35,7 @@ struct CampaignArgs {
   unsigned threads = 0;
   std::uint64_t limit = 0;
   bool resume = false, quiet = false, no_plots = false;
+  bool limit_given = false;
 };
 
 std::string hms(double s) {
@@ -112,6 +115,8 @@ void run(const CampaignArgs& a) {
     }
   } finalize{mpi};
 #endif
+  if (a.limit_given && a.limit == 0)
+    throw InputError("--limit 0 would run no analysis: expected N >= 1 (only ids < N run)");
   const Campaign campaign(read_campaign(a.file));
   CampaignRunOptions o;
   // Several ranks on one machine share its cores: one thread each unless told.
@@ -128,7 +133,12 @@ void run(const CampaignArgs& a) {
 
   std::string error;
   CampaignRunSummary s;
+  // One writer per output directory, held over the run, the merge and the
+  // report (output_lock.hpp; the ranks of one MPI job share it).
+  std::optional<CampaignOutputLock> lock;
   try {
+    lock.emplace(a.out, rank, ranks);
+    o.output_locked = true;
     s = run_campaign(campaign, a.out, o);
   } catch (const InputError& e) {
     error = e.what();
@@ -195,7 +205,10 @@ void add_campaign_command(CLI::App& app) {
   cmd->add_option("--limit", a->limit, "run only the analyses with id < N (tests, trials)");
   cmd->add_flag("--quiet", a->quiet, "no progress on stderr");
   cmd->add_flag("--no-plots", a->no_plots, "write results and summary only");
-  cmd->callback([a] { run(*a); });
+  cmd->callback([a, cmd] {
+    a->limit_given = cmd->count("--limit") > 0;
+    run(*a);
+  });
 }
 
 }  // namespace assess::cli

@@ -5,6 +5,7 @@
 
 #include <assess/support/error.hpp>
 #include <assess/records/record_io.hpp>
+#include <assess/dynamics/analysis_limits.hpp>
 #include <assess/dynamics/rocking_analysis.hpp>
 #include <assess/support/units.hpp>
 
@@ -28,6 +29,7 @@ struct RockingArgs {
   bool one_sided = false;
   std::string record;
   double dt = std::nan("");
+  bool dt_given = false;  // --dt on the command line (a NaN given is an error, not "no --dt")
   std::string unit;
   double scale = 1.0;
   bool reverse = false;
@@ -57,8 +59,28 @@ nlohmann::json optional_json(const std::optional<double>& v) {
   return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
 }
 
+// An option within [lo, hi] (the bounds of analysis_limits.hpp), else an error naming it and its unit.
+void check_range(const char* option, double v, double lo, double hi, const char* unit) {
+  if (std::isfinite(v) && v >= lo && v <= hi) return;
+  char buf[200];
+  if (std::isnan(v)) std::snprintf(buf, sizeof buf, "%s must lie in [%g, %g] %s, got not-a-number", option, lo, hi, unit);
+  else std::snprintf(buf, sizeof buf, "%s must lie in [%g, %g] %s, got %g", option, lo, hi, unit, v);
+  throw InputError(buf);
+}
+
 void run(const RockingArgs& a) {
   if (a.model != "smooth" && a.model != "rigid") throw InputError("--model must be 'smooth' or 'rigid'");
+  check_range("--unit-weight", a.unit_weight_kN, 0.0, limits::unit_weight_max_N_m3 / units::kN, "kN/m^3");
+  check_range("--rtol", a.rtol, limits::rel_tol_min, limits::rel_tol_max, "(-)");
+  check_range("--atol", a.atol, limits::abs_tol_min, limits::abs_tol_max, "rad, rad/s");
+  check_range("--tail", a.tail, 0.0, limits::tail_max_s, "s");
+  if (!(std::isfinite(a.scale) && a.scale > 0.0 && a.scale <= limits::scale_max))
+    check_range("--scale", a.scale, 0.0, limits::scale_max, "(-, > 0)");
+  if (a.dt_given && !(std::isfinite(a.dt) && a.dt > 0.0))
+    throw InputError(std::isnan(a.dt) ? std::string("--dt: time step must be positive (s), got not-a-number")
+                                      : "--dt: time step must be positive (s), got " + std::to_string(a.dt));
+  if (!std::isnan(a.k_kN) && a.model == "smooth")
+    check_range("--k", a.k_kN, 0.0, limits::winkler_k_max_N_m3 / units::kN, "kN/m^3 (a stiffer base is rigid: use --model rigid)");
   const RockingBody body = RockingBody::rectangle(a.thickness, a.height, a.unit_weight_kN * units::kN);
   Foundation foundation = Foundation::rigid();
   if (a.model == "smooth") {
@@ -75,7 +97,7 @@ void run(const RockingArgs& a) {
   // for two columns (time, acceleration), dt read from the time column (the
   // same readers as the case files' {"file", "dt", "unit"}).
   Record record;
-  if (!std::isnan(a.dt)) {
+  if (a.dt_given) {
     record = read_plain_record(a.record, a.dt, parse_acceleration_unit(a.unit.empty() ? "g" : a.unit));
   } else if (!a.unit.empty()) {
     try {
@@ -102,6 +124,10 @@ void run(const RockingArgs& a) {
   opt.record_history = !a.history.empty();
 
   const RockingResult r = analyse(model, record, opt);
+  // A failed analysis is reported as a failure, never with its numbers as a result.
+  if (!succeeded(r))
+    throw InputError(std::string("the analysis failed (termination ") + to_string(r.termination) + " at t = " +
+                     std::to_string(r.t_end) + " s): " + r.message + "; no result is reported");
 
   if (!a.history.empty()) {
     std::ofstream out(a.history);
@@ -187,7 +213,10 @@ void add_rocking_command(CLI::App& app) {
   cmd->add_option("--rtol", args->rtol, "relative tolerance per step (default 1e-7)");
   cmd->add_option("--atol", args->atol, "absolute tolerance per step, rad and rad/s (default 1e-9)");
   cmd->add_option("--tail", args->tail, "free motion after the record (s, default 0)");
-  cmd->callback([args] { run(*args); });
+  cmd->callback([args, cmd] {
+    args->dt_given = cmd->count("--dt") > 0;
+    run(*args);
+  });
 }
 
 }  // namespace assess::cli

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -120,7 +121,10 @@ Rk4Result rk4_response(const Record& r, double T, double xi, int n_sub) {
 }  // namespace
 
 TEST_CASE("recurrence coefficients equal Chopra's closed forms (Tab. 5.2.1)") {
-  for (auto [T, xi, dt] : {std::tuple{0.5, 0.05, 0.01}, {1.0, 0.2, 0.02}, {0.1, 0.02, 0.005}, {2.0, 0.0001, 0.01}}) {
+  // Named variables, not a structured binding: doctest's CAPTURE and the
+  // lambdas below capture them, which C++17 (clang 14) forbids for bindings.
+  for (const auto& c : {std::tuple{0.5, 0.05, 0.01}, {1.0, 0.2, 0.02}, {0.1, 0.02, 0.005}, {2.0, 0.0001, 0.01}}) {
+    const double T = std::get<0>(c), xi = std::get<1>(c), dt = std::get<2>(c);
     CAPTURE(T);
     CAPTURE(xi);
     const auto a = assess::sdof_recurrence(T, xi, dt);
@@ -178,7 +182,8 @@ TEST_CASE("response to harmonic excitation equals the full analytical solution")
   std::vector<double> acc;
   for (double t = 0; t <= dur + 1e-12; t += dt) acc.push_back(A * std::sin(W * t));
   const Record r = make_record(dt, acc);
-  for (auto [T, xi] : {std::pair{0.5, 0.05}, {1.0 / 1.5, 0.05}, {1.2, 0.1}}) {
+  for (const auto& c : {std::pair{0.5, 0.05}, {1.0 / 1.5, 0.05}, {1.2, 0.1}}) {
+    const double T = c.first, xi = c.second;
     CAPTURE(T);
     CAPTURE(xi);
     const double w = 2 * units::pi / T, beta = W / w, p0 = -A;
@@ -253,7 +258,8 @@ TEST_CASE("exact recurrence agrees with a fine-step RK4 integration") {
   std::vector<double> acc;
   for (int i = 0; i < 300; ++i) acc.push_back(3.0 * std::sin(0.37 * i * i) + std::cos(1.9 * i));
   const Record r = make_record(0.01, acc);
-  for (auto [T, xi] : {std::pair{0.3, 0.05}, {0.05, 0.02}, {2.0, 0.1}}) {
+  for (const auto& c : {std::pair{0.3, 0.05}, {0.05, 0.02}, {2.0, 0.1}}) {
+    const double T = c.first, xi = c.second;
     CAPTURE(T);
     const auto hist = assess::sdof_response(r, T, xi);
     const auto ref = rk4_response(r, T, xi, 1000);

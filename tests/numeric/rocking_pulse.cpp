@@ -92,7 +92,9 @@ TEST_CASE("rectangular pulse: minimum overturning acceleration (rocking.md §2.3
 }
 
 TEST_CASE("one-sine pulse: minimum overturning acceleration at omega/p = 1 and 2 (rocking.md §2.4)") {
-  for (const auto& [wp, x] : {std::pair{1.0, 1.1298}, std::pair{2.0, 1.2199}}) {
+  // Named variables, not a structured binding (captured below; C++17 / clang 14).
+  for (const auto& c : {std::pair{1.0, 1.1298}, std::pair{2.0, 1.2199}}) {
+    const double wp = c.first, x = c.second;
     CAPTURE(wp);
     CHECK_FALSE(one_sine(kBlockA, x * (1.0 - kThresholdBracket), wp).overturned);
     CHECK(one_sine(kBlockA, x * (1.0 + kThresholdBracket), wp).overturned);
@@ -141,7 +143,8 @@ TEST_CASE("scale invariance: similar blocks under similar pulses give the same t
   };
   const RockingBody small = kBlockA;
   const RockingBody large = RockingBody::rectangle(1.2, 6.0, 20.0 * units::kN);  // 3x, another unit weight
-  for (const auto& [x, wp] : {std::pair{1.1, 1.0}, std::pair{1.5, 3.0}}) {
+  for (const auto& c : {std::pair{1.1, 1.0}, std::pair{1.5, 3.0}}) {
+    const double x = c.first, wp = c.second;
     CAPTURE(x);
     const RockingResult a = run(small, x, wp), b = run(large, x, wp);
     CHECK(a.impacts == b.impacts);

@@ -32,6 +32,7 @@
 #include <assess/records/strong_motion.hpp>
 
 // dynamics
+#include <assess/dynamics/analysis_limits.hpp>
 #include <assess/dynamics/hybrid_ode.hpp>
 #include <assess/dynamics/rocking_analysis.hpp>
 #include <assess/dynamics/rocking_body.hpp>
@@ -54,3 +55,4 @@
 #include <assess/campaign/campaign.hpp>
 #include <assess/campaign/campaign_report.hpp>
 #include <assess/campaign/campaign_runner.hpp>
+#include <assess/campaign/output_lock.hpp>

@@ -3,7 +3,7 @@
 #include "assess/assessment/case_file.hpp"
 
 #include "assess/hazard/comuni.hpp"
-
+#include "assess/dynamics/analysis_limits.hpp"
 #include "assess/kinematic/code_rules.hpp"
 #include "assessment/plausibility.hpp"
 #include "assess/support/error.hpp"
@@ -307,6 +307,17 @@ SiteSpec parse_site(const JsonNode& s) {
   return spec;
 }
 
+// Unit weights at most limits::unit_weight_max_N_m3 (1e4 kN/m^3): 1e300
+// made every weight, energy and period inf ("period T = inf s").
+void check_unit_weights(const JsonNode& mech) {
+  const double hi = limits::unit_weight_max_N_m3 / kN;
+  if (!mech.is_object()) return;
+  if (const auto u = mech.find("unit_weight"); u && u->value().is_number()) u->as_number("kN/m^3", 0.0, hi);
+  if (const auto bs = mech.find("blocks"); bs && bs->value().is_array())
+    for (std::size_t i = 0; i < bs->value().size(); ++i)
+      if (const auto u = bs->at(i).find("unit_weight"); u && u->value().is_number()) u->as_number("kN/m^3", 0.0, hi);
+}
+
 // Plausibility of the mechanism's dimensions (already validated as numbers):
 // thickness, height, unit weight and slenderness (plausibility.hpp).
 std::vector<std::string> input_warnings(const nlohmann::json& mech, const std::string& file) {
@@ -373,6 +384,7 @@ CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
   c.project = root.find("project") ? root.string("project") : "";
   if (const auto s = root.find("site")) c.site = parse_site(*s);
   const JsonNode mech = root.at("mechanism");
+  check_unit_weights(mech);
   try {
     c.mechanism = parse_mechanism(mech);
   } catch (const InputError& e) {

@@ -1,6 +1,8 @@
 // dynamic_case.cpp: parsing of the "dynamic" section of a case file.
 #include "assess/assessment/dynamic_case.hpp"
 
+#include "assess/dynamics/analysis_limits.hpp"
+
 #include "assess/support/error.hpp"
 #include "assess/hazard/hazard.hpp"
 #include "assess/support/json_input.hpp"
@@ -79,6 +81,9 @@ DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, co
   s.smooth = d.has("model") ? d.choice("model", {"smooth", "rigid"}) == "smooth" : true;
   if (s.smooth) {
     s.k = d.positive("k", "kN/m3 (Winkler modulus of the base)") * units::kN;
+    if (s.k > limits::winkler_k_max_N_m3)
+      d.at("k").as_number("kN/m3 (Winkler modulus of the base; a stiffer base is rigid: use \"model\": \"rigid\")", 0.0,
+                          limits::winkler_k_max_N_m3 / units::kN);
   } else if (d.has("k")) {
     d.at("k").fail("a Winkler modulus is only used by the smooth model; remove it or set \"model\": \"smooth\"");
   }
@@ -103,16 +108,17 @@ DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, co
   if (d.has("overturn_at"))
     s.options.overturn = d.choice("overturn_at", {"theta_u", "half_pi"}) == "half_pi" ? OverturnCriterion::half_pi
                                                                                       : OverturnCriterion::theta_u;
-  s.options.tail_s = d.number_or("tail_s", 0.0, "s (free motion after the record)", 0.0, 600.0);
+  s.options.tail_s = d.number_or("tail_s", 0.0, "s (free motion after the record)", 0.0, limits::tail_max_s);
   s.trim = !d.boolean_or("whole_record", false);
-  s.free_tail_s = d.number_or("free_tail_s", s.free_tail_s, "s (free rocking after the strong motion)", 0.0, 600.0);
+  s.free_tail_s = d.number_or("free_tail_s", s.free_tail_s, "s (free rocking after the strong motion)", 0.0,
+                              limits::tail_max_s);
   if (auto in = d.find("integrator")) {
     in->allow_only({"stepper", "rel_tol", "abs_tol"});
     if (in->has("stepper")) {
       s.options.stepper = *parse_stepper(in->choice("stepper", {"rk8pd", "rkck", "rkf45"}));
     }
-    s.options.rel_tol = in->number_or("rel_tol", s.options.rel_tol, "(-)", 1e-14, 1e-2);
-    s.options.abs_tol = in->number_or("abs_tol", s.options.abs_tol, "rad", 1e-16, 1e-2);
+    s.options.rel_tol = in->number_or("rel_tol", s.options.rel_tol, "(-)", limits::rel_tol_min, limits::rel_tol_max);
+    s.options.abs_tol = in->number_or("abs_tol", s.options.abs_tol, "rad", limits::abs_tol_min, limits::abs_tol_max);
   }
   if (d.has("records") == d.has("select"))
     d.fail("give either \"records\" (a list of {\"file\", \"scale\"}) or \"select\" ({\"count\": N}), not both "
@@ -137,7 +143,7 @@ DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, co
           r.fail("a plain record with \"dt\" needs \"unit\": \"g\", \"m/s^2\" or \"cm/s^2\" (the unit of "
                  "its acceleration values)");
       }
-      lr.scale = r.has("scale") ? r.number("scale", "(-, linear scale factor)", 1e-6, 100.0) : 1.0;
+      lr.scale = r.has("scale") ? r.number("scale", "(-, linear scale factor)", 1e-6, limits::scale_max) : 1.0;
       if (!(lr.scale > 0.0)) r.at("scale").fail("expected a scale factor > 0 (-)");
       lr.json_path = r.path();
       s.records.push_back(lr);

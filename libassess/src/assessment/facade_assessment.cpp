@@ -338,6 +338,10 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
     for (const DynamicRun& r : a.runs) {
       if (r.restitution != ie) continue;
       ++s.analyses;
+      if (!succeeded(r.result)) {  // its numbers are not results
+        ++s.failed;
+        continue;
+      }
       s.overturned += r.result.overturned ? 1 : 0;
       s.mean_dc += r.result.dc;
       s.min_dc = std::min(s.min_dc, r.result.dc);
@@ -346,14 +350,21 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
       s.any_collapse = s.any_collapse || r.collapse;
       envelope[r.record] = std::max(envelope[r.record], r.d_star);
     }
-    s.mean_dc /= s.analyses;
-    s.mean_theta_ratio /= s.analyses;
+    // Failed analyses (step or event limit, integrator error) are left out of
+    // the statistics and fail the check (issue 10): their numbers are not results.
+    const int trusted = s.analyses - s.failed;
+    if (trusted > 0) {
+      s.mean_dc /= trusted;
+      s.mean_theta_ratio /= trusted;
+    } else {
+      s.min_dc = 0.0;
+    }
     for (const auto& [rec, dmax] : envelope) {
       s.mean_d_star += dmax;
       s.max_d_star = std::max(s.max_d_star, dmax);
     }
     s.records = int(envelope.size());
-    s.mean_d_star /= double(envelope.size());
+    if (s.records > 0) s.mean_d_star /= double(envelope.size());
     // NTC 2018 §7.3.5 (docs/theory/facade.md §7): with at least 7 records the
     // mean of the results, with 3 to 6 the most unfavourable, with fewer no
     // verdict. Any collapse fails the check whatever the count (C8.7.1.2.1.9).
@@ -367,9 +378,9 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
       s.rule = "none";
       s.d_demand = s.max_d_star;
     }
-    s.no_verdict = s.rule == "none" && !s.any_collapse;
+    s.no_verdict = s.rule == "none" && !s.any_collapse && s.failed == 0;
     s.dc_slv = kin.d_SLV > 0 ? s.d_demand / kin.d_SLV : 0.0;
-    s.slv_satisfied = !s.any_collapse && !s.no_verdict && s.d_demand <= kin.d_SLV;
+    s.slv_satisfied = s.failed == 0 && !s.any_collapse && !s.no_verdict && s.d_demand <= kin.d_SLV;
     a.summaries.push_back(s);
 
     const std::string e_text = describe(d.restitutions[ie]);
@@ -395,6 +406,9 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
                                    "the wall safe, but a collapse fails the check whatever their number"
                                  : "no verdict: NTC 2018 §7.3.5 needs at least 3 records (results shown, not judged)");
     if (a.compatibility.computed && !a.compatibility.band_satisfied) row.note += "; records not compatible with the SLV spectrum";
+    if (s.failed)
+      row.note += "; " + std::to_string(s.failed) + " of " + std::to_string(s.analyses) +
+                  " analyses FAILED (not verified; left out of the statistics)";
     row.demand = s.d_demand;
     row.capacity = kin.d_SLV;
     row.unit = "m";

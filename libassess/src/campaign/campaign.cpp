@@ -13,7 +13,9 @@
 //   dc_energy      energy demand / capacity of the rocking analysis (seed Fig. 3)
 #include "assess/campaign/campaign.hpp"
 
+#include "assess/dynamics/analysis_limits.hpp"
 #include "assess/support/error.hpp"
+#include "assess/support/json_input.hpp"
 #include "assess/hazard/hazard.hpp"
 #include "assess/records/record_catalogue.hpp"
 #include "assess/records/record_io.hpp"
@@ -25,6 +27,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 namespace assess {
 
@@ -107,20 +110,47 @@ std::string resolve_record(const std::string& file, const std::string& base_dir,
   fail(path, "record file '" + file + "' not found (looked in '" + a + "' and '" + b + "')");
 }
 
+// %g: a bound as written in analysis_limits.hpp (100, 1e+09).
+std::string g(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+// A scale factor in (0, limits::scale_max].
+double scale_factor(double v, const std::string& path) {
+  if (!(v > 0.0 && v <= limits::scale_max))
+    fail(path, "a scale factor must lie in (0, " + g(limits::scale_max) + "] (-), got " + shortest(v));
+  return v;
+}
+
 std::vector<double> parse_scales(const json& j, const std::string& path) {
   std::vector<double> out;
+  constexpr double max_factors = 100000;
   if (j.is_object()) {
-    const double from = positive(require(j, "from", path), path + ".from", "-");
-    const double to = positive(require(j, "to", path), path + ".to", "-");
+    for (const auto& [key, v] : j.items())
+      if (key != "from" && key != "to" && key != "step") fail(path + "." + key, "unknown key (expected from, to, step)");
+    const double from = scale_factor(positive(require(j, "from", path), path + ".from", "-"), path + ".from");
+    const double to = scale_factor(positive(require(j, "to", path), path + ".to", "-"), path + ".to");
     const double step = positive(require(j, "step", path), path + ".step", "-");
     if (to < from) fail(path + ".to", "must be >= from");
-    const long n = std::lround((to - from) / step) + 1;
-    if (n > 100000) fail(path, "too many scale factors");
-    // Rounded to 12 significant digits so that from + i*step prints as written (0.6, not 0.6000000000000001).
-    for (long i = 0; i < n; ++i) out.push_back(std::stod(shortest(std::round((from + double(i) * step) * 1e12) / 1e12)));
+    // The count as a double first: (to - from) / step may be far beyond a long.
+    const double count = std::round((to - from) / step) + 1.0;
+    if (!(count <= max_factors))
+      fail(path, "too many scale factors (" + shortest(count) + ", at most " + g(max_factors) + ")");
+    const long n = static_cast<long>(count);
+    // Printed to 12 significant digits so that from + i*step reads as written
+    // (0.6, not 0.6000000000000001) and a small factor never rounds to 0.
+    for (long i = 0; i < n; ++i) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.12g", from + double(i) * step);
+      out.push_back(scale_factor(std::strtod(buf, nullptr), path + "[" + std::to_string(i) + "]"));
+    }
+    if (out.empty()) fail(path, "the range gives no scale factor");
   } else {
     const json& a = array_of(j, path);
-    for (std::size_t i = 0; i < a.size(); ++i) out.push_back(positive(a[i], child(path, i), "-"));
+    for (std::size_t i = 0; i < a.size(); ++i)
+      out.push_back(scale_factor(positive(a[i], child(path, i), "-"), child(path, i)));
   }
   return out;
 }
@@ -152,7 +182,11 @@ void parse_integrator(const json& j, const std::string& path, RockingOptions& o)
     } else if (key == "abs_tol") {
       o.abs_tol = positive(v, p, "rad");
     } else if (key == "max_steps") {
-      o.max_steps = static_cast<long>(positive(v, p, "steps"));
+      // An integer in [1, 1e9] checked before the cast (1e300 was undefined behaviour).
+      const double n = positive(v, p, "steps");
+      if (!(n <= limits::max_steps_max) || n != std::floor(n))
+        fail(p, "expected an integer number of steps in [1, " + g(limits::max_steps_max) + "], got " + shortest(n));
+      o.max_steps = static_cast<long>(n);
     } else if (key == "tail_s") {
       o.tail_s = number(v, p);
     } else if (key == "overturn_at") {
@@ -226,8 +260,16 @@ CampaignSpec parse_campaign(const json& j, const std::string& base_dir) {
                              ? positive(w["unit_weight_kN_m3"], p + ".unit_weight_kN_m3", "kN/m^3")
                              : gamma_default;
     if (!(gamma > 0.0)) fail(p, "no unit weight: give unit_weight_kN_m3 here or at the top level");
+    if (gamma > limits::unit_weight_max_N_m3 / units::kN)
+      fail(w.contains("unit_weight_kN_m3") ? p + ".unit_weight_kN_m3" : "unit_weight_kN_m3",
+           "a unit weight must be <= " + g(limits::unit_weight_max_N_m3 / units::kN) + " kN/m^3, got " +
+               shortest(gamma));
     cw.unit_weight_N_m3 = gamma * units::kN;
     const double k = w.contains("k_kN_m3") ? positive(w["k_kN_m3"], p + ".k_kN_m3", "kN/m^3") : k_default;
+    if (k > limits::winkler_k_max_N_m3 / units::kN)
+      fail(w.contains("k_kN_m3") ? p + ".k_kN_m3" : "k_kN_m3",
+           "a Winkler modulus must be <= " + g(limits::winkler_k_max_N_m3 / units::kN) +
+               " kN/m^3 (a stiffer base is rigid: use the rigid model), got " + shortest(k));
     cw.k_N_m3 = k * units::kN;
     s.walls.push_back(cw);
   }
@@ -342,14 +384,14 @@ CampaignSpec parse_campaign(const json& j, const std::string& base_dir) {
 }
 
 CampaignSpec read_campaign(const std::string& path) {
-  std::ifstream in(path);
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError("campaign file '" + path + "' is a directory");
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot open campaign file '" + path + "'");
-  json j;
-  try {
-    in >> j;
-  } catch (const json::exception& e) {
-    throw InputError("campaign file '" + path + "' is not valid JSON: " + e.what());
-  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  // Errors name the file and the JSON path ("campaign file 'c.json': /walls/0/b: number out of the range ...").
+  const json j = parse_json_text(text.str(), "campaign file '" + path + "'");
   const auto slash = path.find_last_of('/');
   try {
     return parse_campaign(j, slash == std::string::npos ? "." : path.substr(0, slash));

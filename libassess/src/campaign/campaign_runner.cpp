@@ -10,6 +10,7 @@
 //           written, so the file is always a prefix of the part's id sequence
 #include "assess/campaign/campaign_runner.hpp"
 
+#include "assess/campaign/output_lock.hpp"
 #include "assess/support/error.hpp"
 
 #include <atomic>
@@ -20,6 +21,7 @@
 #include <fstream>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -85,6 +87,29 @@ double to_double(const std::string& s) {
 
 struct Task {
   std::uint64_t first, end;
+};
+
+// The tasks of one part, built on demand (issue 10, defect 10: a list of
+// 1e8 / G tasks was built before --limit applied): task t is group
+// g = part + t * parts, ids [g G, min((g + 1) G, end)).
+struct TaskList {
+  std::uint64_t G = 1, part = 0, parts = 1, end = 0;
+  std::uint64_t count = 0;  // groups g = part (mod parts) with g G < end
+  TaskList(std::uint64_t group_size, int part_, int parts_, std::uint64_t end_)
+      : G(group_size), part(std::uint64_t(part_)), parts(std::uint64_t(parts_)), end(end_) {
+    const std::uint64_t groups = (end + G - 1) / G;
+    count = groups > part ? (groups - part + parts - 1) / parts : 0;
+  }
+  Task at(std::uint64_t t) const {
+    const std::uint64_t g = part + t * parts;
+    return {g * G, std::min((g + 1) * G, end)};
+  }
+  // Ids in all tasks: every task is a full group but possibly the last.
+  std::uint64_t ids() const {
+    if (count == 0) return 0;
+    const Task last = at(count - 1);
+    return (count - 1) * G + (last.end - last.first);
+  }
 };
 
 }  // namespace
@@ -211,16 +236,17 @@ namespace {
 
 // The complete rows at the start of an existing part file that follow the
 // expected id sequence; returns their count and the byte offset after them.
-std::pair<std::uint64_t, std::uint64_t> valid_prefix(const std::string& path, const std::vector<Task>& tasks) {
+std::pair<std::uint64_t, std::uint64_t> valid_prefix(const std::string& path, const TaskList& tasks) {
   std::ifstream in(path, std::ios::binary);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::string header = campaign_csv_header() + "\n";
   if (text.compare(0, header.size(), header) != 0)
     throw InputError("cannot resume '" + path + "': its header is not this version's results header");
   std::uint64_t offset = header.size(), count = 0;
-  std::size_t t = 0;
-  std::uint64_t next = tasks.empty() ? 0 : tasks[0].first;
-  while (t < tasks.size()) {
+  std::uint64_t t = 0;
+  Task task = tasks.count ? tasks.at(0) : Task{0, 0};
+  std::uint64_t next = task.first;
+  while (t < tasks.count) {
     const std::size_t nl = text.find('\n', offset);
     if (nl == std::string::npos) break;  // an incomplete last line is dropped
     AnalysisRow row;
@@ -232,7 +258,10 @@ std::pair<std::uint64_t, std::uint64_t> valid_prefix(const std::string& path, co
     if (row.id != next) break;
     offset = nl + 1;
     ++count;
-    if (++next == tasks[t].end && ++t < tasks.size()) next = tasks[t].first;
+    if (++next == task.end && ++t < tasks.count) {
+      task = tasks.at(t);
+      next = task.first;
+    }
   }
   return {count, offset};
 }
@@ -247,6 +276,9 @@ CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out
   std::error_code ec;
   fs::create_directories(out_dir, ec);
   if (ec || !fs::is_directory(out_dir)) throw InputError("cannot create output directory '" + out_dir + "'");
+  // One writer per output directory (and per part), before anything is written.
+  std::optional<CampaignOutputLock> lock;
+  if (!options.output_locked) lock.emplace(out_dir, options.part, options.parts);
 
   // The normalised spec: a resumed run must be the same campaign.
   const std::string spec_path = out_dir + "/campaign.json";
@@ -264,32 +296,23 @@ CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out
     if (ec) throw InputError("cannot write '" + spec_path + "'");
   }
 
-  // The tasks of this part: one per group; `all` ignores the limit (a resumed
-  // file may hold more rows than this run asks for: they are kept).
+  // The tasks of this part, lazily: `all` ignores the limit (a resumed file
+  // may hold more rows than this run asks for: they are kept).
   const std::uint64_t end = options.limit > 0 ? std::min(options.limit, spec.size()) : spec.size();
   const std::uint64_t G = spec.group_size();
-  std::vector<Task> all, tasks;
+  const TaskList all(G, options.part, options.parts, spec.size()), tasks(G, options.part, options.parts, end);
   CampaignRunSummary summary;
-  for (std::uint64_t g = std::uint64_t(options.part); g * G < spec.size(); g += std::uint64_t(options.parts)) {
-    all.push_back({g * G, std::min((g + 1) * G, spec.size())});
-    if (g * G < end) {
-      tasks.push_back({g * G, std::min((g + 1) * G, end)});
-      summary.total += tasks.back().end - tasks.back().first;
-    }
-  }
+  summary.total = tasks.ids();
 
   const std::string path = campaign_part_path(out_dir, options.part, options.parts);
   std::ofstream out;
+  std::uint64_t skip = 0;  // ids of `tasks` already in the file
   if (options.resume && fs::exists(path)) {
     const auto [count, offset] = valid_prefix(path, all);
     fs::resize_file(path, offset, ec);  // drops a partly written last line
     if (ec) throw InputError("cannot truncate '" + path + "' to its complete rows");
     summary.resumed = std::min(count, summary.total);
-    std::uint64_t skip = summary.resumed;
-    std::size_t t = 0;
-    while (t < tasks.size() && skip >= tasks[t].end - tasks[t].first) skip -= tasks[t].end - tasks[t].first, ++t;
-    tasks.erase(tasks.begin(), tasks.begin() + std::ptrdiff_t(t));
-    if (!tasks.empty()) tasks.front().first += skip;
+    skip = summary.resumed;
     out.open(path, std::ios::binary | std::ios::app);
   } else {
     // A part run must not silently replace a merged results.csv either.
@@ -301,34 +324,44 @@ CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out
   }
   if (!out) throw InputError("cannot write '" + path + "'");
   out.flush();
+  // Every task but the last is a full group: the first task to run and its offset.
+  const std::uint64_t first_task = skip >= summary.total ? tasks.count : skip / G;
+  const std::uint64_t first_offset = skip >= summary.total ? 0 : skip % G;
+  const std::uint64_t n_tasks = tasks.count - first_task;
+  auto task = [&](std::uint64_t t) {
+    Task k = tasks.at(first_task + t);
+    if (t == 0) k.first += first_offset;
+    return k;
+  };
 
   std::uint64_t done = summary.resumed;
   if (options.progress) options.progress(done, summary.total);
 
   std::mutex mutex;
-  std::map<std::size_t, std::string> pending;  // task index -> its rows, waiting for earlier tasks
-  std::size_t next_write = 0;
-  std::atomic<std::size_t> next_task{0};
+  std::map<std::uint64_t, std::pair<std::string, std::uint64_t>> pending;  // task -> (rows, count), waiting
+  std::uint64_t next_write = 0;
+  std::atomic<std::uint64_t> next_task{0};
   std::atomic<bool> stop{false};
   std::exception_ptr error;
 
   auto worker = [&] {
     try {
-      for (std::size_t t; !stop && !(options.cancel && options.cancel->load()) && (t = next_task++) < tasks.size();) {
-        const std::vector<AnalysisRow> rows = campaign.evaluate(tasks[t].first, tasks[t].end);
+      for (std::uint64_t t; !stop && !(options.cancel && options.cancel->load()) && (t = next_task++) < n_tasks;) {
+        const Task k = task(t);
+        const std::vector<AnalysisRow> rows = campaign.evaluate(k.first, k.end);
         std::string text;
         std::uint64_t failed = 0;
         for (const auto& r : rows) {
           text += campaign_csv_row(r) + "\n";
           failed += r.ok ? 0 : 1;
         }
-        std::lock_guard<std::mutex> lock(mutex);
+        std::lock_guard<std::mutex> guard(mutex);
         summary.failed += failed;
-        pending.emplace(t, std::move(text));
+        pending.emplace(t, std::make_pair(std::move(text), k.end - k.first));
         bool wrote = false;
         for (auto it = pending.begin(); it != pending.end() && it->first == next_write; it = pending.erase(it)) {
-          out << it->second;
-          done += tasks[next_write].end - tasks[next_write].first;
+          out << it->second.first;
+          done += it->second.second;
           ++next_write;
           wrote = true;
         }
@@ -339,13 +372,13 @@ CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out
         }
       }
     } catch (...) {
-      std::lock_guard<std::mutex> lock(mutex);
+      std::lock_guard<std::mutex> guard(mutex);
       if (!error) error = std::current_exception();
       stop = true;
     }
   };
   unsigned n = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
-  n = unsigned(std::min<std::size_t>(n, std::max<std::size_t>(tasks.size(), 1)));
+  n = unsigned(std::min<std::uint64_t>(n, std::max<std::uint64_t>(n_tasks, 1)));
   std::vector<std::thread> pool;
   for (unsigned i = 1; i < n; ++i) pool.emplace_back(worker);
   worker();

@@ -13,6 +13,7 @@
 //               pi/2 - s theta (half_pi criterion); branch switch at theta_cr.
 #include "assess/dynamics/rocking_analysis.hpp"
 
+#include "assess/dynamics/analysis_limits.hpp"
 #include "assess/support/error.hpp"
 #include "assess/support/units.hpp"
 #include "support/bracket_root.hpp"
@@ -301,16 +302,30 @@ class RockingSystem final : public HybridSystem {
 }  // namespace
 
 void RockingOptions::validate() const {
+  // The bounds of analysis_limits.hpp, one set for every front end (issue 10, defect 11).
+  auto within = [](double v, double lo, double hi, const char* what) {
+    if (!(std::isfinite(v) && v >= lo && v <= hi)) {
+      char buf[160];
+      std::snprintf(buf, sizeof buf, " must lie in [%g, %g], got %g", lo, hi, v);
+      throw InputError(std::string(what) + buf);
+    }
+  };
+  within(rel_tol, limits::rel_tol_min, limits::rel_tol_max, "relative tolerance (-)");
+  within(abs_tol, limits::abs_tol_min, limits::abs_tol_max, "absolute tolerance (rad, rad/s)");
   auto positive = [](double v, const char* what) {
     if (!(std::isfinite(v) && v > 0.0)) throw InputError(std::string(what) + " must be a positive number");
   };
-  positive(rel_tol, "relative tolerance");
-  positive(abs_tol, "absolute tolerance (rad, rad/s)");
   positive(event_time_tol, "event time tolerance (s)");
   positive(rest_velocity, "rest velocity (rad/s)");
-  if (!std::isfinite(scale)) throw InputError("scale factor must be finite");
-  if (!(std::isfinite(tail_s) && tail_s >= 0.0)) throw InputError("tail duration must be >= 0 (s)");
-  if (max_steps <= 0 || max_events <= 0) throw InputError("step and event limits must be positive");
+  if (!(std::isfinite(scale) && scale > 0.0 && scale <= limits::scale_max)) {
+    char buf[120];
+    std::snprintf(buf, sizeof buf, "scale factor must lie in (0, %g], got %g", limits::scale_max, scale);
+    throw InputError(buf);
+  }
+  within(tail_s, 0.0, limits::tail_max_s, "tail duration (s)");
+  if (max_steps <= 0 || max_events <= 0 || double(max_steps) > limits::max_steps_max ||
+      double(max_events) > limits::max_events_max)
+    throw InputError("step and event limits must lie in [1, 1e9]");
 }
 
 const char* to_string(RockingTermination t) {
@@ -334,6 +349,61 @@ std::string RockingResult::brief_report() const {
   return buf;
 }
 
+namespace {
+
+// The smooth model's full-contact branch |theta| <= theta_cr = W / (2 b^2 k)
+// (seed Eq. 1) must be resolved by the integrator's error control, which sees
+// theta only to abs_tol: theta_cr >= 10 abs_tol (analysis_limits.hpp, derived
+// in docs/theory/rocking.md §"Upper bound on k"). Beyond it the stiff contact
+// oscillation (frequency ~ sqrt(k)) is integrated unchecked and the result
+// can be absurd (k = 1e20 kN/m^3: theta_max = 1.6e134 rad).
+void check_resolvable(const RockingModel& model, const RockingOptions& o) {
+  if (model.foundation().is_rigid()) return;
+  const double k = model.foundation().k;
+  char buf[512];
+  if (!(k <= limits::winkler_k_max_N_m3)) {
+    std::snprintf(buf, sizeof buf,
+                  "Winkler modulus k = %g kN/m^3 exceeds %g kN/m^3 (a base stiffer than a steel contact): use the "
+                  "rigid model",
+                  k / units::kN, limits::winkler_k_max_N_m3 / units::kN);
+    throw InputError(buf);
+  }
+  const double floor = limits::theta_cr_min_over_abs_tol * o.abs_tol;
+  if (!(model.theta_cr() >= floor)) {
+    // theta_cr is proportional to 1/k: the largest k that meets the floor.
+    const double k_ok = k * model.theta_cr() / floor;
+    std::snprintf(buf, sizeof buf,
+                  "Winkler modulus k = %g kN/m^3 too stiff for the integration: theta_cr = W/(2 b^2 k) = %g rad is "
+                  "below %g x the absolute tolerance (%g rad), so the full-contact branch is not resolved; use "
+                  "k <= %g kN/m^3, a smaller absolute tolerance (<= %g rad) or the rigid model",
+                  k / units::kN, model.theta_cr(), limits::theta_cr_min_over_abs_tol, o.abs_tol, k_ok / units::kN,
+                  model.theta_cr() / limits::theta_cr_min_over_abs_tol);
+    throw InputError(buf);
+  }
+}
+
+// A result that cannot be true is a failed analysis, never a result: a
+// non-finite peak or energy, or a peak beyond the overturning rotation that
+// stops the analysis (theta_u, or pi/2) by more than the event location error.
+}  // namespace
+
+void flag_untrustworthy(const RockingModel& model, const RockingOptions& o, RockingResult& r) {
+  if (r.termination != RockingTermination::completed && r.termination != RockingTermination::overturned) return;
+  const double stop = o.overturn == OverturnCriterion::half_pi ? 0.5 * units::pi
+                                                               : std::max(model.theta_u(+1), model.theta_u(-1));
+  constexpr double peak_rel_tol = 1e-6;  // - (events are located to 1e-12 s)
+  const bool finite = std::isfinite(r.theta_max) && std::isfinite(r.energy_demand) && std::isfinite(r.dc) &&
+                      std::isfinite(r.d_max);
+  if (finite && r.theta_max <= stop * (1.0 + peak_rel_tol)) return;
+  char buf[320];
+  std::snprintf(buf, sizeof buf,
+                "loss of accuracy: theta_max = %g rad %s the overturning rotation %g rad at t = %g s; the result is "
+                "not trustworthy (lower the Winkler modulus or the tolerances)",
+                r.theta_max, finite ? "beyond" : "is not finite, against", stop, r.t_theta_max);
+  r.termination = RockingTermination::integrator_error;
+  r.message = buf;
+}
+
 RockingResult analyse(const RockingModel& model, const GroundMotion& motion, const RockingOptions& options,
                       const RockingInitialState& initial) {
   options.validate();
@@ -342,6 +412,8 @@ RockingResult analyse(const RockingModel& model, const GroundMotion& motion, con
   const bool one_sided = model.sidedness() == Sidedness::one_sided;
   if (one_sided && (initial.theta < 0.0 || (initial.theta == 0.0 && initial.omega < 0.0)))
     throw InputError("one-sided rocking starts with theta >= 0 (rad) moving outward");
+
+  check_resolvable(model, options);
 
   RockingSystem sys(model, motion, options);
   double y[2] = {initial.theta, initial.omega};
@@ -401,6 +473,7 @@ RockingResult analyse(const RockingModel& model, const GroundMotion& motion, con
   // Centroid displacement for a rotation theta_max about the toe: R [sin(alpha) - sin(alpha - theta)].
   const RockingBody& b = model.body();
   r.d_max = b.R * std::fabs(std::sin(b.alpha) - std::sin(b.alpha - r.theta_max));
+  flag_untrustworthy(model, options, r);
   return r;
 }
 

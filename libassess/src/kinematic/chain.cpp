@@ -13,6 +13,9 @@
 
 #include "assess/support/error.hpp"
 
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -94,6 +97,115 @@ Eigen::Matrix2d rotation_derivative(double phi) {
 // Null-space dimension of J (m x n): n - rank, rank from the singular values
 // above a relative threshold.
 constexpr double rank_tolerance = 1e-10;
+
+// Up to this many coordinates (32 blocks) the constructor's SVD is Jacobi's
+// (as before issue 10); beyond, the divide-and-conquer BDCSVD (same singular
+// values to rounding, O(n^3) with a far smaller constant).
+constexpr Eigen::Index jacobi_svd_max_coordinates = 96;
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+// Least squares min |A x - b| for a sparse A (rows >= cols) of full column
+// rank, through the augmented system [[I, A], [A^T, 0]] [r; x] = [b; 0]
+// (Bjorck 1996, Numerical Methods for Least Squares Problems, §2.5.3): its
+// matrix is regular exactly when A has full column rank, it keeps the
+// conditioning of A (the normal equations would square it) and redundant
+// (dependent, consistent) rows do no harm. Sparse LU with COLAMD ordering:
+// O(n) for a chain. Returns false if the factorisation fails.
+bool sparse_least_squares(const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+  const Eigen::Index m = A.rows(), n = A.cols();
+  if (n <= jacobi_svd_max_coordinates) {
+    // Small chains: a dense Householder QR (O(m n^2), no allocation of a
+    // sparse factorisation's workspace), the least-squares solution for a
+    // full column rank.
+    const Eigen::MatrixXd D(A);
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(D);
+    x = qr.solve(b);
+    return x.allFinite();
+  }
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(std::size_t(m + 2 * A.nonZeros()));
+  for (Eigen::Index i = 0; i < m; ++i) t.emplace_back(i, i, 1.0);
+  for (Eigen::Index k = 0; k < A.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator it(A, k); it; ++it) {
+      t.emplace_back(it.row(), m + it.col(), it.value());
+      t.emplace_back(m + it.col(), it.row(), it.value());
+    }
+  SparseMatrix K(m + n, m + n);
+  K.setFromTriplets(t.begin(), t.end());
+  K.makeCompressed();
+  Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu;
+  lu.compute(K);
+  if (lu.info() != Eigen::Success) return false;
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m + n);
+  rhs.head(m) = b;
+  const Eigen::VectorXd y = lu.solve(rhs);
+  if (lu.info() != Eigen::Success || !y.allFinite()) return false;
+  x = y.tail(n);
+  return true;
+}
+
+// The constraint Jacobian as a sparse matrix (issue 10, defect 13): each row
+// of a hinge touches the 6 coordinates of its two blocks, of a ground hinge
+// or slider the 3 of its block, so a chain of n blocks has O(n) non-zeros and
+// a sparse QR factorises it in about O(n) for a chain-like structure (COLAMD
+// ordering), where the dense SVD and complete orthogonal decomposition cost
+// O(n^3). `extra` rows (column index, value) are appended below it.
+struct Entry {
+  Eigen::Index row, col;
+  double value;
+};
+
+void position_entries(const Chain& chain, int block, const Eigen::Vector2d& p0, const Eigen::VectorXd& q,
+                      Eigen::Index row, double sign, std::vector<Eigen::Triplet<double>>& t,
+                      const Eigen::Vector2d* project = nullptr) {
+  // d position / d (x, z, phi) of the block = [I, R'(phi) (p0 - c)].
+  const Eigen::Index j = 3 * block;
+  const Eigen::Vector2d dp = rotation_derivative(q(j + 2)) * (p0 - chain.centroid(block));
+  if (project) {  // one row: n . d position
+    t.emplace_back(row, j, sign * project->x());
+    t.emplace_back(row, j + 1, sign * project->y());
+    t.emplace_back(row, j + 2, sign * project->dot(dp));
+    return;
+  }
+  t.emplace_back(row, j, sign);
+  t.emplace_back(row + 1, j + 1, sign);
+  t.emplace_back(row, j + 2, sign * dp.x());
+  t.emplace_back(row + 1, j + 2, sign * dp.y());
+}
+
+SparseMatrix sparse_jacobian(const Chain& chain, const Eigen::VectorXd& q, Eigen::Index equations,
+                             const std::vector<Entry>& extra) {
+  std::vector<Eigen::Triplet<double>> t;
+  t.reserve(std::size_t(8 * equations) + extra.size());
+  Eigen::Index k = 0;
+  for (const Constraint& c : chain.constraints()) {
+    switch (c.type) {
+      case ConstraintType::GroundHinge:
+        position_entries(chain, c.block, c.point, q, k, 1.0, t);
+        k += 2;
+        break;
+      case ConstraintType::Hinge:
+        position_entries(chain, c.block, c.point, q, k, 1.0, t);
+        position_entries(chain, c.other, c.point, q, k, -1.0, t);
+        k += 2;
+        break;
+      case ConstraintType::Slider: {
+        const Eigen::Vector2d nrm = Eigen::Vector2d(-c.direction.y(), c.direction.x()).normalized();
+        position_entries(chain, c.block, c.point, q, k, 1.0, t, &nrm);
+        k += 1;
+        break;
+      }
+    }
+  }
+  for (const Entry& e : extra) t.emplace_back(k + e.row, e.col, e.value);
+  Eigen::Index rows = k;
+  for (const Entry& e : extra) rows = std::max(rows, k + e.row + 1);
+  SparseMatrix A(rows, static_cast<Eigen::Index>(chain.n_coordinates()));
+  A.setFromTriplets(t.begin(), t.end());  // sums duplicates (a hinge's two blocks never share a column)
+  A.makeCompressed();
+  return A;
+}
 
 }  // namespace
 
@@ -207,15 +319,49 @@ Chain::Chain(std::vector<Block> blocks, std::vector<Constraint> constraints, std
     loads_.push_back(l);
   }
 
-  // Exactly one degree of freedom.
+  // Exactly one degree of freedom: the rank of J from its singular values,
+  // and the null vector (the mechanism) from the same decomposition.
   const Eigen::Index n = static_cast<Eigen::Index>(n_coordinates());
   const Eigen::VectorXd q0 = Eigen::VectorXd::Zero(n);
   Eigen::Index rank = 0;
+  Eigen::VectorXd v0 = Eigen::VectorXd::Zero(n);
   if (n_equations_ > 0) {
-    Eigen::JacobiSVD<Eigen::MatrixXd> svd(jacobian(q0));
-    const auto& s = svd.singularValues();
+    const Eigen::MatrixXd J0 = jacobian(q0);
+    Eigen::VectorXd s;
+    Eigen::MatrixXd V;
+    if (n <= jacobi_svd_max_coordinates) {
+      Eigen::JacobiSVD<Eigen::MatrixXd> svd(J0, Eigen::ComputeFullV);
+      s = svd.singularValues();
+      V = svd.matrixV();
+    } else {
+      // Singular values only (no U, V: the bulk of an SVD's cost); the null
+      // vector below from the sparse system.
+      Eigen::BDCSVD<Eigen::MatrixXd> svd(J0);
+      s = svd.singularValues();
+    }
     for (Eigen::Index i = 0; i < s.size(); ++i)
       if (s(i) > rank_tolerance * s(0)) ++rank;
+    if (V.size() > 0) {
+      v0 = V.col(n - 1);
+    } else if (n - rank == 1) {
+      // [J; e_p^T] v = [0; 1] for the first rotation coordinate p the mechanism moves.
+      const SparseMatrix J = sparse_jacobian(*this, q0, static_cast<Eigen::Index>(n_equations_), {});
+      const Eigen::Index m = J.rows();
+      Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m + 1);
+      rhs(m) = 1.0;
+      for (Eigen::Index p = 2; p < n + 2 && v0.isZero(); ++p) {
+        const Eigen::Index c = p < n ? p : p - n;  // rotations first, then every coordinate
+        if (p < n && p % 3 != 2) continue;
+        Eigen::VectorXd v;
+        if (!sparse_least_squares(sparse_jacobian(*this, q0, m, {{0, c, 1.0}}), rhs, v)) continue;
+        const double vmax = v.cwiseAbs().maxCoeff();
+        if (vmax > 0.0 && (J * v).cwiseAbs().maxCoeff() <= 1e-9 * std::max(s(0), 1.0) * vmax) v0 = v / v.norm();
+      }
+      if (v0.isZero()) {  // not found sparsely: the full SVD
+        Eigen::BDCSVD<Eigen::MatrixXd> svd(J0, Eigen::ComputeFullV);
+        v0 = svd.matrixV().col(n - 1);
+      }
+    }
   }
   const Eigen::Index dof = n - rank;
   if (dof == 0)
@@ -233,16 +379,15 @@ Chain::Chain(std::vector<Block> blocks, std::vector<Constraint> constraints, std
                      (free.empty() ? std::string(": add a hinge or a restraint")
                                    : ": no constraint acts on " + free));
   }
+  // The coordinate that moves most in the mechanism: fixing it to 1 turns the
+  // null space of J into the solution of a full-rank sparse system.
+  v0.cwiseAbs().maxCoeff(&pivot_);
   // The mechanism must move the seismic masses horizontally.
   double sum_Wdx = 0.0, sum_W = 0.0;
-  {
-    Eigen::JacobiSVD<Eigen::MatrixXd> svd(jacobian(q0), Eigen::ComputeFullV);
-    const Eigen::VectorXd v = svd.matrixV().col(n - 1);
-    for (const Load& l : loads_) {
-      if (!(l.type == LoadType::SelfWeight || l.type == LoadType::Weight) || !l.seismic) continue;
-      sum_Wdx += l.weight * (position_jacobian(l.block, l.point, q0) * v).x();
-      sum_W += l.weight;
-    }
+  for (const Load& l : loads_) {
+    if (!(l.type == LoadType::SelfWeight || l.type == LoadType::Weight) || !l.seismic) continue;
+    sum_Wdx += l.weight * point_velocity(l.block, l.point, q0, v0).x();
+    sum_W += l.weight;
   }
   if (!(sum_W > 0.0))
     throw InputError("the chain carries no seismic weight (unit weights and carried weights are 0)");
@@ -323,17 +468,48 @@ Eigen::MatrixXd Chain::jacobian(const Eigen::VectorXd& q) const {
   return J;
 }
 
+Eigen::Vector2d Chain::point_velocity(int block, const Eigen::Vector2d& p0, const Eigen::VectorXd& q,
+                                      const Eigen::VectorXd& v) const {
+  // d position = (dx, dz) + R'(phi) (p0 - c) dphi: position_jacobian(...) * v without the 2 x n matrix.
+  const Eigen::Index j = 3 * block;
+  return Eigen::Vector2d(v(j), v(j + 1)) + rotation_derivative(q(j + 2)) * (p0 - centroids_[block]) * v(j + 2);
+}
+
 Eigen::VectorXd Chain::virtual_displacement(const Eigen::VectorXd& q) const {
   const Eigen::Index n = static_cast<Eigen::Index>(n_coordinates());
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(jacobian(q), Eigen::ComputeFullV);
-  Eigen::VectorXd v = svd.matrixV().col(n - 1);
+  const Eigen::Index m = static_cast<Eigen::Index>(n_equations_);
+  // [J; e_p^T] v = [0; 1]: J v = 0 with the pivot coordinate p fixed. Full
+  // column rank while v_p != 0 (redundant constraints make it tall and
+  // consistent): sparse least squares, O(n) for a chain.
+  Eigen::VectorXd v;
+  {
+    const SparseMatrix A = sparse_jacobian(*this, q, m, {{0, pivot_, 1.0}});
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m + 1);
+    rhs(m) = 1.0;
+    if (!sparse_least_squares(A, rhs, v)) v.resize(0);
+  }
+  // Checked: J v = 0 to rounding (relative to |J| |v|); else (v_p = 0 in this
+  // configuration, a degenerate factorisation) the dense SVD of before.
+  bool ok = v.size() == n && v.allFinite();
+  if (ok) {
+    const SparseMatrix J = sparse_jacobian(*this, q, m, {});
+    double jmax = 0.0;
+    for (Eigen::Index k = 0; k < J.outerSize(); ++k)
+      for (SparseMatrix::InnerIterator it(J, k); it; ++it) jmax = std::max(jmax, std::fabs(it.value()));
+    const double vmax = v.cwiseAbs().maxCoeff();
+    ok = vmax > 0.0 && (J * v).cwiseAbs().maxCoeff() <= 1e-9 * std::max(jmax, 1.0) * vmax;
+  }
+  if (!ok) {
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(jacobian(q), Eigen::ComputeFullV);
+    v = svd.matrixV().col(n - 1);
+  }
   double max_rot = 0.0;
   for (std::size_t i = 0; i < blocks_.size(); ++i) max_rot = std::max(max_rot, std::fabs(v(3 * i + 2)));
-  v /= max_rot > 1e-12 ? max_rot : v.cwiseAbs().maxCoeff();
+  v /= max_rot > 1e-12 * v.cwiseAbs().maxCoeff() ? max_rot : v.cwiseAbs().maxCoeff();
   double sum_Wdx = 0.0;
   for (const Load& l : loads_)
     if ((l.type == LoadType::SelfWeight || l.type == LoadType::Weight) && l.seismic)
-      sum_Wdx += l.weight * (position_jacobian(l.block, l.point, q) * v).x();
+      sum_Wdx += l.weight * point_velocity(l.block, l.point, q, v).x();
   if (sum_Wdx < 0.0) v = -v;
   return v;
 }
@@ -367,22 +543,23 @@ std::vector<int> Chain::blocks_containing(const Eigen::Vector2d& p) const {
 bool Chain::solve_configuration(int block, const Eigen::Vector2d& p0, double dk,
                                 const Eigen::VectorXd& guess, Eigen::VectorXd& q) const {
   // Newton on [g(q); x_k(q) - x_k(0) - dk] = 0, least-squares steps so that
-  // redundant (dependent) constraints do no harm.
+  // redundant (dependent) constraints do no harm: sparse QR of the (m + 1) x n
+  // Jacobian by its augmented system (O(n) for a chain; issue 10, defect 13).
   const Eigen::Index m = static_cast<Eigen::Index>(n_equations_);
-  const Eigen::Index n = static_cast<Eigen::Index>(n_coordinates());
   const double x0 = p0.x();
   const double tol = 1e-13 * std::max(size_, 1.0);
   q = guess;
   Eigen::VectorXd r(m + 1);
-  Eigen::MatrixXd A(m + 1, n);
   for (int it = 0; it < 60; ++it) {
     r.head(m) = residual(q);
     r(m) = position(block, p0, q).x() - x0 - dk;
     if (r.cwiseAbs().maxCoeff() <= tol) return true;
-    A.topRows(m) = jacobian(q);
-    A.row(m) = position_jacobian(block, p0, q).row(0);
-    const Eigen::VectorXd dq = A.completeOrthogonalDecomposition().solve(-r);
-    if (!dq.allFinite()) return false;
+    // Last row: d x_k / d q = (1, 0, d(R (p0 - c)).x / dphi) on the block's coordinates.
+    const Eigen::Index j = 3 * block;
+    const double dxdphi = (rotation_derivative(q(j + 2)) * (p0 - centroids_[block])).x();
+    const SparseMatrix A = sparse_jacobian(*this, q, m, {{0, j, 1.0}, {0, j + 2, dxdphi}});
+    Eigen::VectorXd dq;
+    if (!sparse_least_squares(A, -r, dq)) return false;
     q += dq;
   }
   r.head(m) = residual(q);

@@ -14,9 +14,10 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
-#include <regex>
 #include <sstream>
 #include <vector>
 
@@ -45,13 +46,8 @@ std::string stem(const std::string& path) {
   return f;
 }
 
-/// Lines of a file with every '\r' removed (LF, CRLF and CR CR LF endings).
-std::vector<std::string> read_lines(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot open record file '" + path + "'");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  std::string text = ss.str();
+/// Lines of a text with every '\r' removed (LF, CRLF and CR CR LF endings).
+std::vector<std::string> split_lines(std::string text) {
   text.erase(std::remove(text.begin(), text.end(), '\r'), text.end());
   std::vector<std::string> lines;
   std::istringstream is(text);
@@ -59,26 +55,82 @@ std::vector<std::string> read_lines(const std::string& path) {
   return lines;
 }
 
-/// Appends the numbers of `line` to `out`. Numbers may touch (fixed-width
-/// E15.7 fields with no blank before a minus sign). Throws on anything else.
+/// The content of a record file.
+std::string read_text(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path + ": is a directory, expected a record file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot open record file '" + path + "'");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+/// Appends the numbers of `line`, times `factor`, to `out`. Numbers may
+/// touch (fixed-width E15.7 fields with no blank before a minus sign).
+/// Throws on anything else, on a value that overflows a double, and on a
+/// value that overflows once converted to m/s^2 (1e308 g). A subnormal value
+/// (1.0E-310) is a number: strtod flags its underflow with ERANGE, but the
+/// result is the nearest double, which is kept.
 void parse_numbers(const std::string& line, const std::string& path, std::size_t line_no,
                    std::vector<double>& out, double factor) {
   const char* p = line.c_str();
+  auto token = [&](const char* from) {
+    std::string tok(from);
+    tok = tok.substr(0, std::min<std::size_t>(tok.find_first_of(" \t,"), 40));
+    return tok;
+  };
   while (*p) {
     while (*p == ' ' || *p == '\t' || *p == ',') ++p;
     if (!*p) break;
     char* end = nullptr;
     errno = 0;
     const double v = std::strtod(p, &end);
-    if (end == p || errno == ERANGE || !std::isfinite(v)) {
-      std::string tok(p);
-      tok = tok.substr(0, tok.find_first_of(" \t"));
-      throw InputError(path + ":" + std::to_string(line_no) + ": non-numeric value '" + tok +
-                       "' (expected an acceleration value)");
-    }
-    out.push_back(v * factor);
+    const std::string where = path + ":" + std::to_string(line_no) + ": ";
+    if (end == p || std::isnan(v))
+      throw InputError(where + "non-numeric value '" + token(p) + "' (expected an acceleration value)");
+    if (!std::isfinite(v) || (errno == ERANGE && std::fabs(v) > 1.0))
+      throw InputError(where + "value '" + token(p) + "' is out of the range of a double (|a| < 1.8e308)");
+    const double a = v * factor;
+    if (!std::isfinite(a))
+      throw InputError(where + "value '" + token(p) + "' overflows once converted to m/s^2");
+    out.push_back(a);
     p = end;
   }
+}
+
+/// A count from a header field (NPTS, NDATA, Number of Data): a decimal
+/// integer in [0, max_count], else an InputError naming the file and field.
+constexpr long max_count = 1'000'000'000;  // 1e9 samples: 8 GB of doubles
+long parse_count(const std::string& text, const std::string& path, const char* field) {
+  const std::string t = trim(text);
+  const std::string shown = t.substr(0, 40) + (t.size() > 40 ? "..." : "");
+  std::size_t i = t.size() > 0 && t[0] == '+' ? 1 : 0;
+  const std::size_t digits_from = i;
+  long v = 0;
+  bool too_many = false;
+  for (; i < t.size() && std::isdigit(static_cast<unsigned char>(t[i])); ++i) {
+    if (v <= max_count) v = 10 * v + (t[i] - '0');  // stops growing past the limit: no overflow
+    too_many = too_many || v > max_count;
+  }
+  if (i == digits_from || i != t.size())
+    throw InputError(path + ": header field " + field +
+                     ": expected a number of points (a non-negative integer), got '" + shown + "'");
+  if (too_many)
+    throw InputError(path + ": header field " + field + ": " + shown + " points is more than the limit of " +
+                     std::to_string(max_count));
+  return v;
+}
+
+/// A real number from a header field (dt); `strict`: nothing may follow it.
+double parse_header_real(const std::string& text, const std::string& path, const char* field, bool strict = true) {
+  const std::string t = trim(text);
+  char* end = nullptr;
+  const double v = std::strtod(t.c_str(), &end);
+  if (t.empty() || end == t.c_str() || (strict && !trim(end).empty()) || !std::isfinite(v))
+    throw InputError(path + ": header field " + field + ": expected a number (s), got '" + t.substr(0, 40) + "'");
+  return v;
 }
 
 bool is_numeric_line(const std::string& line) {
@@ -98,7 +150,11 @@ void check_dt(double dt, const std::string& path) {
 std::vector<double> read_data(const std::vector<std::string>& lines, std::size_t first, long npts,
                               const std::string& path, double factor) {
   std::vector<double> acc;
-  if (npts > 0) acc.reserve(static_cast<std::size_t>(npts));
+  // Never reserve more than the file can hold: a value takes at least one
+  // character and a separator.
+  std::size_t bytes = 0;
+  for (std::size_t i = first; i < lines.size(); ++i) bytes += lines[i].size() + 1;
+  if (npts > 0) acc.reserve(std::min(static_cast<std::size_t>(npts), bytes / 2 + 1));
   for (std::size_t i = first; i < lines.size(); ++i) parse_numbers(lines[i], path, i + 1, acc, factor);
   if (npts >= 0 && static_cast<long>(acc.size()) < npts)
     throw InputError(path + ": truncated record: the header declares " + std::to_string(npts) +
@@ -109,24 +165,63 @@ std::vector<double> read_data(const std::vector<std::string>& lines, std::size_t
   return acc;
 }
 
+// Header scanning without std::regex (whose executor recursed once per
+// character and overflowed the stack on a 30 000-character line).
+bool word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+std::size_t skip_blanks(const std::string& s, std::size_t i) {
+  while (i < s.size() && (s[i] == ' ' || s[i] == '\t')) ++i;
+  return i;
+}
+/// Position of `key` (upper case) in `u` (upper-cased line) followed by
+/// optional blanks and '=', at a word start if `word_start`; returns the index
+/// after the '=' or npos.
+std::size_t find_assignment(const std::string& u, const char* key, bool word_start) {
+  const std::string k(key);
+  for (std::size_t at = u.find(k); at != std::string::npos; at = u.find(k, at + 1)) {
+    if (word_start && at > 0 && word_char(u[at - 1])) continue;
+    const std::size_t e = skip_blanks(u, at + k.size());
+    if (e < u.size() && u[e] == '=') return e + 1;
+  }
+  return std::string::npos;
+}
+/// The run of characters from `i` in `chars` (after blanks).
+std::string field_at(const std::string& s, std::size_t i, const char* chars) {
+  i = skip_blanks(s, i);
+  const std::size_t e = s.find_first_not_of(chars, i);
+  return s.substr(i, (e == std::string::npos ? s.size() : e) - i);
+}
+
 Record read_at2(const std::vector<std::string>& lines, const std::string& path) {
-  static const std::regex npts_re(R"(NPTS\s*=\s*([0-9]+))", std::regex::icase);
-  static const std::regex dt_re(R"(\bDT\s*=\s*([-+0-9.eE]+))", std::regex::icase);
-  static const std::regex numbers_first_re(R"(^\s*([0-9]+)\s+([-+0-9.eE]+)\s+NPTS\s*,\s*DT)", std::regex::icase);
   std::size_t k = 0;
   long npts = -1;
   double dt = 0.0;
   for (; k < lines.size() && k < 10; ++k) {
-    std::smatch m1, m2;
-    if (std::regex_search(lines[k], m1, npts_re) && std::regex_search(lines[k], m2, dt_re)) {
-      npts = std::stol(m1[1]);
-      dt = std::strtod(m2[1].str().c_str(), nullptr);
-      break;
+    const std::string u = upper(lines[k]);
+    // "NPTS=  1559, DT=   .0200 SEC" (any order, any blanks)
+    const std::size_t n_at = find_assignment(u, "NPTS", false), d_at = find_assignment(u, "DT", true);
+    if (n_at != std::string::npos && d_at != std::string::npos) {
+      const std::string n = field_at(u, n_at, "0123456789");
+      if (!n.empty()) {
+        npts = parse_count(n, path, "NPTS");
+        dt = parse_header_real(field_at(u, d_at, "+-0123456789.E"), path, "DT", false);
+        break;
+      }
     }
-    if (std::regex_search(lines[k], m1, numbers_first_re)) {
-      npts = std::stol(m1[1]);
-      dt = std::strtod(m1[2].str().c_str(), nullptr);
-      break;
+    // "  1559   0.0200   NPTS, DT, SEC" (numbers first)
+    const std::size_t i0 = skip_blanks(u, 0);
+    const std::string n = field_at(u, i0, "0123456789");
+    if (!n.empty()) {
+      std::size_t i = i0 + n.size();
+      if (i < u.size() && (u[i] == ' ' || u[i] == '\t')) {
+        const std::string d = field_at(u, i, "+-0123456789.E");
+        i = skip_blanks(u, skip_blanks(u, i) + d.size());
+        if (!d.empty() && u.compare(i, 4, "NPTS") == 0 && skip_blanks(u, i + 4) < u.size() &&
+            u[skip_blanks(u, i + 4)] == ',' && u.compare(skip_blanks(u, skip_blanks(u, i + 4) + 1), 2, "DT") == 0) {
+          npts = parse_count(n, path, "NPTS");
+          dt = parse_header_real(d, path, "DT", false);
+          break;
+        }
+      }
     }
   }
   if (npts < 0) throw InputError(path + ": PEER AT2 header without an 'NPTS=..., DT=...' line");
@@ -173,10 +268,16 @@ Record read_dyna(const std::vector<std::string>& lines, const std::string& path)
       throw InputError(path + ": ESM/ITACA header has no value for " + key);
     return it->second;
   };
-  const double dt = std::strtod(need("SAMPLING_INTERVAL_S").c_str(), nullptr);
+  const double dt = parse_header_real(need("SAMPLING_INTERVAL_S"), path, "SAMPLING_INTERVAL_S");
   check_dt(dt, path);
-  const long npts = std::stol(need("NDATA"));
+  const long npts = parse_count(need("NDATA"), path, "NDATA");
   const std::string unit = need("UNITS");
+  double factor = 1.0;
+  try {
+    factor = to_m_s2(parse_acceleration_unit(unit));
+  } catch (const InputError& e) {
+    throw InputError(path + ": header field UNITS: " + e.what());
+  }
   Record r;
   const std::string version = h["DATABASE_VERSION"] + h["DATA_VERSION"];
   r.format = version.find("ITACA") != std::string::npos ? "ITACA ASCII" : "ESM ASCII";
@@ -184,7 +285,7 @@ Record read_dyna(const std::vector<std::string>& lines, const std::string& path)
   r.event = h["EVENT_NAME"] + (h["EVENT_DATE_YYYYMMDD"].empty() ? "" : ", " + h["EVENT_DATE_YYYYMMDD"]);
   r.station = h["STATION_CODE"] + (h["STATION_NAME"].empty() ? "" : " " + h["STATION_NAME"]);
   r.component = !h["COMPONENT"].empty() ? h["COMPONENT"] : h["STREAM"];
-  r.acc = read_data(lines, k, npts, path, to_m_s2(parse_acceleration_unit(unit)));
+  r.acc = read_data(lines, k, npts, path, factor);
   return r;
 }
 
@@ -200,9 +301,9 @@ Record read_cor_acc(const std::vector<std::string>& lines, const std::string& pa
     if (it == h.end() || it->second.empty()) throw InputError(path + ": .cor.acc header has no '" + key + "'");
     return it->second;
   };
-  const double dt = std::strtod(need("Time Increment (s)").c_str(), nullptr);
+  const double dt = parse_header_real(need("Time Increment (s)"), path, "Time Increment (s)");
   check_dt(dt, path);
-  const long npts = std::stol(need("Number of Data"));
+  const long npts = parse_count(need("Number of Data"), path, "Number of Data");
   Record r;
   r.format = "GEM cor.acc";
   r.dt = dt;
@@ -232,8 +333,10 @@ double to_m_s2(AccelerationUnit unit) {
   return 1.0;
 }
 
-Record read_record(const std::string& path) {
-  const std::vector<std::string> lines = read_lines(path);
+Record read_record(const std::string& path) { return parse_record_text(read_text(path), path); }
+
+Record parse_record_text(const std::string& text, const std::string& path) {
+  const std::vector<std::string> lines = split_lines(text);
   Record r;
   bool dyna = false, cor = false, at2 = false;
   for (std::size_t i = 0; i < lines.size() && i < 12; ++i) {
@@ -255,7 +358,13 @@ Record read_record(const std::string& path) {
 Record read_plain_record(const std::string& path, double dt_s, AccelerationUnit unit) {
   if (!(std::isfinite(dt_s) && dt_s > 0.0))
     throw InputError(path + ": time step must be positive (s), got " + std::to_string(dt_s));
-  const std::vector<std::string> lines = read_lines(path);
+  return parse_plain_record_text(read_text(path), path, dt_s, unit);
+}
+
+Record parse_plain_record_text(const std::string& text, const std::string& path, double dt_s, AccelerationUnit unit) {
+  if (!(std::isfinite(dt_s) && dt_s > 0.0))
+    throw InputError(path + ": time step must be positive (s), got " + std::to_string(dt_s));
+  const std::vector<std::string> lines = split_lines(text);
   Record r;
   r.format = "plain";
   r.dt = dt_s;
@@ -270,6 +379,8 @@ Record read_plain_record(const std::string& path, double dt_s, AccelerationUnit 
     if (t.empty() || t[0] == '#') continue;
     row.clear();
     parse_numbers(t, path, i + 1, row, 1.0);
+    if (row.empty())
+      throw InputError(path + ":" + std::to_string(i + 1) + ": no value on this line (only separators)");
     if (columns == 0) columns = row.size();
     if (row.size() != columns || columns > 2)
       throw InputError(path + ":" + std::to_string(i + 1) + ": expected " +
@@ -281,7 +392,10 @@ Record read_plain_record(const std::string& path, double dt_s, AccelerationUnit 
                          std::to_string(dt_s) + " s");
       t_prev = row[0];
     }
-    r.acc.push_back(row.back() * factor);
+    const double a = row.back() * factor;
+    if (!std::isfinite(a))
+      throw InputError(path + ":" + std::to_string(i + 1) + ": value overflows once converted to m/s^2");
+    r.acc.push_back(a);
   }
   if (r.acc.size() < 2) throw InputError(path + ": a record needs at least 2 values");
   return r;
@@ -290,7 +404,8 @@ Record read_plain_record(const std::string& path, double dt_s, AccelerationUnit 
 Record read_plain_record(const std::string& path, AccelerationUnit unit) {
   // dt = the spacing of the first two times; read_plain_record(path, dt, unit)
   // then checks every later spacing against it.
-  const std::vector<std::string> lines = read_lines(path);
+  const std::string text = read_text(path);
+  const std::vector<std::string> lines = split_lines(text);
   std::vector<double> t, row;
   for (std::size_t i = 0; i < lines.size() && t.size() < 2; ++i) {
     const std::string s = trim(lines[i]);
@@ -308,7 +423,7 @@ Record read_plain_record(const std::string& path, AccelerationUnit unit) {
   if (!(std::isfinite(dt) && dt > 0.0))
     throw InputError(path + ": the time column must increase: the first two times give dt = " + std::to_string(dt) +
                      " s");
-  return read_plain_record(path, dt, unit);
+  return parse_plain_record_text(text, path, dt, unit);
 }
 
 double scale_factor_to_pga(const Record& record, double target_pga_m_s2) {

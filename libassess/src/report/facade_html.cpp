@@ -526,7 +526,9 @@ void add_dynamic(const Ctx& c) {
   for (const RestitutionSummary& x : a.summaries) {
     const bool fails = !x.slv_satisfied || !std::isfinite(x.dc_slv);
     srows.push_back({c.restitution(x.restitution), num(x.analyses, 0),
-                     HtmlCell(std::to_string(x.overturned) + " / " + std::to_string(x.analyses), "num"),
+                     HtmlCell(std::to_string(x.overturned) + " / " + std::to_string(x.analyses) +
+                                  (x.failed > 0 ? " (" + std::to_string(x.failed) + " " + c.t("dyn.failed") + ")" : ""),
+                              x.failed > 0 ? "num fail" : "num"),
                      num(x.mean_dc, 3), num(x.max_dc, 3), num(x.mean_d_star, 4), num(x.max_d_star, 4), x.rule,
                      x.no_verdict ? HtmlCell("—", "num") : dc_cell(x.dc_slv, fails),
                      x.no_verdict ? HtmlCell(c.t("verdict.no_verdict_short"), "fail")

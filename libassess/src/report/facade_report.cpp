@@ -132,9 +132,16 @@ std::string facade_text(const FacadeAssessment& a, TextWidth width) {
                   rw, "record", "restitution", "th/th_u", "impacts", "overturn", "energy", "d* (m)", "t_end (s)",
                   "termination");
       for (const DynamicRun& r : a.runs)
-        o += format(wide ? "  %-*s %-18s %9.4f %7ld %9s %8.4f %8.4f %10.3f  %s\n"
-                         : "  %-*s %-12s %7.4f %7ld %8s %7.4f %7.4f %9.3f  %s\n",
-                    rw, record_label(a, r).c_str(),
+        if (!succeeded(r.result))  // a failed analysis shows no numbers
+          o += para(format("  %-*s %-18s FAILED (%s): %s", rw, record_label(a, r).c_str(),
+                           describe(a.dynamic->restitutions[r.restitution]).c_str(), to_string(r.result.termination),
+                           r.result.message.c_str()),
+                    4) +
+               "\n";
+        else
+          o += format(wide ? "  %-*s %-18s %9.4f %7ld %9s %8.4f %8.4f %10.3f  %s\n"
+                           : "  %-*s %-12s %7.4f %7ld %8s %7.4f %7.4f %9.3f  %s\n",
+                      rw, record_label(a, r).c_str(),
                     describe(a.dynamic->restitutions[r.restitution]).c_str(), r.theta_ratio, r.result.impacts,
                     r.result.overturned ? "yes" : "no", r.result.dc, r.d_star, r.result.t_end,
                     to_string(r.result.termination));
@@ -290,12 +297,14 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
                         {"d_control", r.d_control},
                         {"d_star", r.d_star},
                         {"collapse", r.collapse},
-                        {"termination", to_string(r.result.termination)}});
+                        {"termination", to_string(r.result.termination)},
+                        {"failed", !succeeded(r.result)}});
       d["analyses"] = runs;
       nlohmann::json sums = nlohmann::json::array();
       for (const RestitutionSummary& s : a.summaries)
         sums.push_back({{"restitution", describe(a.dynamic->restitutions[s.restitution])},
                         {"e", s.e},
+                        {"failed", s.failed},
                         {"analyses", s.analyses},
                         {"overturned", s.overturned},
                         {"mean_dc", s.mean_dc},

@@ -210,6 +210,7 @@ const std::map<std::string, Entry>& catalogue() {
       {"dyn.restitution", {"restituzione", "restitution"}},
       {"dyn.analyses", {"analisi", "analyses"}},
       {"dyn.overturned", {"ribaltamenti", "overturned"}},
+      {"dyn.failed", {"analisi fallite, escluse dalle statistiche: verifica non soddisfatta", "failed analyses, left out of the statistics: check not satisfied"}},
       {"dyn.mean_dc", {"D/C energetico medio", "mean energy D/C"}},
       {"dyn.max_dc", {"D/C energetico max", "max energy D/C"}},
       {"dyn.mean_d", {"d* di picco medio (m)", "mean peak d* (m)"}},

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -31,14 +32,104 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
   return prev[b.size()];
 }
 
-nlohmann::json read_json_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the file");
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(path + ": not valid JSON: " + e.what());
+namespace {
+
+// A SAX handler that only tracks the JSON pointer of the value being read, so
+// that a parse error (a number that overflows a double, a syntax error) names
+// where it happened. Used on the error path only (a second, DOM-less pass).
+class PathTracker final : public nlohmann::json_sax<nlohmann::json> {
+ public:
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool string(string_t&) override { return value(); }
+  bool binary(binary_t&) override { return value(); }
+  bool start_object(std::size_t) override {
+    value();
+    frames_.push_back({false, "", -1});
+    return true;
   }
+  bool key(string_t& k) override {
+    frames_.back().key = k;
+    return true;
+  }
+  bool end_object() override {
+    frames_.pop_back();
+    return true;
+  }
+  bool start_array(std::size_t) override {
+    value();
+    frames_.push_back({true, "", -1});
+    return true;
+  }
+  bool end_array() override {
+    frames_.pop_back();
+    return true;
+  }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) override {
+    // The failing value has not been counted yet.
+    if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
+    error_path_ = pointer();
+    error_ = e.what();
+    return false;
+  }
+  const std::string& error_path() const { return error_path_; }
+  const std::string& error() const { return error_; }
+
+ private:
+  struct Frame {
+    bool array;
+    std::string key;
+    long index;
+  };
+  bool value() {
+    if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
+    return true;
+  }
+  std::string pointer() const {
+    std::string out;
+    for (const Frame& f : frames_) {
+      out += '/';
+      if (f.array) {
+        out += std::to_string(f.index < 0 ? 0 : f.index);
+        continue;
+      }
+      for (char c : f.key) out += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
+    }
+    return out.empty() ? "/" : out;
+  }
+  std::vector<Frame> frames_;
+  std::string error_path_ = "/", error_;
+};
+
+}  // namespace
+
+nlohmann::json parse_json_text(const std::string& text, const std::string& file) {
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    // A number beyond the range of a double (1e400) is reported by
+    // nlohmann::json as out_of_range.406, other malformed text as
+    // parse_error: both name the file and the JSON path of the value.
+    PathTracker tracker;
+    nlohmann::json::sax_parse(text, &tracker);
+    const bool overflow = e.id == 406;
+    throw InputError(file + ": " + tracker.error_path() + ": " +
+                     (overflow ? std::string("number out of the range of a double (|x| < 1.8e308): ") + e.what()
+                               : std::string("not valid JSON: ") + e.what()));
+  }
+}
+
+nlohmann::json read_json_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, expected a JSON file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open the file");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return parse_json_text(ss.str(), path);
 }
 
 JsonNode::JsonNode(const nlohmann::json& value, std::string file, std::string path)
@@ -134,6 +225,9 @@ double JsonNode::positive(const std::string& key, const char* unit) const {
 int JsonNode::integer(const std::string& key, int lo, int hi) const {
   const JsonNode n = at(key);
   if (!n.value_->is_number_integer()) n.fail(std::string("expected an integer, got ") + type_name(*n.value_));
+  if (n.value_->is_number_unsigned() && n.value_->get<unsigned long long>() > static_cast<unsigned long long>(hi))
+    n.fail("value " + std::to_string(n.value_->get<unsigned long long>()) + " out of range: expected " +
+           std::to_string(lo) + ".." + std::to_string(hi));
   const long long v = n.value_->get<long long>();
   if (v < lo || v > hi)
     n.fail("value " + std::to_string(v) + " out of range: expected " + std::to_string(lo) + ".." + std::to_string(hi));

@@ -61,6 +61,10 @@ struct RestitutionSummary {
   double e = 0.0;
   int analyses = 0;
   int overturned = 0;
+  /// Analyses that failed (step or event limit, integrator error): left out
+  /// of the statistics, and the check is then not satisfied (a result that
+  /// cannot be trusted is a failure).
+  int failed = 0;
   double mean_dc = 0.0, min_dc = 0.0, max_dc = 0.0;  ///< energy demand/capacity (-)
   double mean_theta_ratio = 0.0;                     ///< mean theta_max/theta_u (-)
   /// Mean over the records of the peak d* (envelope of the polarities) (m).
@@ -73,7 +77,7 @@ struct RestitutionSummary {
   std::string rule;
   double d_demand = 0.0;          ///< the demand of the rule: mean or largest peak d* (m)
   bool no_verdict = false;        ///< N < 3 and no collapse: the records cannot support a verdict
-  bool slv_satisfied = false;     ///< no collapse and d_demand <= d_SLV (and a verdict)
+  bool slv_satisfied = false;     ///< no failed analysis, no collapse and d_demand <= d_SLV (and a verdict)
   double dc_slv = 0.0;            ///< d_demand / d_SLV (-)
 };
 

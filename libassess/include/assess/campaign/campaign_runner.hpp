@@ -31,6 +31,10 @@ struct CampaignRunOptions {
   /// `interrupted` set (e.g. set from a SIGINT handler; lock-free, so
   /// signal-safe). Default none.
   const std::atomic<bool>* cancel = nullptr;
+  /// The caller already holds a CampaignOutputLock on the output directory
+  /// for this part (output_lock.hpp), e.g. to keep it over a merge and the
+  /// report; else run_campaign takes one for the run (default false).
+  bool output_locked = false;
 
   /// @throws InputError naming the invalid field
   void validate() const;
@@ -63,8 +67,10 @@ std::string campaign_part_path(const std::string& out_dir, int part, int parts);
 /// campaign_part_path(out_dir, ...), and writes out_dir/campaign.json (the
 /// normalised spec). Rows are written in id order and flushed as soon as the
 /// rows before them are done, so an interrupted run leaves a valid prefix.
-/// @throws InputError if out_dir cannot be written, or when resuming a file
-///   whose header or campaign.json differs from this campaign's.
+/// Only one process writes to out_dir (CampaignOutputLock, output_lock.hpp).
+/// @throws InputError if out_dir cannot be written, if another process holds
+///   its lock, or when resuming a file whose header or campaign.json differs
+///   from this campaign's.
 CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out_dir,
                                 const CampaignRunOptions& options);
 

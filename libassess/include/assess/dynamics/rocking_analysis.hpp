@@ -86,9 +86,25 @@ struct RockingInitialState {
   double omega = 0.0;
 };
 
+/// Marks a completed or overturned result that cannot be true as a failure
+/// (termination integrator_error, with a message): a non-finite peak, energy
+/// or displacement, or a peak beyond the rotation that stops the analysis
+/// (theta_u, or pi/2 with OverturnCriterion::half_pi). Called by analyse();
+/// public for front ends that build results otherwise, and for tests.
+void flag_untrustworthy(const RockingModel& model, const RockingOptions& options, RockingResult& result);
+
+/// True if the result is one to report (completed or overturned); any other
+/// termination (step_limit, event_limit, integrator_error) is a failed analysis.
+inline bool succeeded(const RockingResult& r) {
+  return r.termination == RockingTermination::completed || r.termination == RockingTermination::overturned;
+}
+
 /// Analysis under a record (scaled and polarity-flipped as in options).
 RockingResult analyse(const RockingModel& model, const Record& record, const RockingOptions& options);
 /// Analysis under a ground motion (options.scale/reverse are not applied) from an initial state.
+/// @throws InputError for invalid options (analysis_limits.hpp) and for a
+///   Winkler modulus the integration cannot resolve: k > 1e9 kN/m^3, or
+///   theta_cr < 10 abs_tol (docs/theory/rocking.md, "Upper bound on k").
 RockingResult analyse(const RockingModel& model, const GroundMotion& motion, const RockingOptions& options,
                       const RockingInitialState& initial = {});
 /// Free rocking from an initial state for duration_s (s).

@@ -135,6 +135,10 @@ class Chain {
   double size() const { return size_; }
 
  private:
+  /// position_jacobian(block, p0, q) * v, without building the 2 x n matrix.
+  Eigen::Vector2d point_velocity(int block, const Eigen::Vector2d& p0, const Eigen::VectorXd& q,
+                                 const Eigen::VectorXd& v) const;
+
   std::vector<Block> blocks_;
   std::vector<Constraint> constraints_;
   std::vector<Load> loads_;
@@ -143,6 +147,9 @@ class Chain {
   std::vector<Eigen::Vector3d> moments_;  // centroidal integral of (x^2, x z, z^2) dA / A (m^2)
   std::size_t n_equations_ = 0;
   double size_ = 1.0;
+  /// The coordinate that moves most in the undeformed mechanism: fixed to 1
+  /// in virtual_displacement's sparse system.
+  Eigen::Index pivot_ = 0;
 };
 
 /// "self weight", "weight", "force", "tie", "friction".

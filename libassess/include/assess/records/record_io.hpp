@@ -43,6 +43,10 @@ Record read_plain_record(const std::string& path, double dt_s, AccelerationUnit 
 /// time step is the spacing of its time column, checked for uniformity as in
 /// read_plain_record(path, dt, unit).
 Record read_plain_record(const std::string& path, AccelerationUnit unit);
+/// The same readers on a file's content (`path` names it in messages): for
+/// records held in memory, and for the fuzzers of fuzz/.
+Record parse_record_text(const std::string& text, const std::string& path);
+Record parse_plain_record_text(const std::string& text, const std::string& path, double dt_s, AccelerationUnit unit);
 
 /// Factor that scales `record` to a peak ground acceleration target_pga_m_s2 (m/s^2, > 0).
 double scale_factor_to_pga(const Record& record, double target_pga_m_s2);

@@ -67,7 +67,10 @@ class JsonNode {
 /// Levenshtein distance (for suggestions).
 std::size_t edit_distance(const std::string& a, const std::string& b);
 
-/// Parses a JSON file; InputError naming the file (and the parse position).
+/// Parses a JSON file; InputError naming the file, the JSON path (e.g.
+/// /mechanism/height for "height": 1e400) and the parse position.
 nlohmann::json read_json_file(const std::string& path);
+/// Same, for JSON text read from `file` (named in errors).
+nlohmann::json parse_json_text(const std::string& text, const std::string& file);
 
 }  // namespace assess

@@ -1,0 +1,49 @@
+#!/bin/sh
+# Runs one libFuzzer harness for a bounded time on a seed corpus made from the
+# project's shipped files, and prints its figures (executions, time, crashes).
+#   fuzz/run_fuzzer.sh EXE NAME SECONDS SOURCE_DIR WORK_DIR [libFuzzer options...]
+# NAME: records | case_file | campaign. Exit status: libFuzzer's (non-zero on a
+# crash, a leak, a sanitizer report or a timeout; the input is kept in WORK_DIR).
+set -eu
+exe=$1 name=$2 secs=$3 src=$4 work=$5
+shift 5
+rm -rf "$work"
+mkdir -p "$work/seeds" "$work/corpus"
+# Seeds: the shipped files, each at most 8 KB (the fuzzer's -max_len).
+seed() { # seed PREFIX_BYTE FILE...
+  prefix=$1; shift
+  for f in "$@"; do
+    [ -f "$f" ] || continue
+    out="$work/seeds/$(basename "$f")"
+    if [ -n "$prefix" ]; then printf "$prefix" > "$out"; else : > "$out"; fi
+    head -c 8192 "$f" >> "$out"
+  done
+}
+case "$name" in
+  records)
+    # First byte: even = format detected from the content, odd = plain text.
+    seed '\000' "$src"/spectra/records/*.AT2 "$src"/spectra/records/*.at2 "$src"/spectra/records/*.DAT \
+                "$src"/spectra/records/*.ASC "$src"/spectra/records/*.cor.acc "$src"/tests/data/*.AT2 \
+                "$src"/tests/data/hostile/*.AT2 "$src"/tests/data/campaign/*.AT2
+    seed '\001' "$src"/tests/data/*.txt "$src"/tests/data/hostile/*.txt ;;
+  case_file)
+    seed '' "$src"/mechanisms/*.json "$src"/tests/cli/run_bad/*.json "$src"/tests/cli/kinematic_bad/*.json \
+            "$src"/tests/data/hostile/*.json ;;
+  campaign)
+    seed '' "$src"/tests/data/campaign/*.json "$src"/mechanisms/campaign-*.json ;;
+  *) echo "unknown fuzzer '$name'" >&2; exit 2 ;;
+esac
+echo "fuzz $name: $(ls "$work/seeds" | wc -l) seed files, ${secs} s"
+set +e
+"$exe" "$work/corpus" "$work/seeds" -max_total_time="$secs" -max_len=8192 -timeout=20 -rss_limit_mb=2560 \
+  -print_final_stats=1 -artifact_prefix="$work/" "$@" > "$work/log.txt" 2>&1
+rc=$?
+set -e
+runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$work/log.txt" | tail -1)
+time=$(sed -n 's/^stat::.*//p' "$work/log.txt" >/dev/null; grep -o 'Done [0-9]* runs in [0-9]* second' "$work/log.txt" | tail -1)
+echo "fuzz $name: ${runs:-?} executions (${time:-no summary}), exit status $rc"
+if [ $rc -ne 0 ]; then
+  tail -n 60 "$work/log.txt"
+  echo "fuzz $name: FAILED (input saved in $work/)"
+fi
+exit $rc
