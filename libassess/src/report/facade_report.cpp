@@ -83,19 +83,39 @@ std::string facade_text(const FacadeAssessment& a) {
     if (!a.dynamic_applies) {
       o += "not applicable: " + a.dynamic_note + "\n";
     } else {
-      const RockingBody& b = a.body->body;
-      const RockingModel& m = *a.model;
-      o += format("model: %s, %s; W = %.3f kN/m, b = %.4f m, R = %.4f m, alpha = %.5f rad, I0 = %.2f kg m2/m, "
-                  "M_ext = %.3f kN m/m\n",
-                  a.dynamic->smooth ? "smooth block on a Winkler foundation" : "rigid (Housner) block",
-                  m.sidedness() == Sidedness::one_sided ? "one-sided" : "two-sided", b.W / units::kN, b.b, b.R,
-                  b.alpha, b.I0, b.M_ext / units::kN);
-      if (a.dynamic->smooth)
-        o += format("       k = %.4g kN/m3, theta_cr = %.3e rad, ", a.dynamic->k / units::kN, m.theta_cr());
-      else
-        o += "       ";
-      o += format("theta_u = %.5f rad, peak moment %.3f kN m/m, energy capacity %.4f kJ/m\n", m.theta_u(+1),
-                  m.peak_moment(+1) / units::kN, m.capacity() / units::kN);
+      const MechanismDynamics& md = *a.mechanism_dynamics;
+      if (a.model) {
+        const RockingBody& b = a.body->body;
+        const RockingModel& m = *a.model;
+        o += format("model: %s, %s; W = %.3f kN/m, b = %.4f m, R = %.4f m, alpha = %.5f rad, I0 = %.2f kg m2/m, "
+                    "M_ext = %.3f kN m/m\n",
+                    a.dynamic->smooth ? "smooth block on a Winkler foundation" : "rigid (Housner) block",
+                    m.sidedness() == Sidedness::one_sided ? "one-sided" : "two-sided", b.W / units::kN, b.b, b.R,
+                    b.alpha, b.I0, b.M_ext / units::kN);
+        if (a.dynamic->smooth)
+          o += format("       k = %.4g kN/m3, theta_cr = %.3e rad, ", a.dynamic->k / units::kN, m.theta_cr());
+        else
+          o += "       ";
+        o += format("theta_u = %.5f rad, peak moment %.3f kN m/m, energy capacity %.4f kJ/m\n", m.theta_u(+1),
+                    m.peak_moment(+1) / units::kN, m.capacity() / units::kN);
+      } else {
+        const ChainDynamics& c = *md.chain;
+        o += format("model: %s chain, one-sided; M(0) = %.2f kg m2, B(0) = %.2f kg m, q_u = %.5f rad, energy "
+                    "capacity %.4f kJ/m\n",
+                    a.dynamic->smooth ? "smooth (Winkler bed under the ground-hinge block)" : "rigid", c.mass(0.0),
+                    c.coupling(0.0), c.q_u(), md.capacity() / units::kN);
+        if (a.dynamic->smooth)
+          o += format("       k = %.4g kN/m3, N = %.3f kN, b = %.4f m, q_cr = %.3e rad\n", a.dynamic->k / units::kN,
+                      c.N() / units::kN, c.half_base(), c.q_cr());
+      }
+      o += "  " + md.describe() + "\n";
+      if (!a.code_floor_Se.empty()) {
+        o += "  floor motions, 5 % spectrum (mean of the records) vs the code's floor spectrum S_eZ [C7.2.6] (SLV, 5 %):\n";
+        o += format("  %8s %14s %14s %8s\n", "T (s)", "floor (g)", "code (g)", "ratio");
+        for (std::size_t j = 0; j < a.periods.size(); j += 4)
+          o += format("  %8.3f %14.4f %14.4f %8.3f\n", a.periods[j], a.floor_mean_psa[j] / g, a.code_floor_Se[j] / g,
+                      a.code_floor_Se[j] > 0 ? a.floor_mean_psa[j] / a.code_floor_Se[j] : 0.0);
+      }
       if (a.selection) {
         o += format("records: %d selected from the catalogue, compatible with the SLV spectrum (5 %%) over "
                     "%.2f-%.2f s: %s\n",
@@ -163,17 +183,39 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
     d["applies"] = a.dynamic_applies;
     d["note"] = a.dynamic_note;
     if (a.dynamic_applies) {
-      const RockingBody& b = a.body->body;
-      const RockingModel& m = *a.model;
-      d["model"] = {{"type", a.dynamic->smooth ? "smooth" : "rigid"},
-                    {"k_kN_m3", a.dynamic->smooth ? nlohmann::json(a.dynamic->k / units::kN) : nlohmann::json(nullptr)},
-                    {"sidedness", m.sidedness() == Sidedness::one_sided ? "one-sided" : "two-sided"},
-                    {"polarity", to_string(a.dynamic->polarity)},
-                    {"W_kN_m", b.W / units::kN}, {"b", b.b}, {"R", b.R}, {"alpha", b.alpha}, {"I0", b.I0},
-                    {"M_ext_kNm_m", b.M_ext / units::kN},
-                    {"theta_cr", a.dynamic->smooth ? nlohmann::json(m.theta_cr()) : nlohmann::json(nullptr)},
-                    {"theta_u", m.theta_u(+1)}, {"peak_moment_kNm_m", m.peak_moment(+1) / units::kN},
-                    {"capacity_kJ_m", m.capacity() / units::kN}};
+      const MechanismDynamics& md = *a.mechanism_dynamics;
+      if (a.model) {
+        const RockingBody& b = a.body->body;
+        const RockingModel& m = *a.model;
+        d["model"] = {{"type", a.dynamic->smooth ? "smooth" : "rigid"},
+                      {"k_kN_m3", a.dynamic->smooth ? nlohmann::json(a.dynamic->k / units::kN) : nlohmann::json(nullptr)},
+                      {"sidedness", m.sidedness() == Sidedness::one_sided ? "one-sided" : "two-sided"},
+                      {"polarity", to_string(a.dynamic->polarity)},
+                      {"W_kN_m", b.W / units::kN}, {"b", b.b}, {"R", b.R}, {"alpha", b.alpha}, {"I0", b.I0},
+                      {"M_ext_kNm_m", b.M_ext / units::kN},
+                      {"theta_cr", a.dynamic->smooth ? nlohmann::json(m.theta_cr()) : nlohmann::json(nullptr)},
+                      {"theta_u", m.theta_u(+1)}, {"peak_moment_kNm_m", m.peak_moment(+1) / units::kN},
+                      {"capacity_kJ_m", m.capacity() / units::kN}};
+      } else {
+        const ChainDynamics& c = *md.chain;
+        d["model"] = {{"type", a.dynamic->smooth ? "smooth" : "rigid"},
+                      {"k_kN_m3", a.dynamic->smooth ? nlohmann::json(a.dynamic->k / units::kN) : nlohmann::json(nullptr)},
+                      {"sidedness", "one-sided"},
+                      {"polarity", to_string(a.dynamic->polarity)},
+                      {"chain_blocks", c.chain().blocks().size()},
+                      {"M0_kg_m2", c.mass(0.0)}, {"B0_kg_m", c.coupling(0.0)},
+                      {"theta_cr", a.dynamic->smooth ? nlohmann::json(c.q_cr()) : nlohmann::json(nullptr)},
+                      {"theta_u", c.q_u()}, {"capacity_kJ_m", md.capacity() / units::kN}};
+      }
+      d["model"]["kind"] = md.single_body() ? "rocking body" : "chain";
+      d["model"]["Z"] = md.Z;
+      d["model"]["input"] = md.floor_input ? "floor motions given" : md.filter ? "floor motions (first-mode filter)" : "ground motions";
+      if (md.filter)
+        d["model"]["floor_filter"] = {{"T1_s", md.filter->T1}, {"damping_pct", md.filter_damping_pct},
+                                      {"gamma_psi", md.filter->gamma_psi}};
+      if (!a.code_floor_Se.empty())
+        d["floor_spectra"] = {{"periods_s", a.periods}, {"floor_mean_psa_m_s2", a.floor_mean_psa},
+                              {"code_floor_Se_m_s2", a.code_floor_Se}};
       nlohmann::json recs = nlohmann::json::array();
       for (const RecordUsed& r : a.records)
         recs.push_back({{"name", r.name}, {"file", r.file}, {"event", r.event}, {"station", r.station},
@@ -361,14 +403,18 @@ std::string facade_html(const FacadeAssessment& a) {
     if (!a.dynamic_applies) {
       h.add_paragraph("Not applicable: " + a.dynamic_note);
     } else {
-      const RockingModel& m = *a.model;
-      h.add_paragraph(std::string(a.dynamic->smooth ? "Smooth block on a no-tension Winkler foundation"
-                                                    : "Rigid (Housner) block") +
-                      " (seed Eq. 1), " + (m.sidedness() == Sidedness::one_sided ? "one-sided" : "two-sided") +
-                      " rocking; W = " + fixed(m.body().W / units::kN, 2) + " kN/m, b = " + fixed(m.body().b, 3) +
-                      " m, R = " + fixed(m.body().R, 3) + " m, alpha = " + fixed(m.body().alpha, 5) +
-                      " rad, theta_u = " + fixed(m.theta_u(+1), 5) + " rad, energy capacity " +
-                      fixed(m.capacity() / units::kN, 4) + " kJ/m.");
+      if (a.model) {
+        const RockingModel& m = *a.model;
+        h.add_paragraph(std::string(a.dynamic->smooth ? "Smooth block on a no-tension Winkler foundation"
+                                                      : "Rigid (Housner) block") +
+                        " (seed Eq. 1), " + (m.sidedness() == Sidedness::one_sided ? "one-sided" : "two-sided") +
+                        " rocking; W = " + fixed(m.body().W / units::kN, 2) + " kN/m, b = " + fixed(m.body().b, 3) +
+                        " m, R = " + fixed(m.body().R, 3) + " m, alpha = " + fixed(m.body().alpha, 5) +
+                        " rad, theta_u = " + fixed(m.theta_u(+1), 5) + " rad, energy capacity " +
+                        fixed(m.capacity() / units::kN, 4) + " kJ/m.");
+      }
+      h.add_paragraph("Model: " + a.mechanism_dynamics->describe() + "; energy capacity " +
+                      fixed(a.mechanism_dynamics->capacity() / units::kN, 4) + " kJ/m.");
       Plot mr;
       mr.title = "Moment-rotation curve of the rocking body";
       mr.x_label = "theta (rad)";
@@ -379,6 +425,22 @@ std::string facade_html(const FacadeAssessment& a) {
       mr.series.push_back(s);
       h.add_svg(render_svg(mr), "Net restoring moment about the toe up to theta_u; the area under it is the energy "
                                 "capacity (seed §3.2, Fig. 3).", "fig-moment-rotation");
+      if (!a.code_floor_Se.empty()) {
+        Plot fp;
+        fp.title = "Floor motions at Z: 5 % spectrum vs the code's floor spectrum (SLV)";
+        fp.x_label = "T (s)";
+        fp.y_label = "Sa (g)";
+        PlotSeries fm = series("floor motions, mean", PlotSeries::Style::Line, a.periods);
+        for (double v : a.floor_mean_psa) fm.y.push_back(v / g);
+        fm.highlight = true;
+        PlotSeries cf = series("S_eZ [C7.2.6]", PlotSeries::Style::Dashed, a.periods);
+        for (double v : a.code_floor_Se) cf.y.push_back(v / g);
+        fp.series.push_back(fm);
+        fp.series.push_back(cf);
+        h.add_svg(render_svg(fp), "Mean 5 % spectrum of the floor motions (ground records filtered by the building's "
+                                  "first mode) and the code's floor spectrum of the same case [C7.2.6].",
+                  "fig-floor-spectra");
+      }
       std::vector<std::vector<std::string>> rrows;
       for (const RecordUsed& r : a.records)
         rrows.push_back({r.name, r.event, r.station, r.component, fixed(r.scale, 3), fixed(r.pga / g, 4)});
