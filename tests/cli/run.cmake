@@ -45,3 +45,7 @@ add_test(NAME cli.run_kinematic_only_html_browser
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.run_kinematic_only_html_browser PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77
   ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+# An explicit chain of three blocks (two columns and a beam) in `assess run`.
+assess_cli_test(run_explicit_chain_dynamic ARGS run tests/data/chains/rocking_frame.json
+  PASS "chain of 3 blocks.*q_u = 0.12435 rad.*\\(reversed\\)"
+  FAIL_REGEX "not applicable")

@@ -208,6 +208,28 @@ TEST_CASE("two-block chain with restitution 1: free motion conserves energy to 1
   CHECK_CLOSE(r.theta_max, q0, rel_tol(1e-9));  // every rebound returns to q0
 }
 
+TEST_CASE("two-block chain on the Winkler bed with restitution 1: energy with the bed's elastic work") {
+  // The bed's moment depends on q only, so 1/2 M q'^2 + work(q) is conserved
+  // (work = V(q) + the bed's work, both branches; ChainDynamics::work).
+  const ChainDynamics cd(flexure_chain(Flexure{}), Foundation::winkler(2e8));
+  REQUIRE(cd.q_cr() > 0.0);
+  RockingOptions o = tight();
+  o.record_history = true;
+  const double q0 = 0.4 * cd.q_u();
+  REQUIRE(q0 > 10 * cd.q_cr());  // the motion crosses both branches
+  const RockingResult r = analyse_chain(cd, GroundMotion::none(3.0), o, -1.0, {q0, 0.0});
+  REQUIRE(r.termination == RockingTermination::completed);
+  CHECK(r.impacts >= 4);
+  const double E0 = cd.work(q0);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < r.history.t.size(); ++i) {
+    const double q = r.history.theta[i], w = r.history.omega[i];
+    worst = std::max(worst, std::fabs(0.5 * cd.mass(q) * w * w + cd.work(q) - E0) / E0);
+  }
+  MESSAGE("Winkler: impacts " << r.impacts << ", max |E - E0|/E0 = " << worst);
+  CHECK(worst <= kEnergyTol);
+}
+
 namespace {
 
 // Independent model of the flexure chain: closed-form loop closure.
