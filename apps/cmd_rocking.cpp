@@ -210,7 +210,7 @@ void run_case(const CaseDynamicArgs& a) {
   const Record input = md.input(record);
   const RockingResult r = md.analyse(0, input, opt);
   const KinematicResult& k = gov.result;
-  const double d_control = md.control_displacement(k, r.theta_max);
+  const double d_control = md.control_displacement(k, r.theta_max_side * r.theta_max);
   const double d_star = d_control * k.d_star_per_dk;
 
   if (!a.history.empty()) {

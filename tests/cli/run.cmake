@@ -32,7 +32,7 @@ assess_cli_test(run_flexure_dynamic_json ARGS run mechanisms/vertical_flexure_dy
   PASS "\"d_control\".*\"d_star\".*\"impacts\".*\"overturned\".*\"theta_max\".*\"termination\".*\"kind\": \"chain\".*\"polarity\": \"both\"")
 assess_cli_test(run_upper_storey_dynamic ARGS run mechanisms/upper_storey_dynamic.json
   PASS "SLV  dynamic      height.*floor motions \\(first-mode filter\\)")
-assess_cli_error_test(run_chain_two_sided "/dynamic/sidedness: a chain of several blocks moves outward only"
+assess_cli_error_test(run_chain_two_sided "/dynamic/sidedness: \"two-sided\" needs a chain whose blocks and loads are mirror images"
   run tests/cli/run_bad/flexure_two_sided.json)
 assess_cli_error_test(run_chain_housner "/dynamic/restitution: missing: a chain of several blocks needs a given coefficient"
   run tests/cli/run_bad/flexure_no_restitution.json)

@@ -189,7 +189,7 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
     run.theta_ratio = run.result.theta_u > 0 ? run.result.theta_max / run.result.theta_u : 0.0;
     // Peak outward rotation moves the control point outward (one-sided:
     // theta >= 0); for two-sided, |theta| on either side (symmetric body).
-    run.d_control = md.control_displacement(kin, run.result.theta_max);
+    run.d_control = md.control_displacement(kin, run.result.theta_max_side * run.result.theta_max);
     run.d_star = run.d_control * kin.d_star_per_dk;
     run.collapse = run.result.overturned || run.d_control >= kin.dk0;
   });

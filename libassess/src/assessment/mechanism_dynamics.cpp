@@ -26,12 +26,12 @@ std::string fmt(const char* f, double v) {
 
 RockingResult MechanismDynamics::analyse(std::size_t ie, const Record& in, const RockingOptions& options) const {
   if (body) return assess::analyse(rocking.at(ie), in, options);
-  return analyse_chain(*chain, in, options, e.at(ie));
+  return analyse_chain(*chain, in, options, e.at(ie), sidedness);
 }
 
 double MechanismDynamics::control_displacement(const KinematicResult& kin, double q) const {
-  if (body) return std::fabs(body->horizontal_displacement(kin.control_point, q));
-  return chain->horizontal_displacement(kin.control_block, kin.control_point, q);
+  if (body) return std::fabs(body->horizontal_displacement(kin.control_point, std::fabs(q)));
+  return std::fabs(chain->horizontal_displacement(kin.control_block, kin.control_point, q));
 }
 
 double MechanismDynamics::q_u() const { return body ? rocking.front().theta_u(+1) : chain->q_u(); }
@@ -48,7 +48,8 @@ std::string MechanismDynamics::describe() const {
   if (body) {
     s = "one body rotating about its ground hinge (rocking model, seed Eq. 1)";
   } else {
-    s = "chain of " + std::to_string(chain->chain().blocks().size()) +
+    s = std::string(sidedness == Sidedness::two_sided ? "two-sided" : "one-sided") + " chain of " +
+        std::to_string(chain->chain().blocks().size()) +
         " blocks, one coordinate q = rotation of block '" + chain->chain().blocks()[std::size_t(chain->reference_block())].name +
         "' (Lagrange's equation, docs/theory/chain-dynamics.md), q_u = " + fmt("%.5f", chain->q_u()) + " rad";
   }
@@ -69,6 +70,7 @@ MechanismDynamics build_mechanism_dynamics(const CaseFile& kase, const Candidate
   const std::string& file = kase.file;
   m.Z = cand.Z;
   m.floor_input = d.floor_input;
+  m.sidedness = d.sidedness;
   if (m.Z > 0.0 && !d.floor_input) {
     if (!kase.building)
       throw InputError(file + ": /building: missing: the mechanism is at height (Z = " + fmt("%.2f", m.Z) +
@@ -108,25 +110,26 @@ MechanismDynamics build_mechanism_dynamics(const CaseFile& kase, const Candidate
     return m;
   }
 
-  // A multi-block chain: one-sided, given coefficients.
-  if (d.sidedness == Sidedness::two_sided)
-    throw InputError(file + ": /dynamic/sidedness: a chain of several blocks moves outward only (\"one-sided\"): "
-                     "its inward motion would open other hinges, a different mechanism");
+  // A multi-block chain: given coefficients; two-sided only if mirror-symmetric (checked below).
+  const bool two = d.sidedness == Sidedness::two_sided;
   if (!d.restitution_given)
     throw InputError(file + ": /dynamic/restitution: missing: a chain of several blocks needs a given coefficient "
-                     "in [-1, 0] (q'+ = e q'- at q = 0; 0 stops the chain); the laws \"housner\" and "
-                     "\"one-sided-theory\" are derived for one block");
+                     "(q'+ = e q'- at q = 0: in [-1, 0] one-sided, 0 stops the chain; in [0, 1] two-sided); the "
+                     "laws \"housner\" and \"one-sided-theory\" are derived for one block");
   for (std::size_t i = 0; i < d.restitutions.size(); ++i) {
     const Restitution& r = d.restitutions[i];
     const std::string path = file + ": /dynamic/restitution" + (d.restitutions.size() > 1 ? "/" + std::to_string(i) : "");
     if (r.kind != Restitution::Kind::value)
-      throw InputError(path + ": a chain of several blocks needs a given coefficient in [-1, 0] (q'+ = e q'-); \"" +
+      throw InputError(path + ": a chain of several blocks needs a given coefficient (q'+ = e q'-); \"" +
                        (r.kind == Restitution::Kind::housner ? "housner" : r.kind == Restitution::Kind::none ? "none"
                                                                                                    : "one-sided-theory") +
                        "\" is derived for one block");
-    if (!(r.e >= -1.0 && r.e <= 0.0))
+    if (!two && !(r.e >= -1.0 && r.e <= 0.0))
       throw InputError(path + ": expected a coefficient in [-1, 0] (-, one-sided rebound q'+ = e q'-), got " +
                        fmt("%g", r.e));
+    if (two && !(r.e >= 0.0 && r.e <= 1.0))
+      throw InputError(path + ": expected a coefficient in [0, 1] (-, two-sided: the chain goes through q = 0 with "
+                       "q'+ = e q'-), got " + fmt("%g", r.e));
     m.e.push_back(r.e);
   }
   if (d.options.overturn != OverturnCriterion::theta_u)
@@ -141,6 +144,11 @@ MechanismDynamics build_mechanism_dynamics(const CaseFile& kase, const Candidate
     m.note = msg;
     return m;
   }
+  if (two && !m.chain->symmetric())
+    throw InputError(file + ": /dynamic/sidedness: \"two-sided\" needs a chain whose blocks and loads are mirror "
+                     "images of themselves (the inward mechanism is then the mirror of the outward one); this "
+                     "chain is not symmetric: its inward motion would open other hinges, a different mechanism; "
+                     "use \"one-sided\"");
   m.length = chain.blocks()[std::size_t(m.chain->reference_block())].length;
   m.applies = true;
   return m;

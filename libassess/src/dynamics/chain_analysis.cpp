@@ -18,7 +18,7 @@
 namespace assess {
 namespace {
 
-enum class Ev { lift, impact, q_u, branch };
+enum class Ev { lift_out, lift_in, impact, q_u, branch };
 
 // Quintic Hermite on a step of length h from the values, first and second
 // derivatives at both ends; s in [0, 1].
@@ -40,8 +40,9 @@ struct Quintic {
 
 class ChainSystem final : public HybridSystem {
  public:
-  ChainSystem(const ChainDynamics& model, const GroundMotion& motion, const RockingOptions& opt, double e)
-      : model_(model), motion_(motion), opt_(opt), e_(e), smooth_(model.smooth()) {}
+  ChainSystem(const ChainDynamics& model, const GroundMotion& motion, const RockingOptions& opt, double e,
+              bool two_sided)
+      : model_(model), motion_(motion), opt_(opt), e_(e), smooth_(model.smooth()), two_sided_(two_sided) {}
 
   std::size_t dimension() const override { return 2; }
   bool rhs(double t, const double* y, int mode, double* dydt) const override {
@@ -50,49 +51,61 @@ class ChainSystem final : public HybridSystem {
       return true;
     }
     dydt[0] = y[1];
-    dydt[1] = model_.acceleration(y[0], y[1], mode == 2, motion_.acc(t));
+    dydt[1] = model_.acceleration(y[0], y[1], std::abs(mode) == 2, motion_.acc(t), mode > 0 ? 1 : -1);
     return std::isfinite(dydt[1]);
   }
-  std::size_t event_count(int mode) const override { return mode == 0 ? 1 : (smooth_ ? 3 : 2); }
+  std::size_t event_count(int mode) const override {
+    return mode == 0 ? (two_sided_ ? 2 : 1) : (smooth_ ? 3 : 2);
+  }
   EventDirection event_direction(std::size_t k, int mode) const override {
-    return kind(k, mode) == Ev::lift ? EventDirection::rising : EventDirection::falling;
+    const Ev e = kind(k, mode);
+    return e == Ev::lift_out || e == Ev::lift_in ? EventDirection::rising : EventDirection::falling;
   }
   double event(std::size_t k, double t, const double* y, int mode) const override {
+    const double s = mode >= 0 ? 1.0 : -1.0;
     switch (kind(k, mode)) {
-      case Ev::lift: return model_.rest_force(motion_.acc(t));
-      case Ev::impact: return y[0];
-      case Ev::q_u: return model_.q_u() - y[0];
-      case Ev::branch: return mode == 1 ? model_.q_cr() - y[0] : y[0] - model_.q_cr();
+      case Ev::lift_out: return model_.rest_force(motion_.acc(t), +1);
+      case Ev::lift_in: return model_.rest_force(motion_.acc(t), -1);
+      case Ev::impact: return s * y[0];
+      case Ev::q_u: return model_.q_u() - s * y[0];
+      case Ev::branch: return std::abs(mode) == 1 ? model_.q_cr() - s * y[0] : s * y[0] - model_.q_cr();
     }
     return 1.0;
   }
   EventAction on_event(std::size_t k, double t, double* y, int& mode) override {
+    const int side = mode >= 0 ? 1 : -1;
     switch (kind(k, mode)) {
-      case Ev::lift:
-        mode = 1;
+      case Ev::lift_out:
+      case Ev::lift_in:
+        mode = kind(k, mode) == Ev::lift_out ? 1 : -1;
         y[0] = y[1] = 0.0;
         break;
       case Ev::impact: {
         ++impacts_;
         y[0] = 0.0;
-        const double w = e_ * y[1];
+        const double w = e_ * y[1];  // q'+ = e q'- (one-sided e <= 0: rebound; two-sided e >= 0: goes through)
         if (std::fabs(w) < opt_.rest_velocity) {
-          if (model_.lifts(motion_.acc(t))) {
+          const double ug = motion_.acc(t);
+          if (model_.lifts(ug, +1)) {
             mode = 1, y[1] = w > 0.0 ? w : 0.0;
+          } else if (two_sided_ && model_.lifts(ug, -1)) {
+            mode = -1, y[1] = w < 0.0 ? w : 0.0;
           } else {
             mode = 0, y[1] = 0.0;
           }
+        } else if (two_sided_) {
+          y[1] = w, mode = w >= 0.0 ? 1 : -1;
         } else {
-          mode = 1, y[1] = std::fabs(w);
+          y[1] = std::fabs(w), mode = 1;
         }
         break;
       }
       case Ev::q_u:
-        ke_q_u_ = 0.5 * model_.mass(y[0]) * y[1] * y[1];
+        ke_q_u_ = 0.5 * model_.mass(std::fabs(y[0])) * y[1] * y[1];
         res_.overturned = true;
         res_.t_overturn = t;
         return EventAction::stop;
-      case Ev::branch: mode = mode == 1 ? 2 : 1; return EventAction::proceed;
+      case Ev::branch: mode = std::abs(mode) == 1 ? 2 * side : side; return EventAction::proceed;
     }
     push_history(t, y);
     return EventAction::proceed;
@@ -101,8 +114,8 @@ class ChainSystem final : public HybridSystem {
                int) override {
     peak(t0, y0[0]);
     peak(t1, y1[0]);
-    if (y0[1] > 0.0 && y1[1] < 0.0) {
-      // A maximum inside the step: the root of the slope of the quintic
+    if (y0[1] * y1[1] < 0.0) {
+      // An extremum inside the step: the root of the slope of the quintic
       // Hermite of q from (q, q', q'') at both ends (as the rocking analysis).
       const Quintic qp{y0[0], f0[0], f0[1], y1[0], f1[0], f1[1], t1 - t0};
       const double d0 = qp.slope(0.0), d1 = qp.slope(1.0);
@@ -130,18 +143,19 @@ class ChainSystem final : public HybridSystem {
 
  private:
   Ev kind(std::size_t k, int mode) const {
-    if (mode == 0) return Ev::lift;
+    if (mode == 0) return k == 0 ? Ev::lift_out : Ev::lift_in;
     return k == 0 ? Ev::impact : k == 1 ? Ev::q_u : Ev::branch;
   }
   void peak(double t, double q) {
-    if (q > res_.theta_max) res_.theta_max = q, res_.t_theta_max = t;
+    if (std::fabs(q) > res_.theta_max)
+      res_.theta_max = std::fabs(q), res_.t_theta_max = t, res_.theta_max_side = q >= 0.0 ? 1 : -1;
   }
 
   const ChainDynamics& model_;
   const GroundMotion& motion_;
   const RockingOptions& opt_;
   double e_;
-  bool smooth_;
+  bool smooth_, two_sided_;
   RockingResult res_;
   long impacts_ = 0;
   double ke_q_u_ = 0.0;
@@ -150,25 +164,36 @@ class ChainSystem final : public HybridSystem {
 }  // namespace
 
 RockingResult analyse_chain(const ChainDynamics& model, const GroundMotion& motion, const RockingOptions& options,
-                            double e, const RockingInitialState& initial) {
+                            double e, const RockingInitialState& initial, Sidedness sidedness) {
   options.validate();
-  if (!(std::isfinite(e) && e >= -1.0 && e <= 0.0))
-    throw InputError("chain restitution must be in [-1, 0] (q'+ = e q'-, one-sided rebound at q = 0), got " +
+  const bool two_sided = sidedness == Sidedness::two_sided;
+  if (two_sided && !model.symmetric())
+    throw InputError("two-sided motion of a chain needs blocks and loads that are mirror images of themselves "
+                     "(the inward mechanism is then the mirror of the outward one); this chain is not");
+  if (!two_sided && !(std::isfinite(e) && e >= -1.0 && e <= 0.0))
+    throw InputError("one-sided chain restitution must be in [-1, 0] (q'+ = e q'-, rebound at q = 0), got " +
+                     std::to_string(e));
+  if (two_sided && !(std::isfinite(e) && e >= 0.0 && e <= 1.0))
+    throw InputError("two-sided chain restitution must be in [0, 1] (q'+ = e q'-, the chain goes through q = 0), got " +
                      std::to_string(e));
   if (options.overturn != OverturnCriterion::theta_u)
     throw InputError("the overturning criterion of a chain is q_u, where its net restoring force vanishes "
                      "(\"overturn_at\": \"half_pi\" applies to one rocking block)");
-  if (!(std::isfinite(initial.theta) && std::isfinite(initial.omega)) || initial.theta < 0.0 ||
-      (initial.theta == 0.0 && initial.omega < 0.0))
-    throw InputError("a chain starts with q >= 0 (rad) moving outward (finite values)");
+  if (!(std::isfinite(initial.theta) && std::isfinite(initial.omega)) ||
+      (!two_sided && (initial.theta < 0.0 || (initial.theta == 0.0 && initial.omega < 0.0))))
+    throw InputError("a one-sided chain starts with q >= 0 (rad) moving outward (finite values)");
 
-  ChainSystem sys(model, motion, options, e);
+  ChainSystem sys(model, motion, options, e, two_sided);
   double y[2] = {initial.theta, initial.omega};
   int mode = 0;
-  if (initial.theta != 0.0 || initial.omega != 0.0)
-    mode = model.smooth() && initial.theta > model.q_cr() ? 2 : 1;
-  else if (model.lifts(motion.acc(0.0)))
+  if (initial.theta != 0.0 || initial.omega != 0.0) {
+    const int s = initial.theta != 0.0 ? (initial.theta > 0.0 ? 1 : -1) : (initial.omega > 0.0 ? 1 : -1);
+    mode = model.smooth() && std::fabs(initial.theta) > model.q_cr() ? 2 * s : s;
+  } else if (model.lifts(motion.acc(0.0), +1)) {
     mode = 1;
+  } else if (two_sided && model.lifts(motion.acc(0.0), -1)) {
+    mode = -1;
+  }
   sys.push_history(0.0, y);
 
   HybridOdeOptions hopt;
@@ -202,7 +227,6 @@ RockingResult analyse_chain(const ChainDynamics& model, const GroundMotion& moti
     case HybridTermination::event_limit: r.termination = RockingTermination::event_limit; break;
     case HybridTermination::integrator_error: r.termination = RockingTermination::integrator_error; break;
   }
-  r.theta_max_side = +1;
   r.theta_u = model.q_u();
   r.capacity = model.capacity();
   if (r.overturned) {
@@ -217,9 +241,10 @@ RockingResult analyse_chain(const ChainDynamics& model, const GroundMotion& moti
 }
 
 RockingResult analyse_chain(const ChainDynamics& model, const Record& record, const RockingOptions& options,
-                            double e) {
+                            double e, Sidedness sidedness) {
   options.validate();
-  return analyse_chain(model, GroundMotion::from_record(record, options.scale, options.reverse), options, e);
+  return analyse_chain(model, GroundMotion::from_record(record, options.scale, options.reverse), options, e, {},
+                       sidedness);
 }
 
 }  // namespace assess

@@ -104,6 +104,48 @@ void quintic(double h, double f0, double g0, double s0, double f1, double g1, do
   c[5] = a5 / (h * h * h * h * h);
 }
 
+// True if the polygons a and b are mirror images about x = xs (same vertices
+// up to order), to tol.
+bool mirrored_polygon(const std::vector<Eigen::Vector2d>& a, const std::vector<Eigen::Vector2d>& b, double xs,
+                      double tol) {
+  if (a.size() != b.size()) return false;
+  for (const auto& p : a) {
+    const Eigen::Vector2d m(2.0 * xs - p.x(), p.y());
+    bool found = false;
+    for (const auto& q : b) found = found || (q - m).norm() <= tol;
+    if (!found) return false;
+  }
+  return true;
+}
+
+// Blocks and loads invariant under the mirror x -> 2 xs - x (forces: Fx -> -Fx).
+bool mirror_symmetric(const Chain& ch, double xs) {
+  const double tol = 1e-9 * std::max(1.0, ch.size());
+  const auto& bl = ch.blocks();
+  for (std::size_t i = 0; i < bl.size(); ++i) {
+    bool found = false;
+    for (std::size_t j = 0; j < bl.size() && !found; ++j)
+      found = mirrored_polygon(bl[i].polygon, bl[j].polygon, xs, tol) && bl[i].unit_weight == bl[j].unit_weight &&
+              bl[i].length == bl[j].length;
+    if (!found) return false;
+  }
+  for (const Load& l : ch.loads()) {
+    if (l.type == LoadType::SelfWeight) continue;
+    const Eigen::Vector2d m(2.0 * xs - l.point.x(), l.point.y());
+    bool found = false;
+    for (const Load& k : ch.loads()) {
+      if (k.type != l.type || (k.point - m).norm() > tol) continue;
+      if (l.type == LoadType::Weight)
+        found = found || (k.weight == l.weight && k.vertical == l.vertical && k.seismic == l.seismic);
+      else
+        found = found || (std::fabs(k.force.x() + l.force.x()) <= 1e-12 * (1.0 + std::fabs(l.force.x())) &&
+                          std::fabs(k.force.y() - l.force.y()) <= 1e-12 * (1.0 + std::fabs(l.force.y())));
+    }
+    if (!found) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool ChainDynamics::solve(double q, const Eigen::VectorXd& guess, Eigen::VectorXd& Q) const {
@@ -227,6 +269,15 @@ ChainDynamics::ChainDynamics(const Chain& chain, Foundation foundation) : chain_
   const Eigen::Index n = Eigen::Index(chain_.n_coordinates());
   const Eigen::VectorXd Q0 = Eigen::VectorXd::Zero(n);
   const Eigen::VectorXd v = chain_.virtual_displacement(Q0);
+
+  // Mirror symmetry about the vertical axis through the middle of the chain's extent.
+  {
+    double lo = 1e300, hi = -1e300;
+    for (const Block& b : chain_.blocks())
+      for (const auto& p : b.polygon) lo = std::min(lo, p.x()), hi = std::max(hi, p.x());
+    x_axis_ = 0.5 * (lo + hi);
+    symmetric_ = mirror_symmetric(chain_, x_axis_);
+  }
 
   // Reference block: the first block on a ground hinge that rotates, else the largest rotation.
   ref_block_ = -1;
@@ -373,6 +424,14 @@ ChainState ChainDynamics::exact(double q) const {
 }
 
 double ChainDynamics::horizontal_displacement(int block, const Eigen::Vector2d& p0, double q) const {
+  if (q < 0.0) {
+    // Mirror image: the mirrored point of a mirrored block moves outward at |q|.
+    const Eigen::Vector2d m(2.0 * x_axis_ - p0.x(), p0.y());
+    const std::vector<int> bs = chain_.blocks_containing(m);
+    if (!symmetric_ || bs.empty())
+      throw InputError("dynamic analysis: inward motion (q < 0) of a chain that is not mirror-symmetric");
+    return -horizontal_displacement(bs.front(), m, -q);
+  }
   const ChainState s = exact(q);
   return chain_.position(block, p0, s.Q).x() - p0.x();
 }

@@ -100,9 +100,10 @@ std::string facade_text(const FacadeAssessment& a) {
                     m.peak_moment(+1) / units::kN, m.capacity() / units::kN);
       } else {
         const ChainDynamics& c = *md.chain;
-        o += format("model: %s chain, one-sided; M(0) = %.2f kg m2, B(0) = %.2f kg m, q_u = %.5f rad, energy "
+        o += format("model: %s chain, %s; M(0) = %.2f kg m2, B(0) = %.2f kg m, q_u = %.5f rad, energy "
                     "capacity %.4f kJ/m\n",
-                    a.dynamic->smooth ? "smooth (Winkler bed under the ground-hinge block)" : "rigid", c.mass(0.0),
+                    a.dynamic->smooth ? "smooth (Winkler bed under the ground-hinge block)" : "rigid",
+                    md.sidedness == Sidedness::two_sided ? "two-sided" : "one-sided", c.mass(0.0),
                     c.coupling(0.0), c.q_u(), md.capacity() / units::kN);
         if (a.dynamic->smooth)
           o += format("       k = %.4g kN/m3, N = %.3f kN, b = %.4f m, q_cr = %.3e rad\n", a.dynamic->k / units::kN,
@@ -200,7 +201,7 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
         const ChainDynamics& c = *md.chain;
         d["model"] = {{"type", a.dynamic->smooth ? "smooth" : "rigid"},
                       {"k_kN_m3", a.dynamic->smooth ? nlohmann::json(a.dynamic->k / units::kN) : nlohmann::json(nullptr)},
-                      {"sidedness", "one-sided"},
+                      {"sidedness", md.sidedness == Sidedness::two_sided ? "two-sided" : "one-sided"},
                       {"polarity", to_string(a.dynamic->polarity)},
                       {"chain_blocks", c.chain().blocks().size()},
                       {"M0_kg_m2", c.mass(0.0)}, {"B0_kg_m", c.coupling(0.0)},

@@ -30,6 +30,7 @@ struct MechanismDynamics {
   std::vector<RockingModel> rocking;              ///< one rotating body: a model per restitution value
   std::shared_ptr<const ChainDynamics> chain;     ///< otherwise: the chain model
   std::vector<double> e;                          ///< coefficient per restitution value (velocity ratio)
+  Sidedness sidedness = Sidedness::one_sided;     ///< chain: two-sided only if mirror-symmetric
   double length = 1.0;                            ///< out-of-plane length energies are divided by (m)
   double Z = 0.0;                                 ///< height of the mechanism's base (m)
   bool floor_input = false;                       ///< the records are floor motions as given
@@ -42,7 +43,8 @@ struct MechanismDynamics {
   Record input(const Record& record) const { return filter ? floor_motion(record, *filter) : record; }
   /// Analysis `ie` (restitution index) under an input motion (options.scale/reverse applied).
   RockingResult analyse(std::size_t ie, const Record& input, const RockingOptions& options) const;
-  /// Peak horizontal displacement (m) of the kinematic control point for a peak coordinate q (rad).
+  /// Peak horizontal displacement (m, magnitude) of the kinematic control point for a peak
+  /// coordinate q (rad; signed: q < 0 inward, two-sided).
   double control_displacement(const KinematicResult& kin, double q) const;
   /// Ultimate coordinate (rad) and energy capacity per unit length (J/m) of the outward side.
   double q_u() const;

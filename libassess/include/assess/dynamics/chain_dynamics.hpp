@@ -89,25 +89,37 @@ class ChainDynamics {
   double half_base() const { return b_; }
 
   /// Generalised acceleration q'' (rad/s^2) at (q, q') under ug (m/s^2,
-  /// positive outward); `partial` selects the Winkler branch.
-  double acceleration(double q, double qd, bool partial, double ug) const {
+  /// positive outward) on side `side` (+1 outward; -1 inward, two-sided
+  /// mirror-symmetric chains only: the mirror image, M(q) = M(-q), M', V', Mf
+  /// odd in q, B even; docs/theory/chain-dynamics.md §3); `partial` selects the
+  /// Winkler branch. The side comes from the integrator's mode, not from the
+  /// sign of q, so each side's equation extends smoothly across q = 0.
+  double acceleration(double q, double qd, bool partial, double ug, int side = +1) const {
+    const double s = side >= 0 ? 1.0 : -1.0, a = s * q;
     double t;
-    const double* c = &coefs_[locate(q, t) * 18];
+    const double* c = &coefs_[locate(a, t) * 18];
     const double M = c[0] + t * (c[1] + t * (c[2] + t * (c[3] + t * (c[4] + t * c[5]))));
     const double dM = c[1] + t * (2 * c[2] + t * (3 * c[3] + t * (4 * c[4] + t * 5 * c[5])));
     const double* v = c + 6;
     const double dV = v[0] + t * (v[1] + t * (v[2] + t * (v[3] + t * (v[4] + t * v[5]))));
     const double* b = c + 12;
     const double B = b[0] + t * (b[1] + t * (b[2] + t * (b[3] + t * (b[4] + t * b[5]))));
-    return (-0.5 * dM * qd * qd - dV - foundation_moment(q, partial) - ug * B) / M;
+    return (s * (-0.5 * dM * qd * qd - dV - foundation_moment(a, partial)) - ug * B) / M;
   }
   /// Net restoring force -(V' + Mf) at q (N m), restoring sense positive.
   double net_restoring(double q) const { return dpotential(q) + foundation_moment(q, q > q_cr_); }
 
-  /// Net generalised force at rest at q = 0 under ug (N m): -(V'(0) + Mf(0)) - ug B(0).
-  double rest_force(double ug) const { return -static0_ - ug * coefs_[12]; }
-  /// True if at rest at q = 0 the excitation ug drives the chain outward.
-  bool lifts(double ug) const { return rest_force(ug) > 0.0; }
+  /// Net generalised force at rest at q = 0 under ug (N m), towards side s
+  /// (+1 outward, -1 inward, mirror image): -(V'(0) + Mf(0)) - s ug B(0).
+  double rest_force(double ug, int side = +1) const { return -static0_ - (side >= 0 ? ug : -ug) * coefs_[12]; }
+  /// True if at rest at q = 0 the excitation ug drives the chain towards side s.
+  bool lifts(double ug, int side = +1) const { return rest_force(ug, side) > 0.0; }
+  /// True if the blocks and loads are mirror images of themselves about a
+  /// vertical axis: the inward mechanism is then the mirror image of the
+  /// outward one and the chain can rock on both sides.
+  bool symmetric() const { return symmetric_; }
+  /// The vertical axis x = x_s of the symmetry (m).
+  double symmetry_axis() const { return x_axis_; }
   /// Ultimate coordinate q_u (rad): where the net restoring force V' + Mf
   /// vanishes after its peak (the chain's theta_u; dk0 of the kinematic curve).
   double q_u() const { return q_u_; }
@@ -117,7 +129,8 @@ class ChainDynamics {
   /// Energy demand for a peak q (J), capped at q_u (seed §3.2 extended to chains).
   double energy_demand(double q) const { return work(std::min(std::max(q, 0.0), q_u_)); }
 
-  /// Horizontal displacement (m) of the material point p0 of `block` at q (exact).
+  /// Horizontal displacement (m) of the material point p0 of `block` at q (exact);
+  /// for q < 0 (symmetric chains) the mirror image of the mirrored point's at |q|.
   double horizontal_displacement(int block, const Eigen::Vector2d& p0, double q) const;
 
   /// Grid of the interpolation: nodes q_k = k h, k = 0..n.
@@ -159,6 +172,8 @@ class ChainDynamics {
   double N_ = 0.0, b_ = 0.0, L_ = 1.0, q_cr_ = 0.0, kb3L_ = 0.0, cpL_ = 0.0;
   double static0_ = 0.0;  // V'(0) + Mf(0), 0 when it is a rounding residue
   double q_u_ = 0.0;
+  bool symmetric_ = false;
+  double x_axis_ = 0.0;
 };
 
 }  // namespace assess
