@@ -49,3 +49,9 @@ assess_cli_test(verdict_rocking_two_columns_unit_only
   ARGS rocking --model smooth --k 1e6 --thickness 0.4 --height 4 --unit-weight 18 --one-sided --restitution -0.65
        --record tests/data/elcentro_plain_2col_cms2.txt --unit cm/s^2 --json
   PASS "\"dt\": 0\\.02.*\"format\": \"plain\"|\"format\": \"plain\".*\"dt\": 0\\.02")
+# Plain records in a case file: the same analyses as `assess rocking` on the same files.
+add_test(NAME cli.verdict_plain_case_vs_rocking
+  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:assess_cli> -DSRC=${PROJECT_SOURCE_DIR}
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/plain_case_vs_rocking.cmake)
+set_tests_properties(cli.verdict_plain_case_vs_rocking PROPERTIES LABELS cli
+  ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")

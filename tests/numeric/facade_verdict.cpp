@@ -36,6 +36,9 @@ namespace {
 // decimals (AT2 vs one column in g): identical; the two-column file in cm/s^2
 // was written with 10 significant digits: 1e-9 relative on the input.
 constexpr double tol_same_record = 1e-12;  // relative, theta_max (rad)
+// The case builds the body from the chain, assess rocking from (t, h, gamma):
+// round-off in W, R, alpha, I0 amplified by the impacts (9e-12 seen in the CLI test).
+constexpr double tol_same_model = 1e-9;  // relative, theta_max (rad)
 constexpr double tol_cm_record = 1e-6;     // relative, theta_max (rad): 1e-9 input rounding amplified by the event times
 // Mean and maximum over the analyses, recomputed from the runs: round-off.
 constexpr double tol_d = 1e-12;  // m
@@ -242,7 +245,7 @@ TEST_CASE("plain records in a case file: the same analysis as the AT2 file and a
                        Restitution::given(-0.65));
   const Record r = read_plain_record(root + "/tests/data/elcentro_plain_1col.txt", 0.02, AccelerationUnit::g);
   const double direct = analyse(m, r, RockingOptions{}).theta_max;
-  CHECK_CLOSE(one, direct, rel_tol(tol_same_record));
+  CHECK_CLOSE(one, direct, rel_tol(tol_same_model));
 }
 
 TEST_CASE("plain record errors name the JSON path") {

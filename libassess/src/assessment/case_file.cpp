@@ -476,17 +476,23 @@ KinematicCaseResult run_kinematic_case(const CaseFile& c) {
     out.candidates.push_back({m.label, m.parameter, c.Z.value_or(m.Z), analyse_kinematic(m.chain, c.options), {}, {}, 0.0});
   for (const CandidateResult& cr : out.candidates)
     if (!cr.result.activates) statically_unstable(c, cr);
-  for (const CandidateResult& cr : out.candidates)
-    if (cr.result.alpha0 > plausibility::alpha0_max) {
-      out.warnings.push_back(c.file + ": /mechanism: alpha0 = " + fmt("%.4g", cr.result.alpha0) +
-                             " (-) > 1" + (out.candidates.size() > 1 ? " for \"" + cr.label + "\"" : "") +
-                             ": the wall would need a horizontal force larger than its weight to start rocking; "
-                             "façades are usually in 0.02-0.5: check the thickness (m, not cm), ties and thrusts");
-      break;
-    }
+  // alpha0 > 1 of the governing candidate(s) (searched candidates far from
+  // the governing one have large alpha0 by construction).
+  auto warn_alpha0 = [&](std::size_t i) {
+    const CandidateResult& cr = out.candidates[i];
+    if (!(cr.result.alpha0 > plausibility::alpha0_max)) return;
+    out.warnings.push_back(c.file + ": /mechanism: alpha0 = " + fmt("%.4g", cr.result.alpha0) + " (-) > 1" +
+                           (out.candidates.size() > 1 ? " for the governing \"" + cr.label + "\"" : "") +
+                           ": a horizontal force larger than the weight is needed to start the mechanism; "
+                           "out-of-plane mechanisms are usually in 0.02-0.5 (a restrained wall under a heavy load "
+                           "can exceed 1): check the thickness (m, not cm), ties and thrusts");
+  };
   // Without a site: no checks; the governing candidate is the smallest alpha0.
   out.governing = governing_candidate(c.mechanism);
-  if (!c.site) return out;
+  if (!c.site) {
+    warn_alpha0(out.governing);
+    return out;
+  }
 
   const Site site(*c.site);
   CheckInput in = c.checks;
@@ -545,6 +551,7 @@ KinematicCaseResult run_kinematic_case(const CaseFile& c) {
   if (!in.codes.empty())
     out.governing = out.governing_by_code.count("NTC2018") ? out.governing_by_code["NTC2018"]
                                                            : out.governing_by_code[to_string(in.codes.front())];
+  warn_alpha0(out.governing);
   std::vector<CheckRow> all;
   for (const CandidateResult& cr : out.candidates) all.insert(all.end(), cr.checks.begin(), cr.checks.end());
   out.verdict = build_verdict(all);

@@ -327,9 +327,7 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
     row.candidate = gov.label;
     row.clause = "C8.7.1.2.1.9 [V-T], NTC 2018 §7.3.5, " + e_text + (md.single_body() ? "" : ", chain model") +
                  (md.filter ? ", floor motions (first-mode filter)" : md.floor_input ? ", floor motions given" : "");
-    row.formula = (s.rule == "mean" ? "mean of peak d* over " : s.rule == "most unfavourable" ? "largest peak d* of "
-                                                                                              : "largest peak d* of ") +
-                  nrec;
+    row.formula = (s.rule == "mean" ? "mean of peak d* over " : "largest peak d* of ") + nrec;
     int collapses = 0;
     for (const DynamicRun& r : a.runs) collapses += r.restitution == ie && r.collapse ? 1 : 0;
     row.note = std::string(s.any_collapse ? "d0 exceeded in " + std::to_string(collapses) + " of " +

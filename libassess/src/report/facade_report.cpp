@@ -171,6 +171,10 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
     j["site"] = s;
   }
   j["kinematic"] = kinematic_json(a.kase, a.kinematic);
+  // The run's summary (with the dynamic rows) is the top-level "comparison"
+  // and "overall"; the kinematic-only one would be a second, partial verdict.
+  j["kinematic"].erase("summary");
+  j["kinematic"].erase("warnings");
   nlohmann::json checks = nlohmann::json::array();
   for (const CheckRow& c : a.checks) checks.push_back(to_json(c));
   j["checks"] = checks;
