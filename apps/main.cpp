@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   assess::cli::add_case_dynamic_command(app);
   assess::cli::add_run_command(app);
   assess::cli::add_campaign_command(app);
+  assess::cli::add_records_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -108,17 +108,30 @@ std::string facade_text(const FacadeAssessment& a) {
                       a.code_floor_Se[j] > 0 ? a.floor_mean_psa[j] / a.code_floor_Se[j] : 0.0);
       }
       if (a.selection) {
-        o += format("records: %d selected from the catalogue, compatible with the SLV spectrum (5 %%) over "
-                    "%.2f-%.2f s: %s\n",
-                    int(a.records.size()), a.selection_range.T_min, a.selection_range.T_max,
-                    a.selection->message.c_str());
+        o += format("records: %d selected from the catalogue (%zu candidates after the filters, %zu within the "
+                    "per-record limits), compatible with the %s spectrum (5 %%) over %.2f-%.2f s (around the "
+                    "mechanism periods %.2f-%.2f s): %s\n",
+                    int(a.records.size()), a.selection_candidates, a.selection->eligible,
+                    a.selection_limit_state.c_str(), a.selection_range.T_min, a.selection_range.T_max,
+                    a.selection_T_first, a.selection_T_last, a.selection->message.c_str());
+        o += format("  limits: each scale <= %.2f, mean scale %.3f <= %.2f, largest scaled PGA %.3f g <= %.2f ag S "
+                    "= %.3f g\n",
+                    a.selection_max_scale, a.selection->mean_scale, a.selection_max_mean_scale, a.selection->max_scaled_pga / g, a.selection_max_pga_ratio,
+                    a.selection_max_pga_ratio * a.selection->target_pga / g);
+        for (const std::string& w : a.selection_warnings) o += "  warning: " + w + "\n";
       }
       if (a.compatibility.computed && !a.selection) o += "records listed in the case: " + a.compatibility.message + "\n";
       for (const std::string& f : a.record_failures) o += "  record skipped: " + f + "\n";
-      o += format("  %-34s %7s %9s  %-18s\n", "record", "scale", "PGA (g)", "event / station");
+      o += format("  %-26s %7s %8s %6s %4s %-9s %2s %7s %4s %8s  %s\n", "record", "scale", "PGA (g)", "dev",
+                  "rank", "Mw", "cl", "R (km)", "kind", "used (s)", "event / station, component (+ toward)");
       for (const RecordUsed& r : a.records)
-        o += format("  %-34s %7.3f %9.4f  %s / %s\n", r.name.c_str(), r.scale, r.pga / g, r.event.c_str(),
-                    r.station.c_str());
+        o += format("  %-26s %7.3f %8.4f %6.3f %4d %-9.2f %2s %7.1f %4s %8.1f  %s / %s, %s (+ %s)\n", r.name.c_str(),
+                    r.scale, r.pga / g, r.deviation, r.rank, r.Mw, r.site_class.c_str(), r.distance_km,
+                    r.distance_kind.c_str(), r.integrated_s, r.event.c_str(), r.station.c_str(),
+                    r.component.c_str(), r.positive_direction.c_str());
+      if (a.trimmed)
+        o += format("  each record integrated to 99.9 %% of its Arias intensity, then %.0f s of free rocking\n",
+                    a.free_tail_s);
       o += format("\n  %-34s %-18s %9s %7s %9s %8s %8s %10s  %s\n", "record", "restitution", "th/th_u", "impacts",
                   "overturn", "energy", "d* (m)", "t_end (s)", "termination");
       for (const DynamicRun& r : a.runs)
@@ -219,7 +232,13 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
       nlohmann::json recs = nlohmann::json::array();
       for (const RecordUsed& r : a.records)
         recs.push_back({{"name", r.name}, {"file", r.file}, {"event", r.event}, {"station", r.station},
-                        {"component", r.component}, {"scale", r.scale}, {"pga_g", r.pga / g}});
+                        {"component", r.component}, {"positive_direction", r.positive_direction},
+                        {"scale", r.scale}, {"pga_g", r.pga / g},
+                        {"Mw", std::isfinite(r.Mw) ? nlohmann::json(r.Mw) : nlohmann::json(nullptr)},
+                        {"distance_km", std::isfinite(r.distance_km) ? nlohmann::json(r.distance_km) : nlohmann::json(nullptr)},
+                        {"distance_kind", r.distance_kind}, {"site_class", r.site_class},
+                        {"deviation", std::isfinite(r.deviation) ? nlohmann::json(r.deviation) : nlohmann::json(nullptr)},
+                        {"rank", r.rank}, {"duration_s", r.duration_s}, {"integrated_s", r.integrated_s}});
       d["records"] = recs;
       d["record_failures"] = a.record_failures;
       if (a.compatibility.computed)
@@ -236,7 +255,28 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
                           {"min_ratio", a.selection->min_ratio},
                           {"max_ratio", a.selection->max_ratio},
                           {"band_satisfied", a.selection->band_satisfied},
-                          {"message", a.selection->message}};
+                          {"message", a.selection->message},
+                          {"limit_state", a.selection_limit_state},
+                          {"mechanism_periods_s", {a.selection_T_first, a.selection_T_last}},
+                          {"band", {1.0 - 0.10, 1.0 + 0.30}},
+                          {"candidates", a.selection_candidates},
+                          {"eligible", a.selection->eligible},
+                          {"combinations", a.selection->combinations},
+                          {"site_classes", a.selection_site_classes},
+                          {"warnings", a.selection_warnings},
+                          {"mean_scale", a.selection->mean_scale},
+                          {"max_scaled_pga_g", a.selection->max_scaled_pga / g},
+                          {"max_pga_ratio", a.selection_max_pga_ratio},
+                          {"target_pga_g", a.selection->target_pga / g},
+                          {"periods_s", a.selection->periods},
+                          {"target_m_s2", a.selection->target},
+                          {"mean_psa_m_s2", a.selection->mean_psa},
+                          {"record_psa_m_s2", [&] {
+                             nlohmann::json rp = nlohmann::json::array();
+                             for (const auto& sr : a.selection->records) rp.push_back(sr.psa);
+                             return rp;
+                           }()}};
+      d["trim"] = {{"trimmed", a.trimmed}, {"arias_fraction", 0.999}, {"free_tail_s", a.free_tail_s}};
       nlohmann::json runs = nlohmann::json::array();
       for (const DynamicRun& r : a.runs)
         runs.push_back({{"record", a.records[r.record].name},
@@ -362,8 +402,38 @@ std::string facade_html(const FacadeAssessment& a) {
       s.color = "#000000";
       p.series.push_back(s);
     }
+    std::string band_caption;
+    if (a.selection && !a.selection->periods.empty()) {
+      // Compatibility band of NTC 2018 §3.2.3.6 over the selection range, and the range itself.
+      const SelectionResult& sel = *a.selection;
+      for (double f : {0.9, 1.3}) {
+        PlotSeries s;
+        s.name = f < 1.0 ? "band -10 %/+30 % of Se " + a.selection_limit_state : "";
+        s.x = sel.periods;
+        for (double v : sel.target) s.y.push_back(f * v / g);
+        s.style = PlotSeries::Style::Dashed;
+        s.color = "#2ca02c";
+        p.series.push_back(s);
+      }
+      double top = 0.0;
+      for (const auto& [ls, se] : a.site_Se)
+        for (double v : se) top = std::max(top, v / g);
+      for (double T : {a.selection_range.T_min, a.selection_range.T_max}) {
+        PlotSeries s;
+        s.name = T == a.selection_range.T_min ? "period range of the selection" : "";
+        s.x = {T, T};
+        s.y = {0.0, top};
+        s.style = PlotSeries::Style::Dashed;
+        s.color = "#d62728";
+        p.series.push_back(s);
+      }
+      band_caption = format(" Green: the band 0.9-1.3 Se %s over the selection range %.2f-%.2f s (red), where the "
+                            "mean must stay (mean/Se in [%.3f, %.3f]).",
+                            a.selection_limit_state.c_str(), a.selection_range.T_min, a.selection_range.T_max,
+                            a.selection->min_ratio, a.selection->max_ratio);
+    }
     h.add_svg(render_svg(p), "The four limit-state elastic spectra (NTC 2018 [3.2.2], 5 %) with the scaled record "
-                             "spectra and their mean.", "fig-spectra");
+                             "spectra and their mean." + band_caption, "fig-spectra");
   }
 
   // 2. Kinematic.
