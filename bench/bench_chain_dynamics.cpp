@@ -1,4 +1,4 @@
-// bench_chain.cpp: a two-block chain (vertical flexure, 0.3 m x 6 m, middle
+// bench_chain_dynamics.cpp: a two-block chain (vertical flexure, 0.3 m x 6 m, middle
 // hinge at 4.77 m, top load 5 kN, rigid, e = -0.5) against a single block
 // (façade 0.45 m x 3.5 m on its outer toe, rigid, e = -0.5, the rocking model)
 // under the same 39.3 s record (Sturno E-W, RSN292_ITALY_A-STU270.AT2, scaled
@@ -6,7 +6,7 @@
 // overturning, q_max/q_u 0.26 and 0.39). Prints ms per analysis (best of N),
 // steps, rhs evaluations, impacts and the ratio chain/single (target <= 3).
 // Also: the single block by the chain path (identity) and the set-up time of
-// the chain model (grid). Usage: bench_chain [repeats] [chain scale] [block scale]
+// the chain model (grid). Usage: bench_chain_dynamics [repeats] [chain scale] [block scale]
 #include <assess/dynamics/chain_analysis.hpp>
 #include <assess/dynamics/rocking_from_chain.hpp>
 #include <assess/hazard/hazard.hpp>
@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
   const double t_chain = best_ms(repeats, [&] { rc = analyse_chain(*cd, rec, oc, -0.5); });
   const double t_block = best_ms(repeats, [&] { rb = analyse(rm, rec, ob); });
   const double t_block_chain = best_ms(repeats, [&] { rbc = analyse_chain(cb, rec, ob, -0.5); });
-  std::printf("bench_chain: record %s (%zu points, dt = %g s, %.1f s) x %g (chain), x %g (block), rigid, "
+  std::printf("bench_chain_dynamics: record %s (%zu points, dt = %g s, %.1f s) x %g (chain), x %g (block), rigid, "
               "one-sided, e = -0.5\n",
               rec.name.c_str(), rec.size(), rec.dt, rec.duration(), oc.scale, ob.scale);
   std::printf("two-block chain (vertical flexure): %.3f ms (best of %d), %ld steps, %ld rhs, %ld impacts, "
