@@ -3,6 +3,8 @@
 // recorded accelerogram. Parses, calls the library, prints.
 #include "commands.hpp"
 
+#include <assess/assessment/case_file.hpp>
+#include <assess/assessment/mechanism_dynamics.hpp>
 #include <assess/support/error.hpp>
 #include <assess/records/record_io.hpp>
 #include <assess/dynamics/analysis_limits.hpp>
@@ -187,7 +189,146 @@ void run(const RockingArgs& a) {
               r.rhs_evaluations);
 }
 
+// `assess dynamic CASE --record FILE`: the governing mechanism of a case file
+// (any 1-DOF chain, at ground level or at height) under one record.
+struct CaseDynamicArgs {
+  std::string file, record, unit, history, model, restitution, stepper = "rk8pd";
+  double dt = std::nan(""), scale = 1.0, k_kN = std::nan(""), tail = 0.0;
+  double rtol = RockingOptions{}.rel_tol, atol = RockingOptions{}.abs_tol;
+  bool reverse = false, json = false, floor = false;
+};
+
+void run_case(const CaseDynamicArgs& a) {
+  const CaseFile kase = read_case_file(a.file);
+  const KinematicCaseResult kin = run_kinematic_case(kase);
+  const CandidateResult& gov = kin.candidates[kin.governing];
+  const Chain& chain = kase.mechanism.candidates[kin.governing].chain;
+  DynamicSpec spec;
+  spec.smooth = false;
+  if (!kase.dynamic.is_null()) {
+    nlohmann::json d = kase.dynamic;
+    if (!d.contains("records") && !d.contains("select"))  // the record comes from --record
+      d["records"] = nlohmann::json::array({nlohmann::json{{"file", "(--record)"}}});
+    spec = parse_dynamic(d, kase.file, ".");
+  }
+  if (!a.model.empty()) {
+    if (a.model != "smooth" && a.model != "rigid") throw InputError("--model must be 'smooth' or 'rigid'");
+    spec.smooth = a.model == "smooth";
+  }
+  if (!std::isnan(a.k_kN)) {
+    if (!(a.k_kN > 0.0 && std::isfinite(a.k_kN))) throw InputError("--k must be a positive number (kN/m^3)");
+    spec.k = a.k_kN * units::kN;
+  }
+  if (spec.smooth && !(spec.k > 0.0))
+    throw InputError("--k (Winkler modulus, kN/m^3) is required for the smooth model (or give /dynamic/k in the case)");
+  if (!a.restitution.empty()) {
+    spec.restitutions = {parse_restitution(a.restitution, spec.sidedness == Sidedness::one_sided)};
+    spec.restitution_given = true;
+  } else if (spec.restitutions.empty()) {
+    spec.restitutions = {spec.sidedness == Sidedness::one_sided ? Restitution::one_sided_theory() : Restitution::housner()};
+  }
+  if (a.floor) spec.floor_input = true;
+  const MechanismDynamics md = build_mechanism_dynamics(kase, gov, chain, spec);
+  if (!md.applies) throw InputError(a.file + ": the dynamic model does not apply: " + md.note);
+
+  if (std::isnan(a.dt) && !a.unit.empty())
+    throw InputError("--unit applies only to a plain record file, given with --dt");
+  const Record record = std::isnan(a.dt) ? read_record(a.record)
+                                         : read_plain_record(a.record, a.dt, parse_acceleration_unit(a.unit.empty() ? "g" : a.unit));
+  RockingOptions opt = spec.options;
+  opt.scale = a.scale;
+  opt.reverse = a.reverse;
+  opt.tail_s = a.tail;
+  opt.rel_tol = a.rtol;
+  opt.abs_tol = a.atol;
+  const auto stepper = parse_stepper(a.stepper);
+  if (!stepper) throw InputError("--stepper must be rk8pd, rkck or rkf45");
+  opt.stepper = *stepper;
+  opt.record_history = !a.history.empty();
+  const Record input = md.input(record);
+  const RockingResult r = md.analyse(0, input, opt);
+  const KinematicResult& k = gov.result;
+  const double d_control = md.control_displacement(k, r.theta_max_side * r.theta_max);
+  const double d_star = d_control * k.d_star_per_dk;
+
+  if (!a.history.empty()) {
+    std::ofstream out(a.history);
+    if (!out) throw InputError("cannot write the history file '" + a.history + "'");
+    out << "t_s,q_rad,qdot_rad_s\n";
+    char line[96];
+    for (std::size_t i = 0; i < r.history.t.size(); ++i) {
+      std::snprintf(line, sizeof line, "%.9g,%.9g,%.9g\n", r.history.t[i], r.history.theta[i], r.history.omega[i]);
+      out << line;
+    }
+  }
+  if (a.json) {
+    nlohmann::json j;
+    j["case_file"] = a.file;
+    j["mechanism"] = gov.label;
+    j["model"] = md.describe();
+    j["Z"] = md.Z;
+    j["theta_max"] = r.theta_max;
+    j["t_theta_max"] = r.t_theta_max;
+    j["theta_u"] = r.theta_u;
+    j["d_control"] = d_control;
+    j["d_star"] = d_star;
+    j["dk0"] = k.dk0;
+    j["d_SLV"] = k.d_SLV;
+    j["overturned"] = r.overturned;
+    j["impacts"] = r.impacts;
+    j["restitution"] = md.e.front();
+    j["dc"] = r.dc;
+    j["termination"] = to_string(r.termination);
+    j["steps"] = r.steps;
+    j["record"] = {{"name", record.name}, {"npts", record.size()}, {"dt", record.dt},
+                   {"pga_g", record.pga() / units::g_n}, {"scale", a.scale}, {"reverse", a.reverse},
+                   {"input_pga_g", input.pga() * a.scale / units::g_n}};
+    std::cout << j.dump(2) << "\n";
+    return;
+  }
+  std::printf("dynamic analysis of %s: %s\n", a.file.c_str(), gov.label.c_str());
+  std::printf("  model          : %s\n", md.describe().c_str());
+  std::printf("  record         : %s (%zu points, dt = %g s, PGA = %.4f g) x %g%s; at the base PGA = %.4f g\n",
+              record.name.c_str(), record.size(), record.dt, record.pga() / units::g_n, a.scale,
+              a.reverse ? ", reversed" : "", input.pga() * a.scale / units::g_n);
+  std::printf("  restitution    = %.6f\n", md.e.front());
+  std::printf("  theta_max      = %.6g rad at t = %.4f s (q_u = %.6f rad, ratio %.4f)\n", r.theta_max, r.t_theta_max,
+              r.theta_u, r.theta_max / r.theta_u);
+  std::printf("  d_control      = %.6g m (dk0 = %.6g m), d* = %.6g m (d_SLV = %.6g m)\n", d_control, k.dk0, d_star,
+              k.d_SLV);
+  std::printf("  impacts        = %ld\n", r.impacts);
+  std::printf("  overturned     = %s\n", r.overturned ? "yes" : "no");
+  std::printf("  energy D/C     = %.4f\n", r.dc);
+  std::printf("  termination    = %s (%ld steps)\n", to_string(r.termination), r.steps);
+}
+
 }  // namespace
+
+void add_case_dynamic_command(CLI::App& app) {
+  auto a = std::make_shared<CaseDynamicArgs>();
+  auto* cmd = app.add_subcommand("dynamic",
+                                 "Non-linear dynamics of a case file's mechanism (any 1-DOF chain, at ground level or "
+                                 "at height) under one record");
+  cmd->add_option("case", a->file, "case file (JSON, see docs/user/case-file.md)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--record", a->record, "accelerogram file (PEER AT2, ESM/ITACA ASCII, .cor.acc; plain with --dt)")
+      ->required();
+  cmd->add_option("--dt", a->dt, "time step of a plain record file (s)");
+  cmd->add_option("--unit", a->unit, "unit of a plain record file: g, m/s^2, cm/s^2 (default g)");
+  cmd->add_option("--scale", a->scale, "factor on the record (default 1)");
+  cmd->add_flag("--reverse", a->reverse, "flip the record's polarity");
+  cmd->add_flag("--floor-record", a->floor, "the record is the floor motion at the mechanism's base (not filtered)");
+  cmd->add_option("--model", a->model, "smooth or rigid (default: the case's /dynamic/model, else rigid)");
+  cmd->add_option("--k", a->k_kN, "Winkler modulus (kN/m^3), smooth model");
+  cmd->add_option("--restitution", a->restitution,
+                  "VALUE (chains: in [-1, 0]) | housner | one-sided-theory | none (one block)");
+  cmd->add_option("--history", a->history, "write t, q, q' to this CSV file");
+  cmd->add_flag("--json", a->json, "print the results as one JSON object");
+  cmd->add_option("--stepper", a->stepper, "rk8pd (default), rkck or rkf45");
+  cmd->add_option("--rtol", a->rtol, "relative tolerance per step (default 1e-7)");
+  cmd->add_option("--atol", a->atol, "absolute tolerance per step, rad and rad/s (default 1e-9)");
+  cmd->add_option("--tail", a->tail, "free motion after the record (s, default 0)");
+  cmd->callback([a] { run_case(*a); });
+}
 
 void add_rocking_command(CLI::App& app) {
   auto args = std::make_shared<RockingArgs>();

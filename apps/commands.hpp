@@ -14,6 +14,7 @@ namespace assess::cli {
 void add_spectrum_command(CLI::App& app);   // cmd_spectrum.cpp
 void add_kinematic_command(CLI::App& app);  // cmd_kinematic.cpp
 void add_rocking_command(CLI::App& app);    // cmd_rocking.cpp
+void add_case_dynamic_command(CLI::App& app);  // cmd_rocking.cpp: `assess dynamic CASE --record FILE`
 void add_run_command(CLI::App& app);        // cmd_run.cpp
 void add_campaign_command(CLI::App& app);   // cmd_campaign.cpp
 void add_records_command(CLI::App& app);    // cmd_records.cpp

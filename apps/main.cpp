@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   assess::cli::add_spectrum_command(app);
   assess::cli::add_kinematic_command(app);
   assess::cli::add_rocking_command(app);
+  assess::cli::add_case_dynamic_command(app);
   assess::cli::add_run_command(app);
   assess::cli::add_campaign_command(app);
   assess::cli::add_records_command(app);

@@ -62,3 +62,15 @@ assess_cli_error_test(rocking_err_no_k "--k \\(Winkler modulus, kN/m\\^3\\) is r
   rocking --model smooth ${_rk_block} --record ${_rk_stu})
 assess_cli_error_test(rocking_err_unit_without_dt "--unit applies only to a plain record file"
   rocking --model rigid ${_rk_block} --record ${_rk_stu} --unit cm/s^2)
+
+# `assess dynamic CASE --record FILE`: a case file's mechanism (issue 13).
+assess_cli_test(dynamic_flexure_json
+  ARGS dynamic mechanisms/vertical_flexure_dynamic.json --record spectra/records/RSN292_ITALY_A-STU270.AT2 --reverse --restitution -0.5 --json
+  PASS "\"d_control\": 0\\.0917.*\"d_star\": 0\\.110.*\"impacts\": 64,.*\"overturned\": false.*\"termination\": \"completed\".*\"theta_u\": 0\\.04169")
+assess_cli_test(dynamic_history
+  ARGS dynamic mechanisms/upper_storey_dynamic.json --record spectra/records/RSN285_ITALY_A-BAG000.AT2 --history ${CMAKE_CURRENT_BINARY_DIR}/dynamic_history.csv
+  PASS "base at Z = 4.00 m.*theta_max .*d_control")
+assess_cli_error_test(dynamic_chain_housner "a chain of several blocks needs a given coefficient.*housner"
+  dynamic mechanisms/vertical_flexure_dynamic.json --record spectra/records/RSN292_ITALY_A-STU270.AT2 --restitution housner)
+assess_cli_error_test(dynamic_smooth_no_k "--k \\(Winkler modulus, kN/m\\^3\\) is required"
+  dynamic mechanisms/vertical_flexure_dynamic.json --record spectra/records/RSN292_ITALY_A-STU270.AT2 --model smooth)

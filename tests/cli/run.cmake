@@ -21,10 +21,21 @@ add_test(NAME cli.run_church_html_browser
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.run_church_html_browser PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77
   ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+# Issue 13: the dynamic analysis applies at height (floor motions) and to multi-block chains.
 assess_cli_test(run_dynamic_at_height ARGS run tests/cli/run_bad/gable_dynamic.json
-  PASS "not applicable: the governing mechanism is at height")
+  PASS "SLV  dynamic      height.*base at Z = 7.00 m, floor motions a_Z.*gamma psi = 1.2000.*floor motions, 5 % spectrum"
+  FAIL_REGEX "not applicable")
 assess_cli_test(run_dynamic_multi_block ARGS run tests/cli/run_bad/flexure_dynamic.json
-  PASS "not applicable: .*multi-block chains")
+  PASS "chain of 2 blocks.*q_u = 0.09827 rad"
+  FAIL_REGEX "not applicable")
+assess_cli_test(run_flexure_dynamic_json ARGS run mechanisms/vertical_flexure_dynamic.json --json
+  PASS "\"d_control\".*\"d_star\".*\"impacts\".*\"overturned\".*\"theta_max\".*\"termination\".*\"kind\": \"chain\".*\"polarity\": \"both\"")
+assess_cli_test(run_upper_storey_dynamic ARGS run mechanisms/upper_storey_dynamic.json
+  PASS "SLV  dynamic      height.*floor motions \\(first-mode filter\\)")
+assess_cli_error_test(run_chain_two_sided "/dynamic/sidedness: \"two-sided\" needs a chain whose blocks and loads are mirror images"
+  run tests/cli/run_bad/flexure_two_sided.json)
+assess_cli_error_test(run_chain_housner "/dynamic/restitution: missing: a chain of several blocks needs a given coefficient"
+  run tests/cli/run_bad/flexure_no_restitution.json)
 
 # A case without a dynamic section: the report still loads, with its 4 figures
 # (spectra, mechanism drawing, ADRS plot, D/C bars) and its verdict box.
@@ -34,3 +45,7 @@ add_test(NAME cli.run_kinematic_only_html_browser
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.run_kinematic_only_html_browser PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77
   ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+# An explicit chain of three blocks (two columns and a beam) in `assess run`.
+assess_cli_test(run_explicit_chain_dynamic ARGS run tests/data/chains/rocking_frame.json
+  PASS "chain of 3 blocks.*q_u = 0.12435 rad.*\\(reversed\\)"
+  FAIL_REGEX "not applicable")

@@ -76,7 +76,7 @@ DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, co
   const JsonNode d(doc, file, "/dynamic");
   if (!d.is_object()) d.fail("expected an object");
   d.allow_only({"model", "k", "sidedness", "restitution", "polarity", "overturn_at", "records", "select",
-                "tail_s", "integrator", "whole_record", "free_tail_s"});
+                "tail_s", "integrator", "whole_record", "free_tail_s", "input", "floor_filter"});
   DynamicSpec s;
   s.smooth = d.has("model") ? d.choice("model", {"smooth", "rigid"}) == "smooth" : true;
   if (s.smooth) {
@@ -90,6 +90,7 @@ DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, co
   s.sidedness = d.has("sidedness") && d.choice("sidedness", {"one-sided", "two-sided"}) == "two-sided"
                     ? Sidedness::two_sided
                     : Sidedness::one_sided;
+  s.restitution_given = d.has("restitution");
   if (d.has("restitution")) {
     const JsonNode r = d.at("restitution");
     if (r.value().is_array()) {
@@ -120,6 +121,18 @@ DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, co
     s.options.rel_tol = in->number_or("rel_tol", s.options.rel_tol, "(-)", limits::rel_tol_min, limits::rel_tol_max);
     s.options.abs_tol = in->number_or("abs_tol", s.options.abs_tol, "rad", limits::abs_tol_min, limits::abs_tol_max);
   }
+  if (d.has("input")) s.floor_input = d.choice("input", {"ground", "floor"}) == "floor";
+  if (auto ff = d.find("floor_filter")) {
+    if (s.floor_input)
+      ff->fail("the records are floor motions (\"input\": \"floor\"): they are not filtered; remove \"floor_filter\"");
+    ff->allow_only({"T1_s", "damping_pct"});
+    if (ff->has("T1_s")) s.filter_T1 = ff->number("T1_s", "s (first-mode period of the building)", 0.01, 10.0);
+    if (ff->has("damping_pct"))
+      s.filter_damping_pct = ff->number("damping_pct", "% (first-mode damping of the building)", 0.0, 99.0);
+  }
+  if (s.floor_input && d.has("select"))
+    d.at("select").fail("floor motions (\"input\": \"floor\") must be listed in \"records\": the catalogue "
+                        "selection matches ground motions to the site spectrum");
   if (d.has("records") == d.has("select"))
     d.fail("give either \"records\" (a list of {\"file\", \"scale\"}) or \"select\" ({\"count\": N}), not both "
            "and not neither");

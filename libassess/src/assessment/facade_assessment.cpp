@@ -31,12 +31,6 @@ namespace assess {
 
 namespace {
 
-std::string format_m(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", v);
-  return buf;
-}
-
 std::string directory_of(const std::string& path) {
   const auto p = path.find_last_of('/');
   return p == std::string::npos ? "." : path.substr(0, p);
@@ -225,16 +219,9 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   if (!a.actions.count(LimitState::SLV))
     throw InputError(kase.file + ": /site/hazard: the dynamic analysis needs the SLV hazard (records are "
                      "compared with the SLV spectrum)");
-  try {
-    a.body = rocking_body_from_chain(chain);
-  } catch (const InputError& e) {
-    a.dynamic_note = e.what();
-    return a;
-  }
-  if (gov.Z > 0.0) {
-    a.dynamic_note = "the governing mechanism is at height (Z = " + format_m(gov.Z) +
-                     " m): the records are ground motions and floor accelerograms are not implemented, so the "
-                     "dynamic analysis does not apply yet";
+  MechanismDynamics md = build_mechanism_dynamics(kase, gov, chain, d);
+  if (!md.applies) {
+    a.dynamic_note = md.note;
     return a;
   }
   if (d.smooth && !(d.k / units::kN >= plausibility::k_min_kN_m3 && d.k / units::kN <= plausibility::k_max_kN_m3))
@@ -244,18 +231,13 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
                          " kN/m^3: the seed paper (Fig. 2) uses 5e4-1e7 kN/m^3; below 1e4 a wall has hardly any "
                          "restoring branch, above 1e8 the smooth block is the rigid one (\"model\": \"rigid\"); "
                          "was it typed in N/m^3?");
-  const Foundation found = d.smooth ? Foundation::winkler(d.k) : Foundation::rigid();
-  std::vector<RockingModel> models;
-  for (std::size_t i = 0; i < d.restitutions.size(); ++i) {
-    try {
-      models.emplace_back(a.body->body, found, d.sidedness, d.restitutions[i]);
-    } catch (const InputError& e) {
-      throw InputError(kase.file + ": /dynamic/restitution/" + std::to_string(i) + ": " + e.what());
-    }
-  }
-  a.model = models.front();
   a.dynamic_applies = true;
-
+  if (md.single_body()) {
+    a.body = md.body;
+    a.model = md.rocking.front();
+  }
+  a.dynamic_note = md.describe();
+  a.mechanism_dynamics = md;
   const ElasticSpectrum& target = a.spectra.at(LimitState::SLV);
   std::vector<Record> recs;
   load_records(a, d, opt, target, gov.result, recs);
@@ -277,23 +259,40 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   });
   for (const auto& psa : a.record_psa)
     for (std::size_t j = 0; j < psa.size(); ++j) a.mean_psa[j] += psa[j] / double(recs.size());
-  const double th_u = a.model->theta_u(+1);
+  const double th_u = md.q_u();
   constexpr int n_mr = 200;
   for (int i = 0; i <= n_mr; ++i) {
     const double th = th_u * i / n_mr;
     a.mr_theta.push_back(th);
-    a.mr_moment.push_back(a.model->restoring_moment(th) - a.body->body.M_ext);
+    a.mr_moment.push_back(md.restoring(th));
+  }
+  // The motion at the mechanism's base: floor motions at height (first-mode filter).
+  std::vector<Record> inputs;
+  for (const Record& r : recs) inputs.push_back(md.input(r));
+  if (md.filter && kase.building) {
+    a.floor_mean_psa.assign(a.periods.size(), 0.0);
+    std::vector<std::vector<double>> psa(inputs.size());
+    detail::parallel_for(inputs.size(), [&](std::size_t ir) { psa[ir] = response_spectrum(inputs[ir], a.periods).psa(); });
+    for (std::size_t ir = 0; ir < inputs.size(); ++ir)
+      for (std::size_t j = 0; j < a.periods.size(); ++j)
+        a.floor_mean_psa[j] += psa[ir][j] * a.records[ir].scale / double(inputs.size());
+    BuildingModel bm = *kase.building;
+    bm.T1 = md.filter->T1;
+    bm.damping_pct = md.filter_damping_pct;
+    const FloorSpectrum fs(a.actions.at(LimitState::SLV).hazard, kase.site->conditions, bm, std::min(md.Z, bm.H), 5.0);
+    for (double T : a.periods) a.code_floor_Se.push_back(fs.Se(T));
   }
 
   // Long tails (docs/theory/record-selection.md §4): integrate to the end of
   // the strong motion (99.9 % Arias) and let the wall rock freely for
-  // free_tail_s; the whole record on request.
+  // free_tail_s; the whole record on request. The trim applies to the motion
+  // at the mechanism's base (the floor motion at height).
   a.trimmed = d.trim;
   a.free_tail_s = d.trim ? std::max(d.free_tail_s, d.options.tail_s) : d.options.tail_s;
   std::vector<Record> run_recs;
   for (std::size_t ir = 0; ir < recs.size(); ++ir) {
     a.records[ir].duration_s = recs[ir].duration();
-    run_recs.push_back(d.trim ? strong_motion_part(recs[ir]) : recs[ir]);
+    run_recs.push_back(d.trim ? strong_motion_part(inputs[ir]) : inputs[ir]);
     a.records[ir].integrated_s = run_recs.back().duration();
   }
 
@@ -303,14 +302,14 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   if (d.polarity != Polarity::reversed) polarities.push_back(false);
   if (d.polarity != Polarity::normal) polarities.push_back(true);
   // Every (restitution, record, polarity) analysis, in this order, on all cores.
-  for (std::size_t ie = 0; ie < models.size(); ++ie)
+  for (std::size_t ie = 0; ie < md.e.size(); ++ie)
     for (std::size_t ir = 0; ir < recs.size(); ++ir)
       for (bool rev : polarities) {
         DynamicRun run;
         run.record = ir;
         run.reversed = rev;
         run.restitution = ie;
-        run.e = models[ie].restitution();
+        run.e = md.e[ie];
         a.runs.push_back(std::move(run));
       }
   detail::parallel_for(a.runs.size(), [&](std::size_t i) {
@@ -320,19 +319,19 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
     ro.scale = a.records[run.record].scale;
     ro.reverse = run.reversed;
     ro.tail_s = a.free_tail_s;
-    run.result = analyse(models[run.restitution], run_recs[run.record], ro);
+    run.result = md.analyse(run.restitution, run_recs[run.record], ro);
     run.theta_ratio = run.result.theta_u > 0 ? run.result.theta_max / run.result.theta_u : 0.0;
     // Peak outward rotation moves the control point outward (one-sided:
     // theta >= 0); for two-sided, |theta| on either side (symmetric body).
-    run.d_control = std::fabs(a.body->horizontal_displacement(kin.control_point, run.result.theta_max));
+    run.d_control = md.control_displacement(kin, run.result.theta_max_side * run.result.theta_max);
     run.d_star = run.d_control * kin.d_star_per_dk;
     run.collapse = run.result.overturned || run.d_control >= kin.dk0;
   });
   // Summaries per restitution value.
-  for (std::size_t ie = 0; ie < models.size(); ++ie) {
+  for (std::size_t ie = 0; ie < md.e.size(); ++ie) {
     RestitutionSummary s;
     s.restitution = ie;
-    s.e = models[ie].restitution();
+    s.e = md.e[ie];
     s.min_dc = 1e300;
     std::map<std::size_t, double> envelope;  // record -> peak d* over polarities
     for (const DynamicRun& r : a.runs) {
@@ -389,9 +388,10 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
     row.code = "NTC2018";
     row.limit_state = "SLV";
     row.kind = "dynamic";
-    row.location = "ground";
+    row.location = md.Z > 0.0 ? "height" : "ground";
     row.candidate = gov.label;
-    row.clause = "C8.7.1.2.1.9 [V-T], NTC 2018 §7.3.5, " + e_text;
+    row.clause = "C8.7.1.2.1.9 [V-T], NTC 2018 §7.3.5, " + e_text + (md.single_body() ? "" : ", chain model") +
+                 (md.filter ? ", floor motions (first-mode filter)" : md.floor_input ? ", floor motions given" : "");
     row.formula = (s.rule == "mean" ? "mean of peak d* over " : "largest peak d* of ") + nrec;
     int collapses = 0;
     for (const DynamicRun& r : a.runs) collapses += r.restitution == ie && r.collapse ? 1 : 0;

@@ -52,8 +52,8 @@ ChainRockingBody rocking_body_from_chain(const Chain& chain) {
   if (ground_hinges != 1 || !moves_as_one_body(chain, hinge->point))
     throw InputError("dynamic analysis: the mechanism (" + std::to_string(chain.blocks().size()) +
                      " blocks) does not rotate as one body about a single ground hinge; the rocking model "
-                     "applies to one rotating block (simple overturning, gable, one-block façade); the dynamic "
-                     "analysis does not apply yet to multi-block chains");
+                     "applies to one rotating block (simple overturning, gable, one-block façade); multi-block chains "
+                     "use the chain model (dynamics/chain_dynamics.hpp)");
   const Block& blk = chain.blocks()[std::size_t(hinge->block)];  // the base block, on the hinge
 
   ChainRockingBody out;

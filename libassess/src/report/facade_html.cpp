@@ -486,13 +486,17 @@ void add_dynamic(const Ctx& c) {
     c.h.add_paragraph(c.t("dyn.na") + ": " + a.dynamic_note);
     return;
   }
-  const RockingModel& m = *a.model;
-  c.h.add_paragraph(c.t(a.dynamic->smooth ? "dyn.smooth" : "dyn.rigid") + " (Lipo & de Felice 2017, Eq. 1), " +
-                    c.t(m.sidedness() == Sidedness::one_sided ? "dyn.one_sided" : "dyn.two_sided") + "; W = " +
-                    fixed(m.body().W / units::kN, 2) + " kN/m, b = " + fixed(m.body().b, 3) + " m, R = " +
-                    fixed(m.body().R, 3) + " m, α = " + fixed(m.body().alpha, 4) + " rad, θu = " +
-                    fixed(m.theta_u(+1), 4) + " rad, " + c.t("dyn.capacity") + " " +
-                    fixed(m.capacity() / units::kN, 3) + " kJ/m.");
+  if (a.model) {
+    const RockingModel& m = *a.model;
+    c.h.add_paragraph(c.t(a.dynamic->smooth ? "dyn.smooth" : "dyn.rigid") + " (Lipo & de Felice 2017, Eq. 1), " +
+                      c.t(m.sidedness() == Sidedness::one_sided ? "dyn.one_sided" : "dyn.two_sided") + "; W = " +
+                      fixed(m.body().W / units::kN, 2) + " kN/m, b = " + fixed(m.body().b, 3) + " m, R = " +
+                      fixed(m.body().R, 3) + " m, α = " + fixed(m.body().alpha, 4) + " rad, θu = " +
+                      fixed(m.theta_u(+1), 4) + " rad, " + c.t("dyn.capacity") + " " +
+                      fixed(m.capacity() / units::kN, 3) + " kJ/m.");
+  }
+  c.h.add_paragraph(c.t("dyn.model") + ": " + a.mechanism_dynamics->describe() + "; " + c.t("dyn.capacity") + " " +
+                    fixed(a.mechanism_dynamics->capacity() / units::kN, 3) + " kJ/m.");
   Plot mr;
   mr.title = c.t("dyn.mr_title");
   mr.x_label = "θ (rad)";
@@ -503,6 +507,20 @@ void add_dynamic(const Ctx& c) {
   mr.series.push_back(s);
   mr.height = 320;
   c.h.add_svg(render_svg(mr), c.t("dyn.mr_fig"), "fig-moment-rotation");
+  if (!a.code_floor_Se.empty()) {
+    Plot fp;
+    fp.title = c.t("dyn.floor_title");
+    fp.x_label = "T (s)";
+    fp.y_label = "Sa (g)";
+    PlotSeries fm = series(c.t("dyn.floor_series"), PlotSeries::Style::Line, a.periods);
+    for (double v : a.floor_mean_psa) fm.y.push_back(v / g);
+    fm.highlight = true;
+    PlotSeries cf = series("S_eZ [C7.2.6]", PlotSeries::Style::Dashed, a.periods);
+    for (double v : a.code_floor_Se) cf.y.push_back(v / g);
+    fp.series.push_back(fm);
+    fp.series.push_back(cf);
+    c.h.add_svg(render_svg(fp), c.t("dyn.floor_fig"), "fig-floor-spectra");
+  }
 
   c.h.add_heading(c.t("dyn.records"), 3);
   std::vector<std::vector<HtmlCell>> rrows;

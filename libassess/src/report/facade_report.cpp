@@ -78,19 +78,44 @@ std::string facade_text(const FacadeAssessment& a, TextWidth width) {
     if (!a.dynamic_applies) {
       o += "not applicable: " + a.dynamic_note + "\n";
     } else {
-      const RockingBody& b = a.body->body;
-      const RockingModel& m = *a.model;
-      o += para(format("model: %s, %s; W = %.3f kN/m, b = %.4f m, R = %.4f m, alpha = %.5f rad, I0 = %.2f kg m2/m, "
-                  "M_ext = %.3f kN m/m",
-                  a.dynamic->smooth ? "smooth block on a Winkler foundation" : "rigid (Housner) block",
-                  m.sidedness() == Sidedness::one_sided ? "one-sided" : "two-sided", b.W / units::kN, b.b, b.R,
-                  b.alpha, b.I0, b.M_ext / units::kN), 7) + "\n";
-      std::string line = "       ";
-      if (a.dynamic->smooth)
-        line += format("k = %.4g kN/m3, theta_cr = %.3e rad, ", a.dynamic->k / units::kN, m.theta_cr());
-      line += format("theta_u = %.5f rad, peak moment %.3f kN m/m, energy capacity %.4f kJ/m", m.theta_u(+1),
-                     m.peak_moment(+1) / units::kN, m.capacity() / units::kN);
-      o += para(line, 7) + "\n";
+      const MechanismDynamics& md = *a.mechanism_dynamics;
+      if (a.model) {
+        const RockingBody& b = a.body->body;
+        const RockingModel& m = *a.model;
+        o += para(format("model: %s, %s; W = %.3f kN/m, b = %.4f m, R = %.4f m, alpha = %.5f rad, I0 = %.2f kg m2/m, "
+                         "M_ext = %.3f kN m/m",
+                         a.dynamic->smooth ? "smooth block on a Winkler foundation" : "rigid (Housner) block",
+                         m.sidedness() == Sidedness::one_sided ? "one-sided" : "two-sided", b.W / units::kN, b.b, b.R,
+                         b.alpha, b.I0, b.M_ext / units::kN),
+                  7) +
+             "\n";
+        std::string line = "       ";
+        if (a.dynamic->smooth)
+          line += format("k = %.4g kN/m3, theta_cr = %.3e rad, ", a.dynamic->k / units::kN, m.theta_cr());
+        line += format("theta_u = %.5f rad, peak moment %.3f kN m/m, energy capacity %.4f kJ/m", m.theta_u(+1),
+                       m.peak_moment(+1) / units::kN, m.capacity() / units::kN);
+        o += para(line, 7) + "\n";
+      } else {
+        const ChainDynamics& c = *md.chain;
+        o += para(format("model: %s chain, %s; M(0) = %.2f kg m2, B(0) = %.2f kg m, q_u = %.5f rad, energy "
+                         "capacity %.4f kJ/m",
+                         a.dynamic->smooth ? "smooth (Winkler bed under the ground-hinge block)" : "rigid",
+                         md.sidedness == Sidedness::two_sided ? "two-sided" : "one-sided", c.mass(0.0),
+                         c.coupling(0.0), c.q_u(), md.capacity() / units::kN),
+                  7) +
+             "\n";
+        if (a.dynamic->smooth)
+          o += format("       k = %.4g kN/m3, N = %.3f kN, b = %.4f m, q_cr = %.3e rad\n", a.dynamic->k / units::kN,
+                      c.N() / units::kN, c.half_base(), c.q_cr());
+      }
+      o += para("  " + md.describe(), 4) + "\n";
+      if (!a.code_floor_Se.empty()) {
+        o += "  floor motions, 5 % spectrum (mean of the records) vs the code's floor spectrum S_eZ [C7.2.6] (SLV, 5 %):\n";
+        o += format("  %8s %14s %14s %8s\n", "T (s)", "floor (g)", "code (g)", "ratio");
+        for (std::size_t j = 0; j < a.periods.size(); j += 4)
+          o += format("  %8.3f %14.4f %14.4f %8.3f\n", a.periods[j], a.floor_mean_psa[j] / g, a.code_floor_Se[j] / g,
+                      a.code_floor_Se[j] > 0 ? a.floor_mean_psa[j] / a.code_floor_Se[j] : 0.0);
+      }
       if (a.selection) {
         o += para(format("records: %d selected from the catalogue (%zu candidates after the filters, %zu within the "
                          "per-record limits), compatible with the %s spectrum (5 %%) over %.2f-%.2f s (around the "
@@ -219,17 +244,39 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
     d["applies"] = a.dynamic_applies;
     d["note"] = a.dynamic_note;
     if (a.dynamic_applies) {
-      const RockingBody& b = a.body->body;
-      const RockingModel& m = *a.model;
-      d["model"] = {{"type", a.dynamic->smooth ? "smooth" : "rigid"},
-                    {"k_kN_m3", a.dynamic->smooth ? nlohmann::json(a.dynamic->k / units::kN) : nlohmann::json(nullptr)},
-                    {"sidedness", m.sidedness() == Sidedness::one_sided ? "one-sided" : "two-sided"},
-                    {"polarity", to_string(a.dynamic->polarity)},
-                    {"W_kN_m", b.W / units::kN}, {"b", b.b}, {"R", b.R}, {"alpha", b.alpha}, {"I0", b.I0},
-                    {"M_ext_kNm_m", b.M_ext / units::kN},
-                    {"theta_cr", a.dynamic->smooth ? nlohmann::json(m.theta_cr()) : nlohmann::json(nullptr)},
-                    {"theta_u", m.theta_u(+1)}, {"peak_moment_kNm_m", m.peak_moment(+1) / units::kN},
-                    {"capacity_kJ_m", m.capacity() / units::kN}};
+      const MechanismDynamics& md = *a.mechanism_dynamics;
+      if (a.model) {
+        const RockingBody& b = a.body->body;
+        const RockingModel& m = *a.model;
+        d["model"] = {{"type", a.dynamic->smooth ? "smooth" : "rigid"},
+                      {"k_kN_m3", a.dynamic->smooth ? nlohmann::json(a.dynamic->k / units::kN) : nlohmann::json(nullptr)},
+                      {"sidedness", m.sidedness() == Sidedness::one_sided ? "one-sided" : "two-sided"},
+                      {"polarity", to_string(a.dynamic->polarity)},
+                      {"W_kN_m", b.W / units::kN}, {"b", b.b}, {"R", b.R}, {"alpha", b.alpha}, {"I0", b.I0},
+                      {"M_ext_kNm_m", b.M_ext / units::kN},
+                      {"theta_cr", a.dynamic->smooth ? nlohmann::json(m.theta_cr()) : nlohmann::json(nullptr)},
+                      {"theta_u", m.theta_u(+1)}, {"peak_moment_kNm_m", m.peak_moment(+1) / units::kN},
+                      {"capacity_kJ_m", m.capacity() / units::kN}};
+      } else {
+        const ChainDynamics& c = *md.chain;
+        d["model"] = {{"type", a.dynamic->smooth ? "smooth" : "rigid"},
+                      {"k_kN_m3", a.dynamic->smooth ? nlohmann::json(a.dynamic->k / units::kN) : nlohmann::json(nullptr)},
+                      {"sidedness", md.sidedness == Sidedness::two_sided ? "two-sided" : "one-sided"},
+                      {"polarity", to_string(a.dynamic->polarity)},
+                      {"chain_blocks", c.chain().blocks().size()},
+                      {"M0_kg_m2", c.mass(0.0)}, {"B0_kg_m", c.coupling(0.0)},
+                      {"theta_cr", a.dynamic->smooth ? nlohmann::json(c.q_cr()) : nlohmann::json(nullptr)},
+                      {"theta_u", c.q_u()}, {"capacity_kJ_m", md.capacity() / units::kN}};
+      }
+      d["model"]["kind"] = md.single_body() ? "rocking body" : "chain";
+      d["model"]["Z"] = md.Z;
+      d["model"]["input"] = md.floor_input ? "floor motions given" : md.filter ? "floor motions (first-mode filter)" : "ground motions";
+      if (md.filter)
+        d["model"]["floor_filter"] = {{"T1_s", md.filter->T1}, {"damping_pct", md.filter_damping_pct},
+                                      {"gamma_psi", md.filter->gamma_psi}};
+      if (!a.code_floor_Se.empty())
+        d["floor_spectra"] = {{"periods_s", a.periods}, {"floor_mean_psa_m_s2", a.floor_mean_psa},
+                              {"code_floor_Se_m_s2", a.code_floor_Se}};
       nlohmann::json recs = nlohmann::json::array();
       for (const RecordUsed& r : a.records)
         recs.push_back({{"name", r.name}, {"file", r.file}, {"event", r.event}, {"station", r.station},

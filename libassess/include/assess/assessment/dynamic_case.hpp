@@ -53,10 +53,19 @@ struct DynamicSpec {
   double k = 0.0;                      ///< Winkler modulus (N/m^3), smooth only
   Sidedness sidedness = Sidedness::one_sided;
   std::vector<Restitution> restitutions;  ///< one analysis set per value
+  bool restitution_given = false;      ///< "restitution" present (a multi-block chain needs values)
   Polarity polarity = Polarity::normal;
   RockingOptions options;              ///< overturning criterion, integrator, tail
   std::vector<ListedRecord> records;   ///< listed records (empty if selected)
   std::optional<RecordSelectionSpec> selection;
+  /// "input": "ground" (default: records are ground motions, filtered to the
+  /// floor at the mechanism's height Z > 0 by the building's first mode) or
+  /// "floor" (records are floor motions at the mechanism's base, e.g. from a
+  /// model of the building; used as given).
+  bool floor_input = false;
+  /// "floor_filter": {"T1_s", "damping_pct"}: period (s) and damping (%) of the
+  /// first-mode filter; default the building's T1 and damping.
+  std::optional<double> filter_T1, filter_damping_pct;
   /// Integrate each record only to the end of its strong motion (99.9 % of the
   /// Arias intensity) followed by free rocking for free_tail_s; false keeps
   /// the whole record ("whole_record": true). docs/theory/record-selection.md §4.

@@ -6,6 +6,7 @@
 
 #include "assess/assessment/case_file.hpp"
 #include "assess/assessment/dynamic_case.hpp"
+#include "assess/assessment/mechanism_dynamics.hpp"
 #include "assess/assessment/verdict.hpp"
 #include "assess/records/record_selection.hpp"
 #include "assess/dynamics/rocking_from_chain.hpp"
@@ -102,8 +103,10 @@ struct FacadeAssessment {
   std::optional<DynamicSpec> dynamic;
   bool dynamic_applies = false;
   std::string dynamic_note;  ///< why it does not apply, or remarks
-  std::optional<ChainRockingBody> body;
+  std::optional<ChainRockingBody> body;  ///< one rotating body (rocking model); empty for a multi-block chain
   std::optional<RockingModel> model;  ///< model of the first restitution value (geometry, theta_u, capacity)
+  /// The dynamic model of the governing mechanism: rocking body or chain, and its base motion.
+  std::optional<MechanismDynamics> mechanism_dynamics;
   std::vector<RecordUsed> records;
   std::optional<SelectionResult> selection;
   PeriodRange selection_range{};
@@ -139,6 +142,11 @@ struct FacadeAssessment {
   std::vector<std::vector<double>> record_psa;         ///< scaled 5 % PSA of each record at `periods` (m/s^2)
   std::vector<double> mean_psa;                        ///< their mean (m/s^2)
   std::vector<double> mr_theta, mr_moment;             ///< moment-rotation curve of the body: rad, N m/m
+                                                       ///< (chain: q and the generalised force per unit length)
+  /// Mechanism at height with ground records filtered to the floor: the 5 %
+  /// spectrum of the floor motions (mean over the records, scaled, m/s^2) and
+  /// the code's floor spectrum S_eZ(T) [C7.2.6] at 5 % for the SLV hazard, at `periods`.
+  std::vector<double> floor_mean_psa, code_floor_Se;
 };
 
 /// Runs the whole assessment of a case. Throws InputError for bad input

@@ -34,7 +34,7 @@ struct ChainRockingBody {
 /// divided by the out-of-plane length of the block on the hinge (per unit
 /// length of the base).
 /// @throws InputError for a chain whose blocks move relative to each other
-///   ("the dynamic analysis does not apply yet to multi-block chains"), no or
+///   ("multi-block chains use the chain model", dynamics/chain_dynamics.hpp), no or
 ///   several ground hinges, a
 ///   carried weight whose mass and weight do not both act, or friction loads.
 ChainRockingBody rocking_body_from_chain(const Chain& chain);

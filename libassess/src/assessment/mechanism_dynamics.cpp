@@ -1,0 +1,157 @@
+// mechanism_dynamics.cpp: the dynamic model of a case's mechanism (rocking
+// body or chain) and its base motion (ground, filtered floor, given floor).
+//
+// Notation: Z height of the mechanism's base (m, the candidate's constraint
+// height, CheckInput::Z); H, N, T1, xi_1 building height (m), storeys, first
+// period (s) and damping (%); gamma = 3N/(2N+1), psi = Z/H [C7.2.10]
+// (code_rules); e restitution (velocity ratio).
+#include "assess/assessment/mechanism_dynamics.hpp"
+
+#include "assess/kinematic/code_rules.hpp"
+#include "assess/support/error.hpp"
+#include "assess/support/units.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace assess {
+
+namespace {
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+}  // namespace
+
+RockingResult MechanismDynamics::analyse(std::size_t ie, const Record& in, const RockingOptions& options) const {
+  if (body) return assess::analyse(rocking.at(ie), in, options);
+  return analyse_chain(*chain, in, options, e.at(ie), sidedness);
+}
+
+double MechanismDynamics::control_displacement(const KinematicResult& kin, double q) const {
+  if (body) return std::fabs(body->horizontal_displacement(kin.control_point, std::fabs(q)));
+  return std::fabs(chain->horizontal_displacement(kin.control_block, kin.control_point, q));
+}
+
+double MechanismDynamics::q_u() const { return body ? rocking.front().theta_u(+1) : chain->q_u(); }
+
+double MechanismDynamics::capacity() const { return body ? rocking.front().capacity() : chain->capacity() / length; }
+
+double MechanismDynamics::restoring(double q) const {
+  if (body) return rocking.front().restoring_moment(q) - body->body.M_ext;
+  return chain->net_restoring(q) / length;
+}
+
+std::string MechanismDynamics::describe() const {
+  std::string s;
+  if (body) {
+    s = "one body rotating about its ground hinge (rocking model, seed Eq. 1)";
+  } else {
+    s = std::string(sidedness == Sidedness::two_sided ? "two-sided" : "one-sided") + " chain of " +
+        std::to_string(chain->chain().blocks().size()) +
+        " blocks, one coordinate q = rotation of block '" + chain->chain().blocks()[std::size_t(chain->reference_block())].name +
+        "' (Lagrange's equation, docs/theory/chain-dynamics.md), q_u = " + fmt("%.5f", chain->q_u()) + " rad";
+  }
+  if (Z > 0.0 || floor_input) {
+    s += "; base at Z = " + fmt("%.2f", Z) + " m, ";
+    if (floor_input)
+      s += "floor motions given by the user";
+    else
+      s += "floor motions a_Z = ug'' + gamma psi ur'' (first mode: T1 = " + fmt("%.3f", filter->T1) +
+           " s, xi = " + fmt("%.3g", filter_damping_pct) + " %, gamma psi = " + fmt("%.4f", filter->gamma_psi) + ")";
+  }
+  return s;
+}
+
+MechanismDynamics build_mechanism_dynamics(const CaseFile& kase, const CandidateResult& cand, const Chain& chain,
+                                           const DynamicSpec& d) {
+  MechanismDynamics m;
+  const std::string& file = kase.file;
+  m.Z = cand.Z;
+  m.floor_input = d.floor_input;
+  m.sidedness = d.sidedness;
+  if (m.Z > 0.0 && !d.floor_input) {
+    if (!kase.building)
+      throw InputError(file + ": /building: missing: the mechanism is at height (Z = " + fmt("%.2f", m.Z) +
+                       " m) and its records are ground motions; the floor-motion filter needs the building "
+                       "(\"height_m\", \"storeys\", optionally \"T1_s\"), or give floor motions with "
+                       "/dynamic/input \"floor\"");
+    const BuildingModel& b = *kase.building;
+    FloorFilter f;
+    f.T1 = d.filter_T1.value_or(b.T1);
+    m.filter_damping_pct = d.filter_damping_pct.value_or(b.damping_pct);
+    f.xi = m.filter_damping_pct / 100.0;
+    // [C7.2.10]: gamma1 = 3N/(2N+1), psi1(Z) = Z/H.
+    f.gamma_psi = code_rules::gamma_first_mode(b.storeys) * code_rules::psi_first_mode(std::min(m.Z, b.H), b.H);
+    m.filter = f;
+  }
+  const Foundation found = d.smooth ? Foundation::winkler(d.k) : Foundation::rigid();
+
+  // One rotating body: the rocking model (specialised path).
+  std::optional<ChainRockingBody> body;
+  try {
+    body = rocking_body_from_chain(chain);
+  } catch (const InputError&) {
+    body.reset();  // not one body (or a carried mass the rocking body cannot hold): the chain model
+  }
+  if (body) {
+    for (std::size_t i = 0; i < d.restitutions.size(); ++i) {
+      try {
+        m.rocking.emplace_back(body->body, found, d.sidedness, d.restitutions[i]);
+      } catch (const InputError& e) {
+        throw InputError(file + ": /dynamic/restitution/" + std::to_string(i) + ": " + e.what());
+      }
+      m.e.push_back(m.rocking.back().restitution());
+    }
+    m.body = body;
+    m.length = body->length;
+    m.applies = true;
+    return m;
+  }
+
+  // A multi-block chain: given coefficients; two-sided only if mirror-symmetric (checked below).
+  const bool two = d.sidedness == Sidedness::two_sided;
+  if (!d.restitution_given)
+    throw InputError(file + ": /dynamic/restitution: missing: a chain of several blocks needs a given coefficient "
+                     "(q'+ = e q'- at q = 0: in [-1, 0] one-sided, 0 stops the chain; in [0, 1] two-sided); the "
+                     "laws \"housner\" and \"one-sided-theory\" are derived for one block");
+  for (std::size_t i = 0; i < d.restitutions.size(); ++i) {
+    const Restitution& r = d.restitutions[i];
+    const std::string path = file + ": /dynamic/restitution" + (d.restitutions.size() > 1 ? "/" + std::to_string(i) : "");
+    if (r.kind != Restitution::Kind::value)
+      throw InputError(path + ": a chain of several blocks needs a given coefficient (q'+ = e q'-); \"" +
+                       (r.kind == Restitution::Kind::housner ? "housner" : r.kind == Restitution::Kind::none ? "none"
+                                                                                                   : "one-sided-theory") +
+                       "\" is derived for one block");
+    if (!two && !(r.e >= -1.0 && r.e <= 0.0))
+      throw InputError(path + ": expected a coefficient in [-1, 0] (-, one-sided rebound q'+ = e q'-), got " +
+                       fmt("%g", r.e));
+    if (two && !(r.e >= 0.0 && r.e <= 1.0))
+      throw InputError(path + ": expected a coefficient in [0, 1] (-, two-sided: the chain goes through q = 0 with "
+                       "q'+ = e q'-), got " + fmt("%g", r.e));
+    m.e.push_back(r.e);
+  }
+  if (d.options.overturn != OverturnCriterion::theta_u)
+    throw InputError(file + ": /dynamic/overturn_at: a chain overturns at q_u, where its net restoring force "
+                     "vanishes; \"half_pi\" applies to one rocking block");
+  try {
+    m.chain = std::make_shared<const ChainDynamics>(chain, found);
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    if (d.smooth && (msg.find("Winkler") != std::string::npos || msg.find("smooth") != std::string::npos))
+      throw InputError(file + ": /dynamic/" + (msg.find("modulus") != std::string::npos ? "k" : "model") + ": " + msg);
+    m.note = msg;
+    return m;
+  }
+  if (two && !m.chain->symmetric())
+    throw InputError(file + ": /dynamic/sidedness: \"two-sided\" needs a chain whose blocks and loads are mirror "
+                     "images of themselves (the inward mechanism is then the mirror of the outward one); this "
+                     "chain is not symmetric: its inward motion would open other hinges, a different mechanism; "
+                     "use \"one-sided\"");
+  m.length = chain.blocks()[std::size_t(m.chain->reference_block())].length;
+  m.applies = true;
+  return m;
+}
+
+}  // namespace assess
