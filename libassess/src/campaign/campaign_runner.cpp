@@ -211,10 +211,11 @@ namespace {
 
 // The complete rows at the start of an existing part file that follow the
 // expected id sequence; returns their count and the byte offset after them.
-std::pair<std::uint64_t, std::uint64_t> valid_prefix(const std::string& path, const std::vector<Task>& tasks) {
+std::pair<std::uint64_t, std::uint64_t> valid_prefix(const CampaignJob& job, const std::string& path,
+                                                     const std::vector<Task>& tasks) {
   std::ifstream in(path, std::ios::binary);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string header = campaign_csv_header() + "\n";
+  const std::string header = job.csv_header() + "\n";
   if (text.compare(0, header.size(), header) != 0)
     throw InputError("cannot resume '" + path + "': its header is not this version's results header");
   std::uint64_t offset = header.size(), count = 0;
@@ -223,13 +224,13 @@ std::pair<std::uint64_t, std::uint64_t> valid_prefix(const std::string& path, co
   while (t < tasks.size()) {
     const std::size_t nl = text.find('\n', offset);
     if (nl == std::string::npos) break;  // an incomplete last line is dropped
-    AnalysisRow row;
+    std::uint64_t id = 0;
     try {
-      row = parse_campaign_csv_row(text.substr(offset, nl - offset));
+      id = job.row_id(text.substr(offset, nl - offset));
     } catch (const InputError&) {
       break;
     }
-    if (row.id != next) break;
+    if (id != next) break;
     offset = nl + 1;
     ++count;
     if (++next == tasks[t].end && ++t < tasks.size()) next = tasks[t].first;
@@ -237,20 +238,61 @@ std::pair<std::uint64_t, std::uint64_t> valid_prefix(const std::string& path, co
   return {count, offset};
 }
 
+// The campaign as a job: rows of AnalysisRow, inputs in campaign.json.
+class CampaignAsJob final : public CampaignJob {
+ public:
+  explicit CampaignAsJob(const Campaign& c) : c_(c) {}
+  std::uint64_t size() const override { return c_.size(); }
+  std::uint64_t group_size() const override { return c_.spec().group_size(); }
+  std::string inputs_file() const override { return "campaign.json"; }
+  std::string inputs_text() const override { return to_json(c_.spec()).dump(2) + "\n"; }
+  std::string csv_header() const override { return campaign_csv_header(); }
+  std::vector<std::string> evaluate_csv(std::uint64_t first, std::uint64_t end, std::uint64_t& failed) const override {
+    std::vector<std::string> lines;
+    for (const auto& r : c_.evaluate(first, end)) {
+      lines.push_back(campaign_csv_row(r));
+      failed += r.ok ? 0 : 1;
+    }
+    return lines;
+  }
+  std::uint64_t row_id(const std::string& line) const override { return parse_campaign_csv_row(line).id; }
+
+ private:
+  const Campaign& c_;
+};
+
 }  // namespace
 
 CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out_dir,
                                 const CampaignRunOptions& options) {
+  return run_campaign_job(CampaignAsJob(campaign), out_dir, options);
+}
+
+void merge_campaign_parts(const std::vector<std::string>& part_paths, const std::string& out_path) {
+  // A merge needs only the header and the row parser of a campaign.
+  struct Rows final : CampaignJob {
+    std::uint64_t size() const override { return 0; }
+    std::uint64_t group_size() const override { return 1; }
+    std::string inputs_file() const override { return "campaign.json"; }
+    std::string inputs_text() const override { return ""; }
+    std::string csv_header() const override { return campaign_csv_header(); }
+    std::vector<std::string> evaluate_csv(std::uint64_t, std::uint64_t, std::uint64_t&) const override { return {}; }
+    std::uint64_t row_id(const std::string& line) const override { return parse_campaign_csv_row(line).id; }
+  } rows;
+  merge_campaign_job_parts(rows, part_paths, out_path);
+}
+
+CampaignRunSummary run_campaign_job(const CampaignJob& job, const std::string& out_dir,
+                                    const CampaignRunOptions& options) {
   options.validate();
   const auto start = std::chrono::steady_clock::now();
-  const CampaignSpec& spec = campaign.spec();
   std::error_code ec;
   fs::create_directories(out_dir, ec);
   if (ec || !fs::is_directory(out_dir)) throw InputError("cannot create output directory '" + out_dir + "'");
 
   // The normalised spec: a resumed run must be the same campaign.
-  const std::string spec_path = out_dir + "/campaign.json";
-  const std::string spec_text = to_json(spec).dump(2) + "\n";
+  const std::string spec_path = out_dir + "/" + job.inputs_file();
+  const std::string spec_text = job.inputs_text();
   if (options.resume && fs::exists(spec_path)) {
     std::ifstream in(spec_path);
     std::string old((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -266,12 +308,13 @@ CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out
 
   // The tasks of this part: one per group; `all` ignores the limit (a resumed
   // file may hold more rows than this run asks for: they are kept).
-  const std::uint64_t end = options.limit > 0 ? std::min(options.limit, spec.size()) : spec.size();
-  const std::uint64_t G = spec.group_size();
+  const std::uint64_t size = job.size();
+  const std::uint64_t end = options.limit > 0 ? std::min(options.limit, size) : size;
+  const std::uint64_t G = job.group_size();
   std::vector<Task> all, tasks;
   CampaignRunSummary summary;
-  for (std::uint64_t g = std::uint64_t(options.part); g * G < spec.size(); g += std::uint64_t(options.parts)) {
-    all.push_back({g * G, std::min((g + 1) * G, spec.size())});
+  for (std::uint64_t g = std::uint64_t(options.part); g * G < size; g += std::uint64_t(options.parts)) {
+    all.push_back({g * G, std::min((g + 1) * G, size)});
     if (g * G < end) {
       tasks.push_back({g * G, std::min((g + 1) * G, end)});
       summary.total += tasks.back().end - tasks.back().first;
@@ -281,7 +324,7 @@ CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out
   const std::string path = campaign_part_path(out_dir, options.part, options.parts);
   std::ofstream out;
   if (options.resume && fs::exists(path)) {
-    const auto [count, offset] = valid_prefix(path, all);
+    const auto [count, offset] = valid_prefix(job, path, all);
     fs::resize_file(path, offset, ec);  // drops a partly written last line
     if (ec) throw InputError("cannot truncate '" + path + "' to its complete rows");
     summary.resumed = std::min(count, summary.total);
@@ -297,7 +340,7 @@ CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out
       if (fs::exists(p) && !options.resume)
         throw InputError("'" + p + "' exists: pass --resume to continue it, or choose another output directory");
     out.open(path, std::ios::binary | std::ios::trunc);
-    out << campaign_csv_header() << "\n";
+    out << job.csv_header() << "\n";
   }
   if (!out) throw InputError("cannot write '" + path + "'");
   out.flush();
@@ -315,13 +358,10 @@ CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out
   auto worker = [&] {
     try {
       for (std::size_t t; !stop && !(options.cancel && options.cancel->load()) && (t = next_task++) < tasks.size();) {
-        const std::vector<AnalysisRow> rows = campaign.evaluate(tasks[t].first, tasks[t].end);
-        std::string text;
         std::uint64_t failed = 0;
-        for (const auto& r : rows) {
-          text += campaign_csv_row(r) + "\n";
-          failed += r.ok ? 0 : 1;
-        }
+        const std::vector<std::string> lines = job.evaluate_csv(tasks[t].first, tasks[t].end, failed);
+        std::string text;
+        for (const auto& l : lines) text += l + "\n";
         std::lock_guard<std::mutex> lock(mutex);
         summary.failed += failed;
         pending.emplace(t, std::move(text));
@@ -358,7 +398,8 @@ CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out
   return summary;
 }
 
-void merge_campaign_parts(const std::vector<std::string>& part_paths, const std::string& out_path) {
+void merge_campaign_job_parts(const CampaignJob& job, const std::vector<std::string>& part_paths,
+                              const std::string& out_path) {
   struct Part {
     std::ifstream in;
     std::string line;
@@ -366,11 +407,11 @@ void merge_campaign_parts(const std::vector<std::string>& part_paths, const std:
     bool live = false;
   };
   std::vector<Part> parts(part_paths.size());
-  auto advance = [](Part& p, const std::string& name) {
+  auto advance = [&job](Part& p, const std::string& name) {
     p.live = false;
     while (std::getline(p.in, p.line)) {
       if (p.line.empty()) continue;
-      p.id = parse_campaign_csv_row(p.line).id;
+      p.id = job.row_id(p.line);
       p.live = true;
       return;
     }
@@ -379,13 +420,13 @@ void merge_campaign_parts(const std::vector<std::string>& part_paths, const std:
   for (std::size_t i = 0; i < parts.size(); ++i) {
     parts[i].in.open(part_paths[i], std::ios::binary);
     std::string header;
-    if (!parts[i].in || !std::getline(parts[i].in, header) || header != campaign_csv_header())
+    if (!parts[i].in || !std::getline(parts[i].in, header) || header != job.csv_header())
       throw InputError("'" + part_paths[i] + "' is not a campaign results part");
     advance(parts[i], part_paths[i]);
   }
   const std::string tmp = out_path + ".tmp";
   std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-  out << campaign_csv_header() << "\n";
+  out << job.csv_header() << "\n";
   for (;;) {
     Part* best = nullptr;
     std::size_t bi = 0;
