@@ -12,6 +12,7 @@ void add_kinematic_command(CLI::App& app);  // cmd_kinematic.cpp
 void add_rocking_command(CLI::App& app);    // cmd_rocking.cpp
 void add_run_command(CLI::App& app);        // cmd_run.cpp
 void add_campaign_command(CLI::App& app);   // cmd_campaign.cpp
+void add_fragility_command(CLI::App& app);  // cmd_fragility.cpp
 
 /// Exit code for invalid input (InputError) and for a failed check of the
 /// command line.

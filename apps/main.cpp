@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   assess::cli::add_rocking_command(app);
   assess::cli::add_run_command(app);
   assess::cli::add_campaign_command(app);
+  assess::cli::add_fragility_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
