@@ -184,12 +184,34 @@ std::string to_string(SelectionResult::Status s) {
   return "?";
 }
 
+std::vector<double> selection_periods(const SelectionOptions& opts) {
+  opts.validate();
+  return log_spaced_periods(opts.range.T_min, opts.range.T_max, opts.n_periods);
+}
+
 SelectionResult select_records(const std::function<double(double)>& target,
                                const std::vector<Record>& candidates, const SelectionOptions& opts) {
+  const std::vector<double> periods = selection_periods(opts);
+  const ResponseOptions ro{opts.damping_ratio, ResponseOptions{}.min_steps_per_period};
+  std::vector<ResponseSpectrum> spectra(candidates.size());
+  detail::parallel_for(candidates.size(),
+                       [&](std::size_t i) { spectra[i] = response_spectrum(candidates[i], periods, ro); });
+  return select_records(target, candidates, opts, spectra);
+}
+
+SelectionResult select_records(const std::function<double(double)>& target, const std::vector<Record>& candidates,
+                               const SelectionOptions& opts, const std::vector<ResponseSpectrum>& spectra) {
   opts.validate();
   if (candidates.empty()) throw InputError("select_records: no candidate records");
   SelectionResult res;
   res.periods = log_spaced_periods(opts.range.T_min, opts.range.T_max, opts.n_periods);
+  if (spectra.size() != candidates.size())
+    throw InputError("select_records: " + std::to_string(spectra.size()) + " spectra for " +
+                     std::to_string(candidates.size()) + " candidates");
+  for (const ResponseSpectrum& rs : spectra)
+    if (rs.ordinates.size() != res.periods.size())
+      throw InputError("select_records: a candidate spectrum has " + std::to_string(rs.ordinates.size()) +
+                       " ordinates, expected one per check period (" + std::to_string(res.periods.size()) + ")");
   for (double T : res.periods) {
     const double se = target(T);
     if (!(se > 0.0) || !std::isfinite(se))
@@ -206,10 +228,6 @@ SelectionResult select_records(const std::function<double(double)>& target,
   std::vector<std::size_t> eligible;
   std::vector<double> scale;
   std::vector<std::vector<double>> ratios, psa;
-  const ResponseOptions ro{opts.damping_ratio, ResponseOptions{}.min_steps_per_period};
-  std::vector<ResponseSpectrum> spectra(candidates.size());
-  detail::parallel_for(candidates.size(),
-                       [&](std::size_t i) { spectra[i] = response_spectrum(candidates[i], res.periods, ro); });
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     const ResponseSpectrum& rs = spectra[i];
     std::vector<double> rho(nT);

@@ -13,6 +13,7 @@
 #include "assess/records/response_spectrum.hpp"
 #include "assess/support/error.hpp"
 #include "assess/support/units.hpp"
+#include "support/parallel_for.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -166,9 +167,16 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
     so.max_scale = max_scale;
     so.range = range;
     so.scale_rule = ScaleRule::Pga;
+    // The candidates' spectra do not depend on the stripe: computed once.
+    const std::vector<double> periods = selection_periods(so);
+    const ResponseOptions ro{so.damping_ratio, ResponseOptions{}.min_steps_per_period};
+    std::vector<ResponseSpectrum> spectra(st.records.size());
+    detail::parallel_for(st.records.size(),
+                         [&](std::size_t i) { spectra[i] = response_spectrum(st.records[i], periods, ro); });
     for (double tr : trs) {
       const ElasticSpectrum target(site.hazard_at_tr(tr), cond, 5.0);
-      const SelectionResult sel = select_records(target, st.records, so);
+      const SelectionResult sel =
+          select_records([&target](double T) { return target.Se(T); }, st.records, so, spectra);
       Stripe s;
       s.im = target.Se(0.0);
       s.TR = tr;

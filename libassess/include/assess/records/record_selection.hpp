@@ -5,6 +5,7 @@
 #pragma once
 
 #include "assess/records/record.hpp"
+#include "assess/records/response_spectrum.hpp"
 #include "assess/hazard/spectrum.hpp"
 
 #include <cstddef>
@@ -110,6 +111,16 @@ std::string to_string(SelectionResult::Status s);
 SelectionResult select_records(const std::function<double(double)>& target,
                                const std::vector<Record>& candidates,
                                const SelectionOptions& opts = {});
+
+/// The check periods of a selection: opts.n_periods log-spaced in opts.range (s).
+std::vector<double> selection_periods(const SelectionOptions& opts);
+
+/// Same as select_records(target, candidates, opts) with the candidates'
+/// spectra at selection_periods(opts) and opts.damping_ratio given (computed
+/// once for several selections with the same options, e.g. the stripes of a
+/// fragility analysis). @throws InputError if the sizes do not match.
+SelectionResult select_records(const std::function<double(double)>& target, const std::vector<Record>& candidates,
+                               const SelectionOptions& opts, const std::vector<ResponseSpectrum>& spectra);
 
 /// Same, with the horizontal elastic spectrum Se(T) of a site as target.
 inline SelectionResult select_records(const ElasticSpectrum& target, const std::vector<Record>& candidates,
