@@ -108,6 +108,9 @@ TEST_CASE("MLE: degenerate counts are reported, not fitted") {
   CHECK(f.status == FragilityFit::Status::separated);
   CHECK(f.message.find("[2, 3]") != std::string::npos);
   CHECK(fit_lognormal_mle({{1.0, 10, 3}}).status == FragilityFit::Status::too_few);
+  // A fraction that falls with the intensity has no lognormal fit.
+  std::vector<StripeCount> down{{1.0, 10, 6}, {2.0, 10, 5}, {3.0, 10, 4}};
+  CHECK(fit_lognormal_mle(down).status == FragilityFit::Status::no_trend);
   CHECK_THROWS_AS(fit_lognormal_mle({{1.0, 10, 11}, {2.0, 10, 3}}), InputError);
   CHECK_THROWS_AS(fit_lognormal_mle({{0.0, 10, 1}, {2.0, 10, 3}}), InputError);
   CHECK_THROWS_AS(fit_lognormal_mle({{NAN, 10, 1}, {2.0, 10, 3}}), InputError);

@@ -85,6 +85,7 @@ std::string to_string(FragilityFit::Status s) {
     case FragilityFit::Status::separated: return "separated";
     case FragilityFit::Status::too_few: return "too_few";
     case FragilityFit::Status::not_converged: return "not_converged";
+    case FragilityFit::Status::no_trend: return "no_trend";
   }
   return "?";
 }
@@ -180,6 +181,13 @@ FragilityFit fit_lognormal_mle(const std::vector<StripeCount>& input) {
   if (!converged) {
     fit.status = FragilityFit::Status::not_converged;
     fit.message = "Fisher scoring did not converge in " + std::to_string(max_iter) + " iterations";
+    return fit;
+  }
+  constexpr double beta_max = 20.0;
+  if (!(b > 1.0 / beta_max) || !std::isfinite(std::exp(-a / b)) || !(std::exp(-a / b) > 0.0)) {
+    fit.status = FragilityFit::Status::no_trend;
+    fit.message = "the fraction reaching the limit state does not grow with the intensity (beta = " + fmt(1.0 / b) +
+                  "): no lognormal fragility";
     return fit;
   }
   fit.status = FragilityFit::Status::ok;

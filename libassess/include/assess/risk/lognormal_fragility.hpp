@@ -42,6 +42,7 @@ struct FragilityFit {
     all_exceedance,  ///< k = n everywhere: theta is below every stripe
     separated,       ///< the counts are (nearly) perfectly separated: beta -> 0, theta only bracketed
     too_few,         ///< fewer than 2 stripes (MLE) or 2 intensities (IDA)
+    no_trend,        ///< the fraction does not grow with the intensity (beta > 20 or theta not finite)
     not_converged,
   };
   Status status = Status::too_few;
