@@ -181,7 +181,7 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
       s.im = target.Se(0.0);
       s.TR = tr;
       s.compatible = sel.band_satisfied;
-      s.selection = to_string(sel.status) + ": " + sel.message;
+      s.selection = sel.message;
       for (const SelectedRecord& r : sel.records) s.records.push_back({r.index, r.scale});
       if (s.records.empty())
         throw InputError(kase.file + ": /dynamic/select: no catalogue record can be scaled to the PGA of the " +
