@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 using namespace assess;
@@ -126,6 +127,29 @@ TEST_CASE("IDA fit: moments of ln im_c (Baker 2015 Eqs. 2-3)") {
   CHECK(fit_lognormal_ida({2.0, 2.0}).status == FragilityFit::Status::separated);
   CHECK(fit_lognormal_ida({2.0}).status == FragilityFit::Status::too_few);
   CHECK_THROWS_AS(fit_lognormal_ida({2.0, -1.0}), InputError);
+}
+
+TEST_CASE("censored IDA fit: narrow intervals give the lognormal MLE; censoring is used, not dropped") {
+  // Intervals of +-0.1 % about {1, 2, 4}: the MLE of a lognormal sample is
+  // theta = geometric mean, beta = sqrt(sum ln^2 / n) (divisor n, not n - 1).
+  std::vector<CensoredIntensity> v;
+  for (double x : {1.0, 2.0, 4.0}) v.push_back({x / 1.001, x * 1.001});
+  const FragilityFit f = fit_lognormal_censored(v);
+  REQUIRE(f.ok());
+  const double tol_interval = 2e-3;  // - : the intervals' half-width in ln units, 1e-3, twice
+  CHECK_CLOSE(std::log(f.fragility.theta), std::log(2.0), abs_tol(tol_interval));
+  CHECK_CLOSE(f.fragility.beta, std::log(2.0) * std::sqrt(2.0 / 3.0), abs_tol(tol_interval));
+  // Observed information of a complete normal sample: SE(mu) = beta/sqrt(n).
+  CHECK_CLOSE(f.se_ln_theta, f.fragility.beta / std::sqrt(3.0), rel_tol(0.01));
+  // A record that never collapses up to 4 pulls the median up (dropping it would not).
+  std::vector<CensoredIntensity> c = v;
+  c.push_back({4.0, std::numeric_limits<double>::infinity()});
+  const FragilityFit fc = fit_lognormal_censored(c);
+  REQUIRE(fc.ok());
+  CHECK(fc.fragility.theta > f.fragility.theta * 1.2);
+  CHECK(fit_lognormal_censored({{1.0, INFINITY}, {2.0, INFINITY}}).status == FragilityFit::Status::no_exceedance);
+  CHECK(fit_lognormal_censored({{0.0, 1.0}, {0.0, 1.0}}).status == FragilityFit::Status::all_exceedance);
+  CHECK_THROWS_AS(fit_lognormal_censored({{2.0, 1.0}, {1.0, 2.0}}), InputError);
 }
 
 TEST_CASE("probability: Phi(ln(im/theta)/beta) at the median and one beta above") {

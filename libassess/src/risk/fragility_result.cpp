@@ -135,6 +135,7 @@ FragilityResult fit_fragility(const FragilityStudy& st, const std::vector<Fragil
       auto ida_fit = [&](const std::vector<std::size_t>& recs, std::vector<double>* out_im) -> FragilityFit {
         // recs: positions in the fixed set (with repetition for the bootstrap).
         std::vector<double> imc;
+        std::vector<CensoredIntensity> intervals;
         bool censored = false;
         for (std::size_t rp : recs)
           for (std::size_t p = 0; p < P; ++p) {
@@ -146,17 +147,13 @@ FragilityResult fit_fragility(const FragilityStudy& st, const std::vector<Fragil
                 break;
               }
             }
+            const double lo = first == 0 ? 0.0 : st.stripes[first - 1].im;
+            const double hi = first == st.stripes.size() ? std::numeric_limits<double>::infinity() : st.stripes[first].im;
+            intervals.push_back({lo, hi});
             if (first == 0 || first == st.stripes.size()) censored = true;
-            else imc.push_back(std::sqrt(st.stripes[first - 1].im * st.stripes[first].im));
+            else imc.push_back(std::sqrt(lo * hi));
           }
-        if (censored) {
-          // The binomial likelihood of the levels handles censoring.
-          std::vector<Unit> sel;
-          for (std::size_t rp : recs)
-            for (const Unit& u : units_)
-              if (u.record == rp) sel.push_back(u);
-          return fit_units(st, sel);
-        }
+        if (censored) return fit_lognormal_censored(intervals);
         if (out_im) *out_im = imc;
         return fit_lognormal_ida(imc);
       };
@@ -167,7 +164,7 @@ FragilityResult fit_fragility(const FragilityStudy& st, const std::vector<Fragil
       if (ida) {
         cv.fit = ida_fit(all_recs, &cv.collapse_im);
         cv.method = cv.collapse_im.empty()
-                        ? "IDA, MLE on the levels' counts (Baker 2015 Eq. 11): some curves are censored"
+                        ? "IDA, interval-censored MLE of the collapse intensities: some curves never (or already at the lowest level) reach the limit state"
                         : "IDA, moments of ln im_c (Baker 2015 Eqs. 2-3)";
       } else {
         cv.fit = fit_units(st, units_);

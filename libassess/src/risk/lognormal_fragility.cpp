@@ -232,4 +232,148 @@ FragilityFit fit_lognormal_ida(const std::vector<double>& im_c) {
   return fit;
 }
 
+namespace {
+
+// ln[Phi(b) - Phi(a)], a < b, accurate when both are in one tail.
+double log_interval(double a, double b) {
+  if (a > 0.0) return log_interval(-b, -a);  // symmetry: Phi(b) - Phi(a) = Phi(-a) - Phi(-b)
+  const double pb = normal_cdf(b), pa = normal_cdf(a);
+  const double d = pb - pa;
+  if (d > 1e-300) return std::log(d);
+  return log_normal_cdf(b);  // both far in the lower tail: Phi(b) dominates
+}
+
+double censored_loglik(const std::vector<CensoredIntensity>& v, double mu, double beta) {
+  double L = 0.0;
+  for (const auto& c : v) {
+    const double a = c.lo > 0.0 ? (std::log(c.lo) - mu) / beta : -std::numeric_limits<double>::infinity();
+    const double b = std::isfinite(c.hi) ? (std::log(c.hi) - mu) / beta : std::numeric_limits<double>::infinity();
+    if (std::isinf(a) && std::isinf(b)) continue;
+    if (std::isinf(a)) L += log_normal_cdf(b);
+    else if (std::isinf(b)) L += log_normal_cdf(-a);
+    else L += log_interval(a, b);
+  }
+  return L;
+}
+
+}  // namespace
+
+FragilityFit fit_lognormal_censored(const std::vector<CensoredIntensity>& v) {
+  FragilityFit fit;
+  bool any_upper = false, any_lower = false;
+  double mu0 = 0.0;
+  int n0 = 0;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const auto& c = v[i];
+    if (!(c.lo >= 0.0) || !(c.hi > c.lo) || std::isnan(c.hi))
+      throw InputError("censored IDA fit: interval " + std::to_string(i) + " needs 0 <= lo < hi (got " + fmt(c.lo) +
+                       ", " + fmt(c.hi) + ")");
+    any_upper = any_upper || std::isfinite(c.hi);  // some collapse observed
+    any_lower = any_lower || c.lo > 0.0;           // some survival observed
+    if (c.lo > 0.0 && std::isfinite(c.hi)) mu0 += 0.5 * (std::log(c.lo) + std::log(c.hi)), ++n0;
+    else if (c.lo > 0.0) mu0 += std::log(c.lo) + 0.5, ++n0;
+    else mu0 += std::log(c.hi) - 0.5, ++n0;
+  }
+  if (v.size() < 2) {
+    fit.message = "at least 2 records are needed";
+    return fit;
+  }
+  if (!any_upper) {
+    fit.status = FragilityFit::Status::no_exceedance;
+    fit.message = "no record reaches the limit state at any level";
+    return fit;
+  }
+  if (!any_lower) {
+    fit.status = FragilityFit::Status::all_exceedance;
+    fit.message = "every record reaches the limit state at the lowest level";
+    return fit;
+  }
+  mu0 /= n0;
+  // Nelder-Mead (Nelder & Mead 1965; standard coefficients 1, 2, 1/2, 1/2) on
+  // f(mu, ln beta) = -ln L.
+  auto f = [&](double mu, double lb) {
+    if (lb < std::log(1e-4) || lb > std::log(50.0)) return std::numeric_limits<double>::infinity();
+    const double L = censored_loglik(v, mu, std::exp(lb));
+    return std::isfinite(L) ? -L : std::numeric_limits<double>::infinity();
+  };
+  double x[3][2] = {{mu0, std::log(0.4)}, {mu0 + 0.2, std::log(0.4)}, {mu0, std::log(0.6)}};
+  double fx[3];
+  for (int i = 0; i < 3; ++i) fx[i] = f(x[i][0], x[i][1]);
+  int it = 0;
+  bool converged = false;
+  for (; it < 5000; ++it) {
+    int o[3] = {0, 1, 2};
+    std::sort(o, o + 3, [&](int a, int b) { return fx[a] < fx[b]; });
+    const int best = o[0], mid = o[1], worst = o[2];
+    const double size = std::fabs(x[worst][0] - x[best][0]) + std::fabs(x[worst][1] - x[best][1]) +
+                        std::fabs(x[mid][0] - x[best][0]) + std::fabs(x[mid][1] - x[best][1]);
+    if (size < 1e-10 && std::fabs(fx[worst] - fx[best]) < 1e-12 * (1.0 + std::fabs(fx[best]))) {
+      converged = true;
+      break;
+    }
+    const double c0 = 0.5 * (x[best][0] + x[mid][0]), c1 = 0.5 * (x[best][1] + x[mid][1]);
+    const double r0 = c0 + (c0 - x[worst][0]), r1 = c1 + (c1 - x[worst][1]);
+    const double fr = f(r0, r1);
+    if (fr < fx[best]) {
+      const double e0 = c0 + 2 * (c0 - x[worst][0]), e1 = c1 + 2 * (c1 - x[worst][1]);
+      const double fe = f(e0, e1);
+      if (fe < fr) x[worst][0] = e0, x[worst][1] = e1, fx[worst] = fe;
+      else x[worst][0] = r0, x[worst][1] = r1, fx[worst] = fr;
+    } else if (fr < fx[mid]) {
+      x[worst][0] = r0, x[worst][1] = r1, fx[worst] = fr;
+    } else {
+      const bool outside = fr < fx[worst];
+      const double k0 = outside ? c0 + 0.5 * (r0 - c0) : c0 + 0.5 * (x[worst][0] - c0);
+      const double k1 = outside ? c1 + 0.5 * (r1 - c1) : c1 + 0.5 * (x[worst][1] - c1);
+      const double fk = f(k0, k1);
+      if (fk < std::min(fr, fx[worst])) {
+        x[worst][0] = k0, x[worst][1] = k1, fx[worst] = fk;
+      } else {
+        for (int i : {mid, worst}) {
+          x[i][0] = x[best][0] + 0.5 * (x[i][0] - x[best][0]);
+          x[i][1] = x[best][1] + 0.5 * (x[i][1] - x[best][1]);
+          fx[i] = f(x[i][0], x[i][1]);
+        }
+      }
+    }
+  }
+  fit.iterations = it;
+  int b = 0;
+  for (int i = 1; i < 3; ++i)
+    if (fx[i] < fx[b]) b = i;
+  const double mu = x[b][0], beta = std::exp(x[b][1]);
+  fit.log_likelihood = -fx[b];
+  if (!converged) {
+    fit.status = FragilityFit::Status::not_converged;
+    fit.message = "Nelder-Mead did not converge in 5000 iterations";
+    return fit;
+  }
+  if (beta < 1.01e-4) {
+    fit.status = FragilityFit::Status::separated;
+    fit.message = "the intervals leave beta -> 0: the median is only bracketed";
+    return fit;
+  }
+  if (beta > 0.99 * 50.0) {
+    fit.status = FragilityFit::Status::no_trend;
+    fit.message = "the intervals give no finite dispersion (beta -> infinity)";
+    return fit;
+  }
+  // Observed information: central-difference Hessian of -ln L in (mu, beta).
+  auto g = [&](double m, double s) { return -censored_loglik(v, m, s); };
+  const double hm = 1e-4 * std::max(1.0, std::fabs(mu)), hs = 1e-4 * beta;
+  const double f0 = g(mu, beta);
+  const double hmm = (g(mu + hm, beta) - 2 * f0 + g(mu - hm, beta)) / (hm * hm);
+  const double hss = (g(mu, beta + hs) - 2 * f0 + g(mu, beta - hs)) / (hs * hs);
+  const double hms = (g(mu + hm, beta + hs) - g(mu + hm, beta - hs) - g(mu - hm, beta + hs) + g(mu - hm, beta - hs)) /
+                     (4 * hm * hs);
+  const double det = hmm * hss - hms * hms;
+  fit.status = FragilityFit::Status::ok;
+  fit.fragility = {std::exp(mu), beta};
+  if (det > 0.0 && hmm > 0.0) {
+    fit.se_ln_theta = std::sqrt(hss / det);
+    fit.se_beta = std::sqrt(hmm / det);
+  }
+  return fit;
+}
+
 }  // namespace assess

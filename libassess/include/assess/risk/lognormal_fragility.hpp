@@ -72,4 +72,19 @@ FragilityFit fit_lognormal_mle(const std::vector<StripeCount>& stripes);
 /// @throws InputError for an intensity <= 0 or NaN
 FragilityFit fit_lognormal_ida(const std::vector<double>& collapse_im);
 
+/// An interval (lo, hi] that holds a collapse intensity: lo = 0 when the
+/// first level already collapses, hi = +infinity when no level does.
+struct CensoredIntensity {
+  double lo = 0.0;
+  double hi = 0.0;
+};
+
+/// IDA fit when some collapse intensities are censored: maximum likelihood of
+/// the interval-censored lognormal sample, ln L = sum_i ln[Phi((ln hi_i - ln
+/// theta)/beta) - Phi((ln lo_i - ln theta)/beta)] (each record's IDA curve is
+/// one observation), maximised by Nelder-Mead in (ln theta, ln beta); standard
+/// errors from the inverse of the observed information (central-difference
+/// Hessian). @throws InputError for lo >= hi, lo < 0 or NaN
+FragilityFit fit_lognormal_censored(const std::vector<CensoredIntensity>& intervals);
+
 }  // namespace assess
