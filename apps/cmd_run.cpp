@@ -1,4 +1,4 @@
-// cmd_run.cpp: `assess run CASE.json [--json] [--html FILE] [--keep-going]`:
+// cmd_run.cpp: `assess run CASE.json [--json] [--html FILE] [--keep-going] [--fragility DIR]`:
 // the façade assessment — site, kinematic checks of both editions and the
 // dynamic rocking analysis — side by side. Parses, calls, prints.
 #include "commands.hpp"
@@ -7,16 +7,20 @@
 #include <assess/support/error.hpp>
 #include <assess/assessment/facade_assessment.hpp>
 #include <assess/report/facade_report.hpp>
+#include <assess/risk/fragility_report.hpp>
+
+#include <filesystem>
 
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace assess::cli {
 namespace {
 
 struct RunArgs {
-  std::string file, html;
+  std::string file, html, fragility;
   bool json = false, keep_going = false;
 };
 
@@ -35,10 +39,26 @@ void run(const RunArgs& a) {
     std::ofstream out(a.html, std::ios::binary);
     if (!out || !(out << page)) throw InputError("--html " + a.html + ": cannot write the file");
   }
-  if (a.json)
-    std::cout << facade_json(res).dump(2) << "\n";
-  else
-    std::cout << facade_text(res) << (a.html.empty() ? "" : "\nHTML report written to " + a.html + "\n");
+  // A fragility result of this case: --fragility DIR, or the default output
+  // directory of `assess fragility` (CASE.fragility) when it holds this case's.
+  std::optional<nlohmann::json> frag;
+  const std::string auto_dir = std::filesystem::path(a.file).stem().string() + ".fragility";
+  if (!a.fragility.empty()) frag = read_fragility_summary(a.fragility, a.file);
+  else if (std::filesystem::exists(auto_dir + "/summary.json")) {
+    try {
+      frag = read_fragility_summary(auto_dir, a.file);
+    } catch (const InputError&) {
+      // another case's results: not this report's business
+    }
+  }
+  if (a.json) {
+    nlohmann::json j = facade_json(res);
+    if (frag) j["fragility"] = {{"line", fragility_line(*frag)}, {"governing", (*frag)["governing"]}};
+    std::cout << j.dump(2) << "\n";
+  } else {
+    std::cout << facade_text(res) << (frag ? fragility_line(*frag) + "\n" : "")
+              << (a.html.empty() ? "" : "\nHTML report written to " + a.html + "\n");
+  }
 }
 
 }  // namespace
@@ -50,6 +70,8 @@ void add_run_command(CLI::App& app) {
   cmd->add_flag("--json", args->json, "print the report as JSON");
   cmd->add_option("--html", args->html, "also write a self-contained HTML report with plots to this file");
   cmd->add_flag("--keep-going", args->keep_going, "continue with the readable records when some cannot be read");
+  cmd->add_option("--fragility", args->fragility,
+                  "add the fragility result in this directory (of `assess fragility`; default CASE.fragility if present)");
   cmd->callback([args] { run(*args); });
 }
 

@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -85,6 +86,9 @@ double p_at(const FragilityCurve& c, double im) { return c.fit.ok() ? c.fit.frag
 json fragility_to_json(const FragilityStudy& st, const FragilityResult& r) {
   json j;
   j["case"] = st.file;
+  std::error_code ec;
+  const auto abs = std::filesystem::absolute(st.file, ec);
+  j["case_absolute"] = ec ? st.file : abs.lexically_normal().string();
   j["project"] = st.project;
   j["mechanism"] = st.mechanism;
   j["site"] = st.site_description;
@@ -340,6 +344,49 @@ FragilityReportFiles write_fragility_report(const FragilityStudy& st, const Frag
   f.html = dir + "/report.html";
   write_file(f.html, html.str());
   return f;
+}
+
+json read_fragility_summary(const std::string& dir, const std::string& case_file) {
+  const std::string path = dir + "/summary.json";
+  std::ifstream in(path);
+  if (!in) throw InputError("--fragility: cannot open '" + path + "' (run `assess fragility CASE.json --out " + dir + "` first)");
+  json j;
+  try {
+    in >> j;
+  } catch (const json::exception& e) {
+    throw InputError("'" + path + "' is not valid JSON: " + e.what());
+  }
+  if (!j.is_object() || !j.contains("case") || !j["case"].is_string() || !j.contains("governing"))
+    throw InputError("'" + path + "' is not a fragility summary (keys /case and /governing expected)");
+  std::error_code ec;
+  const std::string of = j.contains("case_absolute") && j["case_absolute"].is_string()
+                             ? j["case_absolute"].get<std::string>()
+                             : j["case"].get<std::string>();
+  if (!std::filesystem::equivalent(of, case_file, ec))
+    throw InputError("'" + path + "': /case is '" + j["case"].get<std::string>() + "', not '" + case_file +
+                     "': the fragility belongs to another case");
+  return j;
+}
+
+std::string fragility_line(const json& s) {
+  try {
+    const json& g = s.at("governing");
+    std::string line = "fragility (" + s.at("method").get<std::string>() + ", restitution " +
+                       g.at("restitution").get<std::string>() + "): overturning ";
+    if (g.contains("return_period_years")) {
+      line += "median PGA " + g_units(g.at("theta_m_s2").get<double>()) + " g, beta " +
+              fmt(g.at("beta").get<double>(), "%.2f") + ", return period " +
+              fmt(g.at("return_period_years").get<double>(), "%.0f") + " years, P in VN = " +
+              fmt(s.at("VN_years").get<double>(), "%.0f") + " years " +
+              fmt(100 * g.at("probability_in_VN").get<double>(), "%.1f") + " %";
+    } else {
+      line += "no risk figure (" + g.value("note", g.value("message", std::string("not fitted"))) + ")";
+    }
+    line += "; code TR SLV " + fmt(s.at("code").at("SLV").at("TR_years").get<double>(), "%.0f") + " years";
+    return line;
+  } catch (const json::exception& e) {
+    throw InputError(std::string("fragility summary: missing or malformed key: ") + e.what());
+  }
 }
 
 }  // namespace assess

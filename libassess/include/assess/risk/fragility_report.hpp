@@ -31,4 +31,14 @@ struct FragilityReportFiles {
 FragilityReportFiles write_fragility_report(const FragilityStudy& study, const FragilityResult& result,
                                             const std::string& out_dir, bool plots);
 
+/// Reads dir/summary.json written by write_fragility_report, checking that it
+/// is the fragility of `case_file` (same file). @throws InputError naming the
+/// file and what differs.
+nlohmann::json read_fragility_summary(const std::string& dir, const std::string& case_file);
+
+/// One line for other reports (e.g. `assess run`): the governing overturning
+/// curve's median, return period and probability in VN beside the code's SLV
+/// return period, or why there is no risk figure.
+std::string fragility_line(const nlohmann::json& summary);
+
 }  // namespace assess
