@@ -8,7 +8,6 @@
 
 #include "check_close.hpp"
 
-#include <assess/dynamics/rocking_model.hpp>
 #include <assess/risk/fragility_result.hpp>
 #include <assess/support/units.hpp>
 
@@ -33,14 +32,12 @@ double uniform(std::uint64_t& s) { return (double(splitmix64(s) >> 11) + 0.5) * 
 double normal(std::uint64_t& s) { return std::sqrt(-2 * std::log(uniform(s))) * std::cos(2 * units::pi * uniform(s)); }
 
 // A study with `levels` stripes of `records` records, one polarity, one
-// restitution value; the model is never run.
+// restitution value; the mechanism is never analysed.
 FragilityStudy synthetic_study(const std::vector<double>& ims, std::size_t records, FragilityMethod m) {
   FragilityStudy st;
   st.options.method = m;
   st.options.bootstrap = 400;
   st.options.seed = 7;
-  st.models.emplace_back(RockingBody::rectangle(0.5, 6.0, 18000.0), Foundation::rigid(), Sidedness::two_sided,
-                         Restitution::housner());
   st.restitution_labels = {"Housner"};
   st.polarities = {false};
   for (std::size_t r = 0; r < records; ++r) st.record_files.push_back("r" + std::to_string(r));

@@ -93,6 +93,8 @@ TEST_CASE("site hazard curve: points at Se(0) = ag S of the nine return periods"
     CHECK_CLOSE(p.im, s.ag() * s.S(), rel_tol(1e-14));
     CHECK_CLOSE(h.lambda(p.im), 1.0 / p.TR, rel_tol(tol_curve_rel));
   }
+  const HazardCurve a = site_ag_hazard_curve(site);
+  for (const auto& p : a.points()) CHECK_CLOSE(p.im, site.hazard_at_tr(p.TR).ag_g * units::g, rel_tol(1e-14));
   SiteSpec given;
   given.given[LimitState::SLV] = HazardParams{475, 0.25, 2.4, 0.3};
   CHECK_THROWS_AS(site_pga_hazard_curve(Site(given)), InputError);

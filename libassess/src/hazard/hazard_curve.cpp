@@ -3,6 +3,7 @@
 #include "assess/hazard/hazard_curve.hpp"
 
 #include "assess/support/error.hpp"
+#include "assess/support/units.hpp"
 
 #include <cmath>
 #include <string>
@@ -64,6 +65,19 @@ HazardCurve site_pga_hazard_curve(const Site& site) {
     const double pga = ElasticSpectrum(h, site.spec().conditions, 5.0).Se(0.0);
     pts.push_back({pga, 1.0 / tr, tr});
   }
+  try {
+    return HazardCurve(std::move(pts));
+  } catch (const InputError& e) {
+    throw InputError("site " + site.describe() + ": " + e.what());
+  }
+}
+
+HazardCurve site_ag_hazard_curve(const Site& site) {
+  if (!site.spec().given.empty())
+    throw InputError("site: the hazard is given per limit state, not as the grid's nine return periods: no hazard "
+                     "curve (give \"lat\"/\"lon\" or \"island\")");
+  std::vector<HazardPoint> pts;
+  for (double tr : grid_return_periods) pts.push_back({site.hazard_at_tr(tr).ag_g * units::g, 1.0 / tr, tr});
   try {
     return HazardCurve(std::move(pts));
   } catch (const InputError& e) {

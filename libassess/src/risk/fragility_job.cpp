@@ -4,7 +4,6 @@
 // energy D/C >= 1 (seed §3.2), and d* >= d_SLV (Circ. 2019 C8.7.1.2.1.9).
 #include "assess/risk/fragility_job.hpp"
 
-#include "assess/dynamics/rocking_analysis.hpp"
 #include "assess/support/error.hpp"
 
 #include <nlohmann/json.hpp>
@@ -184,7 +183,6 @@ std::vector<FragilityRow> FragilityJob::evaluate(std::uint64_t first, std::uint6
   const Stripe& stripe = s_.stripes[si];
   const StripeRecord& sr = stripe.records[ri];
   const Record& rec = s_.records[sr.record];
-  const KinematicResult& kin = s_.kinematic;
   std::vector<FragilityRow> rows;
   for (std::uint64_t id = first; id < end; ++id) {
     const std::uint64_t in_group = id % G;
@@ -195,29 +193,22 @@ std::vector<FragilityRow> FragilityJob::evaluate(std::uint64_t first, std::uint6
     row.im_m_s2 = stripe.im;
     row.record = base_name(s_.record_files[sr.record]);
     row.scale = sr.scale;
-    row.reversed = s_.polarities[in_group / s_.models.size()];
-    row.restitution = in_group % s_.models.size();
+    row.reversed = s_.polarities[in_group / s_.restitutions()];
+    row.restitution = in_group % s_.restitutions();
     try {
-      RockingOptions ro = s_.dynamic.options;
-      ro.record_history = false;
-      ro.scale = sr.scale;
-      ro.reverse = row.reversed;
-      const RockingResult r = analyse(s_.models[row.restitution], rec, ro);
-      row.termination = to_string(r.termination);
-      if (r.termination != RockingTermination::completed && r.termination != RockingTermination::overturned) {
+      const MechanismResponse m = s_.respond(rec, sr.scale, row.reversed, row.restitution);
+      row.termination = to_string(m.termination);
+      if (!m.ok()) {
         row.ok = false;
-        row.reason = r.message.empty() ? row.termination : r.message;
+        row.reason = m.message;
       } else {
-        row.theta_max_rad = r.theta_max;
-        row.theta_u_rad = r.theta_u;
-        row.theta_ratio = r.theta_u > 0 ? r.theta_max / r.theta_u : 0.0;
-        // As in the façade assessment: the control point's peak displacement
-        // in the equivalent SDOF [C8.7.1.4].
-        const double d_control = std::fabs(s_.body.horizontal_displacement(kin.control_point, r.theta_max));
-        row.d_star_m = d_control * kin.d_star_per_dk;
-        row.dc_energy = r.dc;
-        row.dc_displacement = kin.d_SLV > 0 ? row.d_star_m / kin.d_SLV : 0.0;
-        row.overturned = r.overturned;
+        row.theta_max_rad = m.theta_max;
+        row.theta_u_rad = m.theta_u;
+        row.theta_ratio = m.theta_u > 0 ? m.theta_max / m.theta_u : 0.0;
+        row.d_star_m = m.d_star;
+        row.dc_energy = m.dc_energy;
+        row.dc_displacement = m.dc_displacement;
+        row.overturned = m.overturned;
       }
     } catch (const std::exception& e) {
       row.ok = false;

@@ -78,6 +78,13 @@ PlotSeries series(std::string name, PlotSeries::Style style) {
   return s;
 }
 
+// Return period (years) at which the site's ag reaches a check's ag capacity
+// (log-log on the ag hazard curve; outside [30, 2475] years extrapolated).
+double capacity_tr(const FragilityStudy& st, const CheckRow& c) {
+  if (!st.ag_hazard || !c.has_pga || !std::isfinite(c.ag_capacity_g) || !(c.ag_capacity_g > 0.0)) return NAN;
+  return 1.0 / st.ag_hazard->lambda(c.ag_capacity_g * units::g);
+}
+
 // P(C|im) at the code's SLV/SLC PGA, from a curve.
 double p_at(const FragilityCurve& c, double im) { return c.fit.ok() ? c.fit.fragility.probability(im) : NAN; }
 
@@ -105,9 +112,12 @@ json fragility_to_json(const FragilityStudy& st, const FragilityResult& r) {
                            {"P_overturning_at_pga", p_at(r.curves[r.governing], st.action_pga.at(ls))}};
   }
   json checks = json::array();
-  for (const CheckRow& c : st.checks)
-    checks.push_back({{"code", c.code}, {"limit_state", c.limit_state}, {"kind", c.kind}, {"dc", c.dc},
-                      {"satisfied", c.satisfied}});
+  for (const CheckRow& c : st.checks) {
+    json jc{{"code", c.code}, {"limit_state", c.limit_state}, {"kind", c.kind}, {"dc", c.dc}, {"satisfied", c.satisfied}};
+    const double tr = capacity_tr(st, c);
+    if (std::isfinite(tr)) jc["ag_capacity_g"] = c.ag_capacity_g, jc["TR_of_ag_capacity_years"] = tr;
+    checks.push_back(jc);
+  }
   code["checks"] = checks;
   j["code"] = code;
   json stripes = json::array();
@@ -134,7 +144,7 @@ std::string fragility_text(const FragilityStudy& st, const FragilityResult& r) {
   os << "fragility of '" << st.mechanism << "' (" << st.file << "), site " << st.site_description << "\n";
   os << to_string(st.options.method) << ": " << st.stripes.size() << " levels, " << r.analyses << " analyses ("
      << r.failed << " failed); IM = PGA on the site's ground\n";
-  for (std::size_t e = 0; e < st.models.size(); ++e) {
+  for (std::size_t e = 0; e < st.restitutions(); ++e) {
     os << "restitution " << st.restitution_labels[e] << ":\n";
     for (FragilityState s : all_fragility_states) {
       const FragilityCurve& c = r.curve(e, s);
@@ -159,6 +169,14 @@ std::string fragility_text(const FragilityStudy& st, const FragilityResult& r) {
   os << "code: TR SLV " << fmt(st.actions.at(LimitState::SLV).TR, "%.0f") << " years (PGA "
      << g_units(st.action_pga.at(LimitState::SLV)) << " g), TR SLC " << fmt(st.actions.at(LimitState::SLC).TR, "%.0f")
      << " years (PGA " << g_units(st.action_pga.at(LimitState::SLC)) << " g)\n";
+  for (const CheckRow& c : st.checks) {
+    const double tr = capacity_tr(st, c);
+    if (!std::isfinite(tr)) continue;
+    os << "code " << c.code << " " << c.limit_state << " " << c.kind << ": D/C " << fmt(c.dc, "%.2f") << " ("
+       << (c.satisfied ? "satisfied" : "not satisfied") << "), ag capacity " << fmt(c.ag_capacity_g, "%.3f")
+       << " g, reached every " << fmt(tr, "%.0f") << " years"
+       << (tr < tr_min_years || tr > tr_max_years ? " (extrapolated beyond the hazard data)" : "") << "\n";
+  }
   os << "overturning (governing restitution " << st.restitution_labels[gov.restitution] << "): ";
   if (gov.has_risk)
     os << "return period " << fmt(gov.return_period, "%.0f") << " years; P(overturning | PGA SLV) "
@@ -250,8 +268,13 @@ FragilityReportFiles write_fragility_report(const FragilityStudy& st, const Frag
                      (gov.has_risk ? fmt(gov.return_period, "%.0f") + " years" : "not available (" + gov.note + ")"));
   std::vector<std::vector<std::string>> check_rows;
   for (const CheckRow& c : st.checks)
-    check_rows.push_back({c.code, c.limit_state, c.kind, fmt(c.dc, "%.3f"), c.satisfied ? "satisfied" : "not satisfied"});
-  if (!check_rows.empty()) html.add_table({"code", "limit state", "check", "D/C", "verdict"}, check_rows, "The code's kinematic checks of the case");
+    check_rows.push_back({c.code, c.limit_state, c.kind, fmt(c.dc, "%.3f"), c.satisfied ? "satisfied" : "not satisfied",
+                          c.has_pga ? fmt(c.ag_capacity_g, "%.3f") : "-", fmt(capacity_tr(st, c), "%.0f")});
+  if (!check_rows.empty())
+    html.add_table({"code", "limit state", "check", "D/C", "verdict", "ag capacity (g)", "return period of the ag capacity (years)"},
+                   check_rows, "The code's kinematic checks of the case; the return period at which the site's ag "
+                               "reaches each ag capacity (log-log on the grid's nine return periods) compares with "
+                               "the return period of overturning above");
   std::vector<std::vector<std::string>> stripe_rows;
   for (const Stripe& s : st.stripes)
     stripe_rows.push_back({fmt(s.TR, "%.0f"), g_units(s.im), std::to_string(s.records.size()),
@@ -260,7 +283,7 @@ FragilityReportFiles write_fragility_report(const FragilityStudy& st, const Frag
 
   if (plots) {
     const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c"};
-    for (std::size_t e = 0; e < st.models.size(); ++e) {
+    for (std::size_t e = 0; e < st.restitutions(); ++e) {
       Plot p;
       p.title = "Fragility, restitution " + st.restitution_labels[e];
       p.x_label = "PGA (g)";

@@ -98,7 +98,7 @@ FragilityResult fit_fragility(const FragilityStudy& st, const std::vector<Fragil
   for (const auto& r : rows) res.failed += r.ok ? 0 : 1;
   const bool ida = st.options.method == FragilityMethod::ida;
   const double half = 0.5 * (1.0 - st.options.confidence);
-  const std::size_t E = st.models.size(), P = st.polarities.size();
+  const std::size_t E = st.restitutions(), P = st.polarities.size();
 
   // Plot grid of the band: from half the lowest to twice the highest level.
   std::vector<double> grid;

@@ -83,6 +83,7 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
   st.VR = site.VR();
   try {
     st.hazard = site_pga_hazard_curve(site);
+    st.ag_hazard = site_ag_hazard_curve(site);
   } catch (const InputError& e) {
     throw InputError(kase.file + ": /site: " + e.what());
   }
@@ -225,6 +226,31 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
     }
   }
   return st;
+}
+
+MechanismResponse FragilityStudy::respond(const Record& record, double scale, bool reversed,
+                                          std::size_t restitution) const {
+  RockingOptions ro = dynamic.options;
+  ro.record_history = false;
+  ro.scale = scale;
+  ro.reverse = reversed;
+  const RockingResult r = analyse(models.at(restitution), record, ro);
+  MechanismResponse m;
+  m.termination = r.termination;
+  if (!m.ok()) {
+    m.message = r.message.empty() ? to_string(r.termination) : r.message;
+    return m;
+  }
+  m.theta_max = r.theta_max;
+  m.theta_u = r.theta_u;
+  // As in the façade assessment: the control point's peak horizontal
+  // displacement, in the equivalent SDOF [C8.7.1.4].
+  const double d_control = std::fabs(body.horizontal_displacement(kinematic.control_point, r.theta_max));
+  m.d_star = d_control * kinematic.d_star_per_dk;
+  m.dc_energy = r.dc;
+  m.dc_displacement = kinematic.d_SLV > 0 ? m.d_star / kinematic.d_SLV : 0.0;
+  m.overturned = r.overturned;
+  return m;
 }
 
 }  // namespace assess

@@ -51,4 +51,8 @@ class HazardCurve {
 /// curve. @throws InputError naming the reason.
 HazardCurve site_pga_hazard_curve(const Site& site);
 
+/// The hazard curve of ag on rock (m/s^2) at the nine return periods, for
+/// the return period of an ag capacity of the code's checks. @throws InputError
+HazardCurve site_ag_hazard_curve(const Site& site);
+
 }  // namespace assess

@@ -13,6 +13,7 @@
 
 #include "assess/assessment/case_file.hpp"
 #include "assess/assessment/dynamic_case.hpp"
+#include "assess/dynamics/rocking_analysis.hpp"
 #include "assess/dynamics/rocking_from_chain.hpp"
 #include "assess/dynamics/rocking_model.hpp"
 #include "assess/hazard/hazard_curve.hpp"
@@ -67,6 +68,20 @@ struct Stripe {
   bool compatible = true;   ///< stripes: the mean spectrum is within the band
 };
 
+/// What one analysis of the mechanism gives the limit states (SI).
+struct MechanismResponse {
+  RockingTermination termination = RockingTermination::completed;
+  std::string message;          ///< why the analysis failed, if it did
+  double theta_max = 0.0, theta_u = 0.0;  ///< rad
+  double d_star = 0.0;          ///< peak d* of the control point [C8.7.1.4] (m)
+  double dc_energy = 0.0;       ///< energy demand/capacity (seed §3.2)
+  double dc_displacement = 0.0; ///< d* / d_SLV [C8.7.1.2.1.9]
+  bool overturned = false;
+  bool ok() const {
+    return termination == RockingTermination::completed || termination == RockingTermination::overturned;
+  }
+};
+
 /// Everything the analyses need, built once.
 struct FragilityStudy {
   std::string file;            ///< the case file
@@ -77,6 +92,7 @@ struct FragilityStudy {
   std::map<LimitState, SeismicAction> actions;  ///< the code's limit states at the site
   std::map<LimitState, double> action_pga;      ///< Se(0) = ag S of each (m/s^2)
   std::optional<HazardCurve> hazard;            ///< PGA hazard curve of the site
+  std::optional<HazardCurve> ag_hazard;         ///< ag (rock) hazard curve: return periods of the code's ag capacities
   // The mechanism (the governing candidate of the kinematic analysis).
   std::string mechanism;        ///< its label
   KinematicResult kinematic;    ///< its kinematic result (d_SLV, dk0, control point, ...)
@@ -91,8 +107,16 @@ struct FragilityStudy {
   std::vector<std::string> record_files;
   std::vector<Stripe> stripes;               ///< increasing im
 
+  /// The only entry point to the dynamics: one analysis of the mechanism under
+  /// `record` scaled by `scale`, polarity flipped if `reversed`, with
+  /// restitution value `restitution`. Thread-safe. (Where chains of several
+  /// blocks will plug in: nothing else of risk/ knows the model.)
+  MechanismResponse respond(const Record& record, double scale, bool reversed, std::size_t restitution) const;
+
+  /// Number of restitution values.
+  std::size_t restitutions() const { return restitution_labels.size(); }
   /// Analyses per (stripe, record) group: polarities x restitutions.
-  std::uint64_t group_size() const { return polarities.size() * models.size(); }
+  std::uint64_t group_size() const { return polarities.size() * restitutions(); }
   /// Number of (stripe, record) groups.
   std::uint64_t groups() const;
   /// Number of analyses.
