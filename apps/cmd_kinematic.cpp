@@ -25,15 +25,18 @@ struct KinematicArgs {
 
 void run(const KinematicArgs& a) {
   const CaseFile c = read_case_file(a.file);
-  const KinematicCaseResult out = run_kinematic_case(c);
-  const CandidateResult& gc = out.candidates[out.governing];
-  if (!gc.result.activates)
-    throw InputError(a.file + ": the mechanism (" + gc.label + ") is never activated: alpha0 = " +
-                     std::to_string(gc.result.alpha0) + " <= 0");
-  if (a.json)
-    std::cout << kinematic_json(c, out).dump(2) << "\n";
-  else
+  const KinematicCaseResult out = run_kinematic_case(c);  // alpha0 <= 0: InputError "statically unstable"
+  print_warnings(out.warnings);
+  if (a.json) {
+    nlohmann::json j = kinematic_json(c, out);
+    std::cout << stamp_version(j).dump(2) << "\n";
+  } else {
     std::cout << kinematic_text(c, out);
+    if (!out.warnings.empty()) {
+      std::cout << "\nwarnings:\n";
+      for (const std::string& w : out.warnings) std::cout << "  " << w << "\n";
+    }
+  }
 }
 
 }  // namespace

@@ -71,10 +71,22 @@ void run(const RockingArgs& a) {
   const Sidedness sided = a.one_sided ? Sidedness::one_sided : Sidedness::two_sided;
   const RockingModel model(body, foundation, sided, parse_restitution(a.restitution, a.one_sided));
 
-  if (std::isnan(a.dt) && !a.unit.empty())
-    throw InputError("--unit applies only to a plain record file, given with --dt");
-  Record record = std::isnan(a.dt) ? read_record(a.record)
-                                   : read_plain_record(a.record, a.dt, parse_acceleration_unit(a.unit.empty() ? "g" : a.unit));
+  // A plain record: --dt (and --unit, default g) for one column; --unit alone
+  // for two columns (time, acceleration), dt read from the time column (the
+  // same readers as the case files' {"file", "dt", "unit"}).
+  Record record;
+  if (!std::isnan(a.dt)) {
+    record = read_plain_record(a.record, a.dt, parse_acceleration_unit(a.unit.empty() ? "g" : a.unit));
+  } else if (!a.unit.empty()) {
+    try {
+      record = read_plain_record(a.record, parse_acceleration_unit(a.unit));
+    } catch (const InputError& e) {
+      throw InputError(std::string("--unit applies only to a plain record file: without --dt, a plain file of two "
+                                   "columns (time in s, acceleration): ") + e.what());
+    }
+  } else {
+    record = read_record(a.record);
+  }
   RockingOptions opt;
   opt.scale = a.scale;
   opt.reverse = a.reverse;
@@ -125,7 +137,7 @@ void run(const RockingArgs& a) {
     j["record"] = {{"name", record.name}, {"format", record.format}, {"npts", record.size()},
                    {"dt", record.dt}, {"pga_g", record.pga() / units::g_n}, {"scale", a.scale},
                    {"reverse", a.reverse}};
-    std::cout << j.dump(2) << "\n";
+    std::cout << stamp_version(j).dump(2) << "\n";
     return;
   }
   std::printf("rocking analysis: %s block, %s, record %s (%s, %zu points, dt = %g s, PGA = %.4f g) x %g%s\n",

@@ -30,10 +30,7 @@ void run(const RunArgs& a) {
   opt.keep_going = a.keep_going;
   opt.histories = !a.html.empty();
   const FacadeAssessment res = assess_facade(c, opt);
-  const CandidateResult& gc = res.kinematic.candidates[res.kinematic.governing];
-  if (!gc.result.activates)
-    throw InputError(a.file + ": the mechanism (" + gc.label + ") is never activated: alpha0 = " +
-                     std::to_string(gc.result.alpha0) + " <= 0");
+  print_warnings(res.warnings);
   if (!a.html.empty()) {
     const std::string page = facade_html(res);
     std::ofstream out(a.html, std::ios::binary);
@@ -54,7 +51,7 @@ void run(const RunArgs& a) {
   if (a.json) {
     nlohmann::json j = facade_json(res);
     if (frag) j["fragility"] = {{"line", fragility_line(*frag)}, {"governing", (*frag)["governing"]}};
-    std::cout << j.dump(2) << "\n";
+    std::cout << stamp_version(j).dump(2) << "\n";
   } else {
     std::cout << facade_text(res) << (frag ? fragility_line(*frag) + "\n" : "")
               << (a.html.empty() ? "" : "\nHTML report written to " + a.html + "\n");

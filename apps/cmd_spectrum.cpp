@@ -289,7 +289,8 @@ void run(const SpectrumArgs& a) {
   for (const Column& c : cols) warn_clamp(c);
   if (a.json) {
     if (cols.size() == 1) {
-      std::cout << column_json(cols[0], spectra[0], periods, a.q).dump(2) << "\n";
+      nlohmann::json j = column_json(cols[0], spectra[0], periods, a.q);
+      std::cout << stamp_version(j).dump(2) << "\n";
     } else {
       nlohmann::json j;
       j["site"] = site.describe();
@@ -297,7 +298,7 @@ void run(const SpectrumArgs& a) {
       nlohmann::json arr = nlohmann::json::array();
       for (std::size_t i = 0; i < cols.size(); ++i) arr.push_back(column_json(cols[i], spectra[i], periods, a.q));
       j["limit_states"] = arr;
-      std::cout << j.dump(2) << "\n";
+      std::cout << stamp_version(j).dump(2) << "\n";
     }
   } else {
     print_table(site, cols, spectra, periods, a.q);

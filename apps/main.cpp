@@ -8,6 +8,10 @@
 #include <iostream>
 
 
+void assess::cli::print_warnings(const std::vector<std::string>& warnings) {
+  for (const std::string& w : warnings) std::cerr << "assess: warning: " << w << "\n";
+}
+
 int main(int argc, char** argv) {
   CLI::App app{
       "assess: out-of-plane seismic assessment of masonry walls\n"

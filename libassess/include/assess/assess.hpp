@@ -42,6 +42,7 @@
 #include <assess/assessment/case_file.hpp>
 #include <assess/assessment/dynamic_case.hpp>
 #include <assess/assessment/facade_assessment.hpp>
+#include <assess/assessment/verdict.hpp>
 
 // report
 #include <assess/report/facade_report.hpp>

@@ -3,13 +3,17 @@
 #include "assess/assessment/case_file.hpp"
 
 #include "assess/kinematic/code_rules.hpp"
+#include "assessment/plausibility.hpp"
 #include "assess/support/error.hpp"
 #include "assess/support/json_input.hpp"
 #include "assess/support/units.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 
 namespace assess {
@@ -288,6 +292,60 @@ SiteSpec parse_site(const JsonNode& s) {
   return spec;
 }
 
+// Plausibility of the mechanism's dimensions (already validated as numbers):
+// thickness, height, unit weight and slenderness (plausibility.hpp).
+std::vector<std::string> input_warnings(const nlohmann::json& mech, const std::string& file) {
+  namespace pl = plausibility;
+  std::vector<std::string> w;
+  const std::string base = file + ": /mechanism";
+  auto num = [](const nlohmann::json& o, const char* k) -> std::optional<double> {
+    if (o.is_object() && o.contains(k) && o.at(k).is_number()) return o.at(k).get<double>();
+    return std::nullopt;
+  };
+  auto thickness = [&](const std::string& where, double t) {
+    pl::range(w, where, t, "m", pl::thickness_min_m, pl::thickness_max_m,
+              "a masonry wall is 0.05-3 m thick; was it typed in cm?");
+  };
+  auto height = [&](const std::string& where, double h) {
+    if (h > pl::height_max_m)
+      w.push_back(where + " = " + pl::number(h) + " m is over " + pl::number(pl::height_max_m) +
+                  " m: a tower, not a façade; was it typed in cm? (the run goes on with " + pl::number(h) + " m)");
+  };
+  auto slender = [&](const std::string& where, double h, double t) {
+    if (t > 0.0 && h / t > pl::slenderness_max)
+      w.push_back(where + ": the wall is thinner than 1/" + pl::number(pl::slenderness_max) + " of its height (h = " +
+                  pl::number(h) + " m, t = " + pl::number(t) + " m, h/t = " + pl::number(h / t) +
+                  "): far more slender than load-bearing masonry; check the thickness (m) and the height (m)");
+  };
+  auto unit_weight = [&](const std::string& where, double g) {
+    pl::range(w, where, g, "kN/m^3", pl::unit_weight_min_kN_m3, pl::unit_weight_max_kN_m3,
+              "masonry weighs about 12-22 kN/m^3; 1800 would be kg/m^3 (divide by 102)");
+  };
+  if (const auto g = num(mech, "unit_weight")) unit_weight(base + "/unit_weight", *g);
+  if (const auto t = num(mech, "thickness")) thickness(base + "/thickness", *t);
+  if (const auto t = num(mech, "side_thickness")) thickness(base + "/side_thickness", *t);
+  if (const auto h = num(mech, "height")) height(base + "/height", *h);
+  if (const auto h = num(mech, "height"))
+    if (const auto t = num(mech, "thickness")) slender(base, *h, *t);
+  if (mech.is_object() && mech.contains("storeys") && mech.at("storeys").is_array()) {
+    const nlohmann::json& st = mech.at("storeys");
+    for (std::size_t i = 0; i < st.size(); ++i) {
+      const std::string p = base + "/storeys/" + std::to_string(i);
+      const auto t = num(st[i], "thickness"), h = num(st[i], "height");
+      if (t) thickness(p + "/thickness", *t);
+      if (h) height(p + "/height", *h);
+      if (t && h) slender(p, *h, *t);
+    }
+  }
+  if (mech.is_object() && mech.contains("blocks") && mech.at("blocks").is_array()) {
+    const nlohmann::json& bl = mech.at("blocks");
+    for (std::size_t i = 0; i < bl.size(); ++i)
+      if (const auto g = num(bl[i], "unit_weight"); g && *g > 0.0)
+        unit_weight(base + "/blocks/" + std::to_string(i) + "/unit_weight", *g);
+  }
+  return w;
+}
+
 }  // namespace
 
 CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
@@ -336,7 +394,8 @@ CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
     bm.T1 = b->find("T1_s") ? b->positive("T1_s", "s") : code_rules::T1_simplified(bm.H);
     bm.damping_pct = b->number_or("damping_pct", code_rules::building_damping_default_pct, "%", 1e-9, 100.0);
     c.building = bm;
-    if (b->find("Z_m")) c.Z = b->number("Z_m", "m", 0.0, bm.H);
+    // Z > H is allowed with a warning (psi = Z/H > 1, run_kinematic_case).
+    if (b->find("Z_m")) c.Z = b->number("Z_m", "m", 0.0);
   }
   if (const auto a = root.find("analysis")) {
     a->allow_only({"curve_model", "curve_points", "control", "du_cap_m", "d_SLV_cap_m", "d_SLC_cap_m", "q",
@@ -358,6 +417,7 @@ CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
     c.checks.damping_SLV_pct = a->number_or("damping_SLV_pct", code_rules::mechanism_damping_SLV_pct, "%", 0.0);
     c.checks.damping_SLC_pct = a->number_or("damping_SLC_pct", code_rules::mechanism_damping_SLC_pct, "%", 0.0);
   }
+  c.warnings = input_warnings(doc.at("mechanism"), file);
   // Hook for the façade issue (dynamic rocking): kept raw, parsed there.
   if (root.has("dynamic")) c.dynamic = doc.at("dynamic");
   return c;
@@ -365,12 +425,75 @@ CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
 
 CaseFile read_case_file(const std::string& path) { return parse_case(read_json_file(path), path); }
 
+namespace {
+
+std::string fmt(const char* f, double v) {
+  char b[48];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+// alpha0 <= 0: the static loads alone overturn the candidate [C8A.4.1]/[C8.7.1.1]
+// (alpha0 = -(work of the non-seismic forces) / sum W dx).
+[[noreturn]] void statically_unstable(const CaseFile& c, const CandidateResult& cr) {
+  const KinematicResult& r = cr.result;
+  std::string driving, restoring;
+  double w_drive = 0.0, w_rest = 0.0;
+  for (const LoadWork& w : r.loads) {
+    const double mag = (w.load.type == LoadType::Weight || w.load.type == LoadType::SelfWeight ? w.load.weight
+                                                                                               : w.load.force.norm()) /
+                       units::kN;
+    const std::string item = "\"" + w.load.name + "\" (" + to_string(w.load.type) + ", " + fmt("%.4g", mag) +
+                             " kN at z = " + fmt("%.2f", w.load.point.y()) + " m, virtual work " +
+                             fmt("%+.4g", w.work / units::kN) + " kN m)";
+    if (w.work > 0.0) {
+      driving += (driving.empty() ? "" : ", ") + item;
+      w_drive += w.work;
+    } else if (w.work < 0.0) {
+      w_rest += -w.work;
+    }
+  }
+  std::string msg = c.file + ": /mechanism: the wall is statically unstable: it overturns under its static loads "
+                    "alone, without any earthquake (alpha0 = " + fmt("%.4g", r.alpha0) + " <= 0 [C8A.4.1, C8.7.1.1]";
+  if (c.mechanism.candidates.size() > 1) msg += ", candidate \"" + cr.label + "\"";
+  msg += ")";
+  if (!driving.empty())
+    msg += "; the loads that push it outward: " + driving + ", total " + fmt("%.4g", w_drive / units::kN) +
+           " kN m against " + fmt("%.4g", w_rest / units::kN) + " kN m of the restoring weights";
+  else if (!(r.sum_W_dx > 0.0))
+    msg += "; no seismic weight moves outward (sum W dx = " + fmt("%.4g", r.sum_W_dx / units::kN) +
+           " kN m): check the constraints";
+  msg += ". Check the sign and size of thrusts (outward positive, kN) and of ties";
+  throw InputError(msg);
+}
+
+}  // namespace
+
 KinematicCaseResult run_kinematic_case(const CaseFile& c) {
   KinematicCaseResult out;
+  out.warnings = c.warnings;
   for (const MechanismCandidate& m : c.mechanism.candidates)
-    out.candidates.push_back({m.label, m.parameter, c.Z.value_or(m.Z), analyse_kinematic(m.chain, c.options)});
+    out.candidates.push_back({m.label, m.parameter, c.Z.value_or(m.Z), analyse_kinematic(m.chain, c.options), {}, {}, 0.0});
+  for (const CandidateResult& cr : out.candidates)
+    if (!cr.result.activates) statically_unstable(c, cr);
+  // alpha0 > 1 of the governing candidate(s) (searched candidates far from
+  // the governing one have large alpha0 by construction).
+  auto warn_alpha0 = [&](std::size_t i) {
+    const CandidateResult& cr = out.candidates[i];
+    if (!(cr.result.alpha0 > plausibility::alpha0_max)) return;
+    out.warnings.push_back(c.file + ": /mechanism: alpha0 = " + fmt("%.4g", cr.result.alpha0) + " (-) > 1" +
+                           (out.candidates.size() > 1 ? " for the governing \"" + cr.label + "\"" : "") +
+                           ": a horizontal force larger than the weight is needed to start the mechanism; "
+                           "out-of-plane mechanisms are usually in 0.02-0.5 (a restrained wall under a heavy load "
+                           "can exceed 1): check the thickness (m, not cm), ties and thrusts");
+  };
+  // Without a site: no checks; the governing candidate is the smallest alpha0.
   out.governing = governing_candidate(c.mechanism);
-  if (!c.site) return out;
+  if (!c.site) {
+    warn_alpha0(out.governing);
+    return out;
+  }
+
   const Site site(*c.site);
   CheckInput in = c.checks;
   for (LimitState ls : {LimitState::SLD, LimitState::SLV, LimitState::SLC}) {
@@ -378,11 +501,60 @@ KinematicCaseResult run_kinematic_case(const CaseFile& c) {
     out.actions[ls] = site.action(ls);
     in.hazard[ls] = out.actions[ls].hazard;
   }
+  for (CodeEdition code : in.codes)
+    for (LimitState ls : {LimitState::SLD, LimitState::SLV, LimitState::SLC})
+      if ((ls != LimitState::SLC || code == CodeEdition::NTC2018) && !in.hazard.count(ls))
+        throw InputError(c.file + ": /site/hazard: the " + to_string(code) + " checks need the hazard of " +
+                         to_string(ls) + " (ag_g, F0, Tc_star)");
   in.site = c.site->conditions;
-  const CandidateResult& g = out.candidates[out.governing];
-  in.Z = g.Z;
   in.building = c.building;
-  out.checks = run_code_checks(g.result, in);
+  bool warned_Z = false;
+  for (CandidateResult& cr : out.candidates) {
+    in.Z = cr.Z;
+    if (cr.Z > 0.0 && !c.building)
+      throw InputError(c.file + ": /building: missing: the candidate \"" + cr.label + "\" is at height Z = " +
+                       fmt("%.3f", cr.Z) + " m and its checks need the building (\"height_m\" in m, \"storeys\", "
+                       "optional \"T1_s\" in s) [C8A.4.10, C7.2.3]");
+    if (c.building && cr.Z > c.building->H && !warned_Z) {
+      warned_Z = true;
+      const double psi = code_rules::psi_first_mode(cr.Z, c.building->H);
+      out.warnings.push_back(c.file + ": " + (c.Z ? "/building/Z_m" : "/mechanism") + ": the mechanism's height Z = " +
+                             fmt("%.3f", cr.Z) + " m is above the building height /building/height_m = " +
+                             fmt("%.3f", c.building->H) + " m, so psi(Z) = Z/H = " + fmt("%.3f", psi) +
+                             " > 1; the reading taken: the first-mode shape psi = Z/H extended linearly above H "
+                             "(a gable or belfry above the eaves when H is taken at the eaves) [C8A.4.10, C7.2.10]");
+    }
+    try {
+      cr.checks = run_code_checks(cr.result, in);
+    } catch (const InputError& e) {
+      throw InputError(c.file + ": /building: " + e.what());
+    }
+    cr.ag_capacity_min_g = std::numeric_limits<double>::infinity();
+    for (CheckRow& row : cr.checks) {
+      row.candidate = cr.label;
+      double& m = cr.max_dc[row.code];
+      m = std::max(m, std::isfinite(row.dc) ? row.dc : std::numeric_limits<double>::infinity());
+      if (row.has_pga) cr.ag_capacity_min_g = std::min(cr.ag_capacity_min_g, row.ag_capacity_g);
+    }
+  }
+  // The governing candidate of each code: the largest D/C over its checks
+  // (Circ. 2019 C8.7.1: the most unfavourable mechanism; ties: the first).
+  for (CodeEdition code : in.codes) {
+    const std::string k = to_string(code);
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < out.candidates.size(); ++i)
+      if (out.candidates[i].max_dc[k] > out.candidates[best].max_dc[k]) best = i;
+    out.governing_by_code[k] = best;
+    for (const CheckRow& row : out.candidates[best].checks)
+      if (row.code == k) out.checks.push_back(row);
+  }
+  if (!in.codes.empty())
+    out.governing = out.governing_by_code.count("NTC2018") ? out.governing_by_code["NTC2018"]
+                                                           : out.governing_by_code[to_string(in.codes.front())];
+  warn_alpha0(out.governing);
+  std::vector<CheckRow> all;
+  for (const CandidateResult& cr : out.candidates) all.insert(all.end(), cr.checks.begin(), cr.checks.end());
+  out.verdict = build_verdict(all);
   return out;
 }
 

@@ -42,6 +42,11 @@ Restitution parse_restitution(const JsonNode& n) {
 
 }  // namespace
 
+Record read_listed_record(const ListedRecord& r) {
+  if (!r.unit) return read_record(r.file);
+  return r.dt ? read_plain_record(r.file, *r.dt, *r.unit) : read_plain_record(r.file, *r.unit);
+}
+
 std::string describe(const Restitution& r) {
   switch (r.kind) {
     case Restitution::Kind::value: {
@@ -114,9 +119,22 @@ DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, co
     const std::vector<JsonNode> recs = d.array("records", 0);
     if (recs.empty()) d.at("records").fail("expected at least one record {\"file\": ..., \"scale\": ...}");
     for (const JsonNode& r : recs) {
-      r.allow_only({"file", "scale"});
+      r.allow_only({"file", "scale", "dt", "unit"});
       ListedRecord lr;
       lr.file = resolve(r.string("file"), case_dir);
+      // A plain record (REXEL, SIMQKE, site-response output): the unit of the
+      // values, and dt (s) for one column; two columns give dt themselves.
+      if (r.has("unit")) {
+        const std::string u = r.choice("unit", {"g", "m/s^2", "cm/s^2", "m/s2", "cm/s2", "gal"});
+        lr.unit = parse_acceleration_unit(u);
+      }
+      if (r.has("dt")) {
+        lr.dt = r.number("dt", "s (time step of a plain one-column record)", 1e-6, 10.0);
+        if (!(*lr.dt > 0.0)) r.at("dt").fail("expected a time step > 0 s");
+        if (!lr.unit)
+          r.fail("a plain record with \"dt\" needs \"unit\": \"g\", \"m/s^2\" or \"cm/s^2\" (the unit of "
+                 "its acceleration values)");
+      }
       lr.scale = r.has("scale") ? r.number("scale", "(-, linear scale factor)", 1e-6, 100.0) : 1.0;
       if (!(lr.scale > 0.0)) r.at("scale").fail("expected a scale factor > 0 (-)");
       lr.json_path = r.path();

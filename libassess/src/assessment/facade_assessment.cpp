@@ -18,6 +18,8 @@
 #include "assess/records/response_spectrum.hpp"
 #include "assess/support/units.hpp"
 #include "support/parallel_for.hpp"
+#include "assessment/plausibility.hpp"
+#include "assess/kinematic/code_rules.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -44,13 +46,17 @@ void load_records(FacadeAssessment& a, const DynamicSpec& d, const FacadeOptions
   if (!d.selection) {
     for (const ListedRecord& lr : d.records) {
       try {
-        Record r = read_record(lr.file);
+        Record r = read_listed_record(lr);
         RecordUsed u{r.name, lr.file, r.event, r.station, r.component, lr.scale, r.pga() * lr.scale, lr.json_path};
         a.records.push_back(u);
         recs.push_back(std::move(r));
       } catch (const InputError& e) {
-        if (!opt.keep_going) throw InputError(a.kase.file + ": " + lr.json_path + "/file: " + e.what());
-        a.record_failures.push_back(lr.json_path + "/file: " + e.what());
+        std::string msg = e.what();
+        if (msg.find("for a plain file") != std::string::npos)
+          msg += " (in a case file: {\"file\": ..., \"dt\": s, \"unit\": \"g\" | \"m/s^2\" | \"cm/s^2\"} for one "
+                 "column; \"unit\" alone for two columns, time and acceleration)";
+        if (!opt.keep_going) throw InputError(a.kase.file + ": " + lr.json_path + "/file: " + msg);
+        a.record_failures.push_back(lr.json_path + "/file: " + msg);
       }
     }
     if (recs.empty()) throw InputError(a.kase.file + ": /dynamic/records: no record could be read");
@@ -88,6 +94,63 @@ void load_records(FacadeAssessment& a, const DynamicSpec& d, const FacadeOptions
   if (recs.empty()) throw InputError(a.kase.file + ": /dynamic/select: no compatible record in the catalogue");
 }
 
+// Compatibility of the records' mean scaled 5 % spectrum with the SLV
+// spectrum (NTC 2018 §3.2.3.6: -10 %/+30 % over the period range). Selected
+// records carry it from the selection; listed records are checked here over
+// the same default range as a selection.
+void compatibility(FacadeAssessment& a, const std::vector<Record>& recs, const ElasticSpectrum& target,
+                   const KinematicResult& kin) {
+  SpectrumCompatibility& c = a.compatibility;
+  const double lo = 1.0 - code_rules::compatibility_lower_tol, hi = 1.0 + code_rules::compatibility_upper_tol;
+  if (a.selection) {
+    c.computed = true;
+    c.range = a.selection_range;
+    c.min_ratio = a.selection->min_ratio;
+    c.max_ratio = a.selection->max_ratio;
+    c.band_satisfied = a.selection->band_satisfied;
+  } else {
+    c.computed = true;
+    const double T1 = std::min(kin.Ts, kin.T_SLV), T2 = std::max(kin.Ts, kin.T_SLV);
+    c.range = rocking_period_range(T1, T2);
+    a.selection_range = c.range;
+    const std::vector<double> T = log_spaced_periods(c.range.T_min, c.range.T_max, 40);
+    std::vector<double> mean(T.size(), 0.0);
+    std::vector<std::vector<double>> psa(recs.size());
+    detail::parallel_for(recs.size(), [&](std::size_t i) { psa[i] = response_spectrum(recs[i], T).psa(); });
+    for (std::size_t i = 0; i < recs.size(); ++i)
+      for (std::size_t j = 0; j < T.size(); ++j) mean[j] += psa[i][j] * a.records[i].scale / double(recs.size());
+    c.min_ratio = 1e300;
+    c.max_ratio = 0.0;
+    for (std::size_t j = 0; j < T.size(); ++j) {
+      const double r = mean[j] / target.Se(T[j]);
+      c.min_ratio = std::min(c.min_ratio, r);
+      c.max_ratio = std::max(c.max_ratio, r);
+    }
+    c.band_satisfied = c.min_ratio >= lo && c.max_ratio <= hi;
+  }
+  char buf[320];
+  std::snprintf(buf, sizeof buf,
+                "mean spectrum of the %d records / SLV spectrum (5 %%) over %.2f-%.2f s: %.3f to %.3f, %s the band "
+                "%.2f-%.2f (NTC 2018 §3.2.3.6)",
+                int(recs.size()), c.range.T_min, c.range.T_max, c.min_ratio, c.max_ratio,
+                c.band_satisfied ? "within" : "OUTSIDE", lo, hi);
+  c.message = buf;
+  if (!c.band_satisfied)
+    a.warnings.push_back(a.kase.file + ": " + (a.selection ? "/dynamic/select" : "/dynamic/records") + ": the " +
+                         c.message + ": the records are not compatible with the site's SLV action and the dynamic "
+                         "verdict rests on them");
+}
+
+// The summary over every candidate's checks, the dynamic and energy rows.
+void finish(FacadeAssessment& a) {
+  std::vector<CheckRow> all;
+  for (const CandidateResult& cr : a.kinematic.candidates) all.insert(all.end(), cr.checks.begin(), cr.checks.end());
+  for (const CheckRow& r : a.checks)
+    if (r.kind == "dynamic") all.push_back(r);
+  all.insert(all.end(), a.energy_rows.begin(), a.energy_rows.end());
+  a.verdict = build_verdict(all);
+}
+
 }  // namespace
 
 FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
@@ -99,6 +162,8 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   a.kase = kase;
   a.kinematic = run_kinematic_case(kase);
   a.checks = a.kinematic.checks;
+  a.warnings = a.kinematic.warnings;
+  a.verdict = a.kinematic.verdict;
   const Site site(*kase.site);
   a.site_description = site.describe();
   a.VR = site.VR();
@@ -132,6 +197,13 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
                      "dynamic analysis does not apply yet";
     return a;
   }
+  if (d.smooth && !(d.k / units::kN >= plausibility::k_min_kN_m3 && d.k / units::kN <= plausibility::k_max_kN_m3))
+    a.warnings.push_back(kase.file + ": /dynamic/k = " + plausibility::number(d.k / units::kN) +
+                         " kN/m^3 is outside " + plausibility::number(plausibility::k_min_kN_m3) + "-" +
+                         plausibility::number(plausibility::k_max_kN_m3) +
+                         " kN/m^3: the seed paper (Fig. 2) uses 5e4-1e7 kN/m^3; below 1e4 a wall has hardly any "
+                         "restoring branch, above 1e8 the smooth block is the rigid one (\"model\": \"rigid\"); "
+                         "was it typed in N/m^3?");
   const Foundation found = d.smooth ? Foundation::winkler(d.k) : Foundation::rigid();
   std::vector<RockingModel> models;
   for (std::size_t i = 0; i < d.restitutions.size(); ++i) {
@@ -147,6 +219,14 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   const ElasticSpectrum& target = a.spectra.at(LimitState::SLV);
   std::vector<Record> recs;
   load_records(a, d, opt, target, gov.result, recs);
+  for (const RecordUsed& r : a.records)
+    if (r.pga / units::g > plausibility::record_pga_max_g)
+      a.warnings.push_back(kase.file + ": " + (r.json_path.empty() ? std::string("/dynamic/select") : r.json_path + "/scale") +
+                           ": the scaled record " + r.name + " has PGA = " + plausibility::number(r.pga / units::g) +
+                           " g (scale " + plausibility::number(r.scale) + "), over " +
+                           plausibility::number(plausibility::record_pga_max_g) +
+                           " g, beyond recorded ground motions: check the scale factor and the record's unit");
+  compatibility(a, recs, target, gov.result);
 
   // Curves for the report: record spectra and the moment-rotation curve.
   a.mean_psa.assign(a.periods.size(), 0.0);
@@ -215,27 +295,80 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
     }
     s.mean_dc /= s.analyses;
     s.mean_theta_ratio /= s.analyses;
-    for (const auto& [rec, dmax] : envelope) s.mean_d_star += dmax;
+    for (const auto& [rec, dmax] : envelope) {
+      s.mean_d_star += dmax;
+      s.max_d_star = std::max(s.max_d_star, dmax);
+    }
+    s.records = int(envelope.size());
     s.mean_d_star /= double(envelope.size());
-    s.dc_slv = kin.d_SLV > 0 ? s.mean_d_star / kin.d_SLV : 0.0;
-    s.slv_satisfied = !s.any_collapse && s.mean_d_star <= kin.d_SLV;
+    // NTC 2018 §7.3.5 (docs/theory/facade.md §7): with at least 7 records the
+    // mean of the results, with 3 to 6 the most unfavourable, with fewer no
+    // verdict. Any collapse fails the check whatever the count (C8.7.1.2.1.9).
+    if (s.records >= code_rules::records_for_mean) {
+      s.rule = "mean";
+      s.d_demand = s.mean_d_star;
+    } else if (s.records >= code_rules::records_min) {
+      s.rule = "most unfavourable";
+      s.d_demand = s.max_d_star;
+    } else {
+      s.rule = "none";
+      s.d_demand = s.max_d_star;
+    }
+    s.no_verdict = s.rule == "none" && !s.any_collapse;
+    s.dc_slv = kin.d_SLV > 0 ? s.d_demand / kin.d_SLV : 0.0;
+    s.slv_satisfied = !s.any_collapse && !s.no_verdict && s.d_demand <= kin.d_SLV;
     a.summaries.push_back(s);
 
+    const std::string e_text = describe(d.restitutions[ie]);
+    const std::string nrec = std::to_string(s.records) + (s.records == 1 ? " record" : " records");
     CheckRow row;
     row.code = "NTC2018";
     row.limit_state = "SLV";
     row.kind = "dynamic";
     row.location = "ground";
-    row.clause = "C8.7.1.2.1.9 [V-T], " + describe(d.restitutions[ie]);
-    row.formula = std::string("mean of peak d* over ") + std::to_string(envelope.size()) + " records" +
-                  (s.any_collapse ? "; d0 exceeded in " + std::to_string(s.overturned) + " analyses" : "; d0 never exceeded");
-    row.demand = s.mean_d_star;
+    row.candidate = gov.label;
+    row.clause = "C8.7.1.2.1.9 [V-T], NTC 2018 §7.3.5, " + e_text;
+    row.formula = (s.rule == "mean" ? "mean of peak d* over " : "largest peak d* of ") + nrec;
+    int collapses = 0;
+    for (const DynamicRun& r : a.runs) collapses += r.restitution == ie && r.collapse ? 1 : 0;
+    row.note = std::string(s.any_collapse ? "d0 exceeded in " + std::to_string(collapses) + " of " +
+                                                std::to_string(s.analyses) + " analyses (overturned in " +
+                                                std::to_string(s.overturned) + ")"
+                                          : "d0 never exceeded") +
+               "; " + nrec + ": " +
+               (s.rule == "mean" ? "mean of the results (NTC 2018 §7.3.5, >= 7 records)"
+                : s.rule == "most unfavourable" ? "the most unfavourable result (NTC 2018 §7.3.5, 3 to 6 records)"
+                : s.any_collapse ? "the most unfavourable result; fewer than 3 records (NTC 2018 §7.3.5) cannot show "
+                                   "the wall safe, but a collapse fails the check whatever their number"
+                                 : "no verdict: NTC 2018 §7.3.5 needs at least 3 records (results shown, not judged)");
+    if (a.compatibility.computed && !a.compatibility.band_satisfied) row.note += "; records not compatible with the SLV spectrum";
+    row.demand = s.d_demand;
     row.capacity = kin.d_SLV;
     row.unit = "m";
     row.dc = s.dc_slv;
     row.satisfied = s.slv_satisfied;
+    row.no_verdict = s.no_verdict;
     a.checks.push_back(row);
+
+    // The seed paper's energy measure (seed §3.2): the mean over the
+    // analyses, never shown as satisfied while any analysis overturned.
+    CheckRow en;
+    en.code = "seed";
+    en.limit_state = "SLV";
+    en.kind = "dynamic energy";
+    en.location = "ground";
+    en.candidate = gov.label;
+    en.clause = "seed §3.2 energy D/C (not a code check), " + e_text;
+    en.formula = "mean over " + std::to_string(s.analyses) + " analyses of the energy demand/capacity";
+    en.demand = s.mean_dc;
+    en.capacity = 1.0;
+    en.unit = "-";
+    en.dc = s.mean_dc;
+    en.satisfied = s.overturned == 0 && s.mean_dc <= 1.0;
+    en.note = "overturned in " + std::to_string(s.overturned) + " of " + std::to_string(s.analyses) + " analyses";
+    a.energy_rows.push_back(en);
   }
+  finish(a);
   return a;
 }
 

@@ -256,6 +256,20 @@ CampaignSpec parse_campaign(const json& j, const std::string& base_dir) {
     } else if (r.is_object()) {
       file = text(require(r, "file", p), p + ".file");
       if (r.contains("name")) cr.name = text(r["name"], p + ".name");
+      // A plain record, as in the case files: {"file", "dt": s, "unit"} for one
+      // column, {"file", "unit"} for two (time, acceleration).
+      if (r.contains("unit")) {
+        cr.unit = text(r["unit"], p + ".unit");
+        try {
+          parse_acceleration_unit(cr.unit);
+        } catch (const InputError&) {
+          fail(p + ".unit", "'" + cr.unit + "': expected \"g\", \"m/s^2\" or \"cm/s^2\"");
+        }
+      }
+      if (r.contains("dt")) {
+        cr.dt = positive(r["dt"], p + ".dt", "s");
+        if (cr.unit.empty()) fail(p, "a plain record with \"dt\" needs \"unit\": \"g\", \"m/s^2\" or \"cm/s^2\"");
+      }
     } else {
       fail(p, "expected a file path, {\"name\": ..., \"file\": ...} or {\"id\": catalogue id}");
     }
@@ -350,7 +364,12 @@ json to_json(const CampaignSpec& s) {
   for (const auto& w : s.walls)
     j["walls"].push_back({{"name", w.name}, {"b_m", w.b_m}, {"h_m", w.h_m},
                           {"unit_weight_N_m3", w.unit_weight_N_m3}, {"k_N_m3", w.k_N_m3}});
-  for (const auto& r : s.records) j["records"].push_back({{"name", r.name}, {"path", r.path}});
+  for (const auto& r : s.records) {
+    json rj{{"name", r.name}, {"path", r.path}};
+    if (!r.unit.empty()) rj["unit"] = r.unit;
+    if (r.dt > 0.0) rj["dt"] = r.dt;
+    j["records"].push_back(rj);
+  }
   j["scale_factors"] = s.scale_factors;
   for (const auto& r : s.restitutions) j["restitution"].push_back(r.label);
   for (auto m : s.models) j["models"].push_back(to_string(m));
@@ -406,7 +425,12 @@ Perturbation perturbation(std::uint64_t seed, std::size_t record, std::size_t re
 Campaign::Campaign(CampaignSpec spec) : spec_(std::move(spec)) {
   for (const auto& r : spec_.records) {
     try {
-      records_.emplace_back(read_record(r.path));
+      if (r.unit.empty())
+        records_.emplace_back(read_record(r.path));
+      else if (r.dt > 0.0)
+        records_.emplace_back(read_plain_record(r.path, r.dt, parse_acceleration_unit(r.unit)));
+      else
+        records_.emplace_back(read_plain_record(r.path, parse_acceleration_unit(r.unit)));
       record_errors_.emplace_back();
     } catch (const InputError& e) {
       records_.emplace_back();

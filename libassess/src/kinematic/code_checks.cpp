@@ -80,7 +80,6 @@ void CheckInput::validate() const {
   if (Z > 0.0) {
     if (!building) throw InputError("a mechanism at height Z > 0 m needs the building (H, storeys, T1)");
     building->validate();
-    if (Z > building->H) throw InputError("height Z of the mechanism exceeds the building height H");
   }
   if (!(q >= 1.0)) throw InputError("behaviour factor q: expected >= 1");
   for (CodeEdition c : codes) {

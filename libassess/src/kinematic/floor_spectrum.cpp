@@ -28,9 +28,10 @@ FloorSpectrum::FloorSpectrum(const HazardParams& hazard, const SiteConditions& s
       element_spectrum_(hazard, site, element_damping_pct),
       building_(building) {
   building.validate();
-  if (!(z >= 0.0 && z <= building.H))
-    throw InputError("height Z = " + std::to_string(z) + " m: expected 0 <= Z <= H = " +
-                     std::to_string(building.H) + " m");
+  // z > H is allowed (psi = z/H > 1, the first mode extended above H: a
+  // gable above the eaves when H is taken at the eaves; docs/theory/facade.md).
+  if (!(z >= 0.0 && std::isfinite(z)))
+    throw InputError("height Z = " + std::to_string(z) + " m: expected Z >= 0 m");
   gamma_ = code_rules::gamma_first_mode(building.storeys);
   psi_ = code_rules::psi_first_mode(z, building.H);
   a_Z_ = building_spectrum_.Se(building.T1) * std::fabs(gamma_ * psi_) *

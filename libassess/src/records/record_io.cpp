@@ -287,6 +287,30 @@ Record read_plain_record(const std::string& path, double dt_s, AccelerationUnit 
   return r;
 }
 
+Record read_plain_record(const std::string& path, AccelerationUnit unit) {
+  // dt = the spacing of the first two times; read_plain_record(path, dt, unit)
+  // then checks every later spacing against it.
+  const std::vector<std::string> lines = read_lines(path);
+  std::vector<double> t, row;
+  for (std::size_t i = 0; i < lines.size() && t.size() < 2; ++i) {
+    const std::string s = trim(lines[i]);
+    if (s.empty() || s[0] == '#') continue;
+    row.clear();
+    parse_numbers(s, path, i + 1, row, 1.0);
+    if (row.size() != 2)
+      throw InputError(path + ":" + std::to_string(i + 1) + ": found " + std::to_string(row.size()) +
+                       " column(s); without a time step (dt, s) a plain record needs two columns: time (s) and "
+                       "acceleration");
+    t.push_back(row[0]);
+  }
+  if (t.size() < 2) throw InputError(path + ": a record needs at least 2 values");
+  const double dt = t[1] - t[0];
+  if (!(std::isfinite(dt) && dt > 0.0))
+    throw InputError(path + ": the time column must increase: the first two times give dt = " + std::to_string(dt) +
+                     " s");
+  return read_plain_record(path, dt, unit);
+}
+
 double scale_factor_to_pga(const Record& record, double target_pga_m_s2) {
   if (!(std::isfinite(target_pga_m_s2) && target_pga_m_s2 > 0.0))
     throw InputError("target PGA must be positive (m/s^2)");

@@ -23,27 +23,17 @@ std::string record_label(const FacadeAssessment& a, const DynamicRun& r) {
   return a.records[r.record].name + (r.reversed ? " (reversed)" : "");
 }
 
-// One value per approach, seed Eq. 8 and Fig. 8.
-struct Approach {
-  std::string name;
-  double dc;
-};
+// One row per approach and code, built once in the assessment layer
+// (assessment/verdict.hpp): the report only formats it.
+std::string approach_name(const VerdictRow& r) {
+  if (r.code == "seed") return "seed energy D/C (mean), " + r.clause.substr(r.clause.rfind(", ") + 2);
+  std::string n = r.code + " " + r.limit_state + " " + r.approach + " (" + r.location + ")";
+  if (r.approach == "dynamic") n += ", " + r.clause.substr(r.clause.rfind(", ") + 2);
+  return n;
+}
 
-std::vector<Approach> comparison(const FacadeAssessment& a) {
-  std::vector<Approach> out;
-  for (const CheckRow& c : a.checks) {
-    if (c.limit_state != "SLV" || c.location != "ground") continue;
-    if (c.kind == "dynamic") continue;
-    out.push_back({c.code + " SLV " + c.kind, c.dc});
-  }
-  if (a.dynamic) {
-    for (const RestitutionSummary& s : a.summaries) {
-      const std::string e = describe(a.dynamic->restitutions[s.restitution]);
-      out.push_back({"dynamic energy D/C, " + e, s.mean_dc});
-      out.push_back({"dynamic C8.7.1.2.1.9, " + e, s.dc_slv});
-    }
-  }
-  return out;
+const char* dyn_verdict(const RestitutionSummary& s) {
+  return s.no_verdict ? "no verdict" : verdict(s.slv_satisfied);
 }
 
 }  // namespace
@@ -102,6 +92,7 @@ std::string facade_text(const FacadeAssessment& a) {
                     int(a.records.size()), a.selection_range.T_min, a.selection_range.T_max,
                     a.selection->message.c_str());
       }
+      if (a.compatibility.computed && !a.selection) o += "records listed in the case: " + a.compatibility.message + "\n";
       for (const std::string& f : a.record_failures) o += "  record skipped: " + f + "\n";
       o += format("  %-34s %7s %9s  %-18s\n", "record", "scale", "PGA (g)", "event / station");
       for (const RecordUsed& r : a.records)
@@ -114,21 +105,25 @@ std::string facade_text(const FacadeAssessment& a) {
                     describe(a.dynamic->restitutions[r.restitution]).c_str(), r.theta_ratio, r.result.impacts,
                     r.result.overturned ? "yes" : "no", r.result.dc, r.d_star, r.result.t_end,
                     to_string(r.result.termination));
-      o += format("\n  summary per restitution (energy D/C = demand/capacity, seed §3.2; Circ. 2019 acceptance: "
-                  "d0 never exceeded and mean peak d* <= d_SLV = %.4f m):\n",
+      o += format("\n  summary per restitution (energy D/C = demand/capacity, the seed paper's measure (seed §3.2), "
+                  "not a code check; Circ. 2019 C8.7.1.2.1.9 acceptance: d0 never exceeded and peak d* <= d_SLV = "
+                  "%.4f m, combined over the records by NTC 2018 §7.3.5: mean with >= 7 records, the most "
+                  "unfavourable with 3 to 6, no verdict with fewer):\n",
                   governing(a).result.d_SLV);
-      o += format("  %-18s %6s %6s %10s %10s %10s %12s %8s  %s\n", "restitution", "runs", "overt.", "mean D/C",
-                  "max D/C", "mean th/u", "mean d* (m)", "D/C d*", "verdict (C8.7.1.2.1.9)");
+      o += format("  %-18s %6s %-13s %10s %10s %10s %12s %12s %-17s %8s  %s\n", "restitution", "runs", "overturned",
+                  "mean D/C", "max D/C", "mean th/u", "mean d* (m)", "max d* (m)", "rule (§7.3.5)", "D/C d*",
+                  "verdict (C8.7.1.2.1.9)");
       for (const RestitutionSummary& s : a.summaries)
-        o += format("  %-18s %6d %6d %10.4f %10.4f %10.4f %12.4f %8.3f  %s\n",
-                    describe(a.dynamic->restitutions[s.restitution]).c_str(), s.analyses, s.overturned, s.mean_dc,
-                    s.max_dc, s.mean_theta_ratio, s.mean_d_star, s.dc_slv, verdict(s.slv_satisfied));
+        o += format("  %-18s %6d %-13s %10.4f %10.4f %10.4f %12.4f %12.4f %-17s %8.3f  %s\n",
+                    describe(a.dynamic->restitutions[s.restitution]).c_str(), s.analyses,
+                    format("%d of %d", s.overturned, s.analyses).c_str(), s.mean_dc, s.max_dc, s.mean_theta_ratio,
+                    s.mean_d_star, s.max_d_star, s.rule.c_str(), s.dc_slv, dyn_verdict(s));
     }
   }
-  const std::vector<Approach> cmp = comparison(a);
-  if (!cmp.empty()) {
-    o += "\n== Demand/capacity by approach (SLV, seed Fig. 8) ==\n";
-    for (const Approach& x : cmp) o += format("  %-48s D/C = %7.3f  %s\n", x.name.c_str(), x.dc, x.dc <= 1 ? "<= 1" : "> 1");
+  if (!a.verdict.rows.empty()) o += "\n== Verdict by approach (seed Fig. 8) ==\n" + verdict_text(a.verdict);
+  if (!a.warnings.empty()) {
+    o += "\n== Warnings ==\n";
+    for (const std::string& w : a.warnings) o += "  " + w + "\n";
   }
   return o;
 }
@@ -155,6 +150,10 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
     j["site"] = s;
   }
   j["kinematic"] = kinematic_json(a.kase, a.kinematic);
+  // The run's summary (with the dynamic rows) is the top-level "comparison"
+  // and "overall"; the kinematic-only one would be a second, partial verdict.
+  j["kinematic"].erase("summary");
+  j["kinematic"].erase("warnings");
   nlohmann::json checks = nlohmann::json::array();
   for (const CheckRow& c : a.checks) checks.push_back(to_json(c));
   j["checks"] = checks;
@@ -180,6 +179,13 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
                         {"component", r.component}, {"scale", r.scale}, {"pga_g", r.pga / g}});
       d["records"] = recs;
       d["record_failures"] = a.record_failures;
+      if (a.compatibility.computed)
+        d["compatibility"] = {{"T_min", a.compatibility.range.T_min},
+                              {"T_max", a.compatibility.range.T_max},
+                              {"min_ratio", a.compatibility.min_ratio},
+                              {"max_ratio", a.compatibility.max_ratio},
+                              {"band_satisfied", a.compatibility.band_satisfied},
+                              {"message", a.compatibility.message}};
       if (a.selection)
         d["selection"] = {{"status", to_string(a.selection->status)},
                           {"T_min", a.selection_range.T_min},
@@ -221,16 +227,25 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
                         {"mean_theta_ratio", s.mean_theta_ratio},
                         {"mean_d_star", s.mean_d_star},
                         {"d_SLV", governing(a).result.d_SLV},
+                        {"max_d_star", s.max_d_star},
+                        {"records", s.records},
+                        {"rule", s.rule},
+                        {"d_demand", s.d_demand},
                         {"dc_slv", s.dc_slv},
                         {"any_collapse", s.any_collapse},
-                        {"slv_satisfied", s.slv_satisfied}});
+                        {"no_verdict", s.no_verdict},
+                        {"slv_satisfied", s.no_verdict ? nlohmann::json(nullptr) : nlohmann::json(s.slv_satisfied)}});
       d["summary"] = sums;
     }
     j["dynamic"] = d;
   }
-  nlohmann::json cmp = nlohmann::json::array();
-  for (const Approach& x : comparison(a)) cmp.push_back({{"approach", x.name}, {"dc", x.dc}});
-  j["comparison"] = cmp;
+  const nlohmann::json v = to_json(a.verdict);
+  j["comparison"] = v["by_approach"];
+  j["overall"] = v["overall"];
+  nlohmann::json energy = nlohmann::json::array();
+  for (const CheckRow& r : a.energy_rows) energy.push_back(to_json(r));
+  j["energy"] = energy;
+  j["warnings"] = a.warnings;
   return j;
 }
 
@@ -311,6 +326,30 @@ std::string facade_html(const FacadeAssessment& a) {
   // 2. Kinematic.
   h.add_heading("Kinematic analysis (Circ. 617/2009 C8A.4; Circ. 7/2019 C8.7.1)");
   h.add_paragraph("Mechanism: " + a.kase.mechanism.type + ", governing candidate: " + governing(a).label + ".");
+  if (a.kinematic.candidates.size() > 1) {
+    std::vector<std::string> head{"candidate", "Z (m)", "alpha0", "a0* (m/s2)"};
+    for (const auto& [code, gi] : a.kinematic.governing_by_code) head.push_back("D/C " + code);
+    head.push_back("ag,cap (g)");
+    head.push_back("governing for");
+    std::vector<std::vector<std::string>> rows;
+    for (std::size_t i = 0; i < a.kinematic.candidates.size(); ++i) {
+      const CandidateResult& cr = a.kinematic.candidates[i];
+      std::vector<std::string> r{cr.label, fixed(cr.Z, 2), fixed(cr.result.alpha0, 4), fixed(cr.result.a0_star, 4)};
+      std::string gov;
+      for (const auto& [code, gi] : a.kinematic.governing_by_code) {
+        const auto it = cr.max_dc.find(code);
+        r.push_back(it == cr.max_dc.end() ? "-" : fixed(it->second, 3));
+        if (gi == i) gov += (gov.empty() ? "" : ", ") + code;
+      }
+      r.push_back(std::isfinite(cr.ag_capacity_min_g) ? fixed(cr.ag_capacity_min_g, 4) : "-");
+      r.push_back(gov);
+      rows.push_back(r);
+    }
+    h.add_paragraph("Candidates: the governing one of each code is the candidate with the largest D/C over its "
+                    "checks (Circ. 2019 C8.7.1, C8A.4: the most unfavourable mechanism; for NTC 2018 the lowest ag "
+                    "capacity).");
+    h.add_table(head, rows);
+  }
   h.add_table({"quantity", "value", "unit", "clause"},
               {{"alpha0", fixed(k.alpha0, 6), "-", "C8A.4.1 / C8.7.1.1"},
                {"M*", fixed(k.M_star / units::tonne, 4), "t", "C8A.4.2"},
@@ -390,11 +429,14 @@ std::string facade_html(const FacadeAssessment& a) {
       std::vector<std::vector<std::string>> srows;
       for (const RestitutionSummary& x : a.summaries)
         srows.push_back({describe(a.dynamic->restitutions[x.restitution]), std::to_string(x.analyses),
-                         std::to_string(x.overturned), fixed(x.mean_dc, 3), fixed(x.max_dc, 3),
-                         fixed(x.mean_d_star, 4), fixed(x.dc_slv, 3), verdict(x.slv_satisfied)});
-      h.add_table({"restitution", "analyses", "overturned", "mean energy D/C", "max energy D/C", "mean peak d* (m)",
-                   "D/C (d_SLV)", "C8.7.1.2.1.9"},
+                         std::to_string(x.overturned) + " of " + std::to_string(x.analyses), fixed(x.mean_dc, 3),
+                         fixed(x.max_dc, 3), fixed(x.mean_d_star, 4), fixed(x.max_d_star, 4), x.rule,
+                         fixed(x.dc_slv, 3), dyn_verdict(x)});
+      h.add_table({"restitution", "analyses", "overturned", "mean energy D/C (seed)", "max energy D/C (seed)",
+                   "mean peak d* (m)", "max peak d* (m)", "rule (NTC 2018 §7.3.5)", "D/C (d_SLV)", "C8.7.1.2.1.9"},
                   srows);
+      if (a.compatibility.computed)
+        h.add_paragraph("Records and the SLV spectrum: " + a.compatibility.message + ".");
       for (std::size_t ie = 0; ie < a.dynamic->restitutions.size(); ++ie) {
         Plot th;
         th.title = "theta/theta_u, " + describe(a.dynamic->restitutions[ie]);
@@ -427,31 +469,43 @@ std::string facade_html(const FacadeAssessment& a) {
     }
   }
 
-  // 5. D/C of all approaches.
-  const std::vector<Approach> cmp = comparison(a);
-  if (!cmp.empty()) {
-    h.add_heading("Demand/capacity by approach (SLV, seed Fig. 8)");
+  // 5. D/C of all approaches: the summary built in the assessment layer.
+  if (!a.verdict.rows.empty()) {
+    h.add_heading("Verdict by approach (seed Fig. 8)");
+    const std::vector<VerdictRow>& cmp = a.verdict.rows;
     Plot b;
     b.title = "D/C of the strength, displacement and dynamic approaches";
     b.y_label = "D/C (-)";
     b.x_label = "";
     PlotSeries bars = series("D/C", PlotSeries::Style::Bars);
+    double dc_max = 1.0;
     for (std::size_t i = 0; i < cmp.size(); ++i) {
+      const double dc = std::isfinite(cmp[i].dc) ? cmp[i].dc : 0.0;
       bars.x.push_back(double(i));
-      bars.y.push_back(cmp[i].dc);
+      bars.y.push_back(dc);
       b.x_tic_labels.push_back({double(i), std::to_string(i + 1)});
+      dc_max = std::max(dc_max, dc);
     }
     b.series.push_back(bars);
-    double dc_max = 1.0;
-    for (const Approach& x : cmp) dc_max = std::max(dc_max, x.dc);
     b.y_min = 0.0;
     b.y_max = 1.1 * dc_max;
     b.series.push_back(series("D/C = 1", PlotSeries::Style::Dashed, {-0.5, double(cmp.size()) - 0.5}, {1.0, 1.0}));
     std::vector<std::vector<std::string>> rows;
     for (std::size_t i = 0; i < cmp.size(); ++i)
-      rows.push_back({std::to_string(i + 1), cmp[i].name, fixed(cmp[i].dc, 3), cmp[i].dc <= 1 ? "<= 1" : "> 1"});
+      rows.push_back({std::to_string(i + 1), approach_name(cmp[i]), cmp[i].limit_state, cmp[i].location,
+                      std::isfinite(cmp[i].dc) ? fixed(cmp[i].dc, 3) : "n/a", verdict_word(cmp[i]),
+                      cmp[i].candidate + "; " + cmp[i].clause + (cmp[i].note.empty() ? "" : "; " + cmp[i].note)});
     h.add_svg(render_svg(b), "Demand/capacity ratios by approach (numbers as in the table below).", "fig-dc");
-    h.add_table({"#", "approach", "D/C", ""}, rows);
+    h.add_table({"#", "approach", "LS", "where", "D/C", "verdict", "candidate; clause; notes"}, rows);
+    std::vector<std::vector<std::string>> orows;
+    for (const CodeVerdict& c : a.verdict.overall)
+      orows.push_back({c.code, c.satisfied ? "verificato / satisfied" : "non verificato / not satisfied",
+                       std::to_string(c.failing) + " of " + std::to_string(c.checks), fixed(c.max_dc, 3)});
+    h.add_table({"code", "overall verdict", "checks failing", "largest D/C"}, orows);
+  }
+  if (!a.warnings.empty()) {
+    h.add_heading("Warnings");
+    for (const std::string& w : a.warnings) h.add_paragraph(w);
   }
   return h.str();
 }

@@ -37,6 +37,10 @@ nlohmann::json to_json(const CheckRow& r) {
                    {"location", r.location}, {"demand", r.demand},           {"capacity", r.capacity},
                    {"unit", r.unit},         {"dc", r.dc},                   {"satisfied", r.satisfied},
                    {"clause", r.clause},     {"formula", r.formula}};
+  if (!r.candidate.empty()) j["candidate"] = r.candidate;
+  if (r.no_verdict) j["satisfied"] = nullptr;
+  if (!r.note.empty()) j["note"] = r.note;
+  if (!std::isfinite(r.dc)) j["dc"] = nullptr;
   if (r.has_pga) {
     j["ag_capacity_g"] = std::isfinite(r.ag_capacity_g) ? nlohmann::json(r.ag_capacity_g) : nlohmann::json(nullptr);
     j["ag_demand_g"] = r.ag_demand_g;
@@ -86,10 +90,33 @@ nlohmann::json kinematic_json(const CaseFile& c, const KinematicCaseResult& out)
     curve.push_back({{"d_star", p.d_star}, {"a_star", p.a_star}, {"dk", p.dk}, {"alpha", p.alpha}});
   j["capacity_curve"] = curve;
   nlohmann::json cands = nlohmann::json::array();
-  for (const CandidateResult& cr : out.candidates)
-    cands.push_back({{"label", cr.label}, {"parameter", cr.parameter}, {"Z", cr.Z}, {"alpha0", cr.result.alpha0},
-                     {"a0_star", cr.result.a0_star}});
+  for (std::size_t i = 0; i < out.candidates.size(); ++i) {
+    const CandidateResult& cr = out.candidates[i];
+    nlohmann::json cj{{"label", cr.label}, {"parameter", cr.parameter}, {"Z", cr.Z}, {"alpha0", cr.result.alpha0},
+                      {"a0_star", cr.result.a0_star}};
+    nlohmann::json dc = nlohmann::json::object(), gov = nlohmann::json::array();
+    for (const auto& [code, v] : cr.max_dc) dc[code] = std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+    for (const auto& [code, gi] : out.governing_by_code)
+      if (gi == i) gov.push_back(code);
+    cj["governing_dc"] = dc;
+    cj["governing_for"] = gov;
+    if (!cr.checks.empty())
+      cj["ag_capacity_min_g"] =
+          std::isfinite(cr.ag_capacity_min_g) ? nlohmann::json(cr.ag_capacity_min_g) : nlohmann::json(nullptr);
+    nlohmann::json rows = nlohmann::json::array();
+    for (const CheckRow& row : cr.checks) rows.push_back(to_json(row));
+    cj["checks"] = rows;
+    cands.push_back(cj);
+  }
   j["candidates"] = cands;
+  j["governing_rule"] = out.checks.empty() ? "smallest alpha0 (no site: no checks)"
+                                           : "largest D/C over the candidate's checks, per code (Circ. 2019 C8.7.1, "
+                                             "C8A.4: the most unfavourable mechanism)";
+  nlohmann::json gbc = nlohmann::json::object();
+  for (const auto& [code, gi] : out.governing_by_code) gbc[code] = out.candidates[gi].label;
+  j["governing_by_code"] = gbc;
+  if (!out.checks.empty()) j["summary"] = to_json(out.verdict);
+  j["warnings"] = out.warnings;
   nlohmann::json checks = nlohmann::json::array();
   for (const CheckRow& row : out.checks) checks.push_back(to_json(row));
   j["checks"] = checks;
@@ -105,9 +132,10 @@ std::string checks_text(const std::vector<CheckRow>& checks) {
     char pga[64] = "";
     if (x.has_pga) std::snprintf(pga, sizeof pga, "%10.5f %10.5f %7.3f", x.ag_capacity_g, x.ag_demand_g, x.dc_pga);
     else std::snprintf(pga, sizeof pga, "%10s %10s %7s", "-", "-", "-");
-    out += format("  %-8s %-4s %-12s %-7s %12.6f %12.6f %-5s %7.3f %s  %-30s %s; %s\n", x.code.c_str(),
+    out += format("  %-8s %-4s %-12s %-7s %12.6f %12.6f %-5s %7.3f %s  %-30s %s; %s%s\n", x.code.c_str(),
                 x.limit_state.c_str(), x.kind.c_str(), x.location.c_str(), x.demand, x.capacity, x.unit.c_str(), x.dc,
-                pga, verdict(x.satisfied), x.formula.c_str(), x.clause.c_str());
+                pga, x.no_verdict ? "no verdict" : verdict(x.satisfied), x.formula.c_str(), x.clause.c_str(),
+                x.note.empty() ? "" : ("; " + x.note).c_str());
   }
   return out;
 }
@@ -120,11 +148,28 @@ std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res) {
   if (!c.project.empty()) out += format("project: %s\n", c.project.c_str());
   out += format("mechanism: %s, governing candidate: %s (Z = %.3f m)\n", c.mechanism.type.c_str(), gc.label.c_str(), gc.Z);
   if (res.candidates.size() > 1) {
-    out += format("\ncandidates (%s searched; governing = smallest alpha0):\n", c.mechanism.parameter_name.c_str());
-    out += format("  %-48s %12s %12s\n", "candidate", "alpha0 (-)", "a0* (m/s2)");
-    for (std::size_t i = 0; i < res.candidates.size(); ++i)
-      out += format("  %-48s %12.6f %12.6f%s\n", res.candidates[i].label.c_str(), res.candidates[i].result.alpha0,
-                  res.candidates[i].result.a0_star, i == res.governing ? "  <- governing" : "");
+    const bool checked = !res.governing_by_code.empty();
+    out += format("\ncandidates (%s searched; governing = %s):\n", c.mechanism.parameter_name.c_str(),
+                  checked ? "largest D/C over its checks, per code (Circ. 2019 C8.7.1; C8A.4: the most unfavourable "
+                            "mechanism; NTC 2018: the lowest ag capacity)"
+                          : "smallest alpha0 (no site: no checks)");
+    out += format("  %-44s %11s %11s", "candidate", "alpha0 (-)", "a0* (m/s2)");
+    for (const auto& [code, gi] : res.governing_by_code) out += format(" %11s", ("D/C " + code.substr(3)).c_str());
+    if (checked) out += format(" %12s", "ag,cap (g)");
+    out += "\n";
+    for (std::size_t i = 0; i < res.candidates.size(); ++i) {
+      const CandidateResult& cr = res.candidates[i];
+      out += format("  %-44s %11.6f %11.6f", cr.label.c_str(), cr.result.alpha0, cr.result.a0_star);
+      std::string gov;
+      for (const auto& [code, gi] : res.governing_by_code) {
+        const auto it = cr.max_dc.find(code);
+        out += format(" %11.3f", it == cr.max_dc.end() ? 0.0 : it->second);
+        if (gi == i) gov += (gov.empty() ? "" : ", ") + code;
+      }
+      if (checked) out += format(" %12.5f", cr.ag_capacity_min_g);
+      if (!checked && i == res.governing) gov = "smallest alpha0";
+      out += gov.empty() ? "\n" : "  <- governing (" + gov + ")\n";
+    }
   }
   out += format("\nvirtual displacements (largest block rotation = 1 rad; x outward, z up):\n");
   out += format("  %-28s %-11s %9s %9s %11s %10s %10s %12s %12s %12s\n", "load", "type", "x (m)", "z (m)", "W (kN)",
@@ -168,6 +213,71 @@ std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res) {
     return out;
   }
   out += "\n" + checks_text(res.checks);
+  out += "\n" + verdict_text(res.verdict);
+  return out;
+}
+
+nlohmann::json to_json(const VerdictRow& r) {
+  return {{"code", r.code},
+          {"approach", r.approach},
+          {"limit_state", r.limit_state},
+          {"location", r.location},
+          {"dc", std::isfinite(r.dc) ? nlohmann::json(r.dc) : nlohmann::json(nullptr)},
+          {"satisfied", r.no_verdict ? nlohmann::json(nullptr) : nlohmann::json(r.satisfied)},
+          {"clause", r.clause},
+          {"candidate", r.candidate},
+          {"note", r.note},
+          {"checks", r.checks},
+          {"failing", r.failing}};
+}
+
+nlohmann::json to_json(const Verdict& v) {
+  nlohmann::json rows = nlohmann::json::array(), overall = nlohmann::json::array();
+  for (const VerdictRow& r : v.rows) rows.push_back(to_json(r));
+  for (const CodeVerdict& c : v.overall)
+    overall.push_back({{"code", c.code},
+                       {"satisfied", c.satisfied},
+                       {"checks", c.checks},
+                       {"failing", c.failing},
+                       {"no_verdict", c.no_verdict},
+                       {"max_dc", std::isfinite(c.max_dc) ? nlohmann::json(c.max_dc) : nlohmann::json(nullptr)}});
+  return {{"by_approach", rows}, {"overall", overall}};
+}
+
+std::string verdict_word(const VerdictRow& r) {
+  if (r.no_verdict) return "no verdict";
+  if (r.code == "seed") {
+    if (r.satisfied) return "<= 1, no overturning";
+    // Never "<= 1" while an analysis overturned (the note counts them).
+    return r.note.rfind("overturned in 0 ", 0) == 0 ? "> 1" : "collapse (overturned)";
+  }
+  return verdict(r.satisfied);
+}
+
+std::string verdict_text(const Verdict& v) {
+  if (v.rows.empty()) return "";
+  std::string out = "summary by approach (the governing check of each code and approach: the largest D/C over every "
+                    "candidate, limit state and location; seed Fig. 8):\n";
+  out += format("  %-8s %-15s %-4s %-7s %8s  %-31s %s\n", "code", "approach", "LS", "where", "D/C", "verdict",
+                "candidate; clause; notes");
+  for (const VerdictRow& r : v.rows) {
+    std::string tail = r.candidate.empty() ? r.clause : r.candidate + "; " + r.clause;
+    if (r.failing > 0 && r.checks > 1) tail += format("; %d of %d checks fail", r.failing, r.checks);
+    if (!r.note.empty()) tail += "; " + r.note;
+    const std::string dc = std::isfinite(r.dc) ? format("%8.3f", r.dc) : format("%8s", "n/a");
+    out += format("  %-8s %-15s %-4s %-7s %s  %-31s %s\n", r.code.c_str(),
+                  (r.code == "seed" ? std::string("energy (mean)") : r.approach).c_str(), r.limit_state.c_str(),
+                  r.location.c_str(), dc.c_str(), verdict_word(r).c_str(), tail.c_str());
+  }
+  out += "overall verdict per code (not satisfied if any check of the code fails; the seed's energy D/C is not a code "
+         "check):\n";
+  for (const CodeVerdict& c : v.overall) {
+    out += format("  %-8s %s: %d of %d checks fail, largest D/C %.3f", c.code.c_str(),
+                  c.satisfied ? "VERIFICATO / SATISFIED" : "NON VERIFICATO / NOT SATISFIED", c.failing, c.checks,
+                  c.max_dc);
+    if (c.no_verdict > 0) out += format(" (%d without a verdict)", c.no_verdict);
+    out += "\n";
+  }
   return out;
 }
 

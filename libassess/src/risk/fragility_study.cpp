@@ -137,7 +137,7 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
   if (listed) {
     for (const ListedRecord& lr : d.records) {
       try {
-        st.records.push_back(read_record(lr.file));
+        st.records.push_back(read_listed_record(lr));
         st.record_files.push_back(lr.file);
       } catch (const InputError& e) {
         throw InputError(kase.file + ": " + lr.json_path + "/file: " + e.what());

@@ -1,9 +1,11 @@
 // case_file.hpp: the façade case JSON (schema version 1, see
 // docs/user/case-file.md and docs/schema/case.schema.json) and the kinematic
-// assessment of the case: every candidate mechanism analysed, the governing
-// one (smallest alpha0) checked by the requested code editions.
+// assessment of the case: every candidate mechanism analysed and checked by the
+// requested code editions; the governing one per code is the candidate with
+// the largest D/C over its checks (docs/theory/facade.md §6).
 #pragma once
 
+#include "assess/assessment/verdict.hpp"
 #include "assess/kinematic/code_checks.hpp"
 #include "assess/kinematic/floor_spectrum.hpp"
 #include "assess/kinematic/kinematic_analysis.hpp"
@@ -31,6 +33,8 @@ struct CaseFile {
   CheckInput checks;              ///< codes, q, damping (hazard filled from the site when run)
   /// Reserved for the façade issue: the raw "dynamic" section, not parsed here.
   nlohmann::json dynamic;
+  /// Plausibility warnings of the input (field, value, unit, why); the run goes on.
+  std::vector<std::string> warnings;
 };
 
 /// Parses a case document; errors name `file` and the JSON path.
@@ -44,16 +48,34 @@ struct CandidateResult {
   double parameter = 0.0;
   double Z = 0.0;  ///< m
   KinematicResult result;
+  std::vector<CheckRow> checks;  ///< its checks, every requested code (empty without a site)
+  /// Per code ("NTC2008", "NTC2018"): the largest D/C over its checks (-).
+  std::map<std::string, double> max_dc;
+  /// NTC 2018: the lowest ag capacity over its checks (g); inf if never reached.
+  double ag_capacity_min_g = 0.0;
 };
 
 struct KinematicCaseResult {
   std::vector<CandidateResult> candidates;
-  std::size_t governing = 0;      ///< index of the smallest alpha0
-  std::vector<CheckRow> checks;   ///< of the governing candidate (empty without a site)
+  /// The governing candidate: the largest D/C over its checks for NTC 2018
+  /// (equivalently the lowest PGA capacity), else for the first code; without
+  /// a site, the smallest alpha0. The dynamic analysis uses this one.
+  std::size_t governing = 0;
+  /// The governing candidate of each code (largest D/C over its checks).
+  std::map<std::string, std::size_t> governing_by_code;
+  /// The checks of each code's governing candidate (empty without a site).
+  std::vector<CheckRow> checks;
   std::map<LimitState, SeismicAction> actions;  ///< the site's hazard per limit state
+  /// Summary by approach over every candidate (kinematic rows only).
+  Verdict verdict;
+  /// The case's warnings, then those of the analysis (alpha0 > 1, Z > H).
+  std::vector<std::string> warnings;
 };
 
-/// Analyses every candidate and checks the governing one.
+/// Analyses and checks every candidate and picks the governing one per code.
+/// @throws InputError when a candidate is statically unstable (alpha0 <= 0:
+///   it overturns under its static loads alone), naming alpha0 and the loads;
+///   for a building block that cannot be used (naming the file and /building).
 KinematicCaseResult run_kinematic_case(const CaseFile& c);
 
 }  // namespace assess

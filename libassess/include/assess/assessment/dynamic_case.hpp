@@ -6,6 +6,7 @@
 
 #include "assess/dynamics/rocking_analysis.hpp"
 #include "assess/dynamics/rocking_model.hpp"
+#include "assess/records/record_io.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -20,6 +21,11 @@ struct ListedRecord {
   std::string file;       ///< resolved path
   std::string json_path;  ///< "/dynamic/records/2" (for messages)
   double scale = 1.0;     ///< linear scale factor (-)
+  /// Plain text record (one column, or time and acceleration): the unit of
+  /// its values, and its time step (s) for one column; without dt the file
+  /// must have two columns (time, acceleration) and dt is read from it.
+  std::optional<AccelerationUnit> unit;
+  std::optional<double> dt;
 };
 
 /// "Select N records compatible with the site spectrum" (REXEL's rule).
@@ -43,6 +49,10 @@ struct DynamicSpec {
   std::vector<ListedRecord> records;   ///< listed records (empty if selected)
   std::optional<RecordSelectionSpec> selection;
 };
+
+/// Reads a listed record: a plain text file when `unit` is given (with `dt`
+/// for one column), else the format detected from the content (read_record).
+Record read_listed_record(const ListedRecord& r);
 
 /// Parses `doc` (the value of the "dynamic" key). Errors name `file` and the
 /// JSON path (e.g. /dynamic/records/2/scale), the expected type or range and

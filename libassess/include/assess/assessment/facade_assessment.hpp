@@ -6,6 +6,7 @@
 
 #include "assess/assessment/case_file.hpp"
 #include "assess/assessment/dynamic_case.hpp"
+#include "assess/assessment/verdict.hpp"
 #include "assess/records/record_selection.hpp"
 #include "assess/dynamics/rocking_from_chain.hpp"
 
@@ -56,8 +57,25 @@ struct RestitutionSummary {
   /// Mean over the records of the peak d* (envelope of the polarities) (m).
   double mean_d_star = 0.0;
   bool any_collapse = false;      ///< d0 exceeded (or overturning) in some analysis
-  bool slv_satisfied = false;     ///< no collapse and mean d* <= d_SLV
-  double dc_slv = 0.0;            ///< mean d* / d_SLV (-)
+  double max_d_star = 0.0;        ///< the largest peak d* over the records (m)
+  int records = 0;                ///< number of records N
+  /// NTC 2018 §7.3.5: "mean" (N >= 7), "most unfavourable" (3 <= N <= 6),
+  /// "none" (N < 3: no verdict unless a collapse already fails it).
+  std::string rule;
+  double d_demand = 0.0;          ///< the demand of the rule: mean or largest peak d* (m)
+  bool no_verdict = false;        ///< N < 3 and no collapse: the records cannot support a verdict
+  bool slv_satisfied = false;     ///< no collapse and d_demand <= d_SLV (and a verdict)
+  double dc_slv = 0.0;            ///< d_demand / d_SLV (-)
+};
+
+/// Compatibility of the records' mean 5 % spectrum with the SLV elastic
+/// spectrum over a period range (NTC 2018 §3.2.3.6: -10 %/+30 %).
+struct SpectrumCompatibility {
+  bool computed = false;
+  PeriodRange range{};
+  double min_ratio = 0.0, max_ratio = 0.0;  ///< min and max over the range of mean/Se (-)
+  bool band_satisfied = false;
+  std::string message;
 };
 
 struct FacadeAssessment {
@@ -81,6 +99,16 @@ struct FacadeAssessment {
   std::vector<RestitutionSummary> summaries;
   /// Every check: the kinematic rows of both editions, then "dynamic" rows.
   std::vector<CheckRow> checks;
+  /// The seed paper's energy D/C per restitution value (code "seed", kind
+  /// "dynamic energy"): informative, not a code check.
+  std::vector<CheckRow> energy_rows;
+  /// Compatibility of the records used with the SLV spectrum (listed or selected).
+  SpectrumCompatibility compatibility;
+  /// Summary by approach and overall verdict per code (every candidate's
+  /// checks, the dynamic rows and the energy rows): the reports format it.
+  Verdict verdict;
+  /// Plausibility and compatibility warnings (field, value, unit, why).
+  std::vector<std::string> warnings;
 
   // Curves for the report (computed here so the report never recomputes physics).
   std::vector<double> periods;                         ///< s (0 first, then log-spaced to 4 s)

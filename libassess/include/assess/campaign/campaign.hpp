@@ -33,6 +33,10 @@ struct CampaignWall {
 struct CampaignRecord {
   std::string name;
   std::string path;
+  /// Plain text record: the unit of its values ("" = format detected from the
+  /// content) and its time step (s; 0 = a two-column file gives it).
+  std::string unit;
+  double dt = 0.0;
 };
 
 /// The two models of the seed: the smooth block on a Winkler bed and the rigid

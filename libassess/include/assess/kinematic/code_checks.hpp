@@ -39,6 +39,13 @@ struct CheckRow {
   double ag_capacity_g = 0.0;  ///< ag the mechanism withstands (g); inf if never reached
   double ag_demand_g = 0.0;    ///< ag of the site for the limit state (g)
   double dc_pga = 0.0;         ///< ag_demand / ag_capacity
+  /// The candidate mechanism the row belongs to (its label; "" for one).
+  std::string candidate;
+  /// True when the check cannot give a verdict (e.g. a dynamic check with
+  /// fewer than 3 records, NTC 2018 §7.3.5): `satisfied` is then false and
+  /// `note` says why. A report shows "no verdict", never "satisfied".
+  bool no_verdict = false;
+  std::string note;             ///< remarks for the reader ("overturned in 1 of 2 analyses" ...)
 };
 
 /// What the checks need besides the analysis.
@@ -48,6 +55,9 @@ struct CheckInput {
   std::map<LimitState, HazardParams> hazard;
   SiteConditions site;
   /// Height Z (m) of the constraint centroid above the foundation; 0 = ground level.
+  /// Z may exceed the building height H (a gable above the eaves when H is
+  /// taken at the eaves): psi(Z) = Z/H > 1 is then used as given, the first
+  /// mode extended linearly above H (docs/theory/facade.md §Z > H).
   double Z = 0.0;
   /// The building, required when Z > 0.
   std::optional<BuildingModel> building;

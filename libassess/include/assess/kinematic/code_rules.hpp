@@ -102,6 +102,20 @@ inline double demand_at_height_2008(double SDe_T1, double psi, double gamma, dou
 /// (C8A.4.9 with C8A.4.10 [V-S]; extended to C8A.4.11 with C8A.4.12 [I]).
 inline constexpr bool height_also_checks_ground_2008 = true;
 
+/// Number of time-history analyses and how their results combine (NTC 2018
+/// §7.3.5, repeated for local mechanisms by Circ. 2019 C8.7.1.2.1.9 "in number
+/// sufficient to give a significant mean response") [R: recalled, the
+/// paragraph of §7.3.5 was not re-read]: with at least 7 groups of
+/// accelerograms the mean of the results may be used, with 3 to 6 the most
+/// unfavourable result; fewer than 3 cannot support a verdict.
+inline constexpr int records_for_mean = 7;
+inline constexpr int records_min = 3;
+/// Spectrum compatibility of the records' mean (NTC 2018 §3.2.3.6): within
+/// -10 % / +30 % of the elastic spectrum over the period range [V-T as in
+/// record_selection's defaults].
+inline constexpr double compatibility_lower_tol = 0.10;
+inline constexpr double compatibility_upper_tol = 0.30;
+
 /// Interlocking friction of the side walls (Circ. 2019 [C8.7.1.2]) [V-T as
 /// transcribed]: F = 0.4 n (n+1) Phi mu l^2 t_s w (N), n = h/h_b, Phi = h_b/l.
 /// @param h height of the interlocked wedge (m); @param h_b course height (m)

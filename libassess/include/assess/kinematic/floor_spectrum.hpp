@@ -23,7 +23,7 @@ class FloorSpectrum {
   /// @param hazard ag (g), F0, TC* (s) of the limit state
   /// @param site soil and topography
   /// @param building H (m), N, T1 (s), xi_1 (%)
-  /// @param z height above the foundation (m), 0 <= z <= H
+  /// @param z height above the foundation (m), >= 0 (z > H: psi = z/H > 1, the first mode extended)
   /// @param element_damping_pct xi of the local mechanism (%)
   FloorSpectrum(const HazardParams& hazard, const SiteConditions& site, const BuildingModel& building,
                 double z, double element_damping_pct);

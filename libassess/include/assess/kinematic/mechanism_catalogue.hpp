@@ -29,8 +29,8 @@ struct MechanismCandidate {
 
 /// The candidates of one catalogue entry. When a parameter (hinge level, hinge
 /// height, wedge angle) was not given, every value tried is a candidate; the
-/// governing one is the candidate with the smallest alpha0 (see
-/// governing_candidate).
+/// governing one is chosen by the assessment (largest D/C over its checks,
+/// run_kinematic_case); governing_candidate gives the smallest alpha0.
 struct MechanismSet {
   std::string type;             ///< "simple_overturning", ...
   std::string parameter_name;   ///< "hinge z (m)", "wedge angle (deg)" ...

@@ -39,6 +39,11 @@ Record read_record(const std::string& path);
 /// @param unit unit of the acceleration values
 Record read_plain_record(const std::string& path, double dt_s, AccelerationUnit unit);
 
+/// Reads a plain two-column record (time in s, acceleration in `unit`) whose
+/// time step is the spacing of its time column, checked for uniformity as in
+/// read_plain_record(path, dt, unit).
+Record read_plain_record(const std::string& path, AccelerationUnit unit);
+
 /// Factor that scales `record` to a peak ground acceleration target_pga_m_s2 (m/s^2, > 0).
 double scale_factor_to_pga(const Record& record, double target_pga_m_s2);
 

@@ -29,4 +29,15 @@ std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res);
 /// The checks table alone.
 std::string checks_text(const std::vector<CheckRow>& checks);
 
+/// A summary row as JSON: {code, approach, limit_state, location, dc,
+/// satisfied (null without a verdict), clause, candidate, note, checks, failing}.
+nlohmann::json to_json(const VerdictRow& r);
+/// The summary as JSON: {"by_approach": [rows], "overall": [{code, satisfied, checks, failing, no_verdict, max_dc}]}.
+nlohmann::json to_json(const Verdict& v);
+/// The summary by approach and the overall verdict per code, as text.
+std::string verdict_text(const Verdict& v);
+/// "verificato / satisfied", "non verificato / not satisfied" or "no verdict" for a summary row;
+/// a "seed" energy row reads "overturned ..." when any analysis overturned.
+std::string verdict_word(const VerdictRow& r);
+
 }  // namespace assess
