@@ -177,6 +177,7 @@ void run(const CampaignArgs& a) {
               (unsigned long long)s.run, s.seconds, (unsigned long long)s.failed);
   std::printf("results: %s\nsummary: %s\n", campaign_part_path(a.out, 0, 1).c_str(), files.summary.c_str());
   for (const auto& p : files.plots) std::printf("plot:    %s\n", p.c_str());
+  std::printf("index:   %s\n", files.index.c_str());
 }
 
 }  // namespace

@@ -20,7 +20,7 @@ namespace {
 
 struct KinematicArgs {
   std::string file;
-  bool json = false;
+  bool json = false, wide = false;
 };
 
 void run(const KinematicArgs& a) {
@@ -31,10 +31,11 @@ void run(const KinematicArgs& a) {
     nlohmann::json j = kinematic_json(c, out);
     std::cout << stamp_version(j).dump(2) << "\n";
   } else {
-    std::cout << kinematic_text(c, out);
+    std::cout << kinematic_text(c, out, a.wide ? TextWidth::wide : TextWidth::columns120);
     if (!out.warnings.empty()) {
       std::cout << "\nwarnings:\n";
-      for (const std::string& w : out.warnings) std::cout << "  " << w << "\n";
+      for (const std::string& w : out.warnings)
+        std::cout << (a.wide ? "  " + w : wrap_text("  " + w, 4)) << "\n";
     }
   }
 }
@@ -47,6 +48,7 @@ void add_kinematic_command(CLI::App& app) {
                                  "linear and non-linear kinematic analysis of a local mechanism and its NTC checks");
   cmd->add_option("case", args->file, "case file (JSON, see docs/user/case-file.md)")->required()->check(CLI::ExistingFile);
   cmd->add_flag("--json", args->json, "print the results as JSON");
+  cmd->add_flag("--wide", args->wide, "one line per table row however long (default: tables within 120 columns)");
   cmd->callback([args] { run(*args); });
 }
 

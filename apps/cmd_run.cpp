@@ -10,8 +10,10 @@
 #include <assess/risk/fragility_report.hpp>
 
 #include <filesystem>
+#include <assess/report/pdf.hpp>
 
 #include <fstream>
+#include <iterator>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -20,21 +22,31 @@ namespace assess::cli {
 namespace {
 
 struct RunArgs {
-  std::string file, html, fragility;
-  bool json = false, keep_going = false;
+  std::string file, html, pdf, lang = "it", fragility;
+  bool json = false, keep_going = false, wide = false;
 };
 
 void run(const RunArgs& a) {
+  const Lang lang = parse_lang(a.lang);
   const CaseFile c = read_case_file(a.file);
   FacadeOptions opt;
   opt.keep_going = a.keep_going;
-  opt.histories = !a.html.empty();
+  opt.histories = !a.html.empty() || !a.pdf.empty();
   const FacadeAssessment res = assess_facade(c, opt);
   print_warnings(res.warnings);
-  if (!a.html.empty()) {
-    const std::string page = facade_html(res);
-    std::ofstream out(a.html, std::ios::binary);
-    if (!out || !(out << page)) throw InputError("--html " + a.html + ": cannot write the file");
+  if (!a.html.empty() || !a.pdf.empty()) {
+    ReportOptions ro;
+    ro.lang = lang;
+    {
+      std::ifstream in(a.file, std::ios::binary);
+      ro.case_text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    const std::string page = facade_html(res, ro);
+    if (!a.html.empty()) {
+      std::ofstream out(a.html, std::ios::binary);
+      if (!out || !(out << page)) throw InputError("--html " + a.html + ": cannot write the file");
+    }
+    if (!a.pdf.empty()) html_to_pdf(page, a.pdf);
   }
   // A fragility result of this case: --fragility DIR, or the default output
   // directory of `assess fragility` (CASE.fragility) when it holds this case's.
@@ -53,8 +65,10 @@ void run(const RunArgs& a) {
     if (frag) j["fragility"] = {{"line", fragility_line(*frag)}, {"governing", (*frag)["governing"]}};
     std::cout << stamp_version(j).dump(2) << "\n";
   } else {
-    std::cout << facade_text(res) << (frag ? fragility_line(*frag) + "\n" : "")
-              << (a.html.empty() ? "" : "\nHTML report written to " + a.html + "\n");
+    std::cout << facade_text(res, a.wide ? TextWidth::wide : TextWidth::columns120)
+              << (frag ? fragility_line(*frag) + "\n" : "")
+              << (a.html.empty() ? "" : "\nHTML report written to " + a.html + "\n")
+              << (a.pdf.empty() ? "" : "PDF report written to " + a.pdf + "\n");
   }
 }
 
@@ -66,6 +80,10 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("case", args->file, "case file (JSON, see docs/user/case-file.md)")->required()->check(CLI::ExistingFile);
   cmd->add_flag("--json", args->json, "print the report as JSON");
   cmd->add_option("--html", args->html, "also write a self-contained HTML report with plots to this file");
+  cmd->add_option("--pdf", args->pdf, "also print the same report to a PDF file (A4, headless Chromium)");
+  cmd->add_option("--lang", args->lang,
+                  "language of the HTML/PDF report: it (default: the relazione is filed in Italy) or en");
+  cmd->add_flag("--wide", args->wide, "one line per table row however long (default: tables within 120 columns)");
   cmd->add_flag("--keep-going", args->keep_going, "continue with the readable records when some cannot be read");
   cmd->add_option("--fragility", args->fragility,
                   "add the fragility result in this directory (of `assess fragility`; default CASE.fragility if present)");

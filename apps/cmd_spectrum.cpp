@@ -3,6 +3,7 @@
 #include "commands.hpp"
 
 #include <assess/support/error.hpp>
+#include <assess/hazard/comuni.hpp>
 #include <assess/hazard/site.hpp>
 #include <assess/support/units.hpp>
 
@@ -20,7 +21,7 @@ namespace {
 
 struct SpectrumArgs {
   std::optional<double> lat, lon, ag_g, F0, Tc_star, cu, tr, q;
-  std::optional<std::string> island, use_class, limit_state;
+  std::optional<std::string> island, use_class, limit_state, comune, province;
   std::string soil = "A", topography = "T1", periods, grid, islands;
   double h_over_H = 1.0, vn = 50.0, damping = 5.0;
   bool json = false;
@@ -59,8 +60,21 @@ struct Column {
 SiteSpec make_spec(const SpectrumArgs& a) {
   SiteSpec spec;
   const bool has_ll = a.lat || a.lon, has_given = a.ag_g || a.F0 || a.Tc_star;
-  if (int(has_ll) + int(bool(a.island)) + int(has_given) != 1)
-    throw InputError("give the site as --lat/--lon, or --island NAME, or --ag/--F0/--Tc-star (exactly one)");
+  if (int(has_ll) + int(bool(a.island)) + int(has_given) + int(bool(a.comune)) != 1)
+    throw InputError(
+        "give the site as --lat/--lon, or --comune NAME [--province XX], or --island NAME, or --ag/--F0/--Tc-star "
+        "(exactly one)");
+  if (a.province && !a.comune) throw InputError("--province goes with --comune (the sigla, e.g. --province AQ)");
+  if (a.comune) {
+    try {
+      const Comune& c = ComuneTable::shipped()->find(*a.comune, a.province ? *a.province : "");
+      spec.lat = c.lat;
+      spec.lon = c.lon;
+      spec.comune = c.describe();
+    } catch (const InputError& e) {
+      throw InputError(std::string("--comune: ") + e.what());
+    }
+  }
   if (has_ll) {
     if (!a.lat || !a.lon) throw InputError("--lat and --lon must be given together (decimal degrees)");
     if (!(*a.lat >= -90.0 && *a.lat <= 90.0))
@@ -213,6 +227,7 @@ void print_table(const Site& site, const std::vector<Column>& cols, const std::v
     for (int n : nodes) o << " " << n;
     o << ")";
   }
+  if (!sp.comune.empty()) o << "\nNote        : " << comune_note();
   o << "\nSubsoil     : " << to_string(sp.conditions.soil) << ", topography " << to_string(sp.conditions.topography)
     << " (h/H = " << fmt("%.2f", sp.conditions.h_over_H) << ")\n";
   if (sp.given.empty())
@@ -290,10 +305,22 @@ void run(const SpectrumArgs& a) {
   if (a.json) {
     if (cols.size() == 1) {
       nlohmann::json j = column_json(cols[0], spectra[0], periods, a.q);
+      if (!spec.comune.empty()) {
+        j["comune"] = spec.comune;
+        j["lat"] = *spec.lat;
+        j["lon"] = *spec.lon;
+        j["note"] = comune_note();
+      }
       std::cout << stamp_version(j).dump(2) << "\n";
     } else {
       nlohmann::json j;
       j["site"] = site.describe();
+      if (!spec.comune.empty()) {
+        j["comune"] = spec.comune;
+        j["lat"] = *spec.lat;
+        j["lon"] = *spec.lon;
+        j["note"] = comune_note();
+      }
       j["VR"] = site.VR();
       nlohmann::json arr = nlohmann::json::array();
       for (std::size_t i = 0; i < cols.size(); ++i) arr.push_back(column_json(cols[i], spectra[i], periods, a.q));
@@ -315,6 +342,9 @@ void add_spectrum_command(CLI::App& app) {
   cmd->add_option("--ag", a->ag_g, "ag on rock, given directly (g)");
   cmd->add_option("--F0", a->F0, "F0, given directly (-)");
   cmd->add_option("--Tc-star", a->Tc_star, "TC*, given directly (s)");
+  cmd->add_option("--comune", a->comune,
+                  "site by comune (ISTAT list): the coordinates of the municipal seat are used and printed");
+  cmd->add_option("--province", a->province, "province (sigla, e.g. AQ) of --comune, for a name shared by two");
   cmd->add_option("--island", a->island, "island of Allegato B Tab. 2 (e.g. Sardegna, Lipari)");
   cmd->add_option("--soil", a->soil, "subsoil class A..E (default A)");
   cmd->add_option("--topography", a->topography, "topographic class T1..T4 (default T1)");

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <map>
+#include <string>
 
 
 void assess::cli::print_warnings(const std::vector<std::string>& warnings) {
@@ -16,7 +18,10 @@ int main(int argc, char** argv) {
   CLI::App app{
       "assess: out-of-plane seismic assessment of masonry walls\n"
       "(NTC 2018 / Circolare 2019 spectra, kinematic checks, rocking dynamics)"};
-  app.set_version_flag("--version", ASSESS_VERSION_STRING);
+  // "Usage: assess ..." whatever path the program was started from (help2man
+  // builds the man page from this text).
+  app.name("assess");
+  app.set_version_flag("--version", std::string("assess ") + ASSESS_VERSION_STRING);
   app.require_subcommand(1);
   assess::cli::add_spectrum_command(app);
   assess::cli::add_kinematic_command(app);
@@ -24,6 +29,27 @@ int main(int argc, char** argv) {
   assess::cli::add_run_command(app);
   assess::cli::add_campaign_command(app);
   assess::cli::add_fragility_command(app);
+  assess::cli::add_records_command(app);
+  // One example per subcommand (paths relative to the source tree or to
+  // share/assess of an installed copy).
+  const std::map<std::string, std::string> examples{
+      {"spectrum", "assess spectrum --comune \"L'Aquila\" --soil B --limit-state SLV"},
+      {"kinematic", "assess kinematic mechanisms/two_storey_facade.json"},
+      {"rocking", "assess rocking --model rigid --thickness 0.5 --height 4 --unit-weight 18 --record "
+                   "spectra/records/RSN285_ITALY_A-BAG000.AT2"},
+      {"run", "assess run mechanisms/church-facade.json --lang it --html relazione.html --pdf relazione.pdf"},
+      {"campaign", "assess campaign mechanisms/campaign-seed-3.2.json --out results --threads 2"},
+      {"records", "assess records select --lat 43.44 --lon 12.64 --soil C --count 7"},
+      {"fragility", "assess fragility mechanisms/church-facade.json --out church.fragility"},
+  };
+  std::string all = "Examples:\n";
+  for (CLI::App* sub : app.get_subcommands({})) {
+    const auto it = examples.find(sub->get_name());
+    if (it == examples.end()) continue;
+    sub->footer("Example:\n  " + it->second + "\n");
+    all += "  " + it->second + "\n";
+  }
+  app.footer(all + "\nReport bugs and read the documentation at docs/README.md (installed in share/doc/assess).");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

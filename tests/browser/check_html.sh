@@ -1,11 +1,13 @@
 #!/bin/sh
-# check_html.sh FILE N_FIGURES
+# check_html.sh FILE N_FIGURES [PATTERN ...]
 # check_html.sh --self-test
 #
 # Loads FILE in Debian's headless Chromium and checks that
 #   1. the page loads (chromium exits 0 and dumps a DOM),
 #   2. the DOM holds exactly N_FIGURES <figure> elements, each with an <svg>,
-#   3. the browser logged no console message (the report has no scripts, so
+#   3. every PATTERN (grep -E) is found in the DOM Chromium built (e.g. the
+#      verdict box 'class="verdict (ok|fail)"', a figure id, '<table'),
+#   4. the browser logged no console message (the report has no scripts, so
 #      any CONSOLE line is an error: a failed resource, a parse problem, ...).
 # Exit status: 0 pass, 1 fail, 77 skipped (chromium not installed; CTest
 # SKIP_RETURN_CODE). --self-test writes a passing page and a failing page
@@ -18,8 +20,8 @@ if ! command -v "$CHROMIUM" >/dev/null 2>&1; then
   exit 77
 fi
 
-check() {  # check FILE N -> 0/1
-  file=$1; expected=$2
+check() {  # check FILE N [PATTERN...] -> 0/1
+  file=$1; expected=$2; shift 2
   work=$(mktemp -d)
   abs=$(cd "$(dirname "$file")" && pwd)/$(basename "$file")
   timeout 120 "$CHROMIUM" --headless --no-sandbox --disable-gpu --disable-quic --no-first-run \
@@ -38,6 +40,11 @@ check() {  # check FILE N -> 0/1
   if [ "$figures" -ne "$expected" ] || [ "$with_svg" -ne "$expected" ]; then
     echo "check_html: $file: $figures figures, $with_svg with an svg; expected $expected"; status=1
   fi
+  for pattern in "$@"; do
+    if ! tr '\n' ' ' <"$work/dom.html" | grep -Eq -- "$pattern"; then
+      echo "check_html: $file: '$pattern' not found in the DOM"; status=1
+    fi
+  done
   if grep -q ':CONSOLE' "$work/stderr.txt"; then
     echo "check_html: $file: console messages:"; grep ':CONSOLE' "$work/stderr.txt"; status=1
   fi
@@ -60,5 +67,5 @@ if [ "${1:-}" = "--self-test" ]; then
   exit 0
 fi
 
-[ $# -eq 2 ] || { echo "usage: check_html.sh FILE N_FIGURES | --self-test"; exit 1; }
-check "$1" "$2"
+[ $# -ge 2 ] || { echo "usage: check_html.sh FILE N_FIGURES [PATTERN ...] | --self-test"; exit 1; }
+check "$@"

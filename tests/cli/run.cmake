@@ -16,7 +16,7 @@ assess_cli_error_test(run_unknown_key "polarty.*polarity" run tests/cli/run_bad/
 # The HTML report loads in headless Chromium with every plot and no console
 # error (skipped, exit 77, when chromium is not installed).
 add_test(NAME cli.run_church_html_browser
-  COMMAND sh -c "\"$1\" run mechanisms/church-facade.json --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 7"
+  COMMAND sh -c "\"$1\" run mechanisms/church-facade.json --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 7 \"class=.verdict \""
           sh $<TARGET_FILE:assess_cli> ${CMAKE_CURRENT_BINARY_DIR}/church-report.html
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.run_church_html_browser PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77
@@ -26,10 +26,10 @@ assess_cli_test(run_dynamic_at_height ARGS run tests/cli/run_bad/gable_dynamic.j
 assess_cli_test(run_dynamic_multi_block ARGS run tests/cli/run_bad/flexure_dynamic.json
   PASS "not applicable: .*multi-block chains")
 
-# A case without a dynamic section: the report still loads, with its 3 plots
-# (spectra, capacity curve, D/C bars).
+# A case without a dynamic section: the report still loads, with its 4 figures
+# (spectra, mechanism drawing, ADRS plot, D/C bars) and its verdict box.
 add_test(NAME cli.run_kinematic_only_html_browser
-  COMMAND sh -c "\"$1\" run mechanisms/free_wall_laquila.json --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 3"
+  COMMAND sh -c "\"$1\" run mechanisms/free_wall_laquila.json --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 4 \"class=.verdict \""
           sh $<TARGET_FILE:assess_cli> ${CMAKE_CURRENT_BINARY_DIR}/free-wall-report.html
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.run_kinematic_only_html_browser PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77

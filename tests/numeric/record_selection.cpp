@@ -73,6 +73,17 @@ std::vector<Record> varied_candidates() {
 }
 
 
+// The options these tests were written for: the spectral-shape rules only
+// (scale <= 5, no mean-scale limit, no PGA guard); the library's limits are
+// tested in record_selection_library.cpp.
+SelectionOptions shape_only() {
+  SelectionOptions o;
+  o.max_scale = 5.0;
+  o.max_mean_scale = 1e9;
+  o.max_pga_ratio = 0.0;
+  return o;
+}
+
 // Checks the reported statistics against the reported spectra.
 void check_consistency(const SelectionResult& res, const SelectionOptions& opts) {
   REQUIRE(!res.records.empty());
@@ -106,7 +117,7 @@ TEST_CASE("scaled copies of one record: every set matches the target after scali
   }
   // Target: twice the base record's spectrum.
   auto target = [&](double T) { return 2.0 * assess::spectral_ordinates(base, T).PSA; };
-  SelectionOptions opts;
+  SelectionOptions opts = shape_only();
   opts.max_scale = 10.0;
   const auto res = assess::select_records(target, cands, opts);
   REQUIRE(res.records.size() == 7);
@@ -120,7 +131,7 @@ TEST_CASE("scaled copies of one record: every set matches the target after scali
 TEST_CASE("target equal to one record's spectrum times 2: that record, factor 2") {
   const auto cands = varied_candidates();
   auto target = [&](double T) { return 2.0 * assess::spectral_ordinates(cands[4], T).PSA; };
-  SelectionOptions opts;
+  SelectionOptions opts = shape_only();
   opts.n_records = 1;
   const auto res = assess::select_records(target, cands, opts);
   REQUIRE(res.records.size() == 1);
@@ -133,7 +144,7 @@ TEST_CASE("target equal to one record's spectrum times 2: that record, factor 2"
 
 TEST_CASE("PGA scaling sets each record's PGA to Se(0)") {
   const auto cands = varied_candidates();
-  SelectionOptions opts;
+  SelectionOptions opts = shape_only();
   opts.scale_rule = assess::ScaleRule::Pga;
   opts.n_records = 3;
   const auto res = assess::select_records(ntc_like, cands, opts);
@@ -145,7 +156,7 @@ TEST_CASE("PGA scaling sets each record's PGA to Se(0)") {
 
 TEST_CASE("exhaustive search finds the optimum of an independent brute force; greedy is no better") {
   const auto cands = varied_candidates();
-  SelectionOptions opts;
+  SelectionOptions opts = shape_only();
   opts.n_records = 3;
   opts.n_periods = 25;
   opts.range = {0.2, 1.5};
@@ -199,7 +210,7 @@ TEST_CASE("exhaustive search finds the optimum of an independent brute force; gr
 TEST_CASE("the band check flags a set whose mean leaves -10 %/+30 %") {
   // One narrow-band record cannot follow a broad target over 0.1-3 s.
   const std::vector<Record> cands = {synthetic("narrow", 5.0, 5.5, 1.0)};
-  SelectionOptions opts;
+  SelectionOptions opts = shape_only();
   opts.n_records = 1;
   opts.range = {0.1, 3.0};
   opts.max_scale = 1e6;
@@ -215,7 +226,7 @@ TEST_CASE("fewer eligible candidates than N: all are returned and the status say
   auto cands = varied_candidates();
   cands.resize(4);
   cands.push_back(synthetic("tiny", 1.5, 2.5, 1e-4));  // needs a factor >> 5
-  SelectionOptions opts;  // N = 7
+  SelectionOptions opts = shape_only();  // N = 7
   const auto res = assess::select_records(ntc_like, cands, opts);
   CHECK(res.status == SelectionResult::Status::FewerThanRequested);
   CHECK(res.records.size() == 4);
@@ -228,7 +239,7 @@ TEST_CASE("fewer eligible candidates than N: all are returned and the status say
 
 TEST_CASE("selection is deterministic") {
   const auto cands = varied_candidates();
-  SelectionOptions opts;
+  SelectionOptions opts = shape_only();
   opts.n_records = 4;
   const auto a = assess::select_records(ntc_like, cands, opts);
   const auto b = assess::select_records(ntc_like, cands, opts);
@@ -258,7 +269,7 @@ TEST_CASE("real PEER records: 7 of 10 selected for an NTC-shaped target, statist
                         "RSN4346_UBMARCHE.P_A-BEV270.AT2", "RSN125_FRIULI.A_A-TMZ000.AT2",
                         "RSN125_FRIULI.A_A-TMZ270.AT2", "ISE-WE.AT2"})
     cands.push_back(assess::read_record(dir + f));
-  SelectionOptions opts;
+  SelectionOptions opts = shape_only();
   opts.range = assess::rocking_period_range(0.5, 1.5);
   const auto res = assess::select_records(ntc_like, cands, opts);
   MESSAGE(res.message);

@@ -2,6 +2,8 @@
 // edge; SI inside), and the kinematic assessment of the case.
 #include "assess/assessment/case_file.hpp"
 
+#include "assess/hazard/comuni.hpp"
+
 #include "assess/kinematic/code_rules.hpp"
 #include "assessment/plausibility.hpp"
 #include "assess/support/error.hpp"
@@ -251,10 +253,23 @@ MechanismSet parse_mechanism(const JsonNode& m) {
 }
 
 SiteSpec parse_site(const JsonNode& s) {
-  s.allow_only({"lat", "lon", "island", "hazard", "soil", "topography", "h_over_H", "VN_years", "use_class", "CU"});
+  s.allow_only({"lat", "lon", "comune", "province", "island", "hazard", "soil", "topography", "h_over_H", "VN_years",
+                "use_class", "CU"});
   SiteSpec spec;
-  const int ways = (s.has("lat") || s.has("lon")) + s.has("island") + s.has("hazard");
-  if (ways != 1) s.fail("give exactly one of {\"lat\", \"lon\"}, \"island\" or \"hazard\"");
+  const int ways = (s.has("lat") || s.has("lon")) + s.has("comune") + s.has("island") + s.has("hazard");
+  if (ways != 1) s.fail("give exactly one of {\"lat\", \"lon\"}, \"comune\", \"island\" or \"hazard\"");
+  if (s.has("province") && !s.has("comune")) s.fail("\"province\" goes with \"comune\"");
+  if (s.has("comune")) {
+    // The municipal seat's coordinates (hazard/comuni.hpp); the report prints them.
+    try {
+      const Comune& c = ComuneTable::shipped()->find(s.string("comune"), s.has("province") ? s.string("province") : "");
+      spec.lat = c.lat;
+      spec.lon = c.lon;
+      spec.comune = c.describe();
+    } catch (const InputError& e) {
+      s.at("comune").fail(e.what());
+    }
+  }
   if (s.has("lat") || s.has("lon")) {
     spec.lat = s.number("lat", "deg", -90.0, 90.0);
     spec.lon = s.number("lon", "deg", -180.0, 180.0);

@@ -74,7 +74,7 @@ DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, co
   const JsonNode d(doc, file, "/dynamic");
   if (!d.is_object()) d.fail("expected an object");
   d.allow_only({"model", "k", "sidedness", "restitution", "polarity", "overturn_at", "records", "select",
-                "tail_s", "integrator"});
+                "tail_s", "integrator", "whole_record", "free_tail_s"});
   DynamicSpec s;
   s.smooth = d.has("model") ? d.choice("model", {"smooth", "rigid"}) == "smooth" : true;
   if (s.smooth) {
@@ -104,6 +104,8 @@ DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, co
     s.options.overturn = d.choice("overturn_at", {"theta_u", "half_pi"}) == "half_pi" ? OverturnCriterion::half_pi
                                                                                       : OverturnCriterion::theta_u;
   s.options.tail_s = d.number_or("tail_s", 0.0, "s (free motion after the record)", 0.0, 600.0);
+  s.trim = !d.boolean_or("whole_record", false);
+  s.free_tail_s = d.number_or("free_tail_s", s.free_tail_s, "s (free rocking after the strong motion)", 0.0, 600.0);
   if (auto in = d.find("integrator")) {
     in->allow_only({"stepper", "rel_tol", "abs_tol"});
     if (in->has("stepper")) {
@@ -142,10 +144,37 @@ DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, co
     }
   } else {
     const JsonNode sel = d.at("select");
-    sel.allow_only({"count", "period_range_s", "max_scale", "catalogue"});
+    sel.allow_only({"count", "period_range_s", "max_scale", "max_mean_scale", "max_pga_ratio", "per_event",
+                    "per_station", "Mw", "distance_km", "site_classes", "relax_site_class", "countries",
+                    "catalogue"});
     RecordSelectionSpec rs;
     rs.count = sel.integer_or("count", 7, 1, 50);
-    rs.max_scale = sel.number_or("max_scale", 5.0, "(-)", 1.0, 100.0);
+    rs.max_scale = sel.number_or("max_scale", rs.max_scale, "(-)", 1.0, 100.0);
+    rs.max_mean_scale = sel.number_or("max_mean_scale", rs.max_mean_scale, "(-)", 0.1, 100.0);
+    rs.max_pga_ratio = sel.number_or("max_pga_ratio", rs.max_pga_ratio, "(-, multiple of ag S)", 0.5, 10.0);
+    rs.max_per_event = sel.integer_or("per_event", rs.max_per_event, 1, 50);
+    rs.max_per_station = sel.integer_or("per_station", rs.max_per_station, 1, 50);
+    auto window = [&](const char* key, const char* unit, double lo, double hi, std::optional<double>& a,
+                      std::optional<double>& b) {
+      if (!sel.has(key)) return;
+      const std::vector<JsonNode> w = sel.array(key, 2);
+      if (w.size() != 2) sel.at(key).fail(std::string("expected [min, max] in ") + unit);
+      a = w[0].as_number(unit, lo, hi);
+      b = w[1].as_number(unit, lo, hi);
+      if (!(*b >= *a)) sel.at(key).fail(std::string("expected min <= max (") + unit + ")");
+    };
+    window("Mw", "(-, moment magnitude)", 2.0, 10.0, rs.Mw_min, rs.Mw_max);
+    window("distance_km", "km", 0.0, 1000.0, rs.R_min_km, rs.R_max_km);
+    if (sel.has("site_classes"))
+      for (const JsonNode& c : sel.array("site_classes", 1)) {
+        const std::string v = c.as_string();
+        if (v.size() != 1 || std::string("ABCDE").find(v) == std::string::npos)
+          c.fail("expected a site class \"A\", \"B\", \"C\", \"D\" or \"E\", got \"" + v + "\"");
+        rs.site_classes.push_back(v);
+      }
+    rs.relax_site_class = sel.boolean_or("relax_site_class", true);
+    if (sel.has("countries"))
+      for (const JsonNode& c : sel.array("countries", 1)) rs.countries.push_back(c.as_string());
     if (sel.has("period_range_s")) {
       const std::vector<JsonNode> pr = sel.array("period_range_s", 2);
       if (pr.size() != 2) sel.at("period_range_s").fail("expected [T_min, T_max] in s");

@@ -16,6 +16,7 @@
 #include "assess/records/record_catalogue.hpp"
 #include "assess/records/record_io.hpp"
 #include "assess/records/response_spectrum.hpp"
+#include "assess/records/strong_motion.hpp"
 #include "assess/support/units.hpp"
 #include "support/parallel_for.hpp"
 #include "assessment/plausibility.hpp"
@@ -64,34 +65,73 @@ void load_records(FacadeAssessment& a, const DynamicSpec& d, const FacadeOptions
   }
   const RecordSelectionSpec& rs = *d.selection;
   const RecordCatalogue cat = read_catalogue(rs.catalogue);
+  // Catalogue filters (docs/theory/record-selection.md §2.1): default site class = the site's soil class.
+  CatalogueFilters filters;
+  if (rs.Mw_min) filters.Mw_min = *rs.Mw_min, filters.Mw_max = *rs.Mw_max, filters.Mw_given = true;
+  if (rs.R_min_km) filters.R_min_km = *rs.R_min_km, filters.R_max_km = *rs.R_max_km, filters.R_given = true;
+  filters.site_classes = rs.site_classes;
+  if (filters.site_classes.empty()) filters.site_classes = {to_string(a.kase.site->conditions.soil)};
+  filters.relax_site_class = rs.relax_site_class;
+  filters.countries = rs.countries;
+  filters.min_candidates = std::size_t(3 * rs.count);
+  const CatalogueFilterResult fr = filter_catalogue(cat.entries, filters);
+  a.selection_warnings = fr.warnings;
+  a.selection_site_classes = fr.site_classes;
   std::vector<Record> candidates;
   std::vector<CatalogueEntry> entries;
-  for (const CatalogueEntry& e : cat.design_candidates()) {
-    try {
-      candidates.push_back(cat.load(e.id));
-      entries.push_back(e);
-    } catch (const InputError& err) {
-      if (!opt.keep_going) throw;
-      a.record_failures.push_back(e.file + ": " + err.what());
+  std::vector<CandidateInfo> info;
+  std::vector<std::string> errors;
+  std::vector<Record> loaded = cat.load_all(fr.kept, errors);
+  for (std::size_t i = 0; i < fr.kept.size(); ++i) {
+    const CatalogueEntry& e = fr.kept[i];
+    if (!errors[i].empty()) {
+      if (!opt.keep_going) throw InputError(a.kase.file + ": /dynamic/select: catalogue record " + e.file + ": " + errors[i]);
+      a.record_failures.push_back(e.file + ": " + errors[i]);
+      continue;
     }
+    candidates.push_back(std::move(loaded[i]));
+    entries.push_back(e);
+    info.push_back(candidate_info(e));
   }
+  a.selection_candidates = candidates.size();
+  if (candidates.empty())
+    throw InputError(a.kase.file + ": /dynamic/select: no record of the catalogue passes the filters");
   SelectionOptions so;
   so.n_records = rs.count;
   so.max_scale = rs.max_scale;
-  // Default range around the mechanism's periods (docs/theory/record-selection.md).
+  so.max_mean_scale = rs.max_mean_scale;
+  so.max_pga_ratio = rs.max_pga_ratio;
+  so.max_per_event = rs.max_per_event;
+  so.max_per_station = rs.max_per_station;
+  a.selection_max_pga_ratio = rs.max_pga_ratio;
+  a.selection_max_scale = rs.max_scale;
+  a.selection_max_mean_scale = rs.max_mean_scale;
+  // Range of the SLV check: the secant periods the mechanism passes through
+  // up to its SLV displacement, Ts [C8.7.1.2.1.7] to T_SLV [C8.7.1.10]
+  // (docs/theory/record-selection.md §2.3).
   const double T1 = std::min(kin.Ts, kin.T_SLV), T2 = std::max(kin.Ts, kin.T_SLV);
+  a.selection_T_first = T1;
+  a.selection_T_last = T2;
   so.range = (rs.T_min && rs.T_max) ? PeriodRange{*rs.T_min, *rs.T_max} : rocking_period_range(T1, T2);
   a.selection_range = so.range;
-  SelectionResult sel = select_records(target, candidates, so);
+  SelectionResult sel = select_records([&target](double T) { return target.Se(T); }, candidates, info, so);
   for (const SelectedRecord& s : sel.records) {
     const CatalogueEntry& e = entries[s.index];
     Record r = candidates[s.index];
-    a.records.push_back({r.name, cat.directory + "/" + e.file, e.event, e.station, e.component, s.scale,
-                         r.pga() * s.scale, ""});
+    RecordUsed u{r.name, cat.directory + "/" + e.file, e.event, e.station, e.component, s.scale, r.pga() * s.scale, ""};
+    u.Mw = e.Mw;
+    u.distance_km = e.distance_km;
+    u.distance_kind = e.distance_kind;
+    u.site_class = e.site_class;
+    u.positive_direction = e.positive_direction;
+    u.deviation = s.deviation;
+    u.rank = s.rank;
+    a.records.push_back(u);
     recs.push_back(std::move(r));
   }
   a.selection = std::move(sel);
-  if (recs.empty()) throw InputError(a.kase.file + ": /dynamic/select: no compatible record in the catalogue");
+  if (recs.empty())
+    throw InputError(a.kase.file + ": /dynamic/select: no compatible set in the catalogue: " + a.selection->message);
 }
 
 // Compatibility of the records' mean scaled 5 % spectrum with the SLV
@@ -245,6 +285,18 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
     a.mr_moment.push_back(a.model->restoring_moment(th) - a.body->body.M_ext);
   }
 
+  // Long tails (docs/theory/record-selection.md §4): integrate to the end of
+  // the strong motion (99.9 % Arias) and let the wall rock freely for
+  // free_tail_s; the whole record on request.
+  a.trimmed = d.trim;
+  a.free_tail_s = d.trim ? std::max(d.free_tail_s, d.options.tail_s) : d.options.tail_s;
+  std::vector<Record> run_recs;
+  for (std::size_t ir = 0; ir < recs.size(); ++ir) {
+    a.records[ir].duration_s = recs[ir].duration();
+    run_recs.push_back(d.trim ? strong_motion_part(recs[ir]) : recs[ir]);
+    a.records[ir].integrated_s = run_recs.back().duration();
+  }
+
   // Control point of the kinematic analysis, for the C8.7.1.2.1.9 displacements.
   const KinematicResult& kin = gov.result;
   std::vector<bool> polarities;
@@ -267,7 +319,8 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
     ro.record_history = opt.histories;
     ro.scale = a.records[run.record].scale;
     ro.reverse = run.reversed;
-    run.result = analyse(models[run.restitution], recs[run.record], ro);
+    ro.tail_s = a.free_tail_s;
+    run.result = analyse(models[run.restitution], run_recs[run.record], ro);
     run.theta_ratio = run.result.theta_u > 0 ? run.result.theta_max / run.result.theta_u : 0.0;
     // Peak outward rotation moves the control point outward (one-sided:
     // theta >= 0); for two-sided, |theta| on either side (symmetric body).

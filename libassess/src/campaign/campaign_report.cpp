@@ -9,6 +9,14 @@
 //   moved            theta_max > 0: the block left its rest position
 #include "assess/campaign/campaign_report.hpp"
 
+#include "assess/report/html_report.hpp"
+#include "assess/report/kinematic_report.hpp"
+#include "assess/report/messages.hpp"
+
+#include <cctype>
+#include <cstdio>
+#include <limits>
+
 #include "assess/campaign/campaign_runner.hpp"
 #include "assess/support/error.hpp"
 #include "assess/support/units.hpp"
@@ -270,6 +278,84 @@ std::vector<std::pair<std::string, Plot>> campaign_plots(const Campaign& campaig
   return plots;
 }
 
+namespace {
+
+std::string fmt(const char* f, double v) {
+  if (!std::isfinite(v)) return "—";
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+double number_at(const json& j, const char* a, const char* b = nullptr) {
+  const json* v = j.contains(a) ? &j.at(a) : nullptr;
+  if (v && b) v = v->contains(b) ? &v->at(b) : nullptr;
+  return v && v->is_number() ? v->get<double>() : std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace
+
+std::string campaign_index_html(const json& s, const std::vector<std::pair<std::string, std::string>>& svgs) {
+  const Lang L = Lang::en;  // campaigns are research output: English (messages.cpp "camp.*")
+  HtmlReport h(msg(L, "camp.title") + " — " + s.value("campaign", std::string()));
+  h.set_lang(to_string(L));
+  h.add_paragraph(format(msg(L, "camp.intro").c_str(), (unsigned long long)s.value("analyses", 0ull),
+                         (unsigned long long)s.value("analyses_in_campaign", 0ull),
+                         (unsigned long long)s.value("failed", 0ull)));
+  using C = HtmlCell;
+  if (s.contains("by_model")) {
+    std::vector<std::vector<C>> rows;
+    for (const auto& [model, m] : s.at("by_model").items())
+      rows.push_back({C(model), C(fmt("%.0f", number_at(m, "analyses")), "num"), C(fmt("%.0f", number_at(m, "failed")), "num"),
+                      C(fmt("%.0f", number_at(m, "moved")), "num"), C(fmt("%.0f", number_at(m, "overturned")), "num"),
+                      C(fmt("%.3f", number_at(m, "dc_energy", "mean")), "num"),
+                      C(fmt("%.3f", number_at(m, "dc_energy", "std")), "num")});
+    h.add_heading(msg(L, "camp.by_model"), 2, false);
+    h.add_cell_table({msg(L, "camp.model"), C(msg(L, "dyn.analyses"), "num"), C(msg(L, "camp.failed"), "num"),
+                      C(msg(L, "camp.moved"), "num"), C(msg(L, "dyn.overturned"), "num"), C("mean D/C", "num"),
+                      C("std D/C", "num")},
+                     rows, "");
+  }
+  if (s.contains("by_model_and_scale")) {
+    std::vector<std::vector<C>> rows;
+    for (const json& m : s.at("by_model_and_scale"))
+      rows.push_back({C(m.value("model", std::string())), C(fmt("%.3f", number_at(m, "scale")), "num"),
+                      C(fmt("%.0f", number_at(m, "analyses")), "num"),
+                      C(fmt("%.3f", number_at(m, "moved_fraction")), "num"),
+                      C(fmt("%.3f", number_at(m, "overturned_fraction")), "num"),
+                      C(fmt("%.3f", number_at(m, "dc_energy", "mean")), "num"),
+                      C(fmt("%.3f", number_at(m, "dc_energy", "std")), "num")});
+    h.add_heading(msg(L, "camp.by_scale"), 2, false);
+    h.add_cell_table({msg(L, "camp.model"), C(msg(L, "dyn.scale"), "num"), C(msg(L, "dyn.analyses"), "num"),
+                      C(msg(L, "camp.moved_fraction"), "num"), C(msg(L, "camp.overturned_fraction"), "num"),
+                      C("mean D/C", "num"), C("std D/C", "num")},
+                     rows, "");
+  }
+  if (s.contains("code_vs_dynamic")) {
+    std::vector<std::vector<C>> rows;
+    for (const auto& [model, m] : s.at("code_vs_dynamic").items())
+      for (const auto& [kind, k] : m.items())
+        rows.push_back({C(model), C(kind), C(fmt("%.0f", number_at(k, "considered")), "num"),
+                        C(fmt("%.3f", number_at(k, "correlation")), "num"),
+                        C(fmt("%.3f", number_at(k, "fraction_same_verdict")), "num"),
+                        C(fmt("%.3f", number_at(k, "fraction_code_below_dynamic")), "num")});
+    h.add_heading(msg(L, "camp.code_vs_dynamic"), 2, false);
+    h.add_cell_table({msg(L, "camp.model"), msg(L, "camp.code_check"), C(msg(L, "camp.considered"), "num"),
+                      C(msg(L, "camp.correlation"), "num"), C(msg(L, "camp.same_verdict"), "num"),
+                      C(msg(L, "camp.code_below"), "num")},
+                     rows, "");
+  }
+  if (!svgs.empty()) h.add_heading(msg(L, "camp.figures"));
+  for (std::size_t i = 0; i < svgs.size(); ++i) {
+    std::string id = "fig-" + svgs[i].first.substr(0, svgs[i].first.rfind('.'));
+    for (char& c : id)
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
+    h.add_svg(svgs[i].second, svgs[i].first, id);
+  }
+  h.add_paragraph(msg(L, "camp.files"));
+  return h.str();
+}
+
 CampaignReportFiles write_campaign_report(const Campaign& campaign, const std::string& out_dir, bool plots) {
   const std::vector<AnalysisRow> rows = read_campaign_csv(out_dir + "/results.csv");
   CampaignReportFiles files;
@@ -279,14 +365,20 @@ CampaignReportFiles write_campaign_report(const Campaign& campaign, const std::s
   files.summary = out_dir + "/summary.json";
   std::ofstream(files.summary) << summary.dump(2) << "\n";
   if (!std::ifstream(files.summary)) throw InputError("cannot write '" + files.summary + "'");
-  if (!plots) return files;
-  for (const auto& [name, plot] : campaign_plots(campaign, rows)) {
-    const std::string path = out_dir + "/" + name;
-    std::ofstream out(path);
-    out << render_svg(plot);
-    if (!out) throw InputError("cannot write '" + path + "'");
-    files.plots.push_back(path);
-  }
+  std::vector<std::pair<std::string, std::string>> svgs;  // file name, SVG
+  if (plots)
+    for (const auto& [name, plot] : campaign_plots(campaign, rows)) {
+      const std::string path = out_dir + "/" + name;
+      std::string svg = render_svg(plot);
+      std::ofstream out(path);
+      out << svg;
+      if (!out) throw InputError("cannot write '" + path + "'");
+      files.plots.push_back(path);
+      svgs.emplace_back(name, std::move(svg));
+    }
+  files.index = out_dir + "/index.html";
+  std::ofstream(files.index) << campaign_index_html(summary, svgs);
+  if (!std::ifstream(files.index)) throw InputError("cannot write '" + files.index + "'");
   return files;
 }
 

@@ -49,11 +49,22 @@ class RockingSystem final : public HybridSystem {
   RockingSystem(const RockingModel& model, const GroundMotion& motion, const RockingOptions& opt)
       : model_(model), motion_(motion), opt_(opt), smooth_(!model.foundation().is_rigid()),
         two_sided_(model.sidedness() == Sidedness::two_sided) {
-    for (int m = -2; m <= 2; ++m) n_events_[m + 2] = events(m, kinds_[m + 2]);
+    for (int m = -2; m <= 2; ++m) {
+      n_events_[m + 2] = list_events(m, kinds_[m + 2]);
+      if (m != 0)
+        for (std::size_t k = 0; k < n_events_[m + 2]; ++k) linear_event(kinds_[m + 2][k], m, ev_a_[m + 2][k], ev_b_[m + 2][k]);
+    }
   }
 
   std::size_t dimension() const override { return 2; }
 
+  // The right-hand side, seed Eq. 1: theta' = omega, omega' = theta''(theta, ug).
+  // Each contact branch extends smoothly past theta_cr (the branch event cuts
+  // the step there), so a step that crosses theta_cr has a smooth right-hand
+  // side and its error estimate does not reject it; the full-contact formula
+  // for partial-branch stages below theta_cr was measured instead (bench_rocking:
+  // 106 rejected steps, 71 more steps, theta_max 4x further from the rk8pd
+  // 1e-12 run) and not kept.
   bool rhs(double t, const double* y, int mode, double* dydt) const override {
     if (mode == 0) {
       dydt[0] = dydt[1] = 0.0;
@@ -64,62 +75,73 @@ class RockingSystem final : public HybridSystem {
     return std::isfinite(dydt[1]);
   }
 
+  // The same right-hand side as a kernel per pivot side S and contact
+  // branch, with the record's ug'' on the current sample interval as
+  // a0 + a1 tau (GroundMotion::linear_piece): one multiply-add for ug'' and
+  // no virtual call per stage. A function of time (pulses) has no such form:
+  // rhs() then serves.
+  RhsKernel rhs_kernel(int mode, double t) override {
+    GroundMotion::LinearPiece piece;
+    if (mode == 0 || !motion_.linear_piece(t, piece)) return {};
+    kernel_.u0 = piece.a0;
+    kernel_.u1 = piece.a1;
+    RhsKernel k;
+    k.fn = mode == 1 ? &kernel<+1, false> : mode == -1 ? &kernel<-1, false>
+         : mode == 2 ? &kernel<+1, true> : &kernel<-1, true>;
+    k.ctx = &kernel_;
+    k.origin = piece.origin;
+    return k;
+  }
+
+  void events(double t, const double* y, int mode, double* g) const override {
+    if (mode == 0) {  // at rest: lift-off about +1 (and -1), with ug''(t) looked up once
+      const double ug = motion_.acc(t);
+      g[0] = model_.angular_acceleration(0.0, +1, false, ug);
+      if (two_sided_) g[1] = -model_.angular_acceleration(0.0, -1, false, ug);
+      return;
+    }
+    for (std::size_t k = 0, n = n_events_[mode + 2]; k < n; ++k) g[k] = ev_a_[mode + 2][k] + ev_b_[mode + 2][k] * y[0];
+  }
+
+  // Dense output for event location: theta by the quintic Hermite interpolant
+  // of theta, theta' = omega and theta'' = omega' at both ends, omega by its
+  // derivative (so omega matches both ends too). At rest: the base's cubic.
+  void interpolate(double t0, const double* y0, const double* f0, double t1, const double* y1, const double* f1,
+                   int mode, double s, double* y) const override {
+    if (mode == 0) return HybridSystem::interpolate(t0, y0, f0, t1, y1, f1, mode, s, y);
+    const Quintic q{y0[0], f0[0], f0[1], y1[0], f1[0], f1[1], t1 - t0};
+    y[0] = q.value(s);
+    y[1] = q.slope(s) / (t1 - t0);
+  }
+
   std::size_t event_count(int mode) const override { return n_events_[mode + 2]; }
   EventDirection event_direction(std::size_t k, int mode) const override {
     const Ev e = event_kind(k, mode);
     return (e == Ev::lift_out || e == Ev::lift_in) ? EventDirection::rising : EventDirection::falling;
   }
 
+  // In a rocking mode every event function is linear in theta, g = a + b theta
+  // (coefficients per mode from linear_event, the same values to the bit as the
+  // expressions written there); at rest the lift-off events depend on ug''(t).
   double event(std::size_t k, double t, const double* y, int mode) const override {
-    const double s = mode >= 0 ? 1.0 : -1.0;
-    switch (event_kind(k, mode)) {
-      case Ev::lift_out: return model_.angular_acceleration(0.0, +1, false, motion_.acc(t));
-      case Ev::lift_in: return -model_.angular_acceleration(0.0, -1, false, motion_.acc(t));
-      case Ev::impact: return s * y[0];
-      case Ev::theta_u: return model_.theta_u(int(s)) - s * y[0];
-      case Ev::half_pi: return 0.5 * units::pi - s * y[0];
-      case Ev::branch:
-        return std::abs(mode) == 1 ? model_.theta_cr() - s * y[0] : s * y[0] - model_.theta_cr();
-    }
-    return 1.0;
+    if (mode != 0) return ev_a_[mode + 2][k] + ev_b_[mode + 2][k] * y[0];
+    return event_kind(k, mode) == Ev::lift_out ? model_.angular_acceleration(0.0, +1, false, motion_.acc(t))
+                                               : -model_.angular_acceleration(0.0, -1, false, motion_.acc(t));
   }
 
+  // The jump map: one named step per kind of event (lift-off, impact,
+  // ultimate rotation, branch switch); the state after a lift-off or an impact
+  // goes to the history.
   EventAction on_event(std::size_t k, double t, double* y, int& mode) override {
-    const int s = mode >= 0 ? 1 : -1;
     switch (event_kind(k, mode)) {
-      case Ev::lift_out:
-      case Ev::lift_in:
-        mode = event_kind(k, mode) == Ev::lift_out ? +1 : -1;
-        y[0] = y[1] = 0.0;
-        break;
-      case Ev::impact: {
-        ++impacts_;
-        y[0] = 0.0;  // project onto the switching surface
-        const double w = model_.has_restitution() ? model_.impact(y[1]) : y[1];
-        if (model_.has_restitution() && std::fabs(w) < opt_.rest_velocity) {
-          // Zeno: the impacts would accumulate; rest unless the excitation lifts the body.
-          const double ug = motion_.acc(t);
-          if (model_.lifts(+1, ug)) {
-            mode = +1, y[1] = w > 0.0 ? w : 0.0;
-          } else if (two_sided_ && model_.lifts(-1, ug)) {
-            mode = -1, y[1] = w < 0.0 ? w : 0.0;
-          } else {
-            mode = 0, y[1] = 0.0;
-          }
-        } else {
-          y[1] = w;
-          mode = w >= 0.0 ? +1 : -1;
-        }
-        break;
-      }
-      case Ev::theta_u:
-        ke_theta_u_ = 0.5 * model_.body().I0 * y[1] * y[1];
-        if (opt_.overturn == OverturnCriterion::theta_u) return overturn(t);
-        return EventAction::proceed;
+      case Ev::lift_out: lift_off(+1, y, mode); break;
+      case Ev::lift_in: lift_off(-1, y, mode); break;
+      case Ev::impact: impact(t, y, mode); break;
+      case Ev::theta_u: return reach_theta_u(t, y);
       case Ev::half_pi: return overturn(t);
-      case Ev::branch: mode = std::abs(mode) == 1 ? 2 * s : s; return EventAction::proceed;
+      case Ev::branch: switch_branch(mode); return EventAction::proceed;
     }
-    push_history(t, y);  // the state after a jump (impact, lift-off)
+    push_history(t, y);
     return EventAction::proceed;
   }
 
@@ -157,7 +179,7 @@ class RockingSystem final : public HybridSystem {
  private:
   // Events active in a mode, in a fixed order; returns their number and, if
   // out != nullptr, writes the kinds.
-  std::size_t events(int mode, Ev* out) const {
+  std::size_t list_events(int mode, Ev* out) const {
     std::size_t n = 0;
     auto add = [&](Ev e) {
       if (out) out[n] = e;
@@ -176,12 +198,85 @@ class RockingSystem final : public HybridSystem {
   }
   Ev event_kind(std::size_t k, int mode) const { return kinds_[mode + 2][k]; }
 
+  // Event function of kind e in rocking mode m (pivot s) as a + b theta:
+  //   impact s theta; ultimate rotation theta_u(s) - s theta; pi/2 - s theta;
+  //   branch switch theta_cr - s theta (full contact) or s theta - theta_cr (partial).
+  void linear_event(Ev e, int mode, double& a, double& b) const {
+    const double s = mode >= 0 ? 1.0 : -1.0;
+    switch (e) {
+      case Ev::impact: a = 0.0, b = s; return;
+      case Ev::theta_u: a = model_.theta_u(int(s)), b = -s; return;
+      case Ev::half_pi: a = 0.5 * units::pi, b = -s; return;
+      case Ev::branch:
+        if (std::abs(mode) == 1) a = model_.theta_cr(), b = -s;
+        else a = -model_.theta_cr(), b = s;
+        return;
+      case Ev::lift_out:
+      case Ev::lift_in: break;
+    }
+    a = 1.0, b = 0.0;
+  }
+
+  struct KernelData {
+    const RockingModel* model;
+    double u0 = 0.0, u1 = 0.0;  // ug'' = u0 + u1 tau (m/s^2, m/s^3)
+  };
+  template <int S, bool Partial>
+  static int kernel(double tau, const double* y, double* dydt, void* ctx) {
+    const auto* d = static_cast<const KernelData*>(ctx);
+    dydt[0] = y[1];
+    dydt[1] = d->model->angular_acceleration(y[0], S, Partial, d->u0 + d->u1 * tau);
+    return 0;
+  }
+
   void consider_peak(double t, double theta) {
     if (std::fabs(theta) > res_.theta_max) {
       res_.theta_max = std::fabs(theta);
       res_.t_theta_max = t;
       res_.theta_max_side = theta >= 0.0 ? +1 : -1;
     }
+  }
+
+  // The body leaves its base about pivot s from rest.
+  static void lift_off(int s, double* y, int& mode) {
+    mode = s;
+    y[0] = y[1] = 0.0;
+  }
+
+  // Impact at theta = 0 (rocking.md §1.2-1.3): the velocity jump w = e w-,
+  // the pivot changes to the side of w; a post-impact velocity below
+  // rest_velocity (Zeno: impacts would accumulate) leaves the body at rest
+  // unless the excitation lifts it at once.
+  void impact(double t, double* y, int& mode) {
+    ++impacts_;
+    y[0] = 0.0;  // project onto the switching surface
+    const double w = model_.has_restitution() ? model_.impact(y[1]) : y[1];
+    if (!(model_.has_restitution() && std::fabs(w) < opt_.rest_velocity)) {
+      y[1] = w;
+      mode = w >= 0.0 ? +1 : -1;
+      return;
+    }
+    const double ug = motion_.acc(t);
+    if (model_.lifts(+1, ug)) {
+      mode = +1, y[1] = w > 0.0 ? w : 0.0;
+    } else if (two_sided_ && model_.lifts(-1, ug)) {
+      mode = -1, y[1] = w < 0.0 ? w : 0.0;
+    } else {
+      mode = 0, y[1] = 0.0;
+    }
+  }
+
+  // |theta| = theta_u: keep the kinetic energy there (seed §3.2, the demand of
+  // an overturned wall); the end of the analysis under the theta_u criterion.
+  EventAction reach_theta_u(double t, const double* y) {
+    ke_theta_u_ = 0.5 * model_.body().I0 * y[1] * y[1];
+    return opt_.overturn == OverturnCriterion::theta_u ? overturn(t) : EventAction::proceed;
+  }
+
+  // Full <-> partial contact at |theta| = theta_cr, same pivot.
+  static void switch_branch(int& mode) {
+    const int s = mode >= 0 ? 1 : -1;
+    mode = std::abs(mode) == 1 ? 2 * s : s;
   }
 
   EventAction overturn(double t) {
@@ -195,7 +290,9 @@ class RockingSystem final : public HybridSystem {
   const RockingOptions& opt_;
   bool smooth_, two_sided_;
   Ev kinds_[5][6];  // event kinds per mode (-2..2)
+  double ev_a_[5][6] = {}, ev_b_[5][6] = {};  // g = a + b theta per rocking mode
   std::size_t n_events_[5];
+  KernelData kernel_{&model_};
   RockingResult res_;
   long impacts_ = 0;
   double ke_theta_u_ = 0.0;

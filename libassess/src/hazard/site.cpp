@@ -88,7 +88,8 @@ std::vector<int> Site::grid_nodes() const {
 std::string Site::describe() const {
   std::ostringstream os;
   os.precision(8);
-  if (spec_.lat) os << "lat " << *spec_.lat << ", lon " << *spec_.lon;
+  if (!spec_.comune.empty()) os << "comune " << spec_.comune << ": ";
+  if (spec_.lat) os << "lat " << *spec_.lat << ", lon " << *spec_.lon << (spec_.comune.empty() ? "" : " (municipal seat)");
   else if (spec_.island) os << "island " << *spec_.island;
   else os << "hazard given per limit state";
   return os.str();

@@ -59,6 +59,27 @@ double GroundMotion::next_breakpoint(double t) const {
   return it == breakpoints_.end() ? std::numeric_limits<double>::infinity() : *it;
 }
 
+bool GroundMotion::linear_piece(double t, LinearPiece& out) const {
+  if (samples_.empty()) return false;
+  if (t < 0.0) {  // acc() is zero before the record starts
+    out = {t, 0.0, 0.0};
+    return true;
+  }
+  // The interval [t_k, t_k+1] whose end is next_breakpoint(t): the same index
+  // rule, so piece and breakpoint never disagree on a rounded sample time.
+  long j = static_cast<long>(t * inv_dt_) + 1;  // floor + 1 for t >= 0
+  if (double(j) * dt_ <= t) ++j;
+  const auto k = static_cast<std::size_t>(j - 1);
+  out.origin = double(k) * dt_;
+  if (k + 1 >= samples_.size()) {  // past the last sample: acc() is zero (the tail)
+    out.a0 = out.a1 = 0.0;
+    return true;
+  }
+  out.a0 = samples_[k];
+  out.a1 = (samples_[k + 1] - samples_[k]) * inv_dt_;
+  return true;
+}
+
 double GroundMotion::pga() const {
   double m = 0.0;
   for (double a : samples_) m = std::max(m, std::fabs(a));

@@ -18,9 +18,11 @@
 #include "assess/support/error.hpp"
 #include "support/parallel_for.hpp"
 #include "assess/records/response_spectrum.hpp"
+#include "assess/support/units.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 namespace assess {
@@ -37,29 +39,39 @@ struct Score {
   }
 };
 
-class SetScorer {
- public:
-  SetScorer(const std::vector<std::vector<double>>& ratios, double lo, double hi)
-      : r_(ratios), lo_(lo), hi_(hi) {}
+/// Scaled ratios r_ij of the eligible candidates, their scales and groups.
+struct Pool {
+  const std::vector<std::vector<double>>& r;
+  const std::vector<double>& scale;
+  const std::vector<int>& event;    // group ids
+  const std::vector<int>& station;
+  double lo, hi;
+  int max_event, max_station;
+  double max_scale_sum;             // max_mean_scale * N
 
-  /// Score of the set given by indices into ratios.
   Score score(const std::vector<std::size_t>& set) const {
-    const std::size_t n = r_.front().size();
+    const std::size_t n = r.front().size();
     Score s;
     for (std::size_t j = 0; j < n; ++j) {
       double m = 0.0;
-      for (std::size_t i : set) m += r_[i][j];
+      for (std::size_t i : set) m += r[i][j];
       m /= double(set.size());
-      s.violation += std::max(0.0, lo_ - m) + std::max(0.0, m - hi_);
+      s.violation += std::max(0.0, lo - m) + std::max(0.0, m - hi);
       s.rms += (m - 1.0) * (m - 1.0);
     }
     s.rms = std::sqrt(s.rms / double(n));
     return s;
   }
-
- private:
-  const std::vector<std::vector<double>>& r_;
-  double lo_, hi_;
+  /// Can candidate i join `set` without breaking the group and scale limits?
+  bool fits(const std::vector<std::size_t>& set, std::size_t i, double scale_sum) const {
+    if (scale_sum + scale[i] > max_scale_sum * (1.0 + 1e-12)) return false;
+    int ne = 0, ns = 0;
+    for (std::size_t k : set) {
+      ne += event[k] == event[i];
+      ns += station[k] == station[i];
+    }
+    return ne < max_event && ns < max_station;
+  }
 };
 
 /// C(n, k) as a double (exact up to 2^53, then approximate: only compared
@@ -71,66 +83,104 @@ double binomial(std::size_t n, std::size_t k) {
   return std::round(c);
 }
 
-/// Every k-subset of {0..n-1} in lexicographic order; keeps the best.
-std::vector<std::size_t> exhaustive_search(const SetScorer& sc, std::size_t n, std::size_t k,
+/// Every feasible k-subset of `order` (depth-first, lexicographic in `order`),
+/// with the running sums of the ratios per level; keeps the best. Empty if
+/// no subset satisfies the group and scale limits.
+std::vector<std::size_t> exhaustive_search(const Pool& p, const std::vector<std::size_t>& order, std::size_t k,
                                            double& evaluated) {
-  std::vector<std::size_t> idx(k), best;
-  for (std::size_t i = 0; i < k; ++i) idx[i] = i;
+  const std::size_t nT = p.r.front().size(), n = order.size();
+  std::vector<std::vector<double>> sums(k + 1, std::vector<double>(nT, 0.0));
+  std::vector<std::size_t> set, best;
+  std::vector<double> scale_sum(k + 1, 0.0);
   Score best_score;
   evaluated = 0.0;
+  const double inv = 1.0 / double(k);
+  // Iterative DFS: pos[d] = position in `order` chosen at depth d.
+  std::vector<std::size_t> pos(k, 0);
+  std::size_t d = 0;
+  pos[0] = 0;
   while (true) {
-    const Score s = sc.score(idx);
-    evaluated += 1.0;
-    if (best.empty() || s.better_than(best_score)) best = idx, best_score = s;
-    // next combination
-    std::size_t i = k;
-    while (i > 0 && idx[i - 1] == n - k + i - 1) --i;
-    if (i == 0) break;
-    ++idx[i - 1];
-    for (std::size_t j = i; j < k; ++j) idx[j] = idx[j - 1] + 1;
+    if (pos[d] + (k - d) > n) {  // not enough left at this depth: backtrack
+      if (d == 0) break;
+      --d;
+      set.pop_back();
+      ++pos[d];
+      continue;
+    }
+    const std::size_t i = order[pos[d]];
+    if (!p.fits(set, i, scale_sum[d])) {
+      ++pos[d];
+      continue;
+    }
+    for (std::size_t j = 0; j < nT; ++j) sums[d + 1][j] = sums[d][j] + p.r[i][j];
+    scale_sum[d + 1] = scale_sum[d] + p.scale[i];
+    set.push_back(i);
+    if (d + 1 == k) {
+      Score s;
+      for (std::size_t j = 0; j < nT; ++j) {
+        const double m = sums[k][j] * inv;
+        s.violation += std::max(0.0, p.lo - m) + std::max(0.0, m - p.hi);
+        s.rms += (m - 1.0) * (m - 1.0);
+      }
+      s.rms = std::sqrt(s.rms / double(nT));
+      evaluated += 1.0;
+      if (best.empty() || s.better_than(best_score)) best = set, best_score = s;
+      set.pop_back();
+      ++pos[d];
+      continue;
+    }
+    ++d;
+    pos[d] = pos[d - 1] + 1;
   }
+  std::sort(best.begin(), best.end());
   return best;
 }
 
-/// Greedy forward selection, then best-improvement swaps until none helps.
-std::vector<std::size_t> greedy_search(const SetScorer& sc, std::size_t n, std::size_t k,
+/// Greedy forward selection, then best-improvement swaps until none helps
+/// (feasible moves only).
+std::vector<std::size_t> greedy_search(const Pool& p, const std::vector<std::size_t>& order, std::size_t k,
                                        double& evaluated) {
   std::vector<std::size_t> set;
-  std::vector<bool> used(n, false);
   evaluated = 0.0;
+  double ssum = 0.0;
+  auto in_set = [&](std::size_t i) { return std::find(set.begin(), set.end(), i) != set.end(); };
   while (set.size() < k) {
-    std::size_t best_i = n;
+    bool found = false;
+    std::size_t best_i = 0;
     Score best_s;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (used[i]) continue;
+    for (std::size_t i : order) {
+      if (in_set(i) || !p.fits(set, i, ssum)) continue;
       set.push_back(i);
-      const Score s = sc.score(set);
+      const Score s = p.score(set);
       evaluated += 1.0;
       set.pop_back();
-      if (best_i == n || s.better_than(best_s)) best_i = i, best_s = s;
+      if (!found || s.better_than(best_s)) best_i = i, best_s = s, found = true;
     }
+    if (!found) return {};
     set.push_back(best_i);
-    used[best_i] = true;
+    ssum += p.scale[best_i];
   }
-  Score current = sc.score(set);
+  Score current = p.score(set);
   for (bool improved = true; improved;) {
     improved = false;
-    std::size_t best_pos = k, best_i = n;
+    std::size_t best_pos = k, best_i = 0;
     Score best_s = current;
     for (std::size_t pos = 0; pos < k; ++pos) {
       const std::size_t old = set[pos];
-      for (std::size_t i = 0; i < n; ++i) {
-        if (used[i]) continue;
-        set[pos] = i;
-        const Score s = sc.score(set);
+      set.erase(set.begin() + long(pos));
+      const double rest = ssum - p.scale[old];
+      for (std::size_t i : order) {
+        if (i == old || in_set(i) || !p.fits(set, i, rest)) continue;
+        set.insert(set.begin() + long(pos), i);
+        const Score s = p.score(set);
         evaluated += 1.0;
+        set.erase(set.begin() + long(pos));
         if (s.better_than(best_s)) best_s = s, best_pos = pos, best_i = i;
       }
-      set[pos] = old;
+      set.insert(set.begin() + long(pos), old);
     }
     if (best_pos < k) {
-      used[set[best_pos]] = false;
-      used[best_i] = true;
+      ssum += p.scale[best_i] - p.scale[set[best_pos]];
       set[best_pos] = best_i;
       current = best_s;
       improved = true;
@@ -169,10 +219,16 @@ void SelectionOptions::validate() const {
   if (!(lower_tol >= 0.0 && lower_tol < 1.0)) throw InputError("lower_tol must be in [0, 1) (fraction)");
   if (!(upper_tol >= 0.0) || !std::isfinite(upper_tol)) throw InputError("upper_tol must be >= 0 (fraction)");
   if (!(max_scale > 0.0)) throw InputError("max_scale must be > 0 (-)");
+  if (!(max_mean_scale > 0.0)) throw InputError("max_mean_scale must be > 0 (-)");
+  if (!(max_pga_ratio >= 0.0) || !std::isfinite(max_pga_ratio))
+    throw InputError("max_pga_ratio must be >= 0 (-, multiple of Se(0) = ag S)");
+  if (max_per_event < 1) throw InputError("max_per_event must be >= 1");
+  if (max_per_station < 1) throw InputError("max_per_station must be >= 1");
   if (n_periods < 2) throw InputError("n_periods must be >= 2");
   if (!(damping_ratio >= 0.0) || !std::isfinite(damping_ratio))
     throw InputError("damping_ratio must be a finite fraction >= 0");
   if (!(max_combinations >= 1.0)) throw InputError("max_combinations must be >= 1");
+  if (pool_size < n_records) throw InputError("pool_size must be >= n_records");
 }
 
 std::string to_string(SelectionResult::Status s) {
@@ -184,34 +240,21 @@ std::string to_string(SelectionResult::Status s) {
   return "?";
 }
 
-std::vector<double> selection_periods(const SelectionOptions& opts) {
-  opts.validate();
-  return log_spaced_periods(opts.range.T_min, opts.range.T_max, opts.n_periods);
+SelectionResult select_records(const std::function<double(double)>& target,
+                               const std::vector<Record>& candidates, const SelectionOptions& opts) {
+  std::vector<CandidateInfo> info(candidates.size());
+  for (std::size_t i = 0; i < candidates.size(); ++i) info[i].event = info[i].station = "#" + std::to_string(i);
+  return select_records(target, candidates, info, opts);
 }
 
 SelectionResult select_records(const std::function<double(double)>& target,
-                               const std::vector<Record>& candidates, const SelectionOptions& opts) {
-  const std::vector<double> periods = selection_periods(opts);
-  const ResponseOptions ro{opts.damping_ratio, ResponseOptions{}.min_steps_per_period};
-  std::vector<ResponseSpectrum> spectra(candidates.size());
-  detail::parallel_for(candidates.size(),
-                       [&](std::size_t i) { spectra[i] = response_spectrum(candidates[i], periods, ro); });
-  return select_records(target, candidates, opts, spectra);
-}
-
-SelectionResult select_records(const std::function<double(double)>& target, const std::vector<Record>& candidates,
-                               const SelectionOptions& opts, const std::vector<ResponseSpectrum>& spectra) {
+                               const std::vector<Record>& candidates, const std::vector<CandidateInfo>& info,
+                               const SelectionOptions& opts) {
   opts.validate();
   if (candidates.empty()) throw InputError("select_records: no candidate records");
+  if (info.size() != candidates.size()) throw InputError("select_records: one CandidateInfo per candidate");
   SelectionResult res;
   res.periods = log_spaced_periods(opts.range.T_min, opts.range.T_max, opts.n_periods);
-  if (spectra.size() != candidates.size())
-    throw InputError("select_records: " + std::to_string(spectra.size()) + " spectra for " +
-                     std::to_string(candidates.size()) + " candidates");
-  for (const ResponseSpectrum& rs : spectra)
-    if (rs.ordinates.size() != res.periods.size())
-      throw InputError("select_records: a candidate spectrum has " + std::to_string(rs.ordinates.size()) +
-                       " ordinates, expected one per check period (" + std::to_string(res.periods.size()) + ")");
   for (double T : res.periods) {
     const double se = target(T);
     if (!(se > 0.0) || !std::isfinite(se))
@@ -219,17 +262,35 @@ SelectionResult select_records(const std::function<double(double)>& target, cons
                        " at T = " + fmt(T) + " s");
     res.target.push_back(se);
   }
-  const double pga_target = opts.scale_rule == ScaleRule::Pga ? target(0.0) : 0.0;
-  if (opts.scale_rule == ScaleRule::Pga && !(pga_target > 0.0))
-    throw InputError("select_records: PGA scaling needs Se(0) > 0 (m/s^2)");
+  res.target_pga = target(0.0);
+  if ((opts.scale_rule == ScaleRule::Pga || opts.max_pga_ratio > 0.0) && !(res.target_pga > 0.0))
+    throw InputError("select_records: PGA scaling and the PGA guard need Se(0) > 0 (m/s^2)");
 
-  // Scale factors and scaled ratios of the eligible candidates.
+  // Per-record limits: usable period, scale factor, scaled PGA.
   const std::size_t nT = res.periods.size();
   std::vector<std::size_t> eligible;
-  std::vector<double> scale;
+  std::vector<double> scale, dev;
   std::vector<std::vector<double>> ratios, psa;
+  const ResponseOptions ro{opts.damping_ratio, ResponseOptions{}.min_steps_per_period};
+  std::vector<std::size_t> to_compute;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
-    const ResponseSpectrum& rs = spectra[i];
+    if (info[i].max_usable_period_s < opts.range.T_max) {
+      res.rejected.push_back({i, candidates[i].name, 0.0,
+                              "usable only up to " + fmt(info[i].max_usable_period_s) + " s (1/lowest usable "
+                              "frequency) < T_max = " + fmt(opts.range.T_max) + " s"});
+      continue;
+    }
+    to_compute.push_back(i);
+  }
+  std::vector<ResponseSpectrum> spectra(to_compute.size());
+  detail::parallel_for(to_compute.size(), [&](std::size_t k) {
+    spectra[k] = response_spectrum(candidates[to_compute[k]], res.periods, ro);
+  });
+  std::map<std::string, int> event_id, station_id;
+  std::vector<int> ev, st;
+  for (std::size_t k = 0; k < to_compute.size(); ++k) {
+    const std::size_t i = to_compute[k];
+    const ResponseSpectrum& rs = spectra[k];
     std::vector<double> rho(nT);
     double sum_log = 0.0;
     bool zero = false;
@@ -240,45 +301,84 @@ SelectionResult select_records(const std::function<double(double)>& target, cons
     }
     double f = 0.0;
     if (opts.scale_rule == ScaleRule::LeastSquares) f = zero ? 0.0 : std::exp(-sum_log / double(nT));
-    else f = candidates[i].pga() > 0.0 ? pga_target / candidates[i].pga() : 0.0;
+    else f = candidates[i].pga() > 0.0 ? res.target_pga / candidates[i].pga() : 0.0;
     if (!(f > 0.0) || f > opts.max_scale) {
       res.rejected.push_back({i, candidates[i].name, f,
                               f > 0.0 ? "scale factor " + fmt(f) + " > max " + fmt(opts.max_scale)
                                       : "zero spectrum"});
       continue;
     }
-    for (double& r : rho) r *= f;
+    const double spga = f * candidates[i].pga();
+    if (opts.max_pga_ratio > 0.0 && spga > opts.max_pga_ratio * res.target_pga) {
+      res.rejected.push_back({i, candidates[i].name, f,
+                              "scaled PGA " + fmt(spga / units::g_n) + " g > " + fmt(opts.max_pga_ratio) +
+                                  " Se(0) = " + fmt(opts.max_pga_ratio * res.target_pga / units::g_n) + " g"});
+      continue;
+    }
+    double d2 = 0.0;
+    for (double& r : rho) r *= f, d2 += (r - 1.0) * (r - 1.0);
     std::vector<double> p(nT);
     for (std::size_t j = 0; j < nT; ++j) p[j] = f * rs.ordinates[j].PSA;
     eligible.push_back(i);
     scale.push_back(f);
+    dev.push_back(std::sqrt(d2 / double(nT)));
     ratios.push_back(std::move(rho));
     psa.push_back(std::move(p));
+    const std::string ek = info[i].event, sk = info[i].event + "|" + info[i].station;
+    ev.push_back(event_id.emplace(ek, int(event_id.size())).first->second);
+    st.push_back(station_id.emplace(sk, int(station_id.size())).first->second);
   }
+  res.eligible = eligible.size();
 
   const std::size_t N = static_cast<std::size_t>(opts.n_records);
-  std::vector<std::size_t> chosen;  // indices into eligible
   if (eligible.empty()) {
     res.status = SelectionResult::Status::FewerThanRequested;
-    res.message = "no candidate can be scaled within max_scale = " + fmt(opts.max_scale);
+    res.message = "no candidate passes the per-record limits (scale <= " + fmt(opts.max_scale) +
+                  ", scaled PGA <= " + fmt(opts.max_pga_ratio) + " ag S, usable period)";
     return res;
   }
-  const SetScorer scorer(ratios, 1.0 - opts.lower_tol, 1.0 + opts.upper_tol);
-  if (eligible.size() <= N) {
-    for (std::size_t i = 0; i < eligible.size(); ++i) chosen.push_back(i);
-    res.exhaustive = true;
-    res.combinations = 1.0;
-  } else if (binomial(eligible.size(), N) <= opts.max_combinations) {
-    chosen = exhaustive_search(scorer, eligible.size(), N, res.combinations);
+  // Rank by individual deviation (ties: candidate order).
+  std::vector<std::size_t> ranked(eligible.size());
+  for (std::size_t c = 0; c < ranked.size(); ++c) ranked[c] = c;
+  std::stable_sort(ranked.begin(), ranked.end(), [&](std::size_t a, std::size_t b) { return dev[a] < dev[b]; });
+  std::vector<int> rank_of(eligible.size());
+  for (std::size_t k = 0; k < ranked.size(); ++k) rank_of[ranked[k]] = int(k) + 1;
+
+  const Pool pool{ratios, scale, ev, st, 1.0 - opts.lower_tol, 1.0 + opts.upper_tol, opts.max_per_event,
+                  opts.max_per_station, opts.max_mean_scale * double(std::min(N, eligible.size()))};
+  std::vector<std::size_t> chosen;  // indices into eligible
+  const std::size_t k = std::min(N, eligible.size());
+  std::vector<std::size_t> order;
+  if (binomial(eligible.size(), k) <= opts.max_combinations) {
+    for (std::size_t c = 0; c < eligible.size(); ++c) order.push_back(c);
     res.exhaustive = true;
   } else {
-    chosen = greedy_search(scorer, eligible.size(), N, res.combinations);
+    order.assign(ranked.begin(), ranked.begin() + std::min<std::size_t>(ranked.size(), std::size_t(opts.pool_size)));
+    std::sort(order.begin(), order.end());
+  }
+  res.pool = order.size();
+  if (binomial(order.size(), k) <= std::max(opts.max_combinations, binomial(std::size_t(opts.pool_size), k)) &&
+      binomial(order.size(), k) <= 5e6) {
+    chosen = exhaustive_search(pool, order, k, res.combinations);
+  } else {
+    chosen = greedy_search(pool, order, k, res.combinations);
+    res.exhaustive = false;
+  }
+  if (chosen.empty()) {
+    res.status = SelectionResult::Status::FewerThanRequested;
+    res.message = "no set of " + std::to_string(k) + " of the " + std::to_string(eligible.size()) +
+                  " eligible records satisfies max " + std::to_string(opts.max_per_event) + " per event, " +
+                  std::to_string(opts.max_per_station) + " per station and mean scale <= " + fmt(opts.max_mean_scale);
+    return res;
   }
 
   res.mean_psa.assign(nT, 0.0);
   for (std::size_t c : chosen) {
-    res.records.push_back({eligible[c], candidates[eligible[c]].name, scale[c], psa[c]});
+    const std::size_t i = eligible[c];
+    res.records.push_back({i, candidates[i].name, scale[c], scale[c] * candidates[i].pga(), dev[c], rank_of[c], psa[c]});
     for (std::size_t j = 0; j < nT; ++j) res.mean_psa[j] += psa[c][j] / double(chosen.size());
+    res.mean_scale += scale[c] / double(chosen.size());
+    res.max_scaled_pga = std::max(res.max_scaled_pga, scale[c] * candidates[i].pga());
   }
   res.min_ratio = 1e300;
   res.max_ratio = 0.0;
@@ -287,7 +387,7 @@ SelectionResult select_records(const std::function<double(double)>& target, cons
     res.min_ratio = std::min(res.min_ratio, m);
     res.max_ratio = std::max(res.max_ratio, m);
   }
-  const Score final_score = scorer.score(chosen);
+  const Score final_score = pool.score(chosen);
   res.rms_deviation = final_score.rms;
   res.band_violation = final_score.violation;
   res.band_satisfied = res.min_ratio >= 1.0 - opts.lower_tol && res.max_ratio <= 1.0 + opts.upper_tol;
@@ -297,12 +397,102 @@ SelectionResult select_records(const std::function<double(double)>& target, cons
   if (chosen.size() < N) {
     res.status = SelectionResult::Status::FewerThanRequested;
     res.message = "only " + std::to_string(chosen.size()) + " of " + std::to_string(N) +
-                  " requested records can be scaled within max_scale = " + fmt(opts.max_scale) + "; " + band;
+                  " requested records pass the per-record limits (scale <= " + fmt(opts.max_scale) + "); " + band;
   } else {
     res.status = res.band_satisfied ? SelectionResult::Status::Compatible : SelectionResult::Status::NotCompatible;
     res.message = std::string(res.band_satisfied ? "compatible: " : "NOT compatible: ") + band;
   }
   return res;
+}
+
+namespace {
+
+int class_rank(const std::string& c) {
+  static const std::string order = "ABCD";
+  const auto p = order.find(c);
+  return p == std::string::npos ? -1 : int(p);
+}
+
+bool in_list(const std::vector<std::string>& list, const std::string& v) {
+  return std::find(list.begin(), list.end(), v) != list.end();
+}
+
+}  // namespace
+
+CandidateInfo candidate_info(const CatalogueEntry& e) {
+  CandidateInfo c;
+  c.event = e.event + " " + e.date;
+  c.station = e.station_code.empty() ? e.station : e.station_code;
+  if (std::isfinite(e.lowest_usable_hz) && e.lowest_usable_hz > 0.0) c.max_usable_period_s = 1.0 / e.lowest_usable_hz;
+  return c;
+}
+
+CatalogueFilterResult filter_catalogue(const std::vector<CatalogueEntry>& entries, const CatalogueFilters& f) {
+  if (!(f.Mw_min <= f.Mw_max)) throw InputError("Mw window: expected Mw_min <= Mw_max");
+  if (!(f.R_min_km <= f.R_max_km) || f.R_min_km < 0.0) throw InputError("distance window: expected 0 <= R_min <= R_max (km)");
+  CatalogueFilterResult out;
+  if (!f.Mw_given || !f.R_given)
+    out.warnings.push_back(std::string("default ") + (!f.Mw_given ? "Mw window " + fmt(f.Mw_min) + "-" + fmt(f.Mw_max) : "") +
+                           (!f.Mw_given && !f.R_given ? " and " : "") +
+                           (!f.R_given ? "distance window " + fmt(f.R_min_km) + "-" + fmt(f.R_max_km) + " km" : "") +
+                           " used: NTC 2018 §3.2.3.6 asks for records consistent with the site's seismogenesis; "
+                           "give the windows from the hazard disaggregation of the site");
+  // Site-independent filters first.
+  std::vector<std::size_t> pass;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const CatalogueEntry& e = entries[i];
+    std::string why;
+    if (!e.usable_for_design) why = "not usable for design: " + e.note;
+    else if (!(e.Mw >= f.Mw_min && e.Mw <= f.Mw_max)) why = "Mw " + fmt(e.Mw) + " outside " + fmt(f.Mw_min) + "-" + fmt(f.Mw_max);
+    else if (!(e.distance_km >= f.R_min_km && e.distance_km <= f.R_max_km))
+      why = e.distance_kind + " " + fmt(e.distance_km) + " km outside " + fmt(f.R_min_km) + "-" + fmt(f.R_max_km) + " km";
+    else if (!f.countries.empty() && !in_list(f.countries, e.country)) why = "country " + e.country + " not selected";
+    if (why.empty()) pass.push_back(i);
+    else out.rejected.push_back({i, e.id, 0.0, why});
+  }
+  // Site class, relaxed in steps while too few remain.
+  std::vector<std::vector<std::string>> steps;
+  if (!f.site_classes.empty()) {
+    steps.push_back(f.site_classes);
+    if (f.relax_site_class) {
+      std::vector<std::string> wide = f.site_classes;
+      for (const std::string& c : f.site_classes) {
+        const int r = class_rank(c);
+        if (c == "E") wide.push_back("C"), wide.push_back("D");
+        if (r > 0) wide.push_back(std::string(1, "ABCD"[r - 1]));
+        if (r >= 0 && r < 3) wide.push_back(std::string(1, "ABCD"[r + 1]));
+      }
+      std::sort(wide.begin(), wide.end());
+      wide.erase(std::unique(wide.begin(), wide.end()), wide.end());
+      steps.push_back(wide);
+      steps.push_back({});
+    }
+  } else {
+    steps.push_back({});
+  }
+  std::vector<std::size_t> kept;
+  for (std::size_t s = 0; s < steps.size(); ++s) {
+    kept.clear();
+    for (std::size_t i : pass)
+      if (steps[s].empty() || in_list(steps[s], entries[i].site_class)) kept.push_back(i);
+    out.site_classes = steps[s];
+    if (kept.size() >= f.min_candidates || s + 1 == steps.size()) break;
+  }
+  if (!f.site_classes.empty() && out.site_classes != f.site_classes) {
+    std::string req, got;
+    for (const auto& c : f.site_classes) req += c;
+    for (const auto& c : out.site_classes) got += c;
+    out.warnings.push_back("site class relaxed from " + req + " to " + (got.empty() ? std::string("any class") : got) +
+                           ": fewer than " + std::to_string(f.min_candidates) + " candidates of class " + req +
+                           " pass the other filters");
+  }
+  for (std::size_t i : pass) {
+    if (std::find(kept.begin(), kept.end(), i) != kept.end()) out.kept.push_back(entries[i]);
+    else out.rejected.push_back({i, entries[i].id, 0.0, "site class " + entries[i].site_class + " not accepted"});
+  }
+  std::sort(out.rejected.begin(), out.rejected.end(),
+            [](const RejectedRecord& a, const RejectedRecord& b) { return a.index < b.index; });
+  return out;
 }
 
 }  // namespace assess

@@ -123,62 +123,187 @@ nlohmann::json kinematic_json(const CaseFile& c, const KinematicCaseResult& out)
   return j;
 }
 
-std::string checks_text(const std::vector<CheckRow>& checks) {
-  std::string out;
-  out += format("checks (D/C = demand / capacity; satisfied if D/C <= 1):\n");
-  out += format("  %-8s %-4s %-12s %-7s %12s %12s %-5s %7s %10s %10s %7s  %-30s %s\n", "code", "LS", "kind", "where",
-              "demand", "capacity", "unit", "D/C", "ag,cap(g)", "ag,site(g)", "D/C ag", "verdict", "demand formula / clause");
-  for (const CheckRow& x : checks) {
-    char pga[64] = "";
-    if (x.has_pga) std::snprintf(pga, sizeof pga, "%10.5f %10.5f %7.3f", x.ag_capacity_g, x.ag_demand_g, x.dc_pga);
-    else std::snprintf(pga, sizeof pga, "%10s %10s %7s", "-", "-", "-");
-    out += format("  %-8s %-4s %-12s %-7s %12.6f %12.6f %-5s %7.3f %s  %-30s %s; %s%s\n", x.code.c_str(),
-                x.limit_state.c_str(), x.kind.c_str(), x.location.c_str(), x.demand, x.capacity, x.unit.c_str(), x.dc,
-                pga, x.no_verdict ? "no verdict" : verdict(x.satisfied), x.formula.c_str(), x.clause.c_str(),
-                x.note.empty() ? "" : ("; " + x.note).c_str());
+std::string wrap_text(const std::string& text, std::size_t indent, std::size_t width) {
+  auto columns = [](const std::string& w) {
+    std::size_t n = 0;
+    for (unsigned char ch : w) n += (ch & 0xC0) != 0x80;
+    return n;
+  };
+  // Leading blanks are kept as they are (the first line's indentation).
+  std::size_t pos = text.find_first_not_of(' ');
+  if (pos == std::string::npos) return text;
+  std::string out, line = text.substr(0, pos);
+  std::size_t len = pos;
+  bool first = true;
+  while (pos <= text.size()) {
+    std::size_t next = text.find(' ', pos);
+    if (next == std::string::npos) next = text.size();
+    const std::string word = text.substr(pos, next - pos);
+    const std::size_t wl = columns(word);
+    if (!first && len + 1 + wl > width) {
+      out += line + "\n";
+      line = std::string(indent, ' ') + word;
+      len = indent + wl;
+    } else {
+      line += (first ? "" : " ") + word;
+      len += (first ? 0 : 1) + wl;
+    }
+    first = false;
+    pos = next + 1;
+  }
+  return out + line;
+}
+
+/// Items joined by "; " and packed into lines of at most `width` columns,
+/// breaking between items (an item longer than a line is wrapped at blanks);
+/// the first line starts with `first`, the others with `indent` blanks.
+std::string wrap_items(const std::string& first, const std::vector<std::string>& items, std::size_t indent,
+                       std::size_t width = 120) {
+  auto columns = [](const std::string& w) {
+    std::size_t n = 0;
+    for (unsigned char ch : w) n += (ch & 0xC0) != 0x80;
+    return n;
+  };
+  std::string out, line = first;
+  bool empty = true;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const std::string item = items[i] + (i + 1 < items.size() ? ";" : "");
+    if (!empty && columns(line) + 1 + columns(item) > width) {
+      out += wrap_text(line, indent, width) + "\n";
+      line = std::string(indent, ' ') + item;
+    } else {
+      line += (empty ? "" : " ") + item;
+    }
+    empty = false;
+  }
+  return out + wrap_text(line, indent, width);
+}
+
+std::vector<std::string> split_items(const std::string& s) {
+  std::vector<std::string> out;
+  std::size_t pos = 0;
+  while (true) {
+    const std::size_t next = s.find("; ", pos);
+    out.push_back(s.substr(pos, next == std::string::npos ? std::string::npos : next - pos));
+    if (next == std::string::npos) break;
+    pos = next + 2;
   }
   return out;
 }
 
-std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res) {
+std::string checks_text(const std::vector<CheckRow>& checks, TextWidth width) {
+  std::string out;
+  out += format("checks (D/C = demand / capacity; satisfied if D/C <= 1):\n");
+  if (width == TextWidth::wide) {
+    out += format("  %-8s %-4s %-12s %-7s %12s %12s %-5s %7s %10s %10s %7s  %-30s %s\n", "code", "LS", "kind", "where",
+                  "demand", "capacity", "unit", "D/C", "ag,cap(g)", "ag,site(g)", "D/C ag", "verdict",
+                  "demand formula / clause");
+    for (const CheckRow& x : checks) {
+      char pga[64] = "";
+      if (x.has_pga) std::snprintf(pga, sizeof pga, "%10.5f %10.5f %7.3f", x.ag_capacity_g, x.ag_demand_g, x.dc_pga);
+      else std::snprintf(pga, sizeof pga, "%10s %10s %7s", "-", "-", "-");
+      out += format("  %-8s %-4s %-12s %-7s %12.6f %12.6f %-5s %7.3f %s  %-30s %s; %s%s\n", x.code.c_str(),
+                    x.limit_state.c_str(), x.kind.c_str(), x.location.c_str(), x.demand, x.capacity, x.unit.c_str(),
+                    x.dc, pga, x.no_verdict ? "no verdict" : verdict(x.satisfied), x.formula.c_str(),
+                    x.clause.c_str(), x.note.empty() ? "" : ("; " + x.note).c_str());
+    }
+    return out;
+  }
+  // 120 columns: the numbers on one line (98 columns), the verdict, the
+  // demand formula and the clause on the next, wrapped.
+  out += format("  %-8s %-4s %-12s %-7s %10s %10s %-5s %7s %9s %9s %7s\n", "code", "LS", "kind", "where", "demand",
+                "capacity", "unit", "D/C", "ag,cap(g)", "ag,site", "D/C ag");
+  out += format("  %-8s %s\n", "", "verdict; demand formula; clause");
+  for (const CheckRow& x : checks) {
+    char pga[64] = "";
+    if (x.has_pga) std::snprintf(pga, sizeof pga, "%9.5f %9.5f %7.3f", x.ag_capacity_g, x.ag_demand_g, x.dc_pga);
+    else std::snprintf(pga, sizeof pga, "%9s %9s %7s", "-", "-", "-");
+    out += format("  %-8s %-4s %-12s %-7s %10.6f %10.6f %-5s %7.3f %s\n", x.code.c_str(), x.limit_state.c_str(),
+                  x.kind.c_str(), x.location.c_str(), x.demand, x.capacity, x.unit.c_str(), x.dc, pga);
+    out += wrap_items(std::string(11, ' '),
+                      split_items(std::string(x.no_verdict ? "no verdict" : verdict(x.satisfied)) + "; " + x.formula +
+                                  "; " + x.clause + (x.note.empty() ? "" : "; " + x.note)),
+                      11) +
+           "\n";
+  }
+  return out;
+}
+
+std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res, TextWidth width) {
+  const bool wide = width == TextWidth::wide;
   std::string out;
   const CandidateResult& gc = res.candidates[res.governing];
   const KinematicResult& r = gc.result;
   out += format("case: %s\n", c.file.c_str());
   if (!c.project.empty()) out += format("project: %s\n", c.project.c_str());
-  out += format("mechanism: %s, governing candidate: %s (Z = %.3f m)\n", c.mechanism.type.c_str(), gc.label.c_str(), gc.Z);
+  {
+    const std::string m = format("mechanism: %s, governing candidate: %s (Z = %.3f m)", c.mechanism.type.c_str(),
+                                 gc.label.c_str(), gc.Z);
+    out += (wide ? m : wrap_text(m, 11)) + "\n";
+  }
   if (res.candidates.size() > 1) {
     const bool checked = !res.governing_by_code.empty();
-    out += format("\ncandidates (%s searched; governing = %s):\n", c.mechanism.parameter_name.c_str(),
+    const std::string head = format("\ncandidates (%s searched; governing = %s):", c.mechanism.parameter_name.c_str(),
                   checked ? "largest D/C over its checks, per code (Circ. 2019 C8.7.1; C8A.4: the most unfavourable "
                             "mechanism; NTC 2018: the lowest ag capacity)"
                           : "smallest alpha0 (no site: no checks)");
-    out += format("  %-44s %11s %11s", "candidate", "alpha0 (-)", "a0* (m/s2)");
-    for (const auto& [code, gi] : res.governing_by_code) out += format(" %11s", ("D/C " + code.substr(3)).c_str());
-    if (checked) out += format(" %12s", "ag,cap (g)");
+    out += (wide ? head : wrap_text(head, 2)) + "\n";
+    // 120 columns: narrower number columns; a long label on a line of its own.
+    const int lw = wide ? 44 : 40;
+    out += format(wide ? "  %-*s %11s %11s" : "  %-*s %10s %10s", lw, "candidate", "alpha0 (-)", "a0* (m/s2)");
+    for (const auto& [code, gi] : res.governing_by_code)
+      out += format(wide ? " %11s" : " %8s", ("D/C " + code.substr(3)).c_str());
+    if (checked) out += format(wide ? " %12s" : " %10s", "ag,cap (g)");
     out += "\n";
     for (std::size_t i = 0; i < res.candidates.size(); ++i) {
       const CandidateResult& cr = res.candidates[i];
-      out += format("  %-44s %11.6f %11.6f", cr.label.c_str(), cr.result.alpha0, cr.result.a0_star);
+      std::string label = cr.label;
+      if (!wide && label.size() > std::size_t(lw)) {
+        out += "  " + label + "\n";
+        label.clear();
+      }
+      out += format(wide ? "  %-*s %11.6f %11.6f" : "  %-*s %10.6f %10.5f", lw, label.c_str(), cr.result.alpha0,
+                    cr.result.a0_star);
       std::string gov;
       for (const auto& [code, gi] : res.governing_by_code) {
         const auto it = cr.max_dc.find(code);
-        out += format(" %11.3f", it == cr.max_dc.end() ? 0.0 : it->second);
-        if (gi == i) gov += (gov.empty() ? "" : ", ") + code;
+        out += format(wide ? " %11.3f" : " %8.3f", it == cr.max_dc.end() ? 0.0 : it->second);
+        if (gi == i) gov += (gov.empty() ? "" : ", ") + (wide ? code : code.substr(3));
       }
-      if (checked) out += format(" %12.5f", cr.ag_capacity_min_g);
+      if (checked) out += format(wide ? " %12.5f" : " %10.5f", cr.ag_capacity_min_g);
       if (!checked && i == res.governing) gov = "smallest alpha0";
-      out += gov.empty() ? "\n" : "  <- governing (" + gov + ")\n";
+      out += gov.empty() ? "\n" : (wide ? "  <- governing (" : "  <- governing ") + gov + (wide ? ")\n" : "\n");
     }
   }
   out += format("\nvirtual displacements (largest block rotation = 1 rad; x outward, z up):\n");
-  out += format("  %-28s %-11s %9s %9s %11s %10s %10s %12s %12s %12s\n", "load", "type", "x (m)", "z (m)", "W (kN)",
-              "dx (m)", "dz (m)", "W dx (kNm)", "W dx2 (kNm2)", "work (kNm)");
-  for (const LoadWork& w : r.loads)
-    out += format("  %-28s %-11s %9.4f %9.4f %11.4f %10.5f %10.5f %12.5f %12.5f %12.5f\n", w.load.name.c_str(),
-                to_string(w.load.type).c_str(), w.load.point.x(), w.load.point.y(),
-                (w.load.type == LoadType::Weight || w.load.type == LoadType::SelfWeight ? w.load.weight : w.load.force.norm()) / units::kN,
-                w.dx, w.dz, w.W_dx / units::kN, w.W_dx2 / units::kN, w.work / units::kN);
+  if (wide) {
+    out += format("  %-28s %-11s %9s %9s %11s %10s %10s %12s %12s %12s\n", "load", "type", "x (m)", "z (m)", "W (kN)",
+                  "dx (m)", "dz (m)", "W dx (kNm)", "W dx2 (kNm2)", "work (kNm)");
+    for (const LoadWork& w : r.loads)
+      out += format("  %-28s %-11s %9.4f %9.4f %11.4f %10.5f %10.5f %12.5f %12.5f %12.5f\n", w.load.name.c_str(),
+                    to_string(w.load.type).c_str(), w.load.point.x(), w.load.point.y(),
+                    (w.load.type == LoadType::Weight || w.load.type == LoadType::SelfWeight ? w.load.weight
+                                                                                             : w.load.force.norm()) /
+                        units::kN,
+                    w.dx, w.dz, w.W_dx / units::kN, w.W_dx2 / units::kN, w.work / units::kN);
+  } else {
+    // 120 columns: a load name longer than its column goes on a line of its own.
+    out += format("  %-22s %-11s %8s %8s %10s %8s %8s %11s %12s %11s\n", "load", "type", "x (m)", "z (m)", "W (kN)",
+                  "dx (m)", "dz (m)", "W dx (kNm)", "W dx2(kNm2)", "work (kNm)");
+    for (const LoadWork& w : r.loads) {
+      std::string name = w.load.name;
+      if (name.size() > 22) {
+        out += "  " + name + "\n";
+        name.clear();
+      }
+      out += format("  %-22s %-11s %8.3f %8.3f %10.3f %8.4f %8.4f %11.4f %12.4f %11.4f\n", name.c_str(),
+                    to_string(w.load.type).c_str(), w.load.point.x(), w.load.point.y(),
+                    (w.load.type == LoadType::Weight || w.load.type == LoadType::SelfWeight ? w.load.weight
+                                                                                             : w.load.force.norm()) /
+                        units::kN,
+                    w.dx, w.dz, w.W_dx / units::kN, w.W_dx2 / units::kN, w.work / units::kN);
+    }
+  }
   out += format("\nlinear kinematic analysis:\n");
   out += format("  sum W (seismic weights P + Q)          %14.6f kN\n", r.sum_W / units::kN);
   out += format("  sum W dx                               %14.6f kN m\n", r.sum_W_dx / units::kN);
@@ -212,8 +337,8 @@ std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res) {
     out += "\nno site in the case: no code checks\n";
     return out;
   }
-  out += "\n" + checks_text(res.checks);
-  out += "\n" + verdict_text(res.verdict);
+  out += "\n" + checks_text(res.checks, width);
+  out += "\n" + verdict_text(res.verdict, width);
   return out;
 }
 
@@ -254,10 +379,14 @@ std::string verdict_word(const VerdictRow& r) {
   return verdict(r.satisfied);
 }
 
-std::string verdict_text(const Verdict& v) {
+std::string verdict_text(const Verdict& v, TextWidth width) {
   if (v.rows.empty()) return "";
-  std::string out = "summary by approach (the governing check of each code and approach: the largest D/C over every "
-                    "candidate, limit state and location; seed Fig. 8):\n";
+  const bool wide = width == TextWidth::wide;
+  auto para = [&](const std::string& line, std::size_t ind) { return wide ? line : wrap_text(line, ind); };
+  std::string out = para("summary by approach (the governing check of each code and approach: the largest D/C over "
+                         "every candidate, limit state and location; seed Fig. 8):",
+                         2) +
+                    "\n";
   out += format("  %-8s %-15s %-4s %-7s %8s  %-31s %s\n", "code", "approach", "LS", "where", "D/C", "verdict",
                 "candidate; clause; notes");
   for (const VerdictRow& r : v.rows) {
@@ -265,12 +394,15 @@ std::string verdict_text(const Verdict& v) {
     if (r.failing > 0 && r.checks > 1) tail += format("; %d of %d checks fail", r.failing, r.checks);
     if (!r.note.empty()) tail += "; " + r.note;
     const std::string dc = std::isfinite(r.dc) ? format("%8.3f", r.dc) : format("%8s", "n/a");
-    out += format("  %-8s %-15s %-4s %-7s %s  %-31s %s\n", r.code.c_str(),
-                  (r.code == "seed" ? std::string("energy (mean)") : r.approach).c_str(), r.limit_state.c_str(),
-                  r.location.c_str(), dc.c_str(), verdict_word(r).c_str(), tail.c_str());
+    const std::string cols = format("  %-8s %-15s %-4s %-7s %s  %-31s", r.code.c_str(),
+                                    (r.code == "seed" ? std::string("energy (mean)") : r.approach).c_str(),
+                                    r.limit_state.c_str(), r.location.c_str(), dc.c_str(), verdict_word(r).c_str());
+    out += (wide ? cols + " " + tail : cols + "\n" + wrap_items(std::string(11, ' '), split_items(tail), 11)) + "\n";
   }
-  out += "overall verdict per code (not satisfied if any check of the code fails; the seed's energy D/C is not a code "
-         "check):\n";
+  out += para("overall verdict per code (not satisfied if any check of the code fails; the seed's energy D/C is not a "
+              "code check):",
+              2) +
+         "\n";
   for (const CodeVerdict& c : v.overall) {
     out += format("  %-8s %s: %d of %d checks fail, largest D/C %.3f", c.code.c_str(),
                   c.satisfied ? "VERIFICATO / SATISFIED" : "NON VERIFICATO / NOT SATISFIED", c.failing, c.checks,

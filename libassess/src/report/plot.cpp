@@ -99,6 +99,9 @@ std::pair<int, std::string> run_gnuplot(const std::string& script_path, const st
 void Plot::validate() const {
   if (width < 100 || width > 4000 || height < 100 || height > 4000)
     throw InputError("plot '" + title + "': width and height must be in [100, 4000] px");
+  if (font_size < 6 || font_size > 20) throw InputError("plot '" + title + "': font_size must be in [6, 20] pt");
+  static const std::regex key_re("[a-z ]+");
+  if (!std::regex_match(key, key_re)) throw InputError("plot '" + title + "': key must be gnuplot position words");
   if (series.empty()) throw InputError("plot '" + title + "': no series");
   if (!(bar_width > 0.0)) throw InputError("plot '" + title + "': bar_width must be > 0");
   static const std::regex colour("#[0-9a-fA-F]{6}");
@@ -106,6 +109,8 @@ void Plot::validate() const {
     const std::string what = "plot '" + title + "', series '" + s.name + "': ";
     if (s.x.empty() || s.x.size() != s.y.size())
       throw InputError(what + "x and y must be non-empty and of equal length");
+    if (s.style == PlotSeries::Style::Band && s.y_low.size() != s.y.size())
+      throw InputError(what + "a band needs y_low as long as y");
     if (!s.y_err.empty() && s.y_err.size() != s.y.size())
       throw InputError(what + "y_err must be empty or as long as y");
     if (!s.color.empty() && !std::regex_match(s.color, colour))
@@ -123,19 +128,19 @@ std::string gnuplot_script(const Plot& plot) {
   std::ostringstream gp;
   gp << "set encoding utf8\n"
      << "set terminal svg size " << plot.width << "," << plot.height
-     << " dynamic enhanced font 'sans,11' background '#ffffff'\n"
+     << " dynamic enhanced font 'sans," << plot.font_size << "' background '#ffffff'\n"
      << "unset output\n"
      << "set title " << gp_quote(plot.title) << " noenhanced\n"
      << "set xlabel " << gp_quote(plot.x_label) << " noenhanced\n"
      << "set ylabel " << gp_quote(plot.y_label) << " noenhanced\n"
-     << "set grid\nset key top right noenhanced\n"
+     << "set grid\n" << (plot.key == "off" ? std::string("unset key") : "set key " + plot.key + " noenhanced") << "\n"
      << "set style fill solid 0.6 border -1\nset boxwidth " << num(plot.bar_width) << " absolute\n";
   if (plot.log_x) gp << "set logscale x\n";
   if (plot.log_y) gp << "set logscale y\n";
   if (plot.x_min < plot.x_max) gp << "set xrange [" << num(plot.x_min) << ":" << num(plot.x_max) << "]\n";
   if (plot.y_min < plot.y_max) gp << "set yrange [" << num(plot.y_min) << ":" << num(plot.y_max) << "]\n";
   if (!plot.x_tic_labels.empty()) {
-    gp << "set xtics noenhanced (";
+    gp << "set xtics noenhanced " << (plot.rotate_x_tic_labels ? "rotate by 30 right " : "") << "(";
     for (std::size_t i = 0; i < plot.x_tic_labels.size(); ++i)
       gp << (i ? ", " : "") << gp_quote(plot.x_tic_labels[i].second) << " " << num(plot.x_tic_labels[i].first);
     gp << ")\n";
@@ -146,6 +151,7 @@ std::string gnuplot_script(const Plot& plot) {
     for (std::size_t i = 0; i < s.x.size(); ++i) {
       gp << num(s.x[i]) << " " << num(s.y[i]);
       if (!s.y_err.empty()) gp << " " << num(s.y_err[i]);
+      if (s.style == PlotSeries::Style::Band) gp << " " << num(s.y_low[i]);
       gp << "\n";
     }
     gp << "EOD\n";
@@ -155,14 +161,18 @@ std::string gnuplot_script(const Plot& plot) {
     const auto& s = plot.series[k];
     const bool err = !s.y_err.empty();
     const std::string lw = s.highlight ? " lw 3" : " lw 1.5";
-    gp << (k ? ", \\\n     " : "") << "$d" << k << (err ? " using 1:2:3" : " using 1:2") << " with ";
+    const bool band = s.style == PlotSeries::Style::Band;
+    gp << (k ? ", \\\n     " : "") << "$d" << k
+       << (band ? (err ? " using 1:4:2" : " using 1:3:2") : (err ? " using 1:2:3" : " using 1:2")) << " with ";
+    const std::string pts = " pt " + std::to_string(s.point_type) + " ps " + num(s.point_size);
     using St = PlotSeries::Style;
     switch (s.style) {
       case St::Line: gp << (err ? "yerrorlines" : "lines") << lw; break;
       case St::Dashed: gp << (err ? "yerrorlines" : "lines") << " dt 2" << lw; break;
-      case St::Points: gp << (err ? "yerrorbars" : "points") << " pt 7 ps 0.6"; break;
-      case St::LinePoints: gp << (err ? "yerrorlines" : "linespoints") << " pt 7 ps 0.6" << lw; break;
+      case St::Points: gp << (err ? "yerrorbars" : "points") << pts; break;
+      case St::LinePoints: gp << (err ? "yerrorlines" : "linespoints") << pts << lw; break;
       case St::Bars: gp << (err ? "boxerrorbars" : "boxes"); break;
+      case St::Band: gp << "filledcurves fs transparent solid 0.25 noborder"; break;
     }
     if (!s.color.empty()) gp << " lc rgb " << gp_quote(s.color);
     if (s.name.empty()) gp << " notitle";

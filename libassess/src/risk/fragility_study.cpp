@@ -13,7 +13,6 @@
 #include "assess/records/response_spectrum.hpp"
 #include "assess/support/error.hpp"
 #include "assess/support/units.hpp"
-#include "support/parallel_for.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -130,6 +129,7 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
 
   // The candidate records: the catalogue's design records (or the listed ones for an IDA).
   const bool listed = !d.selection;
+  std::vector<CandidateInfo> infos;  // event/station grouping of catalogue candidates
   if (listed && opt.method == FragilityMethod::stripes)
     throw InputError(kase.file + ": /dynamic/records: a multiple-stripe analysis selects records at each return "
                      "period from the catalogue: give \"select\" instead of \"records\", or use --ida to scale the "
@@ -149,6 +149,7 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
       try {
         st.records.push_back(cat.load(e.id));
         st.record_files.push_back(cat.directory + "/" + e.file);
+        infos.push_back(candidate_info(e));
       } catch (const InputError& err) {
         throw InputError(kase.file + ": /dynamic/select/catalogue: " + e.file + ": " + err.what());
       }
@@ -168,16 +169,11 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
     so.max_scale = max_scale;
     so.range = range;
     so.scale_rule = ScaleRule::Pga;
-    // The candidates' spectra do not depend on the stripe: computed once.
-    const std::vector<double> periods = selection_periods(so);
-    const ResponseOptions ro{so.damping_ratio, ResponseOptions{}.min_steps_per_period};
-    std::vector<ResponseSpectrum> spectra(st.records.size());
-    detail::parallel_for(st.records.size(),
-                         [&](std::size_t i) { spectra[i] = response_spectrum(st.records[i], periods, ro); });
     for (double tr : trs) {
       const ElasticSpectrum target(site.hazard_at_tr(tr), cond, 5.0);
       const SelectionResult sel =
-          select_records([&target](double T) { return target.Se(T); }, st.records, so, spectra);
+          infos.empty() ? select_records([&target](double T) { return target.Se(T); }, st.records, so)
+                        : select_records([&target](double T) { return target.Se(T); }, st.records, infos, so);
       Stripe s;
       s.im = target.Se(0.0);
       s.TR = tr;

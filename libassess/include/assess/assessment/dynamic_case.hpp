@@ -29,10 +29,19 @@ struct ListedRecord {
 };
 
 /// "Select N records compatible with the site spectrum" (REXEL's rule).
+/// Defaults and rules: docs/theory/record-selection.md §2.
 struct RecordSelectionSpec {
   int count = 7;                      ///< N
   std::optional<double> T_min, T_max;  ///< period range (s); default: around the mechanism's periods
-  double max_scale = 5.0;             ///< largest scale factor allowed (-)
+  double max_scale = 4.0;             ///< largest scale factor of a record (-)
+  double max_mean_scale = 2.0;        ///< largest mean scale factor of the set (-)
+  double max_pga_ratio = 2.5;         ///< guard: scaled PGA <= max_pga_ratio * ag S (-)
+  int max_per_event = 3, max_per_station = 1;
+  std::optional<double> Mw_min, Mw_max;      ///< default window 5.5-7.5 (warned)
+  std::optional<double> R_min_km, R_max_km;  ///< default window 0-50 km (warned)
+  std::vector<std::string> site_classes;     ///< default: the site's soil class, relaxed with a warning
+  bool relax_site_class = true;
+  std::vector<std::string> countries;        ///< default: any
   std::string catalogue;              ///< catalogue.json (default: data_dir()/spectra/records/catalogue.json)
 };
 
@@ -48,6 +57,11 @@ struct DynamicSpec {
   RockingOptions options;              ///< overturning criterion, integrator, tail
   std::vector<ListedRecord> records;   ///< listed records (empty if selected)
   std::optional<RecordSelectionSpec> selection;
+  /// Integrate each record only to the end of its strong motion (99.9 % of the
+  /// Arias intensity) followed by free rocking for free_tail_s; false keeps
+  /// the whole record ("whole_record": true). docs/theory/record-selection.md §4.
+  bool trim = true;
+  double free_tail_s = 30.0;  ///< s, the documented maximum free-rocking tail after the trim
 };
 
 /// Reads a listed record: a plain text file when `unit` is given (with `dt`

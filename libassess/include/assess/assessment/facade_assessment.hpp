@@ -10,6 +10,7 @@
 #include "assess/records/record_selection.hpp"
 #include "assess/dynamics/rocking_from_chain.hpp"
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,6 +32,14 @@ struct RecordUsed {
   double scale = 1.0;    ///< scale factor applied (-)
   double pga = 0.0;      ///< PGA of the scaled record (m/s^2)
   std::string json_path; ///< where it was listed ("" if selected)
+  // Why it was chosen (selected records; NaN / "" when unknown or listed).
+  double Mw = std::numeric_limits<double>::quiet_NaN();
+  double distance_km = std::numeric_limits<double>::quiet_NaN();
+  std::string distance_kind, site_class, positive_direction;
+  double deviation = std::numeric_limits<double>::quiet_NaN();  ///< individual RMS of f S/Se - 1 over the range (-)
+  int rank = 0;                  ///< rank of that deviation among the eligible records (1 = best)
+  double duration_s = 0.0;       ///< length of the record file (s)
+  double integrated_s = 0.0;     ///< excitation integrated (s): to 99.9 % Arias if trimmed, else the whole record
 };
 
 /// One time-history analysis.
@@ -94,6 +103,16 @@ struct FacadeAssessment {
   std::vector<RecordUsed> records;
   std::optional<SelectionResult> selection;
   PeriodRange selection_range{};
+  std::string selection_limit_state = "SLV";  ///< spectrum the records are compatible with
+  /// Why the range: the mechanism periods it spans (s), e.g. Ts and T_SLV.
+  double selection_T_first = 0.0, selection_T_last = 0.0;
+  std::vector<std::string> selection_warnings;  ///< default windows, relaxed site class, ...
+  std::size_t selection_candidates = 0;         ///< records passing the catalogue filters
+  std::vector<std::string> selection_site_classes;  ///< classes accepted in the end (empty = any)
+  double selection_max_pga_ratio = 0.0;         ///< the PGA guard used (-)
+  double selection_max_scale = 0.0, selection_max_mean_scale = 0.0;  ///< scale limits used (-)
+  bool trimmed = false;       ///< records integrated to 99.9 % Arias + free tail
+  double free_tail_s = 0.0;   ///< free-rocking tail after the excitation (s)
   std::vector<std::string> record_failures;  ///< "<path>: <message>" of records skipped (--keep-going)
   std::vector<DynamicRun> runs;
   std::vector<RestitutionSummary> summaries;

@@ -34,10 +34,17 @@ std::vector<std::pair<std::string, Plot>> campaign_plots(const Campaign& campaig
 struct CampaignReportFiles {
   std::string summary;             ///< out_dir/summary.json
   std::vector<std::string> plots;  ///< SVG files (empty if plots were not asked for)
+  std::string index;               ///< out_dir/index.html: the summary tables and the plots
 };
 
-/// Reads out_dir/results.csv and writes summary.json and, if `plots`, the SVG
-/// plots (rendered with gnuplot). @throws InputError if a file cannot be
+/// The campaign's index page: self-contained HTML with the summary tables
+/// (by model, by model and scale, code against dynamic verdicts) and the
+/// plots inline (file name, SVG). Formatting only: reads the summary.
+std::string campaign_index_html(const nlohmann::json& summary,
+                                const std::vector<std::pair<std::string, std::string>>& svgs);
+
+/// Reads out_dir/results.csv and writes summary.json, index.html and, if
+/// `plots`, the SVG plots (rendered with gnuplot). @throws InputError if a file cannot be
 /// read or written, or gnuplot is missing when plots are asked for.
 CampaignReportFiles write_campaign_report(const Campaign& campaign, const std::string& out_dir, bool plots = true);
 

@@ -37,6 +37,17 @@ enum class EventDirection {
 /// What the integrator does after an event callback.
 enum class EventAction { proceed, stop };
 
+/// A right-hand side as a plain function for the integrator's hot path (no
+/// virtual call, no adapter): dy/dt at the local time tau = t - origin.
+/// Returns 0 on success, nonzero if the derivative cannot be computed. The
+/// signature is the C callback of gsl_odeiv2_system, which is why it is a
+/// plain function pointer and a context.
+struct RhsKernel {
+  int (*fn)(double tau, const double* y, double* dydt, void* ctx) = nullptr;  ///< nullptr: no kernel
+  void* ctx = nullptr;
+  double origin = 0.0;  ///< s: the kernel is called with t - origin
+};
+
 /// A hybrid system: state y (size n), a discrete mode, a right-hand side per
 /// mode, event functions per mode and a jump map. A value exactly at zero
 /// counts as not yet crossed, so an event that starts exactly at zero (a
@@ -67,8 +78,29 @@ class HybridSystem {
   /// True if dy/dt is identically zero in `mode` (e.g. a body at rest): the
   /// integrator then takes no Runge-Kutta steps, only evaluates the event
   /// functions at the breakpoints (at most h_max apart) and locates a sign
-  /// change in time with the state held constant. Default: false.
+  /// change in time with the state held constant. Read once per mode (at the
+  /// start and after each jump). Default: false.
   virtual bool stationary(int /*mode*/) const { return false; }
+
+  // Optional fast paths (defaults: none; results are the same either way).
+
+  /// A kernel equal to rhs(t, y, mode, .) for t from `t` up to
+  /// next_breakpoint(t) (it may hold data of that interval, such as the
+  /// excitation as a linear function of time). The integrator asks again for
+  /// each new breakpoint interval and after each jump. Default: none (the
+  /// integrator calls rhs()). A kernel need not check its result for
+  /// non-finite values: the integrator checks the state at the end of every step.
+  virtual RhsKernel rhs_kernel(int /*mode*/, double /*t*/) { return {}; }
+  /// All event functions of `mode` at (t, y) into g[0 .. event_count(mode)).
+  /// Default: event(k, ...) for each k.
+  virtual void events(double t, const double* y, int mode, double* g) const;
+  /// Dense output inside a step, used only to guess event times (each guess is
+  /// checked by a real step): the state at t0 + s (t1 - t0), s in [0, 1], from
+  /// the ends of the step and their derivatives. Default: cubic Hermite per
+  /// component. A system that knows more (second derivatives of a
+  /// second-order equation) may return a higher-order interpolant.
+  virtual void interpolate(double t0, const double* y0, const double* f0, double t1, const double* y1,
+                           const double* f1, int mode, double s, double* y) const;
 };
 
 /// Settings of HybridIntegrator::integrate. Defaults are documented per field.
@@ -109,12 +141,17 @@ struct HybridOdeResult {
   long rhs_evaluations = 0;
 };
 
-/// Integrates `sys` from (t0, y, mode) to t_end, locating events by
-/// re-stepping from the saved start of the step until a bracket on the step
-/// size is narrower than event_time_tol (re-step sizes guessed from the cubic
-/// Hermite interpolant of the step, then Illinois regula falsi with bisection
-/// safeguard), applying the jump at the fired end of the bracket and resetting
-/// the stepper. `y` (size sys.dimension()) holds the final state.
+/// Integrates `sys` from (t0, y, mode) to t_end, never stepping across a
+/// breakpoint, and locates events by re-stepping from the saved start of the
+/// step: the first re-step size is the root of the event function on the
+/// system's dense output; a Newton step from each real value (with the dense
+/// output's slope) gives the next one, and a re-step that falls on the fired
+/// side within event_time_tol / 2 of the Newton root estimated from its own
+/// value ends the search (at most two such re-steps); otherwise Illinois
+/// regula falsi with bisection safeguard narrows a bracket on the step size
+/// until it is narrower than event_time_tol. The jump is applied to the state
+/// at the fired end and the stepper is reset. `y` (size sys.dimension())
+/// holds the final state.
 HybridOdeResult integrate_hybrid(HybridSystem& sys, double t0, double t_end, double* y, int mode,
                                  const HybridOdeOptions& options = {});
 

@@ -20,6 +20,9 @@ struct SiteSpec {
   std::optional<double> lat;  ///< decimal degrees (north)
   std::optional<double> lon;  ///< decimal degrees (east)
   std::optional<std::string> island;  ///< island name of Allegato B Tab. 2
+  /// When the site was given by comune: "L'Aquila (AQ), ISTAT 066049"; lat
+  /// and lon then hold the municipal seat (ComuneTable, comuni.hpp).
+  std::string comune;
   /// Hazard given directly, per limit state (ag in g, F0, TC* in s); a limit
   /// state without an entry cannot be evaluated.
   std::map<LimitState, HazardParams> given;
@@ -56,7 +59,8 @@ class Site {
   ElasticSpectrum spectrum(LimitState ls, double damping_pct = 5.0) const;
   /// Grid nodes used for the site (the enclosing cell), empty unless lat/lon.
   std::vector<int> grid_nodes() const;
-  /// Human-readable description ("lat 42.35, lon 13.40", "island Lipari", "given").
+  /// Human-readable description ("lat 42.35, lon 13.40", "island Lipari",
+  /// "given"; with a comune: "comune L'Aquila (AQ), ISTAT 066049: lat 42.354, lon 13.392 (municipal seat)").
   std::string describe() const;
 
  private:

@@ -40,6 +40,21 @@ class GroundMotion {
   }
   /// Next breakpoint strictly after t (s), +inf if none.
   double next_breakpoint(double t) const;
+
+  /// ug'' on one sample interval as a linear function of the time from its
+  /// start: ug''(t) = a0 + a1 (t - origin) for t in [origin, origin + dt]
+  /// (m/s^2, m/s^3, s). The same straight line as acc() between two samples
+  /// (zero past the last sample), so a right-hand side pays one multiply-add
+  /// per evaluation instead of locating the sample.
+  struct LinearPiece {
+    double origin = 0.0;  ///< s: the sample time at the start of the interval
+    double a0 = 0.0;      ///< m/s^2: ug'' at origin
+    double a1 = 0.0;      ///< m/s^3: slope
+  };
+  /// For a record: the piece of the interval that ends at next_breakpoint(t)
+  /// (before the record, t < 0: the zero piece up to t = 0). None for a
+  /// function of time, which has no such form.
+  bool linear_piece(double t, LinearPiece& out) const;
   double duration() const { return duration_; }  ///< s
   /// Largest integration step that resolves the excitation (s): +inf for
   /// records (every sample is a breakpoint), max_step_s for functions.

@@ -1,38 +1,82 @@
 // record_catalogue.hpp: the machine-readable list of the accelerograms
-// shipped in spectra/records/ (catalogue.json), for record selection.
+// shipped in spectra/records/ (catalogue.json), its generation from the
+// record files plus a metadata table (metadata.csv), and its reading.
 #pragma once
 
 #include "assess/records/record.hpp"
 
+#include <limits>
 #include <string>
 #include <vector>
 
 namespace assess {
 
-/// One record file of the catalogue.
+/// One record component of the catalogue. Unknown numbers are NaN (null in JSON).
 struct CatalogueEntry {
-  std::string id;         ///< file name without extension
-  std::string file;       ///< file name in the catalogue's directory
-  std::string format;     ///< "PEER AT2", "ESM ASCII", "ITACA ASCII", "GEM cor.acc"
+  std::string id;         ///< file name without folder and extension (unique)
+  std::string file;       ///< path relative to the catalogue's directory
+  std::string format;     ///< Record::format as read ("PEER AT2", "GEM cor.acc", "plain", ...)
   std::string event, date, station, component, source, note;
+  std::string mechanism;           ///< fault mechanism (Normal, Reverse, strike slip, ...)
+  std::string station_code;
+  std::string positive_direction;  ///< direction of positive acceleration ("N", "W", "azimuth 228 deg", "not stated ...")
+  std::string distance_kind;       ///< "Rjb", "Repi" or "Rrup" ("" if unknown)
+  std::string site_class;          ///< NTC 2018 Tab. 3.2.II class from Vs30 (A..D), else the stated one, else ""
+  std::string site_class_basis;    ///< "Vs30" or "stated" or ""
+  std::string country, terms;
+  double Mw = std::numeric_limits<double>::quiet_NaN();                ///< moment magnitude (-)
+  double distance_km = std::numeric_limits<double>::quiet_NaN();       ///< source-to-site distance (km)
+  double vs30_m_s = std::numeric_limits<double>::quiet_NaN();          ///< Vs30 (m/s)
+  double lowest_usable_hz = std::numeric_limits<double>::quiet_NaN();  ///< lowest usable frequency / high-pass corner (Hz)
+  double significant_duration_s = 0.0;  ///< D5-95 of the Arias intensity (s), Trifunac & Brady (1975)
   long npts = 0;          ///< number of samples
   double dt_s = 0.0;      ///< time step (s)
-  double pga_g = 0.0;     ///< peak ground acceleration (g, g_n = 9.80665 m/s^2)
-  bool usable_for_design = true;  ///< false: format samples and unprocessed records (see note)
+  double pga_g = 0.0;     ///< peak ground acceleration (g, g_n = 9.80665 m/s^2), computed from the file
+  double plain_dt_s = 0.0;       ///< plain text files only: time step given in the table (s)
+  std::string plain_unit;        ///< plain text files only: unit of the values ("g", "m/s2", "cm/s2")
+  bool usable_for_design = true;  ///< false: see `note` for the reason
 };
 
 struct RecordCatalogue {
   std::string directory;  ///< folder holding the record files
+  std::string description;
   std::vector<CatalogueEntry> entries;
 
-  /// Entry by id or file name; nullptr if absent.
+  /// Entry by id or file name (path relative to the directory); nullptr if absent.
   const CatalogueEntry* find(const std::string& id_or_file) const;
   /// Entries with usable_for_design = true.
   std::vector<CatalogueEntry> design_candidates() const;
-  /// Reads the record of an entry (by id or file name).
+  /// Reads the record of an entry (by id or file name); plain text files with
+  /// the entry's time step and unit.
   /// @throws InputError if absent or unreadable
   Record load(const std::string& id_or_file) const;
+  /// Same for an entry.
+  Record load(const CatalogueEntry& entry) const;
+  /// Reads the records of `entries` on all cores, in order. A file that
+  /// cannot be read leaves an empty Record and its message in errors[i]
+  /// ("" for the others); nothing is thrown for unreadable files.
+  std::vector<Record> load_all(const std::vector<CatalogueEntry>& entries, std::vector<std::string>& errors) const;
 };
+
+/// Site class of NTC 2018 Tab. 3.2.II (= EC8 Tab. 3.1) implied by Vs30 (m/s):
+/// A >= 800, B 360-800, C 180-360, D < 180. Class E needs the stratigraphy
+/// and is only taken where a source states it. "" for a non-finite Vs30.
+std::string site_class_from_vs30(double vs30_m_s);
+
+/// Weak motion threshold of the catalogue (g): a component whose PGA is
+/// below it is not usable for design (docs/theory/record-selection.md §3).
+inline constexpr double weak_motion_pga_g = 0.01;
+
+/// Builds the catalogue from a metadata table (CSV, one row per record file,
+/// columns listed in spectra/records/README.md) and the record files next to
+/// it: reads every file, computes npts, dt, PGA and D5-95, derives the site
+/// class, and decides usable_for_design (excluded in the table, weak motion,
+/// or Mw / distance / site class missing).
+/// @throws InputError naming the table, row and column for a bad row or an unreadable file
+RecordCatalogue build_catalogue(const std::string& metadata_csv);
+
+/// catalogue.json text (2-space indent, stable order) of `cat`.
+std::string catalogue_json(const RecordCatalogue& cat);
 
 /// Reads a catalogue.json; the record files are looked up in its folder.
 /// @throws InputError for a missing file or a malformed catalogue

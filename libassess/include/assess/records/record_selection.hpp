@@ -5,11 +5,12 @@
 #pragma once
 
 #include "assess/records/record.hpp"
-#include "assess/records/response_spectrum.hpp"
+#include "assess/records/record_catalogue.hpp"
 #include "assess/hazard/spectrum.hpp"
 
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -41,23 +42,43 @@ struct PeriodRange {
 /// @param T_last longest mechanism period (s) >= T_first
 PeriodRange rocking_period_range(double T_first, double T_last);
 
-/// Settings of the selection. Defaults: 7 records, REXEL band -10 %/+30 %,
-/// scale factors <= 5, least-squares scaling, 40 log-spaced check periods.
+/// Settings of the selection (docs/theory/record-selection.md §2). Defaults:
+/// 7 records, band -10 %/+30 %, each scale factor <= 4, mean scale factor
+/// <= 2, scaled PGA <= 2.5 Se(0) (= 2.5 ag S), at most 1 component per
+/// station and 3 per event, least-squares scaling, 40 log-spaced periods.
 struct SelectionOptions {
   int n_records = 7;                 ///< N (>= 1)
   PeriodRange range{};               ///< check range (s), 0 < T_min < T_max
   double lower_tol = 0.10;           ///< mean >= (1 - lower_tol) Se over the range (-)
   double upper_tol = 0.30;           ///< mean <= (1 + upper_tol) Se over the range (-)
-  double max_scale = 5.0;            ///< records needing f > max_scale are rejected (-)
+  double max_scale = 4.0;            ///< records needing f > max_scale are rejected (-)
+  double max_mean_scale = 2.0;       ///< sets whose mean f exceeds this are not formed (-)
+  /// Guard: a record whose scaled PGA exceeds max_pga_ratio * Se(0) (= ag S
+  /// for an NTC spectrum) is rejected (-). 0 disables (not recommended).
+  double max_pga_ratio = 2.5;
+  int max_per_event = 3;             ///< components of one event in the set (>= 1)
+  int max_per_station = 1;           ///< components of one station (same event) in the set (>= 1)
   ScaleRule scale_rule = ScaleRule::LeastSquares;
   int n_periods = 40;                ///< log-spaced check periods in the range (>= 2)
   double damping_ratio = 0.05;       ///< xi of the record spectra (fraction)
-  /// Exhaustive search when C(n_eligible, N) <= this; otherwise greedy
-  /// forward selection followed by best-swap improvement.
+  /// Exhaustive search when C(n_eligible, N) <= this; otherwise the
+  /// candidates are ranked by their individual deviation and every
+  /// combination of the best `pool_size` is examined (REXEL-style); if that
+  /// is still too many, greedy forward selection plus best swaps on the pool.
   double max_combinations = 2e6;
+  int pool_size = 28;                ///< ranked candidates combined (>= N); C(28, 7) = 1.18e6
 
   /// Throws InputError naming the field when a value is out of range.
   void validate() const;
+};
+
+/// What the selection needs to know of a candidate besides its samples.
+struct CandidateInfo {
+  std::string event;    ///< grouping key for max_per_event ("" = its own event)
+  std::string station;  ///< grouping key for max_per_station (with the event)
+  /// Longest usable period 1/f_low (s); +inf if unknown. A record is
+  /// rejected when it is shorter than the range's T_max.
+  double max_usable_period_s = std::numeric_limits<double>::infinity();
 };
 
 /// One chosen record.
@@ -65,6 +86,9 @@ struct SelectedRecord {
   std::size_t index = 0;      ///< position in the candidate vector
   std::string name;           ///< Record::name
   double scale = 1.0;         ///< linear scale factor f (-)
+  double scaled_pga = 0.0;    ///< f * PGA (m/s^2)
+  double deviation = 0.0;     ///< individual RMS of f S/Se - 1 over the range (-)
+  int rank = 0;               ///< 1 = closest individual match among the eligible
   std::vector<double> psa;    ///< f * PSA at the check periods (m/s^2)
 };
 
@@ -97,6 +121,11 @@ struct SelectionResult {
   bool band_satisfied = false;   ///< 1 - lower_tol <= mean/Se <= 1 + upper_tol everywhere
   bool exhaustive = false;       ///< true if every combination was examined
   double combinations = 0.0;     ///< number of sets evaluated
+  std::size_t eligible = 0;      ///< candidates passing the per-record limits
+  std::size_t pool = 0;          ///< candidates combined (the best `pool` by deviation)
+  double mean_scale = 0.0;       ///< mean f of the set (-)
+  double max_scaled_pga = 0.0;   ///< largest f * PGA of the set (m/s^2)
+  double target_pga = 0.0;       ///< Se(0) of the target (m/s^2)
   std::string message;           ///< one line for the report
 };
 
@@ -112,15 +141,41 @@ SelectionResult select_records(const std::function<double(double)>& target,
                                const std::vector<Record>& candidates,
                                const SelectionOptions& opts = {});
 
-/// The check periods of a selection: opts.n_periods log-spaced in opts.range (s).
-std::vector<double> selection_periods(const SelectionOptions& opts);
+/// Same, with event/station grouping and usable period of each candidate
+/// (info.size() == candidates.size()).
+SelectionResult select_records(const std::function<double(double)>& target,
+                               const std::vector<Record>& candidates, const std::vector<CandidateInfo>& info,
+                               const SelectionOptions& opts);
 
-/// Same as select_records(target, candidates, opts) with the candidates'
-/// spectra at selection_periods(opts) and opts.damping_ratio given (computed
-/// once for several selections with the same options, e.g. the stripes of a
-/// fragility analysis). @throws InputError if the sizes do not match.
-SelectionResult select_records(const std::function<double(double)>& target, const std::vector<Record>& candidates,
-                               const SelectionOptions& opts, const std::vector<ResponseSpectrum>& spectra);
+/// Filters of the catalogue applied before any file is read
+/// (docs/theory/record-selection.md §2.1). Windows are inclusive.
+struct CatalogueFilters {
+  double Mw_min = 5.5, Mw_max = 7.5;          ///< default window (-), a DEFAULT: see warnings
+  double R_min_km = 0.0, R_max_km = 50.0;     ///< default window (km), any distance kind
+  bool Mw_given = false, R_given = false;     ///< false: the defaults were used (warned)
+  /// Accepted site classes; empty = any. The caller usually passes the site's class.
+  std::vector<std::string> site_classes;
+  /// If fewer than min_candidates remain, widen the site classes to the
+  /// neighbours (A-B-C-D; E with C, D), then to any class, with a warning.
+  bool relax_site_class = true;
+  std::size_t min_candidates = 21;            ///< 3 N for N = 7
+  std::vector<std::string> countries;         ///< empty = any
+};
+
+/// Result of filter_catalogue().
+struct CatalogueFilterResult {
+  std::vector<CatalogueEntry> kept;
+  std::vector<RejectedRecord> rejected;  ///< index = position in the input
+  std::vector<std::string> site_classes;  ///< classes finally accepted (empty = any)
+  std::vector<std::string> warnings;
+};
+
+/// Applies the filters to the design candidates (usable_for_design) of a catalogue.
+CatalogueFilterResult filter_catalogue(const std::vector<CatalogueEntry>& entries, const CatalogueFilters& f);
+
+/// CandidateInfo of a catalogue entry (event + date as event key, station
+/// code or name as station key, 1/lowest_usable_hz).
+CandidateInfo candidate_info(const CatalogueEntry& e);
 
 /// Same, with the horizontal elastic spectrum Se(T) of a site as target.
 inline SelectionResult select_records(const ElasticSpectrum& target, const std::vector<Record>& candidates,

@@ -4,6 +4,8 @@
 #pragma once
 
 #include "assess/assessment/facade_assessment.hpp"
+#include "assess/report/kinematic_report.hpp"
+#include "assess/report/messages.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -14,7 +16,8 @@ namespace assess {
 /// Readable report: site block per limit state, kinematic block with every
 /// intermediate quantity, the checks table (kinematic and dynamic rows, verdicts
 /// in Italian and English), the dynamic table and the D/C of all approaches.
-std::string facade_text(const FacadeAssessment& a);
+/// Tables within 120 columns unless `width` is TextWidth::wide; the site block once.
+std::string facade_text(const FacadeAssessment& a, TextWidth width = TextWidth::columns120);
 
 /// The same content as JSON: keys "project", "site", "kinematic" (the keys of
 /// `assess kinematic --json`), "checks" (kinematic and "kind": "dynamic" rows),
@@ -22,11 +25,26 @@ std::string facade_text(const FacadeAssessment& a);
 /// "comparison" (D/C per approach, seed Fig. 8).
 nlohmann::json facade_json(const FacadeAssessment& a);
 
-/// Self-contained HTML report with SVG plots drawn by gnuplot: the four
-/// limit-state spectra with the record spectra and their mean; the capacity
-/// curve a*-d* with the displacement demands; the moment-rotation curve of the
-/// rocking body; theta/theta_u time histories; the D/C bar chart.
+/// What the HTML relazione needs besides the assessment.
+struct ReportOptions {
+  Lang lang = Lang::it;     ///< language of the text (--lang)
+  std::string date;         ///< date printed in the header; empty: today (UTC, YYYY-MM-DD)
+  std::string case_text;    ///< the case file's text, echoed in the appendix; empty: a note
+};
+
+/// The summary row (index in v.rows) that the verdict box of `code` names as
+/// governing: a row without a verdict or with a D/C that is not finite first
+/// (it cannot be trusted), then a failing row, then the largest D/C; -1 if the
+/// code has no row. Formatting only: picks among the assessment's rows.
+int governing_verdict_row(const Verdict& v, const std::string& code);
+
+/// The relazione as a self-contained, printable HTML page (A4): verdict box
+/// per code, site and spectra, a drawing of the mechanism, the virtual-work
+/// and candidates tables, the kinematic quantities and the ADRS plot, the
+/// checks, the dynamic analysis (compatibility of the records, theta/theta_u
+/// histories, summary), the grouped D/C bars, the legend of the clause tags
+/// and the case file. Plots are drawn by gnuplot.
 /// @throws InputError if gnuplot is missing (names the package gnuplot-nox)
-std::string facade_html(const FacadeAssessment& a);
+std::string facade_html(const FacadeAssessment& a, const ReportOptions& options = {});
 
 }  // namespace assess

@@ -5,18 +5,32 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace assess {
+
+/// A table cell: escaped text, an optional CSS class ("num" right-aligned
+/// figures, "dc-ok"/"dc-fail" D/C colours, "ok"/"fail" verdicts) and an
+/// optional second line in small type (formula, clause).
+struct HtmlCell {
+  std::string text;
+  std::string cls;
+  std::string note;
+  HtmlCell(std::string t = "", std::string c = "", std::string n = "")
+      : text(std::move(t)), cls(std::move(c)), note(std::move(n)) {}
+  HtmlCell(const char* t) : text(t) {}
+};
 
 class HtmlReport {
  public:
   /// @param title document title (<title> and the level-1 heading)
   explicit HtmlReport(std::string title);
 
-  /// A heading; level 2 opens a section (new printed page), 3-4 subsections.
+  /// A heading; level 2 opens a section (a new printed page unless
+  /// new_page is false), 3-4 subsections.
   /// @param level 2..4 (level 1 is the document title); InputError otherwise
-  void add_heading(const std::string& text, int level = 2);
+  void add_heading(const std::string& text, int level = 2, bool new_page = true);
   /// A paragraph of plain text (escaped).
   void add_paragraph(const std::string& text);
   /// A table of plain-text cells (escaped); rows must have the header's width.
@@ -27,12 +41,32 @@ class HtmlReport {
   /// several plots can share the page. @param id unique, [A-Za-z][A-Za-z0-9_-]*
   void add_svg(const std::string& svg, const std::string& caption, const std::string& id);
 
+  /// A table of cells with classes (see HtmlCell); `cls` is the table's class.
+  void add_cell_table(const std::vector<HtmlCell>& header, const std::vector<std::vector<HtmlCell>>& rows,
+                 const std::string& caption, const std::string& cls = "");
+  /// Several SVG documents side by side in one figure (small multiples),
+  /// each with a short label; ids are prefixed with `id`-<n>.
+  void add_svg_grid(const std::vector<std::pair<std::string, std::string>>& svgs_and_labels,
+                    const std::string& caption, const std::string& id);
+  /// A pre-formatted block (escaped), e.g. the case file echoed in an appendix.
+  void add_pre(const std::string& text);
+  /// A fragment of HTML built by the caller, inserted as is: the caller
+  /// escapes every piece of user text in it (xml_escape).
+  void add_raw_html(const std::string& html);
+  /// The document's language (<html lang>), "en" by default.
+  void set_lang(const std::string& lang) { lang_ = lang; }
+  /// A line under the title (escaped).
+  void set_subtitle(const std::string& text) { subtitle_ = text; }
+
   std::size_t figure_count() const { return figure_ids_.size(); }
   /// The complete HTML5 document.
   std::string str() const;
 
  private:
+  std::string svg_body(const std::string& svg, const std::string& id) const;
   std::string title_;
+  std::string lang_ = "en";
+  std::string subtitle_;
   std::string body_;
   std::vector<std::string> figure_ids_;
   bool has_section_ = false;

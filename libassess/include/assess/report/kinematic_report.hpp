@@ -23,11 +23,19 @@ nlohmann::json to_json(const CheckRow& r);
 /// (m/s2), d0_star, du_star (m), Ts (s), d_SLV, d_SLC (m), T_SLV, T_SLC (s),
 /// capacity_curve [{d_star, a_star}], checks [...], loads, candidates).
 nlohmann::json kinematic_json(const CaseFile& c, const KinematicCaseResult& res);
+/// Width of the terminal reports: tables fit 120 columns (the formula and
+/// clause of a check on a second line, long lines wrapped), or one line per
+/// row however long (--wide).
+enum class TextWidth { columns120, wide };
+
 /// The readable kinematic report: every intermediate quantity with its clause,
 /// the capacity curve and the checks table.
-std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res);
+std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res, TextWidth width = TextWidth::columns120);
 /// The checks table alone.
-std::string checks_text(const std::vector<CheckRow>& checks);
+std::string checks_text(const std::vector<CheckRow>& checks, TextWidth width = TextWidth::columns120);
+/// `text` wrapped at blanks to lines of at most `width` columns (UTF-8
+/// characters counted once), continuation lines indented by `indent` blanks.
+std::string wrap_text(const std::string& text, std::size_t indent, std::size_t width = 120);
 
 /// A summary row as JSON: {code, approach, limit_state, location, dc,
 /// satisfied (null without a verdict), clause, candidate, note, checks, failing}.
@@ -35,7 +43,7 @@ nlohmann::json to_json(const VerdictRow& r);
 /// The summary as JSON: {"by_approach": [rows], "overall": [{code, satisfied, checks, failing, no_verdict, max_dc}]}.
 nlohmann::json to_json(const Verdict& v);
 /// The summary by approach and the overall verdict per code, as text.
-std::string verdict_text(const Verdict& v);
+std::string verdict_text(const Verdict& v, TextWidth width = TextWidth::columns120);
 /// "verificato / satisfied", "non verificato / not satisfied" or "no verdict" for a summary row;
 /// a "seed" energy row reads "overturned ..." when any analysis overturned.
 std::string verdict_word(const VerdictRow& r);

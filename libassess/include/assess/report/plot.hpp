@@ -24,6 +24,7 @@ struct PlotSeries {
     Points,      ///< markers only
     LinePoints,  ///< line with markers
     Bars,        ///< filled boxes centred at x (width: Plot::bar_width)
+    Band,        ///< translucent area between y_low and y (a tolerance band)
   };
   std::string name;            ///< legend entry; empty: not in the legend
   std::vector<double> x, y;    ///< same length; non-finite y values are gaps
@@ -31,6 +32,9 @@ struct PlotSeries {
   std::vector<double> y_err;   ///< optional +/- error of y (same length), drawn as error bars
   bool highlight = false;      ///< drawn thicker (e.g. the mean of a set or the target)
   std::string color;           ///< optional "#rrggbb"; empty: gnuplot's cycle
+  std::vector<double> y_low;   ///< Band: lower edge (same length as y)
+  int point_type = 7;          ///< Points/LinePoints: gnuplot pt (7 circle, 5 square, 2 cross)
+  double point_size = 0.6;     ///< Points/LinePoints: gnuplot ps
 };
 
 /// A 2-D plot. Axis labels should state the unit, e.g. "T (s)".
@@ -44,6 +48,9 @@ struct Plot {
   double x_min = 0, x_max = 0, y_min = 0, y_max = 0;
   /// Optional category labels at given x (e.g. a bar chart of approaches).
   std::vector<std::pair<double, std::string>> x_tic_labels;
+  bool rotate_x_tic_labels = false;  ///< long category names: rotated by 30 degrees
+  std::string key = "top right";     ///< legend position (gnuplot "set key" words) or "off"
+  int font_size = 11;                ///< pt, 6..20 (small multiples use a smaller font)
   std::vector<PlotSeries> series;
 
   /// Throws InputError when the description is inconsistent (sizes, log

@@ -1,0 +1,327 @@
+// cmd_records.cpp: `assess records`, the record library: build the catalogue
+// from metadata.csv and the files, list/filter it, show one record, and
+// select a spectrum-compatible set for a site without a mechanism (REXEL's
+// use case). Parses, calls the library and prints.
+#include "commands.hpp"
+
+#include <assess/hazard/site.hpp>
+#include <assess/records/record_catalogue.hpp>
+#include <assess/records/record_selection.hpp>
+#include <assess/records/response_spectrum.hpp>
+#include <assess/support/error.hpp>
+#include <assess/support/units.hpp>
+#include <assess/hazard/hazard.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+namespace assess::cli {
+
+namespace {
+
+struct RecordsArgs {
+  std::string catalogue, metadata, output;
+  std::optional<double> mw_min, mw_max, r_min, r_max;
+  std::vector<std::string> site_classes, countries;
+  bool all = false, json = false, no_relax = false;
+  std::string id;
+  // select
+  std::optional<double> lat, lon, ag_g, F0, Tc_star, t_min, t_max;
+  std::string soil = "A", topography = "T1", limit_state = "SLV";
+  double vn = 50.0, cu = 1.0;
+  int count = 7, per_event = 3, per_station = 1;
+  double max_scale = 4.0, max_mean_scale = 2.0, max_pga_ratio = 2.5;
+};
+
+std::string default_catalogue() { return data_dir() + "/spectra/records/catalogue.json"; }
+
+std::string num(double v, const char* f = "%.3g") {
+  if (!std::isfinite(v)) return "-";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+nlohmann::ordered_json jnum(double v) {
+  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
+}
+
+nlohmann::ordered_json entry_json(const CatalogueEntry& e) {
+  nlohmann::ordered_json j;
+  j["id"] = e.id;
+  j["file"] = e.file;
+  j["event"] = e.event;
+  j["date"] = e.date;
+  j["Mw"] = jnum(e.Mw);
+  j["station"] = e.station;
+  j["component"] = e.component;
+  j["positive_direction"] = e.positive_direction;
+  j["distance_km"] = jnum(e.distance_km);
+  j["distance_kind"] = e.distance_kind;
+  j["vs30_m_s"] = jnum(e.vs30_m_s);
+  j["site_class"] = e.site_class;
+  j["country"] = e.country;
+  j["pga_g"] = e.pga_g;
+  j["significant_duration_s"] = e.significant_duration_s;
+  j["usable_for_design"] = e.usable_for_design;
+  j["note"] = e.note;
+  return j;
+}
+
+CatalogueFilters make_filters(const RecordsArgs& a) {
+  CatalogueFilters f;
+  if (a.mw_min) f.Mw_min = *a.mw_min, f.Mw_given = true;
+  if (a.mw_max) f.Mw_max = *a.mw_max, f.Mw_given = true;
+  if (a.r_min) f.R_min_km = *a.r_min, f.R_given = true;
+  if (a.r_max) f.R_max_km = *a.r_max, f.R_given = true;
+  f.site_classes = a.site_classes;
+  for (const auto& c : f.site_classes)
+    if (c.size() != 1 || std::string("ABCDE").find(c) == std::string::npos)
+      throw InputError("--site-class '" + c + "': expected A, B, C, D or E");
+  f.countries = a.countries;
+  f.relax_site_class = !a.no_relax;
+  return f;
+}
+
+void run_build(const RecordsArgs& a) {
+  const std::string table = a.metadata.empty() ? data_dir() + "/spectra/records/metadata.csv" : a.metadata;
+  const RecordCatalogue cat = build_catalogue(table);
+  const std::string out = a.output.empty() ? cat.directory + "/catalogue.json" : a.output;
+  std::ofstream os(out, std::ios::binary);
+  if (!os) throw InputError("--output '" + out + "': cannot write");
+  os << catalogue_json(cat);
+  std::size_t usable = 0;
+  for (const auto& e : cat.entries) usable += e.usable_for_design;
+  std::cout << "wrote " << out << ": " << cat.entries.size() << " components, " << usable << " usable for design\n";
+}
+
+void run_list(const RecordsArgs& a) {
+  const RecordCatalogue cat = read_catalogue(a.catalogue.empty() ? default_catalogue() : a.catalogue);
+  std::vector<CatalogueEntry> shown;
+  std::vector<std::string> warnings;
+  const bool filtering = a.mw_min || a.mw_max || a.r_min || a.r_max || !a.site_classes.empty() || !a.countries.empty();
+  if (a.all && !filtering) {
+    shown = cat.entries;
+  } else {
+    CatalogueFilters f = make_filters(a);
+    if (!f.Mw_given) f.Mw_min = 0.0, f.Mw_max = 10.0, f.Mw_given = true;     // list: no default window
+    if (!f.R_given) f.R_min_km = 0.0, f.R_max_km = 1e9, f.R_given = true;
+    f.relax_site_class = false;
+    const CatalogueFilterResult r = filter_catalogue(cat.entries, f);
+    shown = r.kept;
+  }
+  if (a.json) {
+    nlohmann::ordered_json j = nlohmann::ordered_json::array();
+    for (const auto& e : shown) j.push_back(entry_json(e));
+    std::cout << j.dump(1) << "\n";
+    return;
+  }
+  std::printf("%-34s %-38s %4s %-24s %-5s %7s %-4s %6s %2s %7s %6s %s\n", "id", "event", "Mw", "station", "comp",
+              "R (km)", "kind", "Vs30", "cl", "PGA (g)", "D5-95", "usable");
+  for (const auto& e : shown)
+    std::printf("%-34s %-38.38s %4s %-24.24s %-5.5s %7s %-4s %6s %2s %7s %6s %s\n", e.id.c_str(), e.event.c_str(),
+                num(e.Mw, "%.2f").c_str(), e.station.c_str(), e.component.c_str(), num(e.distance_km, "%.1f").c_str(),
+                e.distance_kind.c_str(), num(e.vs30_m_s, "%.0f").c_str(), e.site_class.c_str(),
+                num(e.pga_g, "%.4f").c_str(), num(e.significant_duration_s, "%.1f").c_str(),
+                e.usable_for_design ? "yes" : "no");
+  std::printf("%zu of %zu components%s\n", shown.size(), cat.entries.size(),
+              a.all ? "" : " (usable for design; --all lists every file)");
+}
+
+void run_show(const RecordsArgs& a) {
+  const RecordCatalogue cat = read_catalogue(a.catalogue.empty() ? default_catalogue() : a.catalogue);
+  const CatalogueEntry* e = cat.find(a.id);
+  if (!e) throw InputError("record '" + a.id + "' is not in the catalogue " + cat.directory + "/catalogue.json");
+  const Record r = cat.load(*e);
+  const std::vector<double> T = {0.0, 0.1, 0.2, 0.3, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0, 4.0};
+  const ResponseSpectrum rs = response_spectrum(r, T);
+  if (a.json) {
+    nlohmann::ordered_json j = entry_json(*e);
+    j["format"] = e->format;
+    j["npts"] = e->npts;
+    j["dt_s"] = e->dt_s;
+    j["source"] = e->source;
+    j["terms"] = e->terms;
+    j["spectrum"] = {{"damping", 0.05}, {"periods_s", T}, {"psa_g", nlohmann::ordered_json::array()}};
+    for (const auto& o : rs.ordinates) j["spectrum"]["psa_g"].push_back(o.PSA / units::g_n);
+    std::cout << j.dump(1) << "\n";
+    return;
+  }
+  std::cout << e->id << " (" << e->file << ", " << e->format << ")\n"
+            << "  event      " << e->event << ", " << e->date << ", Mw " << num(e->Mw, "%.2f") << ", " << e->mechanism << "\n"
+            << "  station    " << e->station << " (" << e->station_code << "), " << e->country << "\n"
+            << "  component  " << e->component << ", positive toward " << e->positive_direction << "\n"
+            << "  distance   " << num(e->distance_km, "%.1f") << " km (" << e->distance_kind << ")\n"
+            << "  site       Vs30 " << num(e->vs30_m_s, "%.0f") << " m/s, class " << e->site_class << " ("
+            << e->site_class_basis << ")\n"
+            << "  samples    " << e->npts << " x " << e->dt_s << " s, PGA " << num(e->pga_g, "%.4f")
+            << " g, D5-95 " << num(e->significant_duration_s, "%.1f") << " s\n"
+            << "  usable     " << (e->usable_for_design ? "yes" : "no") << (e->note.empty() ? "" : ": " + e->note) << "\n"
+            << "  source     " << e->source << "\n  terms      " << e->terms << "\n"
+            << "  5 % spectrum (PSA, g):\n";
+  for (std::size_t j = 0; j < T.size(); ++j)
+    std::printf("    T = %5.2f s  %.4f\n", T[j], rs.ordinates[j].PSA / units::g_n);
+}
+
+void run_select(const RecordsArgs& a) {
+  SiteSpec spec;
+  const bool ll = a.lat || a.lon, given = a.ag_g || a.F0 || a.Tc_star;
+  if (ll == given) throw InputError("give the site as --lat/--lon or as --ag/--F0/--Tc-star (exactly one)");
+  if (ll) {
+    if (!a.lat || !a.lon) throw InputError("--lat and --lon must be given together (decimal degrees)");
+    spec.lat = a.lat, spec.lon = a.lon;
+  } else {
+    if (!a.ag_g || !a.F0 || !a.Tc_star) throw InputError("--ag, --F0 and --Tc-star must be given together");
+    if (!(*a.ag_g > 0.0 && *a.ag_g < 2.0)) throw InputError("--ag: expected ag in g, 0 < ag < 2");
+    for (LimitState ls : all_limit_states) spec.given[ls] = HazardParams{0.0, *a.ag_g, *a.F0, *a.Tc_star};
+  }
+  try {
+    spec.conditions.soil = parse_soil_class(a.soil);
+    spec.conditions.topography = parse_topography(a.topography);
+  } catch (const InputError& e) {
+    throw InputError(std::string("--soil/--topography: ") + e.what());
+  }
+  spec.vn_years = a.vn;
+  spec.cu = a.cu;
+  const Site site(spec);
+  LimitState ls = LimitState::SLV;
+  bool found = false;
+  for (LimitState l : all_limit_states)
+    if (to_string(l) == a.limit_state) ls = l, found = true;
+  if (!found) throw InputError("--limit-state '" + a.limit_state + "': expected SLO, SLD, SLV or SLC");
+  const ElasticSpectrum target = site.spectrum(ls);
+  const RecordCatalogue cat = read_catalogue(a.catalogue.empty() ? default_catalogue() : a.catalogue);
+  CatalogueFilters f = make_filters(a);
+  if (f.site_classes.empty()) f.site_classes = {to_string(spec.conditions.soil)};
+  f.min_candidates = std::size_t(3 * a.count);
+  const CatalogueFilterResult fr = filter_catalogue(cat.entries, f);
+  std::vector<Record> cands;
+  std::vector<CandidateInfo> info;
+  std::vector<std::string> errors;
+  cands = cat.load_all(fr.kept, errors);
+  for (std::size_t i = 0; i < errors.size(); ++i)
+    if (!errors[i].empty()) throw InputError(errors[i]);
+  for (const auto& e : fr.kept) info.push_back(candidate_info(e));
+  if (cands.empty()) throw InputError("no record of the catalogue passes the filters (see `assess records list`)");
+  SelectionOptions so;
+  so.n_records = a.count;
+  so.range = PeriodRange{a.t_min.value_or(0.15), a.t_max.value_or(2.0)};
+  so.max_scale = a.max_scale;
+  so.max_mean_scale = a.max_mean_scale;
+  so.max_pga_ratio = a.max_pga_ratio;
+  so.max_per_event = a.per_event;
+  so.max_per_station = a.per_station;
+  const SelectionResult res = select_records([&](double T) { return target.Se(T); }, cands, info, so);
+  if (a.json) {
+    nlohmann::ordered_json j;
+    j["limit_state"] = to_string(ls);
+    j["site"] = site.describe();
+    j["ag_S_g"] = target.Se(0.0) / units::g_n;
+    j["status"] = to_string(res.status);
+    j["message"] = res.message;
+    j["warnings"] = fr.warnings;
+    j["period_range_s"] = {so.range.T_min, so.range.T_max};
+    j["band"] = {1.0 - so.lower_tol, 1.0 + so.upper_tol};
+    j["min_ratio"] = res.min_ratio;
+    j["max_ratio"] = res.max_ratio;
+    j["mean_scale"] = res.mean_scale;
+    j["candidates"] = cands.size();
+    j["eligible"] = res.eligible;
+    j["combinations"] = res.combinations;
+    j["records"] = nlohmann::ordered_json::array();
+    for (const auto& s : res.records) {
+      const CatalogueEntry& e = fr.kept[s.index];
+      nlohmann::ordered_json r = entry_json(e);
+      r["scale"] = s.scale;
+      r["scaled_pga_g"] = s.scaled_pga / units::g_n;
+      r["deviation"] = s.deviation;
+      r["rank"] = s.rank;
+      j["records"].push_back(r);
+    }
+    j["rejected"] = nlohmann::ordered_json::array();
+    for (const auto& r : fr.rejected) j["rejected"].push_back({{"id", r.name}, {"reason", r.reason}});
+    for (const auto& r : res.rejected)
+      j["rejected"].push_back({{"id", fr.kept[r.index].id}, {"scale", r.scale}, {"reason", r.reason}});
+    j["periods_s"] = res.periods;
+    j["target_m_s2"] = res.target;
+    j["mean_psa_m_s2"] = res.mean_psa;
+    std::cout << j.dump(1) << "\n";
+    return;
+  }
+  std::cout << "Target: " << to_string(ls) << " spectrum, " << site.describe() << ", soil " << a.soil
+            << ", ag S = " << num(target.Se(0.0) / units::g_n, "%.3f") << " g\n";
+  for (const auto& w : fr.warnings) std::cout << "warning: " << w << "\n";
+  std::cout << cands.size() << " candidates after the filters, " << res.eligible << " within the per-record limits; "
+            << res.message << "\n";
+  std::printf("%-30s %-34s %4s %-20s %6s %2s %6s %8s %6s %4s\n", "record", "event", "Mw", "station", "R (km)",
+              "cl", "scale", "PGA (g)", "dev", "rank");
+  for (const auto& s : res.records) {
+    const CatalogueEntry& e = fr.kept[s.index];
+    std::printf("%-30s %-34.34s %4s %-20.20s %6s %2s %6.3f %8.3f %6.3f %4d\n", e.id.c_str(), e.event.c_str(),
+                num(e.Mw, "%.2f").c_str(), e.station.c_str(), num(e.distance_km, "%.1f").c_str(),
+                e.site_class.c_str(), s.scale, s.scaled_pga / units::g_n, s.deviation, s.rank);
+  }
+  std::printf("mean scale %.3f; largest scaled PGA %.3f g (guard %.2f ag S = %.3f g)\n", res.mean_scale,
+              res.max_scaled_pga / units::g_n, so.max_pga_ratio, so.max_pga_ratio * target.Se(0.0) / units::g_n);
+}
+
+}  // namespace
+
+void add_records_command(CLI::App& app) {
+  auto a = std::make_shared<RecordsArgs>();
+  CLI::App* cmd = app.add_subcommand("records", "the record library: build, list, show, select");
+  cmd->require_subcommand(1);
+  auto filters = [a](CLI::App* c) {
+    c->add_option("--mw-min", a->mw_min, "smallest moment magnitude");
+    c->add_option("--mw-max", a->mw_max, "largest moment magnitude");
+    c->add_option("--r-min", a->r_min, "smallest distance (km)");
+    c->add_option("--r-max", a->r_max, "largest distance (km)");
+    c->add_option("--site-class", a->site_classes, "accepted site classes (A..E), repeatable");
+    c->add_option("--country", a->countries, "accepted countries, repeatable");
+    c->add_option("--catalogue", a->catalogue, "catalogue.json (default: the shipped spectra/records/catalogue.json)");
+    c->add_flag("--json", a->json, "print JSON");
+  };
+  CLI::App* build = cmd->add_subcommand("build", "generate catalogue.json from metadata.csv and the record files");
+  build->add_option("--metadata", a->metadata, "metadata table (default: spectra/records/metadata.csv)");
+  build->add_option("--output", a->output, "catalogue to write (default: catalogue.json beside the table)");
+  build->callback([a] { run_build(*a); });
+  CLI::App* list = cmd->add_subcommand("list", "list the usable components, optionally filtered");
+  filters(list);
+  list->add_flag("--all", a->all, "every file, also those not usable for design");
+  list->callback([a] { run_list(*a); });
+  CLI::App* show = cmd->add_subcommand("show", "one record's metadata and 5 % spectrum");
+  show->add_option("id", a->id, "record id or file")->required();
+  show->add_option("--catalogue", a->catalogue, "catalogue.json");
+  show->add_flag("--json", a->json, "print JSON");
+  show->callback([a] { run_show(*a); });
+  CLI::App* sel = cmd->add_subcommand("select", "select N records compatible with a site spectrum (no mechanism)");
+  filters(sel);
+  sel->add_option("--lat", a->lat, "site latitude (decimal degrees)");
+  sel->add_option("--lon", a->lon, "site longitude (decimal degrees)");
+  sel->add_option("--ag", a->ag_g, "ag on rock (g), with --F0 and --Tc-star");
+  sel->add_option("--F0", a->F0, "F0 (-)");
+  sel->add_option("--Tc-star", a->Tc_star, "TC* (s)");
+  sel->add_option("--soil", a->soil, "subsoil class A..E (default A); also the default site-class filter");
+  sel->add_option("--topography", a->topography, "T1..T4 (default T1)");
+  sel->add_option("--vn", a->vn, "nominal life VN (years, default 50)");
+  sel->add_option("--cu", a->cu, "coefficient of use CU (default 1)");
+  sel->add_option("--limit-state", a->limit_state, "SLO|SLD|SLV|SLC (default SLV)");
+  sel->add_option("--count", a->count, "number of records N (default 7)")->check(CLI::Range(1, 50));
+  sel->add_option("--t-min", a->t_min, "shortest period of the range (s, default 0.15)");
+  sel->add_option("--t-max", a->t_max, "longest period of the range (s, default 2.0)");
+  sel->add_option("--max-scale", a->max_scale, "largest scale factor of a record (default 4)");
+  sel->add_option("--max-mean-scale", a->max_mean_scale, "largest mean scale factor (default 2)");
+  sel->add_option("--max-pga-ratio", a->max_pga_ratio, "guard: scaled PGA <= ratio * ag S (default 2.5)");
+  sel->add_option("--per-event", a->per_event, "components per event (default 3)")->check(CLI::Range(1, 50));
+  sel->add_option("--per-station", a->per_station, "components per station (default 1)")->check(CLI::Range(1, 50));
+  sel->add_flag("--no-relax", a->no_relax, "do not widen the site classes when too few candidates remain");
+  sel->callback([a] { run_select(*a); });
+}
+
+}  // namespace assess::cli

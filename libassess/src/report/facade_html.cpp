@@ -1,0 +1,681 @@
+// facade_html.cpp: the HTML relazione of a façade assessment, built in named
+// steps (one function per section). Formatting only: every number comes from
+// FacadeAssessment; every sentence from the message catalogue (messages.cpp).
+#include "assess/report/facade_report.hpp"
+
+#include "report/xml_escape.hpp"
+
+#include "assess/hazard/comuni.hpp"
+#include "assess/report/html_report.hpp"
+#include "assess/report/kinematic_report.hpp"
+#include "assess/report/mechanism_drawing.hpp"
+#include "assess/report/plot.hpp"
+#include "assess/support/units.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+#include <limits>
+#include <map>
+
+namespace assess {
+
+namespace {
+
+constexpr double g = units::g;
+constexpr double pi = 3.14159265358979323846;
+using detail::xml_escape;
+
+std::string fixed(double v, int prec) {
+  if (!std::isfinite(v)) return v > 0 ? "∞" : "—";
+  return format("%.*f", prec, v);
+}
+
+bool check_fails(const CheckRow& c) { return !c.satisfied || !std::isfinite(c.dc) || c.dc > 1.0; }
+
+/// D/C cell, coloured: > 1 (or not finite) red, <= 1 green; 3 decimals.
+HtmlCell dc_cell(double dc, bool fails) { return HtmlCell(fixed(dc, 3), fails ? "num dc-fail" : "num dc-ok"); }
+
+HtmlCell num(double v, int prec, const std::string& extra = "") {
+  return HtmlCell(fixed(v, prec), extra.empty() ? "num" : "num " + extra);
+}
+
+std::string code_name(const std::string& code) {
+  if (code == "NTC2008") return "NTC 2008";
+  if (code == "NTC2018") return "NTC 2018";
+  return code;
+}
+
+struct Ctx {
+  const FacadeAssessment& a;
+  const ReportOptions& o;
+  Lang L;
+  HtmlReport& h;
+  const std::string& t(const std::string& key) const { return msg(L, key); }
+  const CandidateResult& gc() const { return a.kinematic.candidates[a.kinematic.governing]; }
+  const KinematicResult& k() const { return gc().result; }
+  /// "verifica allo SLV, lineare (resistenza), al piede"
+  std::string check_name(const CheckRow& c) const {
+    return t("checks.verifica") + " " + c.limit_state + ", " + kind_name(c.kind) + ", " + t("where." + c.location);
+  }
+  /// "lineare (resistenza)" ... for a kind of check or an approach.
+  std::string kind_name(const std::string& kind) const {
+    for (const char* k : {"strength", "displacement", "dynamic", "dynamic energy"})
+      if (kind == k) return t("kind." + kind);
+    return kind;
+  }
+  /// "verifica allo SLV, lineare (resistenza), al piede" for a summary row.
+  std::string row_name(const VerdictRow& r) const {
+    return t("checks.verifica") + " " + r.limit_state + ", " + kind_name(r.approach) + ", " + t("where." + r.location);
+  }
+  std::string restitution(std::size_t i) const { return describe(a.dynamic->restitutions[i]); }
+  std::string record_label(const DynamicRun& r) const {
+    return a.records[r.record].name + (r.reversed ? " (" + t("dyn.reversed") + ")" : "");
+  }
+};
+
+PlotSeries series(std::string name, PlotSeries::Style style, std::vector<double> x = {}, std::vector<double> y = {}) {
+  PlotSeries s;
+  s.name = std::move(name);
+  s.style = style;
+  s.x = std::move(x);
+  s.y = std::move(y);
+  return s;
+}
+
+std::string today_utc() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char b[16];
+  std::strftime(b, sizeof b, "%Y-%m-%d", &tm);
+  return b;
+}
+
+// ------------------------------------------------------------ steps
+
+void add_header(const Ctx& c) {
+  std::string meta;
+  if (!c.a.kase.project.empty()) meta += c.t("doc.project") + ": " + c.a.kase.project + ". ";
+  meta += c.t("doc.case_file") + ": " + c.a.kase.file + ". " + c.t("doc.generated") + " " + c.t("doc.version") +
+          " " + ASSESS_VERSION + ", " + c.t("doc.date") + " " + (c.o.date.empty() ? today_utc() : c.o.date) + ".";
+  c.h.set_subtitle(meta);
+  c.h.add_paragraph(c.t("doc.intro"));
+}
+
+void add_verdict_box(const Ctx& c) {
+  const Verdict& v = c.a.verdict;
+  std::string html = "<section class=\"verdicts\" aria-label=\"" + xml_escape(c.t("verdict.heading")) + "\">\n";
+  html += "<h2 class=\"verdicts-heading\" style=\"border:none;margin-top:0.4em\">" + xml_escape(c.t("verdict.heading")) +
+          "</h2>\n<div class=\"verdicts\">\n";
+  if (v.overall.empty()) html += "<p>" + xml_escape(c.t("verdict.no_checks")) + "</p>\n";
+  for (const CodeVerdict& cv : v.overall) {
+    const int gi = governing_verdict_row(v, cv.code);
+    const bool ok = cv.satisfied && std::isfinite(cv.max_dc);
+    html += std::string("<div class=\"verdict ") + (ok ? "ok" : "fail") + "\" data-code=\"" + xml_escape(cv.code) +
+            "\">\n";
+    html += "<div class=\"code\">" + xml_escape(code_name(cv.code)) + " — " + std::to_string(cv.checks) + " " +
+            xml_escape(c.t("verdict.checks")) + ", " + std::to_string(cv.failing) + " " +
+            xml_escape(c.t("verdict.failing"));
+    if (cv.no_verdict > 0) html += ", " + std::to_string(cv.no_verdict) + " " + xml_escape(c.t("verdict.no_verdict"));
+    html += "</div>\n";
+    html += "<div class=\"outcome\">" + xml_escape(c.t(ok ? "verdict.ok" : "verdict.fail")) + " <span class=\"" +
+            (ok ? "dc-ok" : "dc-fail") + "\">D/C = " + xml_escape(fixed(cv.max_dc, 3)) + "</span></div>\n";
+    if (gi >= 0) {
+      const VerdictRow& r = v.rows[std::size_t(gi)];
+      html += "<div class=\"governing\">" + xml_escape(c.t("verdict.governing")) + ": " +
+              xml_escape(c.row_name(r)) + ", D/C = " + xml_escape(fixed(r.dc, 3)) + " (" + xml_escape(r.clause) +
+              (r.candidate.empty() ? "" : "; " + xml_escape(r.candidate)) + ")";
+      if (r.no_verdict || !std::isfinite(r.dc)) html += " — " + xml_escape(c.t("verdict.untrusted"));
+      if (!r.note.empty()) html += " — " + xml_escape(r.note);
+      html += "</div>\n";
+    }
+    html += "</div>\n";
+  }
+  html += "</div>\n<p class=\"meta\">" + xml_escape(c.t("verdict.note")) + "</p>\n</section>";
+  c.h.add_raw_html(html);
+}
+
+void add_site(const Ctx& c) {
+  if (!c.a.kase.site) return;
+  const FacadeAssessment& a = c.a;
+  c.h.add_heading(c.t("site.heading"));
+  const SiteSpec& sp = *a.kase.site;
+  c.h.add_paragraph(c.t("site.site") + ": " + a.site_description + "; " + c.t("site.soil") + " " +
+                    to_string(sp.conditions.soil) + ", " + c.t("site.topography") + " " +
+                    to_string(sp.conditions.topography) + "; " + c.t("site.vn") + " = " + fixed(sp.vn_years, 0) + " " +
+                    c.t("site.years") + ", " + c.t("site.cu") + " = " + fixed(sp.cu, 2) + ", " + c.t("site.vr") +
+                    " = " + fixed(a.VR, 1) + " " + c.t("site.years") + " [2.4.1].");
+  if (!sp.comune.empty()) c.h.add_paragraph(c.t("site.comune_note"));
+  std::vector<std::vector<HtmlCell>> rows;
+  for (const auto& [ls, act] : a.actions) {
+    const ElasticSpectrum& s = a.spectra.at(ls);
+    rows.push_back({to_string(ls), num(act.PVR * 100, 0), num(act.TR, 1), num(s.ag_g(), 4), num(s.F0(), 3),
+                    num(s.Tc_star(), 3), num(s.SS(), 3), num(s.CC(), 3), num(s.ST(), 2), num(s.S(), 3),
+                    num(s.TB(), 3), num(s.TC(), 3), num(s.TD(), 3)});
+  }
+  c.h.add_cell_table({c.t("site.ls"), HtmlCell("P_VR (%)", "num"), HtmlCell("TR", "num", c.t("site.years")),
+                 HtmlCell("ag (g)", "num"), HtmlCell("F0", "num"), HtmlCell("TC* (s)", "num"), HtmlCell("SS", "num"),
+                 HtmlCell("CC", "num"), HtmlCell("ST", "num"), HtmlCell("S", "num"), HtmlCell("TB (s)", "num"),
+                 HtmlCell("TC (s)", "num"), HtmlCell("TD (s)", "num")},
+                rows, c.t("site.table"));
+  Plot p;
+  p.title = c.t("site.fig_title");
+  p.x_label = "T (s)";
+  p.y_label = "Se, PSA (g)";
+  for (const auto& [ls, se] : a.site_Se) {
+    PlotSeries s = series("Se " + to_string(ls), PlotSeries::Style::Line, a.periods);
+    for (double v : se) s.y.push_back(v / g);
+    s.highlight = ls == LimitState::SLV;
+    p.series.push_back(s);
+  }
+  for (std::size_t i = 0; i < a.record_psa.size(); ++i) {
+    PlotSeries s = series(i == 0 ? c.t("site.records_scaled") : "", PlotSeries::Style::Dashed, a.periods);
+    for (double v : a.record_psa[i]) s.y.push_back(v / g);
+    s.color = "#999999";
+    p.series.push_back(s);
+  }
+  if (!a.mean_psa.empty()) {
+    PlotSeries s = series(c.t("site.records_mean"), PlotSeries::Style::Line, a.periods);
+    for (double v : a.mean_psa) s.y.push_back(v / g);
+    s.highlight = true;
+    s.color = "#000000";
+    p.series.push_back(s);
+  }
+  c.h.add_svg(render_svg(p), c.t("site.fig"), "fig-spectra");
+}
+
+void add_mechanism(const Ctx& c) {
+  const FacadeAssessment& a = c.a;
+  c.h.add_heading(c.t("mech.heading"));
+  const std::size_t gi = a.kinematic.governing;
+  c.h.add_paragraph(c.t("mech.type") + ": " + mechanism_name(c.L, a.kase.mechanism.type) + "; " +
+                    c.t("mech.governing") + ": " + c.gc().label + " (Z = " + fixed(c.gc().Z, 2) + " m).");
+  const Chain& chain = a.kase.mechanism.candidates.at(gi).chain;
+  c.h.add_svg(mechanism_svg(chain, c.k(), c.L), c.t("mech.fig"), "fig-mechanism");
+
+  // Virtual-work table (C8A.4.1 / C8.7.1.1).
+  c.h.add_heading(c.t("mech.vw"), 3);
+  std::vector<std::vector<HtmlCell>> rows;
+  for (const LoadWork& w : c.k().loads) {
+    const bool weight = w.load.type == LoadType::Weight || w.load.type == LoadType::SelfWeight;
+    rows.push_back({w.load.name, c.t("load." + to_string(w.load.type)), num(w.load.point.x(), 3),
+                    num(w.load.point.y(), 3), num((weight ? w.load.weight : w.load.force.norm()) / units::kN, 2),
+                    num(w.dx, 4), num(w.dz, 4), num(w.W_dx / units::kN, 3), num(w.W_dx2 / units::kN, 3),
+                    num(w.work / units::kN, 3)});
+  }
+  rows.push_back({HtmlCell(c.t("mech.sum"), "gov"), HtmlCell("", "gov"), HtmlCell("", "gov"), HtmlCell("", "gov"),
+                  num(c.k().sum_W / units::kN, 2, "gov"), HtmlCell("", "gov"), HtmlCell("", "gov"),
+                  num(c.k().sum_W_dx / units::kN, 3, "gov"), num(c.k().sum_W_dx2 / units::kN, 3, "gov"),
+                  num(c.k().work_other / units::kN, 3, "gov")});
+  c.h.add_cell_table({c.t("mech.load"), c.t("mech.kind"), HtmlCell("x (m)", "num"), HtmlCell("z (m)", "num"),
+                 HtmlCell("W, F (kN)", "num"), HtmlCell("δx (m)", "num"), HtmlCell("δz (m)", "num"),
+                 HtmlCell("W·δx (kN m)", "num"), HtmlCell("W·δx² (kN m²)", "num"),
+                 HtmlCell(c.t("mech.work") + " (kN m)", "num")},
+                rows, c.t("mech.vw_cap"));
+
+  // Candidates (the governing one of each code: the largest D/C over its checks, Circ. 2019 C8.7.1).
+  if (a.kinematic.candidates.size() > 1) {
+    c.h.add_heading(c.t("mech.candidates"), 3);
+    std::vector<HtmlCell> head{c.t("mech.candidate"), HtmlCell(a.kase.mechanism.parameter_name, "num"),
+                               HtmlCell("Z (m)", "num"), HtmlCell("α0 (-)", "num"), HtmlCell("a0* (m/s²)", "num")};
+    for (const auto& [code, g] : a.kinematic.governing_by_code) head.push_back(HtmlCell("D/C " + code_name(code), "num"));
+    if (!a.kinematic.governing_by_code.empty()) head.push_back(HtmlCell("ag,cap (g)", "num"));
+    head.push_back(c.t("mech.governs"));
+    std::vector<std::vector<HtmlCell>> crows;
+    for (std::size_t i = 0; i < a.kinematic.candidates.size(); ++i) {
+      const CandidateResult& cr = a.kinematic.candidates[i];
+      std::string gov;
+      for (const auto& [code, g] : a.kinematic.governing_by_code)
+        if (g == i) gov += (gov.empty() ? "" : ", ") + code_name(code);
+      if (a.kinematic.governing_by_code.empty() && i == gi) gov = "α0 min";
+      const std::string cls = gov.empty() ? "" : "gov";
+      std::vector<HtmlCell> row{HtmlCell(cr.label, cls), num(cr.parameter, 3, cls), num(cr.Z, 2, cls),
+                                num(cr.result.alpha0, 4, cls), num(cr.result.a0_star, 3, cls)};
+      for (const auto& [code, g] : a.kinematic.governing_by_code) {
+        const auto it = cr.max_dc.find(code);
+        if (it == cr.max_dc.end()) row.push_back(HtmlCell("—", "num " + cls));
+        else {
+          HtmlCell d = dc_cell(it->second, !(it->second <= 1.0));
+          d.cls += cls.empty() ? "" : " " + cls;
+          row.push_back(d);
+        }
+      }
+      if (!a.kinematic.governing_by_code.empty()) row.push_back(num(cr.ag_capacity_min_g, 4, cls));
+      row.push_back(HtmlCell(gov, cls));
+      crows.push_back(row);
+    }
+    c.h.add_cell_table(head, crows, format(c.t("mech.candidates_cap").c_str(), a.kase.mechanism.parameter_name.c_str()));
+  }
+}
+
+void add_kinematic(const Ctx& c) {
+  const KinematicResult& k = c.k();
+  c.h.add_heading(c.t("kin.heading"));
+  auto row = [&](const char* key, double v, int prec, const char* unit, const std::string& clause) {
+    return std::vector<HtmlCell>{c.t(key), num(v, prec), unit, clause};
+  };
+  std::vector<std::vector<HtmlCell>> rows{
+      row("kin.alpha0", k.alpha0, 4, "-", "C8A.4.1 / C8.7.1.1"),
+      row("kin.M", k.M_star / units::tonne, 3, "t", "C8A.4.2"),
+      row("kin.e", k.e_star, 4, "-", "C8A.4.3 / C8.7.1.5"),
+      row("kin.FC", k.FC, 2, "-", c.a.kase.knowledge_level + ", C8.5.4"),
+      row("kin.a0", k.a0_star, 4, "m/s²", "C8A.4.4 / C8.7.1.3"),
+  };
+  if (k.curve_complete()) {
+    rows.push_back(row("kin.dk0", k.dk0, 4, "m", "C8A.4.5"));
+    rows.push_back(row("kin.d0", k.d0_star, 4, "m", "C8A.4.5 / C8.7.1.4"));
+    rows.push_back(row("kin.du", k.du_star, 4, "m", "C8A.4.7"));
+    rows.push_back(row("kin.Ts", k.Ts, 3, "s", "C8A.4.7"));
+    rows.push_back(row("kin.dSLV", k.d_SLV, 4, "m", "C8.7.1.2.1.6"));
+    rows.push_back(row("kin.TSLV", k.T_SLV, 3, "s", "C8.7.1.10"));
+    rows.push_back(row("kin.dSLC", k.d_SLC, 4, "m", "C8.7.1.2.1.6"));
+    rows.push_back(row("kin.TSLC", k.T_SLC, 3, "s", "C8.7.1.11"));
+  }
+  c.h.add_cell_table({c.t("kin.quantity"), HtmlCell(c.t("kin.value"), "num"), c.t("kin.unit"), c.t("kin.clause")}, rows,
+                "");
+  if (!k.curve_complete()) {
+    c.h.add_paragraph(c.t("kin.incomplete") + ": " + k.message);
+    return;
+  }
+  if (k.curve.empty()) return;
+  // ADRS: capacity curve, SLV/SLC demand spectra (Sa against SDe), check points.
+  Plot p;
+  p.title = c.t("kin.adrs_title");
+  p.x_label = c.t("kin.adrs_x");
+  p.y_label = c.t("kin.adrs_y");
+  PlotSeries cap = series(c.t("kin.adrs_curve"), PlotSeries::Style::Line);
+  for (const CapacityPoint& q : k.curve) cap.x.push_back(q.d_star), cap.y.push_back(q.a_star);
+  cap.highlight = true;
+  cap.color = "#000000";
+  p.series.push_back(cap);
+  double d_show = k.d0_star;
+  const std::map<LimitState, std::string> colours{{LimitState::SLV, "#1f5fbf"}, {LimitState::SLC, "#b3001b"}};
+  for (const auto& [ls, colour] : colours) {
+    const auto sp = c.a.spectra.find(ls);
+    if (sp == c.a.spectra.end()) continue;
+    PlotSeries s = series(format(c.t("kin.adrs_spectrum").c_str(), to_string(ls).c_str()),
+                          ls == LimitState::SLV ? PlotSeries::Style::Line : PlotSeries::Style::Dashed);
+    for (double T : c.a.periods) s.x.push_back(sp->second.SDe(T)), s.y.push_back(sp->second.Se(T));
+    s.color = colour;
+    p.series.push_back(s);
+  }
+  // Check points of the ground-level displacement checks: the demand on the
+  // line of its secant period (Sa = Sd (2 pi / T)^2), the capacity on the curve.
+  const auto a_on_curve = [&](double d) {
+    for (std::size_t i = 1; i < k.curve.size(); ++i)
+      if (d <= k.curve[i].d_star) {
+        const CapacityPoint &p0 = k.curve[i - 1], &p1 = k.curve[i];
+        const double t = (p1.d_star > p0.d_star) ? (d - p0.d_star) / (p1.d_star - p0.d_star) : 0.0;
+        return p0.a_star + t * (p1.a_star - p0.a_star);
+      }
+    return k.curve.back().a_star;
+  };
+  for (const CheckRow& row : c.a.checks) {
+    if (row.kind != "displacement" || row.location != "ground") continue;
+    const double T = row.code == "NTC2008" ? k.Ts : row.limit_state == "SLC" ? k.T_SLC : k.T_SLV;
+    const std::string colour = row.limit_state == "SLC" ? "#b3001b" : "#1f5fbf";
+    const std::string who = code_name(row.code) + " " + row.limit_state;
+    if (T > 0.0 && std::isfinite(row.demand)) {
+      const double w2 = std::pow(2.0 * pi / T, 2);
+      PlotSeries line = series("", PlotSeries::Style::Dashed, {0.0, row.demand * 1.15}, {0.0, row.demand * 1.15 * w2});
+      line.color = "#888888";
+      p.series.push_back(line);
+      PlotSeries d = series(format(c.t("kin.adrs_demand").c_str(), who.c_str(), "").c_str(), PlotSeries::Style::Points,
+                            {row.demand}, {row.demand * w2});
+      d.color = colour;
+      d.point_size = row.code == "NTC2008" ? 0.9 : 1.3;
+      d.point_type = row.code == "NTC2008" ? 6 : 7;
+      p.series.push_back(d);
+      d_show = std::max(d_show, row.demand * 1.2);
+    }
+    PlotSeries q = series(format(c.t("kin.adrs_capacity").c_str(), who.c_str(), "").c_str(), PlotSeries::Style::Points,
+                          {row.capacity}, {a_on_curve(row.capacity)});
+    q.color = colour;
+    q.point_type = row.code == "NTC2008" ? 4 : 5;
+    q.point_size = 1.1;
+    p.series.push_back(q);
+  }
+  p.x_min = 0.0;
+  p.x_max = 1.05 * d_show;
+  p.y_min = 0.0;
+  // Show the capacity curve and the check points; the spectra's plateau may
+  // be cut (the checks are made on the descending branch).
+  double a_top = 3.0 * k.a0_star;
+  for (const PlotSeries& s : p.series)
+    if (s.style == PlotSeries::Style::Points) a_top = std::max(a_top, 1.3 * s.y[0]);
+  p.y_max = a_top;
+  p.height = 460;
+  c.h.add_svg(render_svg(p), c.t("kin.adrs_fig"), "fig-adrs");
+}
+
+void add_checks(const Ctx& c) {
+  if (c.a.checks.empty()) return;
+  c.h.add_heading(c.t("checks.heading"), 2, false);
+  std::vector<std::vector<HtmlCell>> rows;
+  for (const CheckRow& r : c.a.checks) {
+    const bool fails = check_fails(r);
+    const int prec = 4;
+    rows.push_back({code_name(r.code), HtmlCell(c.check_name(r), "", r.formula + "; " + r.clause),
+                    num(r.demand, prec), num(r.capacity, prec), r.unit == "m/s2" ? "m/s²" : r.unit,
+                    dc_cell(r.dc, fails),
+                    r.has_pga ? HtmlCell(fixed(r.ag_capacity_g, 3) + " / " + fixed(r.ag_demand_g, 3), "num")
+                              : HtmlCell("—", "num"),
+                    HtmlCell(c.t(fails ? "fail" : "ok"), fails ? "fail" : "ok")});
+  }
+  c.h.add_cell_table({c.t("checks.code"), c.t("checks.check"), HtmlCell(c.t("checks.demand"), "num"),
+                 HtmlCell(c.t("checks.capacity"), "num"), c.t("kin.unit"), HtmlCell("D/C", "num"),
+                 HtmlCell(c.t("checks.ag"), "num"), c.t("checks.outcome")},
+                rows, "", "checks");
+}
+
+void add_records_compatibility(const Ctx& c) {
+  const FacadeAssessment& a = c.a;
+  const auto se = a.site_Se.find(LimitState::SLV);
+  if (se == a.site_Se.end() || a.record_psa.empty()) return;
+  Plot p;
+  p.title = c.t("dyn.compat_title");
+  p.x_label = "T (s)";
+  p.y_label = "Se, PSA (g)";
+  const PeriodRange& rg = a.compatibility.computed ? a.compatibility.range : a.selection_range;
+  if (rg.T_max > rg.T_min) {
+    PlotSeries band = series(c.t("dyn.band"), PlotSeries::Style::Band);
+    for (std::size_t i = 0; i < a.periods.size(); ++i) {
+      const double T = a.periods[i];
+      if (T < rg.T_min || T > rg.T_max) continue;
+      band.x.push_back(T);
+      band.y.push_back(1.3 * se->second[i] / g);
+      band.y_low.push_back(0.9 * se->second[i] / g);
+    }
+    band.color = "#1f5fbf";
+    if (!band.x.empty()) p.series.push_back(band);
+  }
+  PlotSeries target = series("Se SLV", PlotSeries::Style::Line, a.periods);
+  for (double v : se->second) target.y.push_back(v / g);
+  target.color = "#1f5fbf";
+  target.highlight = true;
+  p.series.push_back(target);
+  for (std::size_t i = 0; i < a.record_psa.size(); ++i) {
+    PlotSeries s = series(i == 0 ? c.t("site.records_scaled") : "", PlotSeries::Style::Line, a.periods);
+    for (double v : a.record_psa[i]) s.y.push_back(v / g);
+    s.color = "#aaaaaa";
+    p.series.push_back(s);
+  }
+  if (!a.mean_psa.empty()) {
+    PlotSeries s = series(c.t("site.records_mean"), PlotSeries::Style::Line, a.periods);
+    for (double v : a.mean_psa) s.y.push_back(v / g);
+    s.color = "#000000";
+    s.highlight = true;
+    p.series.push_back(s);
+  }
+  double top = 0.0;
+  for (double v : se->second) top = std::max(top, 1.3 * v / g);
+  for (double v : a.mean_psa) top = std::max(top, v / g);
+  if (rg.T_max > rg.T_min) {
+    PlotSeries l1 = series(c.t("dyn.range"), PlotSeries::Style::Dashed, {rg.T_min, rg.T_min}, {0.0, 1.2 * top});
+    PlotSeries l2 = series("", PlotSeries::Style::Dashed, {rg.T_max, rg.T_max}, {0.0, 1.2 * top});
+    l1.color = l2.color = "#444444";
+    p.series.push_back(l1);
+    p.series.push_back(l2);
+  }
+  p.y_min = 0.0;
+  p.y_max = 1.25 * top;
+  p.x_min = 0.0;
+  p.x_max = a.periods.empty() ? 4.0 : a.periods.back();
+  c.h.add_svg(render_svg(p), c.t("dyn.compat_fig"), "fig-compatibility");
+}
+
+void add_histories(const Ctx& c) {
+  const FacadeAssessment& a = c.a;
+  std::vector<std::pair<std::string, std::string>> panels;
+  static const char* colours[] = {"#1f5fbf", "#d9730d", "#2b7a2b", "#8a3ea8"};
+  for (std::size_t ir = 0; ir < a.records.size(); ++ir) {
+    Plot p;
+    p.title = "";
+    p.x_label = "t (s)";
+    p.y_label = "θ/θu";
+    p.width = 300;
+    p.height = 190;
+    p.font_size = 8;
+    p.key = "off";
+    double t_show = 0.0, t_last = 0.0;
+    for (const DynamicRun& r : a.runs)
+      if (r.record == ir) t_show = std::max(t_show, r.result.t_theta_max), t_last = std::max(t_last, r.result.t_end);
+    p.x_min = 0.0;
+    p.x_max = std::min(t_last, t_show + 10.0);
+    if (!(p.x_max > 0.0)) p.x_max = 1.0;
+    bool overturned = false;
+    for (const DynamicRun& r : a.runs) {
+      if (r.record != ir || r.result.history.t.empty()) continue;
+      PlotSeries s = series("", r.reversed ? PlotSeries::Style::Dashed : PlotSeries::Style::Line);
+      const std::vector<double>& t = r.result.history.t;
+      const std::size_t n = std::size_t(std::upper_bound(t.begin(), t.end(), p.x_max) - t.begin());
+      const std::size_t step = std::max<std::size_t>(1, n / 600);  // keep each panel small
+      for (std::size_t i = 0; i < n; i += step) {
+        s.x.push_back(t[i]);
+        s.y.push_back(r.result.history.theta[i] / r.result.theta_u);
+      }
+      if (s.x.empty()) continue;
+      s.color = colours[r.restitution % 4];
+      p.series.push_back(s);
+      if (r.result.overturned && r.result.t_overturn) {
+        PlotSeries x = series("", PlotSeries::Style::Points, {*r.result.t_overturn}, {1.0});
+        x.point_type = 2;
+        x.point_size = 2.0;
+        x.color = "#b3001b";
+        p.series.push_back(x);
+        overturned = true;
+      }
+    }
+    if (p.series.empty()) continue;
+    PlotSeries one = series("", PlotSeries::Style::Dashed, {0.0, p.x_max}, {1.0, 1.0});
+    one.color = "#b3001b";
+    p.series.push_back(one);
+    p.y_min = -1.1;
+    p.y_max = 1.1;
+    panels.push_back({render_svg(p), a.records[ir].name + (overturned ? " — " + c.t("dyn.overturning") : "")});
+  }
+  if (!panels.empty()) c.h.add_svg_grid(panels, c.t("dyn.histories_fig"), "fig-histories");
+}
+
+void add_dynamic(const Ctx& c) {
+  const FacadeAssessment& a = c.a;
+  if (!a.dynamic) return;
+  c.h.add_heading(c.t("dyn.heading"));
+  if (!a.dynamic_applies) {
+    c.h.add_paragraph(c.t("dyn.na") + ": " + a.dynamic_note);
+    return;
+  }
+  const RockingModel& m = *a.model;
+  c.h.add_paragraph(c.t(a.dynamic->smooth ? "dyn.smooth" : "dyn.rigid") + " (Lipo & de Felice 2017, Eq. 1), " +
+                    c.t(m.sidedness() == Sidedness::one_sided ? "dyn.one_sided" : "dyn.two_sided") + "; W = " +
+                    fixed(m.body().W / units::kN, 2) + " kN/m, b = " + fixed(m.body().b, 3) + " m, R = " +
+                    fixed(m.body().R, 3) + " m, α = " + fixed(m.body().alpha, 4) + " rad, θu = " +
+                    fixed(m.theta_u(+1), 4) + " rad, " + c.t("dyn.capacity") + " " +
+                    fixed(m.capacity() / units::kN, 3) + " kJ/m.");
+  Plot mr;
+  mr.title = c.t("dyn.mr_title");
+  mr.x_label = "θ (rad)";
+  mr.y_label = "M (kN m/m)";
+  PlotSeries s = series(c.t("dyn.mr_series"), PlotSeries::Style::Line, a.mr_theta);
+  for (double v : a.mr_moment) s.y.push_back(v / units::kN);
+  s.highlight = true;
+  mr.series.push_back(s);
+  mr.height = 320;
+  c.h.add_svg(render_svg(mr), c.t("dyn.mr_fig"), "fig-moment-rotation");
+
+  c.h.add_heading(c.t("dyn.records"), 3);
+  std::vector<std::vector<HtmlCell>> rrows;
+  for (const RecordUsed& r : a.records)
+    rrows.push_back({r.name, r.event, r.station, r.component, num(r.scale, 3), num(r.pga / g, 4)});
+  c.h.add_cell_table({c.t("dyn.record"), c.t("dyn.event"), c.t("dyn.station"), c.t("dyn.component"),
+                 HtmlCell(c.t("dyn.scale"), "num"), HtmlCell("PGA (g)", "num")},
+                rrows, "");
+  for (const std::string& f : a.record_failures) c.h.add_paragraph(c.t("dyn.skipped") + ": " + f);
+  if (a.selection)
+    c.h.add_paragraph(format(c.t("dyn.selection").c_str(), fixed(a.selection_range.T_min, 2).c_str(),
+                             fixed(a.selection_range.T_max, 2).c_str()) +
+                      a.selection->message);
+  if (a.compatibility.computed) c.h.add_paragraph(c.t("dyn.compat_msg") + ": " + a.compatibility.message + ".");
+  add_records_compatibility(c);
+  c.h.add_heading(c.t("dyn.histories"), 3);
+  add_histories(c);
+
+  c.h.add_heading(c.t("dyn.summary"), 3);
+  std::vector<std::vector<HtmlCell>> srows;
+  for (const RestitutionSummary& x : a.summaries) {
+    const bool fails = !x.slv_satisfied || !std::isfinite(x.dc_slv);
+    srows.push_back({c.restitution(x.restitution), num(x.analyses, 0),
+                     HtmlCell(std::to_string(x.overturned) + " / " + std::to_string(x.analyses), "num"),
+                     num(x.mean_dc, 3), num(x.max_dc, 3), num(x.mean_d_star, 4), num(x.max_d_star, 4), x.rule,
+                     x.no_verdict ? HtmlCell("—", "num") : dc_cell(x.dc_slv, fails),
+                     x.no_verdict ? HtmlCell(c.t("verdict.no_verdict_short"), "fail")
+                                  : HtmlCell(c.t(fails ? "fail" : "ok"), fails ? "fail" : "ok")});
+  }
+  c.h.add_cell_table({c.t("dyn.restitution"), HtmlCell(c.t("dyn.analyses"), "num"),
+                      HtmlCell(c.t("dyn.overturned"), "num"), HtmlCell(c.t("dyn.mean_dc"), "num"),
+                      HtmlCell(c.t("dyn.max_dc"), "num"), HtmlCell(c.t("dyn.mean_d"), "num"),
+                      HtmlCell(c.t("dyn.max_d"), "num"), c.t("dyn.rule"), HtmlCell(c.t("dyn.dc_slv"), "num"),
+                      c.t("checks.outcome")},
+                     srows, c.t("dyn.summary_cap"));
+}
+
+// Grouped D/C bars (Lipo & de Felice 2017, Fig. 8) of the summary by approach
+// built in the assessment (assessment/verdict.hpp): one group per code, one
+// named bar per approach (limit state, location, restitution), the line D/C = 1;
+// then the summary table and the overall verdict per code.
+void add_comparison(const Ctx& c) {
+  const Verdict& v = c.a.verdict;
+  if (v.rows.empty()) return;
+  c.h.add_heading(c.t("cmp.heading"));
+  Plot p;
+  p.title = c.t("cmp.title");
+  p.y_label = "D/C (-)";
+  p.bar_width = 0.8;
+  p.rotate_x_tic_labels = true;
+  p.height = 480;
+  p.width = 720;
+  p.key = "outside right top";
+  static const char* colours[] = {"#1f5fbf", "#d9730d", "#2b7a2b", "#8a3ea8", "#7f7f7f", "#17becf"};
+  auto bar_name = [&](const VerdictRow& r) {
+    std::string n = c.kind_name(r.approach) + " " + r.limit_state;
+    if (r.location == "height") n += " (" + c.t("where.height") + ")";
+    if (r.approach == "dynamic" || r.approach == "dynamic energy") n += ", " + r.clause.substr(r.clause.rfind(", ") + 2);
+    return n;
+  };
+  // Short tick labels under the bars (the table below names each row in full).
+  auto short_name = [&](const VerdictRow& r) {
+    std::string n = c.t("short." + std::string(r.approach == "dynamic energy" ? "energy" : r.approach)) + " " +
+                    r.limit_state;
+    if (r.location == "height") n += " " + c.t("short.height");
+    if (r.approach == "dynamic" || r.approach == "dynamic energy") {
+      const std::string e = r.clause.substr(r.clause.rfind(", ") + 2);
+      n += " " + (e.rfind("e = ", 0) == 0 ? "e=" + e.substr(4) : e);
+    }
+    return n;
+  };
+  std::vector<std::string> groups;
+  for (const VerdictRow& r : v.rows)
+    if (std::find(groups.begin(), groups.end(), r.code) == groups.end()) groups.push_back(r.code);
+  double x = 0.0, dc_max = 1.0;
+  std::vector<std::vector<HtmlCell>> rows;
+  for (std::size_t gi = 0; gi < groups.size(); ++gi) {
+    PlotSeries bars = series(groups[gi] == "seed" ? c.t("cmp.group_seed") : code_name(groups[gi]), PlotSeries::Style::Bars);
+    bars.color = colours[gi % 6];
+    for (const VerdictRow& r : v.rows) {
+      if (r.code != groups[gi]) continue;
+      const double dc = std::isfinite(r.dc) ? r.dc : 0.0;
+      bars.x.push_back(x);
+      bars.y.push_back(dc);
+      p.x_tic_labels.push_back({x, short_name(r)});
+      dc_max = std::max(dc_max, dc);
+      const bool fails = !r.satisfied || r.no_verdict || !std::isfinite(r.dc);
+      std::string note = r.candidate.empty() ? r.clause : r.candidate + "; " + r.clause;
+      if (!r.note.empty()) note += "; " + r.note;
+      rows.push_back({groups[gi] == "seed" ? c.t("cmp.group_seed") : code_name(r.code), HtmlCell(bar_name(r), "", note),
+                      r.no_verdict ? HtmlCell("—", "num") : dc_cell(r.dc, fails),
+                      r.code == "seed" ? HtmlCell(r.satisfied ? "≤ 1" : "> 1", r.satisfied ? "ok" : "fail")
+                      : r.no_verdict   ? HtmlCell(c.t("verdict.no_verdict_short"), "fail")
+                                       : HtmlCell(c.t(fails ? "fail" : "ok"), fails ? "fail" : "ok")});
+      x += 1.0;
+    }
+    p.series.push_back(bars);
+    x += 0.6;  // gap between groups
+  }
+  PlotSeries one = series(c.t("cmp.line"), PlotSeries::Style::Dashed, {-0.6, x - 0.4}, {1.0, 1.0});
+  one.color = "#b3001b";
+  one.highlight = true;
+  p.series.push_back(one);
+  p.x_min = -0.6;
+  p.x_max = x - 0.4;
+  p.y_min = 0.0;
+  p.y_max = 1.25 * dc_max;
+  c.h.add_svg(render_svg(p), c.t("cmp.fig"), "fig-dc");
+  c.h.add_cell_table({c.t("checks.code"), c.t("cmp.approach"), HtmlCell("D/C", "num"), c.t("checks.outcome")}, rows,
+                     c.t("cmp.table_cap"));
+  std::vector<std::vector<HtmlCell>> orows;
+  for (const CodeVerdict& cv : v.overall) {
+    const bool ok = cv.satisfied && std::isfinite(cv.max_dc);
+    orows.push_back({code_name(cv.code), HtmlCell(c.t(ok ? "verdict.ok" : "verdict.fail"), ok ? "ok" : "fail"),
+                     HtmlCell(std::to_string(cv.failing) + " / " + std::to_string(cv.checks), "num"),
+                     num(cv.no_verdict, 0), dc_cell(cv.max_dc, !ok)});
+  }
+  c.h.add_cell_table({c.t("checks.code"), c.t("cmp.overall"), HtmlCell(c.t("cmp.failing"), "num"),
+                      HtmlCell(c.t("verdict.no_verdict"), "num"), HtmlCell(c.t("cmp.max_dc"), "num")},
+                     orows, "");
+}
+
+void add_warnings(const Ctx& c) {
+  if (c.a.warnings.empty()) return;
+  c.h.add_heading(c.t("warnings.heading"), 2, false);
+  for (const std::string& w : c.a.warnings) c.h.add_paragraph(w);
+}
+
+void add_legend(const Ctx& c) {
+  c.h.add_heading(c.t("legend.heading"), 2, false);
+  c.h.add_raw_html("<ul class=\"legend\">\n<li>" + xml_escape(c.t("legend.VT")) + "</li>\n<li>" +
+                   xml_escape(c.t("legend.VS")) + "</li>\n<li>" + xml_escape(c.t("legend.R")) + "</li>\n<li>" +
+                   xml_escape(c.t("legend.dc")) + "</li>\n</ul>");
+}
+
+void add_appendix(const Ctx& c) {
+  c.h.add_heading(c.t("appendix.heading"));
+  c.h.add_paragraph(c.t("appendix.note") + " (" + c.a.kase.file + ")");
+  c.h.add_pre(c.o.case_text.empty() ? c.t("appendix.missing") : c.o.case_text);
+}
+
+}  // namespace
+
+int governing_verdict_row(const Verdict& v, const std::string& code) {
+  auto rank = [](const VerdictRow& r) {
+    if (r.no_verdict || !std::isfinite(r.dc)) return std::make_pair(2, 0.0);
+    return std::make_pair(r.satisfied ? 0 : 1, r.dc);
+  };
+  int best = -1;
+  for (std::size_t i = 0; i < v.rows.size(); ++i) {
+    if (v.rows[i].code != code) continue;
+    if (best < 0 || rank(v.rows[i]) > rank(v.rows[std::size_t(best)])) best = int(i);
+  }
+  return best;
+}
+
+std::string facade_html(const FacadeAssessment& a, const ReportOptions& options) {
+  const Lang L = options.lang;
+  HtmlReport h(msg(L, "doc.title"));
+  h.set_lang(to_string(L));
+  const Ctx c{a, options, L, h};
+  add_header(c);
+  add_verdict_box(c);
+  add_site(c);
+  add_mechanism(c);
+  add_kinematic(c);
+  add_checks(c);
+  add_dynamic(c);
+  add_comparison(c);
+  add_warnings(c);
+  add_legend(c);
+  add_appendix(c);
+  return h.str();
+}
+
+}  // namespace assess
