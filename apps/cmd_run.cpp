@@ -1,4 +1,4 @@
-// cmd_run.cpp: `assess run CASE.json [--json] [--html FILE] [--keep-going]`:
+// cmd_run.cpp: `assess run CASE.json [--json] [--html FILE] [--keep-going] [--fragility DIR]`:
 // the façade assessment — site, kinematic checks of both editions and the
 // dynamic rocking analysis — side by side. Parses, calls, prints.
 #include "commands.hpp"
@@ -7,18 +7,22 @@
 #include <assess/support/error.hpp>
 #include <assess/assessment/facade_assessment.hpp>
 #include <assess/report/facade_report.hpp>
+#include <assess/risk/fragility_report.hpp>
+
+#include <filesystem>
 #include <assess/report/pdf.hpp>
 
 #include <fstream>
 #include <iterator>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace assess::cli {
 namespace {
 
 struct RunArgs {
-  std::string file, html, pdf, lang = "it";
+  std::string file, html, pdf, lang = "it", fragility;
   bool json = false, keep_going = false, wide = false;
 };
 
@@ -44,11 +48,25 @@ void run(const RunArgs& a) {
     }
     if (!a.pdf.empty()) html_to_pdf(page, a.pdf);
   }
+  // A fragility result of this case: --fragility DIR, or the default output
+  // directory of `assess fragility` (CASE.fragility) when it holds this case's.
+  std::optional<nlohmann::json> frag;
+  const std::string auto_dir = std::filesystem::path(a.file).stem().string() + ".fragility";
+  if (!a.fragility.empty()) frag = read_fragility_summary(a.fragility, a.file);
+  else if (std::filesystem::exists(auto_dir + "/summary.json")) {
+    try {
+      frag = read_fragility_summary(auto_dir, a.file);
+    } catch (const InputError&) {
+      // another case's results: not this report's business
+    }
+  }
   if (a.json) {
     nlohmann::json j = facade_json(res);
+    if (frag) j["fragility"] = {{"line", fragility_line(*frag)}, {"governing", (*frag)["governing"]}};
     std::cout << stamp_version(j).dump(2) << "\n";
   } else {
     std::cout << facade_text(res, a.wide ? TextWidth::wide : TextWidth::columns120)
+              << (frag ? fragility_line(*frag) + "\n" : "")
               << (a.html.empty() ? "" : "\nHTML report written to " + a.html + "\n")
               << (a.pdf.empty() ? "" : "PDF report written to " + a.pdf + "\n");
   }
@@ -67,6 +85,8 @@ void add_run_command(CLI::App& app) {
                   "language of the HTML/PDF report: it (default: the relazione is filed in Italy) or en");
   cmd->add_flag("--wide", args->wide, "one line per table row however long (default: tables within 120 columns)");
   cmd->add_flag("--keep-going", args->keep_going, "continue with the readable records when some cannot be read");
+  cmd->add_option("--fragility", args->fragility,
+                  "add the fragility result in this directory (of `assess fragility`; default CASE.fragility if present)");
   cmd->callback([args] { run(*args); });
 }
 

@@ -17,6 +17,7 @@ void add_rocking_command(CLI::App& app);    // cmd_rocking.cpp
 void add_case_dynamic_command(CLI::App& app);  // cmd_rocking.cpp: `assess dynamic CASE --record FILE`
 void add_run_command(CLI::App& app);        // cmd_run.cpp
 void add_campaign_command(CLI::App& app);   // cmd_campaign.cpp
+void add_fragility_command(CLI::App& app);  // cmd_fragility.cpp
 void add_records_command(CLI::App& app);    // cmd_records.cpp
 
 /// Exit code for invalid input (InputError) and for a failed check of the

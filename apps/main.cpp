@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   assess::cli::add_case_dynamic_command(app);
   assess::cli::add_run_command(app);
   assess::cli::add_campaign_command(app);
+  assess::cli::add_fragility_command(app);
   assess::cli::add_records_command(app);
   // One example per subcommand (paths relative to the source tree or to
   // share/assess of an installed copy).
@@ -40,6 +41,7 @@ int main(int argc, char** argv) {
       {"run", "assess run mechanisms/church-facade.json --lang it --html relazione.html --pdf relazione.pdf"},
       {"campaign", "assess campaign mechanisms/campaign-seed-3.2.json --out results --threads 2"},
       {"records", "assess records select --lat 43.44 --lon 12.64 --soil C --count 7"},
+      {"fragility", "assess fragility mechanisms/church-facade.json --out church.fragility"},
   };
   std::string all = "Examples:\n";
   for (CLI::App* sub : app.get_subcommands({})) {

@@ -9,6 +9,7 @@
 
 // hazard
 #include <assess/hazard/hazard.hpp>
+#include <assess/hazard/hazard_curve.hpp>
 #include <assess/hazard/seismic_action.hpp>
 #include <assess/hazard/site.hpp>
 #include <assess/hazard/spectrum.hpp>
@@ -56,3 +57,11 @@
 #include <assess/campaign/campaign_report.hpp>
 #include <assess/campaign/campaign_runner.hpp>
 #include <assess/campaign/output_lock.hpp>
+
+// risk
+#include <assess/risk/collapse_rate.hpp>
+#include <assess/risk/fragility_job.hpp>
+#include <assess/risk/fragility_report.hpp>
+#include <assess/risk/fragility_result.hpp>
+#include <assess/risk/fragility_study.hpp>
+#include <assess/risk/lognormal_fragility.hpp>

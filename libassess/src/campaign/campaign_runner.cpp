@@ -236,10 +236,11 @@ namespace {
 
 // The complete rows at the start of an existing part file that follow the
 // expected id sequence; returns their count and the byte offset after them.
-std::pair<std::uint64_t, std::uint64_t> valid_prefix(const std::string& path, const TaskList& tasks) {
+std::pair<std::uint64_t, std::uint64_t> valid_prefix(const CampaignJob& job, const std::string& path,
+                                                     const TaskList& tasks) {
   std::ifstream in(path, std::ios::binary);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string header = campaign_csv_header() + "\n";
+  const std::string header = job.csv_header() + "\n";
   if (text.compare(0, header.size(), header) != 0)
     throw InputError("cannot resume '" + path + "': its header is not this version's results header");
   std::uint64_t offset = header.size(), count = 0;
@@ -249,13 +250,13 @@ std::pair<std::uint64_t, std::uint64_t> valid_prefix(const std::string& path, co
   while (t < tasks.count) {
     const std::size_t nl = text.find('\n', offset);
     if (nl == std::string::npos) break;  // an incomplete last line is dropped
-    AnalysisRow row;
+    std::uint64_t id = 0;
     try {
-      row = parse_campaign_csv_row(text.substr(offset, nl - offset));
+      id = job.row_id(text.substr(offset, nl - offset));
     } catch (const InputError&) {
       break;
     }
-    if (row.id != next) break;
+    if (id != next) break;
     offset = nl + 1;
     ++count;
     if (++next == task.end && ++t < tasks.count) {
@@ -266,13 +267,54 @@ std::pair<std::uint64_t, std::uint64_t> valid_prefix(const std::string& path, co
   return {count, offset};
 }
 
+// The campaign as a job: rows of AnalysisRow, inputs in campaign.json.
+class CampaignAsJob final : public CampaignJob {
+ public:
+  explicit CampaignAsJob(const Campaign& c) : c_(c) {}
+  std::uint64_t size() const override { return c_.size(); }
+  std::uint64_t group_size() const override { return c_.spec().group_size(); }
+  std::string inputs_file() const override { return "campaign.json"; }
+  std::string inputs_text() const override { return to_json(c_.spec()).dump(2) + "\n"; }
+  std::string csv_header() const override { return campaign_csv_header(); }
+  std::vector<std::string> evaluate_csv(std::uint64_t first, std::uint64_t end, std::uint64_t& failed) const override {
+    std::vector<std::string> lines;
+    for (const auto& r : c_.evaluate(first, end)) {
+      lines.push_back(campaign_csv_row(r));
+      failed += r.ok ? 0 : 1;
+    }
+    return lines;
+  }
+  std::uint64_t row_id(const std::string& line) const override { return parse_campaign_csv_row(line).id; }
+
+ private:
+  const Campaign& c_;
+};
+
 }  // namespace
 
 CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out_dir,
                                 const CampaignRunOptions& options) {
+  return run_campaign_job(CampaignAsJob(campaign), out_dir, options);
+}
+
+void merge_campaign_parts(const std::vector<std::string>& part_paths, const std::string& out_path) {
+  // A merge needs only the header and the row parser of a campaign.
+  struct Rows final : CampaignJob {
+    std::uint64_t size() const override { return 0; }
+    std::uint64_t group_size() const override { return 1; }
+    std::string inputs_file() const override { return "campaign.json"; }
+    std::string inputs_text() const override { return ""; }
+    std::string csv_header() const override { return campaign_csv_header(); }
+    std::vector<std::string> evaluate_csv(std::uint64_t, std::uint64_t, std::uint64_t&) const override { return {}; }
+    std::uint64_t row_id(const std::string& line) const override { return parse_campaign_csv_row(line).id; }
+  } rows;
+  merge_campaign_job_parts(rows, part_paths, out_path);
+}
+
+CampaignRunSummary run_campaign_job(const CampaignJob& job, const std::string& out_dir,
+                                    const CampaignRunOptions& options) {
   options.validate();
   const auto start = std::chrono::steady_clock::now();
-  const CampaignSpec& spec = campaign.spec();
   std::error_code ec;
   fs::create_directories(out_dir, ec);
   if (ec || !fs::is_directory(out_dir)) throw InputError("cannot create output directory '" + out_dir + "'");
@@ -281,8 +323,8 @@ CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out
   if (!options.output_locked) lock.emplace(out_dir, options.part, options.parts);
 
   // The normalised spec: a resumed run must be the same campaign.
-  const std::string spec_path = out_dir + "/campaign.json";
-  const std::string spec_text = to_json(spec).dump(2) + "\n";
+  const std::string spec_path = out_dir + "/" + job.inputs_file();
+  const std::string spec_text = job.inputs_text();
   if (options.resume && fs::exists(spec_path)) {
     std::ifstream in(spec_path);
     std::string old((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -298,9 +340,10 @@ CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out
 
   // The tasks of this part, lazily: `all` ignores the limit (a resumed file
   // may hold more rows than this run asks for: they are kept).
-  const std::uint64_t end = options.limit > 0 ? std::min(options.limit, spec.size()) : spec.size();
-  const std::uint64_t G = spec.group_size();
-  const TaskList all(G, options.part, options.parts, spec.size()), tasks(G, options.part, options.parts, end);
+  const std::uint64_t size = job.size();
+  const std::uint64_t end = options.limit > 0 ? std::min(options.limit, size) : size;
+  const std::uint64_t G = job.group_size();
+  const TaskList all(G, options.part, options.parts, size), tasks(G, options.part, options.parts, end);
   CampaignRunSummary summary;
   summary.total = tasks.ids();
 
@@ -308,7 +351,7 @@ CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out
   std::ofstream out;
   std::uint64_t skip = 0;  // ids of `tasks` already in the file
   if (options.resume && fs::exists(path)) {
-    const auto [count, offset] = valid_prefix(path, all);
+    const auto [count, offset] = valid_prefix(job, path, all);
     fs::resize_file(path, offset, ec);  // drops a partly written last line
     if (ec) throw InputError("cannot truncate '" + path + "' to its complete rows");
     summary.resumed = std::min(count, summary.total);
@@ -320,7 +363,7 @@ CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out
       if (fs::exists(p) && !options.resume)
         throw InputError("'" + p + "' exists: pass --resume to continue it, or choose another output directory");
     out.open(path, std::ios::binary | std::ios::trunc);
-    out << campaign_csv_header() << "\n";
+    out << job.csv_header() << "\n";
   }
   if (!out) throw InputError("cannot write '" + path + "'");
   out.flush();
@@ -348,13 +391,10 @@ CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out
     try {
       for (std::uint64_t t; !stop && !(options.cancel && options.cancel->load()) && (t = next_task++) < n_tasks;) {
         const Task k = task(t);
-        const std::vector<AnalysisRow> rows = campaign.evaluate(k.first, k.end);
-        std::string text;
         std::uint64_t failed = 0;
-        for (const auto& r : rows) {
-          text += campaign_csv_row(r) + "\n";
-          failed += r.ok ? 0 : 1;
-        }
+        const std::vector<std::string> lines = job.evaluate_csv(k.first, k.end, failed);
+        std::string text;
+        for (const auto& l : lines) text += l + "\n";
         std::lock_guard<std::mutex> guard(mutex);
         summary.failed += failed;
         pending.emplace(t, std::make_pair(std::move(text), k.end - k.first));
@@ -391,7 +431,8 @@ CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out
   return summary;
 }
 
-void merge_campaign_parts(const std::vector<std::string>& part_paths, const std::string& out_path) {
+void merge_campaign_job_parts(const CampaignJob& job, const std::vector<std::string>& part_paths,
+                              const std::string& out_path) {
   struct Part {
     std::ifstream in;
     std::string line;
@@ -399,11 +440,11 @@ void merge_campaign_parts(const std::vector<std::string>& part_paths, const std:
     bool live = false;
   };
   std::vector<Part> parts(part_paths.size());
-  auto advance = [](Part& p, const std::string& name) {
+  auto advance = [&job](Part& p, const std::string& name) {
     p.live = false;
     while (std::getline(p.in, p.line)) {
       if (p.line.empty()) continue;
-      p.id = parse_campaign_csv_row(p.line).id;
+      p.id = job.row_id(p.line);
       p.live = true;
       return;
     }
@@ -412,13 +453,13 @@ void merge_campaign_parts(const std::vector<std::string>& part_paths, const std:
   for (std::size_t i = 0; i < parts.size(); ++i) {
     parts[i].in.open(part_paths[i], std::ios::binary);
     std::string header;
-    if (!parts[i].in || !std::getline(parts[i].in, header) || header != campaign_csv_header())
+    if (!parts[i].in || !std::getline(parts[i].in, header) || header != job.csv_header())
       throw InputError("'" + part_paths[i] + "' is not a campaign results part");
     advance(parts[i], part_paths[i]);
   }
   const std::string tmp = out_path + ".tmp";
   std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-  out << campaign_csv_header() << "\n";
+  out << job.csv_header() << "\n";
   for (;;) {
     Part* best = nullptr;
     std::size_t bi = 0;

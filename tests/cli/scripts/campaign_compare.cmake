@@ -2,13 +2,17 @@
 # results.csv files. -DEXE=assess -DCAMPAIGN=file -DOUT=dir -DFIRST="launcher;args"
 # -DSECOND="launcher;args" (each a prefix of the assess command: empty, or
 # "mpirun;-np;2;..."), -DFIRST_ARGS / -DSECOND_ARGS (extra assess arguments).
+# -DCOMMAND=fragility runs `assess fragility` on a case instead (default campaign).
+if(NOT COMMAND)
+  set(COMMAND campaign)
+endif()
 file(REMOVE_RECURSE ${OUT}/a ${OUT}/b)
-execute_process(COMMAND ${FIRST} ${EXE} campaign ${CAMPAIGN} --out ${OUT}/a --quiet --no-plots ${FIRST_ARGS}
+execute_process(COMMAND ${FIRST} ${EXE} ${COMMAND} ${CAMPAIGN} --out ${OUT}/a --quiet --no-plots ${FIRST_ARGS}
   RESULT_VARIABLE rc1 OUTPUT_VARIABLE out1 ERROR_VARIABLE err1)
 if(NOT rc1 EQUAL 0)
   message(FATAL_ERROR "first run failed (${rc1}): ${out1} ${err1}")
 endif()
-execute_process(COMMAND ${SECOND} ${EXE} campaign ${CAMPAIGN} --out ${OUT}/b --quiet --no-plots ${SECOND_ARGS}
+execute_process(COMMAND ${SECOND} ${EXE} ${COMMAND} ${CAMPAIGN} --out ${OUT}/b --quiet --no-plots ${SECOND_ARGS}
   RESULT_VARIABLE rc2 OUTPUT_VARIABLE out2 ERROR_VARIABLE err2)
 if(NOT rc2 EQUAL 0)
   message(FATAL_ERROR "second run failed (${rc2}): ${out2} ${err2}")

@@ -59,6 +59,32 @@ AnalysisRow parse_campaign_csv_row(const std::string& line);
 /// Reads every row of a results file. @throws InputError if the header differs.
 std::vector<AnalysisRow> read_campaign_csv(const std::string& path);
 
+/// Any flat, deterministic set of analyses the runner can run: ids 0..size()-1
+/// in groups of group_size() consecutive ids (the unit of work of a thread
+/// and of the partition between MPI ranks), one CSV line per id. The
+/// campaign of this header is one; the multiple-stripe and IDA analyses of
+/// risk/ are another. Implementations must be thread-safe (evaluate is called
+/// concurrently) and deterministic (a line depends only on its id).
+class CampaignJob {
+ public:
+  virtual ~CampaignJob() = default;
+  virtual std::uint64_t size() const = 0;
+  virtual std::uint64_t group_size() const = 0;
+  /// File name of the normalised inputs in the output directory ("campaign.json").
+  virtual std::string inputs_file() const = 0;
+  /// The normalised inputs (compared byte for byte on resume).
+  virtual std::string inputs_text() const = 0;
+  /// Header line of the results file (without newline).
+  virtual std::string csv_header() const = 0;
+  /// The CSV lines (without newline) of ids [first, end), which lie in one
+  /// group; `failed` is increased by the number of failed analyses. Never
+  /// throws for a failing analysis.
+  virtual std::vector<std::string> evaluate_csv(std::uint64_t first, std::uint64_t end,
+                                                std::uint64_t& failed) const = 0;
+  /// The id of a line written by evaluate_csv. @throws InputError if malformed.
+  virtual std::uint64_t row_id(const std::string& line) const = 0;
+};
+
 /// The results file of part `part` of `parts` in out_dir: results.csv when
 /// parts == 1, else results.part<part>of<parts>.csv.
 std::string campaign_part_path(const std::string& out_dir, int part, int parts);
@@ -73,6 +99,15 @@ std::string campaign_part_path(const std::string& out_dir, int part, int parts);
 ///   from this campaign's.
 CampaignRunSummary run_campaign(const Campaign& campaign, const std::string& out_dir,
                                 const CampaignRunOptions& options);
+
+/// The same runner for any job: results in campaign_part_path(out_dir, ...)
+/// with job.csv_header(), inputs in out_dir/job.inputs_file().
+CampaignRunSummary run_campaign_job(const CampaignJob& job, const std::string& out_dir,
+                                    const CampaignRunOptions& options);
+
+/// Merges the part files of a job (header job.csv_header()) in id order.
+void merge_campaign_job_parts(const CampaignJob& job, const std::vector<std::string>& part_paths,
+                              const std::string& out_path);
 
 /// Merges the part files (each in increasing id order) into one file in id
 /// order, identical to a single-process run. @throws InputError on a bad part.

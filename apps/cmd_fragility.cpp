@@ -1,0 +1,190 @@
+// cmd_fragility.cpp: `assess fragility CASE.json [--stripes TR,...] [--ida]
+// [--out DIR] [--json]`: fragility curves of the case's governing mechanism
+// by multiple-stripe analysis (or IDA) through the campaign runner (all
+// cores, resumable, MPI ranks under mpirun), the lognormal fits and the
+// annual risk of overturning on the site's hazard curve (docs/user/fragility.md).
+#include "commands.hpp"
+
+#include <assess/assessment/case_file.hpp>
+#include <assess/campaign/campaign_runner.hpp>
+#include <assess/report/plot.hpp>
+#include <assess/risk/fragility_job.hpp>
+#include <assess/risk/fragility_report.hpp>
+#include <assess/risk/fragility_result.hpp>
+#include <assess/risk/fragility_study.hpp>
+#include <assess/support/error.hpp>
+#include <assess/support/units.hpp>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#if defined(ASSESS_HAVE_MPI)
+#include <mpi.h>
+#endif
+
+namespace assess::cli {
+
+namespace {
+
+struct FragilityArgs {
+  std::string file, out, stripes, ida_levels;
+  bool ida = false, json = false, resume = false, quiet = false, no_plots = false;
+  unsigned threads = 0;
+  int records = 0, bootstrap = 500;
+  std::uint64_t seed = 1;
+};
+
+std::atomic<bool> g_cancel{false};
+extern "C" void on_fragility_signal(int) { g_cancel = true; }
+
+// "30,475,2475" -> numbers; the option's name in errors.
+std::vector<double> parse_list(const std::string& text, const std::string& option, const char* unit) {
+  std::vector<double> v;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    try {
+      std::size_t n = 0;
+      const double x = std::stod(item, &n);
+      if (n != item.size()) throw std::invalid_argument(item);
+      v.push_back(x);
+    } catch (const std::exception&) {
+      throw InputError(option + ": '" + item + "' is not a number (expected a comma-separated list in " + unit + ")");
+    }
+  }
+  if (v.empty()) throw InputError(option + ": empty list (expected numbers in " + unit + ")");
+  return v;
+}
+
+std::string default_out(const std::string& file) {
+  return std::filesystem::path(file).stem().string() + ".fragility";
+}
+
+#if defined(ASSESS_HAVE_MPI)
+bool under_mpi() { return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE"); }
+#endif
+
+void run(const FragilityArgs& a) {
+  int rank = 0, ranks = 1;
+#if defined(ASSESS_HAVE_MPI)
+  const bool mpi = under_mpi();
+  if (mpi) {
+    MPI_Init(nullptr, nullptr);
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  }
+  struct Finalize {
+    bool on;
+    ~Finalize() {
+      if (on) MPI_Finalize();
+    }
+  } finalize{mpi};
+#endif
+  FragilityOptions fo;
+  fo.method = a.ida ? FragilityMethod::ida : FragilityMethod::stripes;
+  if (!a.stripes.empty()) {
+    if (a.ida) throw InputError("--stripes: not with --ida (IDA levels are given by --ida-levels)");
+    fo.return_periods = parse_list(a.stripes, "--stripes", "years");
+  }
+  if (!a.ida_levels.empty()) {
+    if (!a.ida) throw InputError("--ida-levels: only with --ida");
+    for (double g : parse_list(a.ida_levels, "--ida-levels", "g")) fo.ida_levels.push_back(g * units::g);
+  }
+  fo.records = a.records;
+  fo.bootstrap = a.bootstrap;
+  fo.seed = a.seed;
+  const CaseFile kase = read_case_file(a.file);
+  const FragilityStudy study = prepare_fragility(kase, fo);
+  const FragilityJob job(study);
+  const std::string out = a.out.empty() ? default_out(a.file) : a.out;
+
+  CampaignRunOptions o;
+  o.threads = a.threads ? a.threads : (ranks > 1 ? 1u : 0u);
+  o.resume = a.resume;
+  o.part = rank;
+  o.parts = ranks;
+  o.cancel = &g_cancel;
+  std::signal(SIGINT, on_fragility_signal);
+  std::signal(SIGTERM, on_fragility_signal);
+  if (!a.quiet && rank == 0)
+    std::cerr << "assess fragility: " << study.stripes.size() << " levels, " << job.size() << " analyses";
+  std::string error;
+  CampaignRunSummary s;
+  try {
+    s = run_campaign_job(job, out, o);
+  } catch (const InputError& e) {
+    error = e.what();
+  }
+#if defined(ASSESS_HAVE_MPI)
+  if (mpi) {
+    int bad = error.empty() ? 0 : 1, any = 0;
+    MPI_Allreduce(&bad, &any, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    if (any && error.empty()) error = "another MPI rank failed (see its message)";
+    int mine = s.interrupted ? 1 : 0, anyi = 0;
+    MPI_Allreduce(&mine, &anyi, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    s.interrupted = anyi != 0;
+    double slowest = 0.0;
+    MPI_Reduce(&s.seconds, &slowest, 1, MPI_DOUBLE, MPI_MAX, 0, MPI_COMM_WORLD);
+    s.seconds = slowest;
+  }
+#endif
+  if (!a.quiet && rank == 0) std::cerr << (error.empty() ? ", done in " + std::to_string(s.seconds) + " s\n" : "\n");
+  if (!error.empty()) throw InputError(error);
+  if (s.interrupted)
+    throw InputError("fragility interrupted: the finished analyses are in " + out +
+                     "; run the same command with --resume to continue");
+  if (rank != 0) return;
+  if (ranks > 1) {
+    std::vector<std::string> parts;
+    for (int r = 0; r < ranks; ++r) parts.push_back(campaign_part_path(out, r, ranks));
+    merge_campaign_job_parts(job, parts, campaign_part_path(out, 0, 1));
+    for (const auto& p : parts) std::filesystem::remove(p);
+  }
+  const FragilityResult result = fit_fragility(study, read_fragility_csv(campaign_part_path(out, 0, 1)));
+  const bool plots = !a.no_plots && gnuplot_available();
+  if (!a.no_plots && !plots)
+    std::cerr << "assess: warning: gnuplot not found (Debian package gnuplot-nox): plots skipped\n";
+  const FragilityReportFiles files = write_fragility_report(study, result, out, plots);
+  if (a.json) {
+    std::cout << fragility_to_json(study, result).dump(2) << "\n";
+    return;
+  }
+  std::cout << fragility_text(study, result);
+  if (ranks > 1) std::cout << "run on " << ranks << " MPI ranks\n";
+  std::cout << "results: " << campaign_part_path(out, 0, 1) << "\nsummary: " << files.summary
+            << "\ncurves:  " << files.curves_csv << "\nreport:  " << files.html << "\n";
+}
+
+}  // namespace
+
+void add_fragility_command(CLI::App& app) {
+  auto a = std::make_shared<FragilityArgs>();
+  auto* cmd = app.add_subcommand(
+      "fragility",
+      "Fragility curves of the case's mechanism (multiple-stripe analysis or IDA with the record catalogue) and the "
+      "annual risk of overturning at the site; all cores, resumable, MPI-aware");
+  cmd->add_option("case", a->file, "case file (JSON) with a site and a dynamic section")->required();
+  cmd->add_option("--stripes", a->stripes,
+                  "return periods of the stripes, comma-separated (years, in [30, 2475]; default the nine of the "
+                  "hazard grid)");
+  cmd->add_flag("--ida", a->ida, "incremental dynamic analysis: one record set scaled to each PGA level");
+  cmd->add_option("--ida-levels", a->ida_levels,
+                  "PGA levels of the IDA, comma-separated (g; default 16 from half the 30-year to 3x the 2475-year PGA)");
+  cmd->add_option("--records", a->records, "records per stripe (default: the case's select/count, 7)");
+  cmd->add_option("--bootstrap", a->bootstrap, "bootstrap replicates over records for the bounds (default 500; 0 = none)");
+  cmd->add_option("--seed", a->seed, "seed of the bootstrap (default 1)");
+  cmd->add_option("--out", a->out, "output directory (default CASE.fragility next to the working directory)");
+  cmd->add_option("--threads", a->threads, "worker threads (default: all cores; 1 per rank under mpirun)");
+  cmd->add_flag("--resume", a->resume, "continue the results in --out after their last complete row");
+  cmd->add_flag("--json", a->json, "print the summary as JSON");
+  cmd->add_flag("--quiet", a->quiet, "no progress on stderr");
+  cmd->add_flag("--no-plots", a->no_plots, "no SVG plots in the HTML page");
+  cmd->callback([a] { run(*a); });
+}
+
+}  // namespace assess::cli

@@ -1,0 +1,252 @@
+// fragility_study.cpp: set-up of a fragility analysis (docs/theory/fragility.md §4).
+//
+// The mechanism part mirrors assess_facade (assessment/facade_assessment.cpp):
+// the governing candidate of the kinematic analysis, its rocking body from the
+// chain, one model per restitution value. The records are chosen per stripe
+// with records/record_selection (ScaleRule::Pga: each record's PGA equals the
+// stripe's Se(0), so every analysis of a stripe has exactly the stripe's IM).
+#include "assess/risk/fragility_study.hpp"
+
+#include "assess/hazard/site.hpp"
+#include "assess/records/record_catalogue.hpp"
+#include "assess/records/record_io.hpp"
+#include "assess/records/response_spectrum.hpp"
+#include "assess/support/error.hpp"
+#include "assess/support/units.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace assess {
+
+namespace {
+
+std::string fmt(double v, const char* f = "%.4g") {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+std::string directory_of(const std::string& path) {
+  const auto p = path.find_last_of('/');
+  return p == std::string::npos ? "." : path.substr(0, p);
+}
+
+}  // namespace
+
+std::string to_string(FragilityMethod m) { return m == FragilityMethod::stripes ? "stripes" : "ida"; }
+
+void FragilityOptions::validate() const {
+  for (std::size_t i = 0; i < return_periods.size(); ++i)
+    if (!(return_periods[i] >= tr_min_years && return_periods[i] <= tr_max_years))
+      throw InputError("--stripes: return period " + std::to_string(i + 1) + " (" + fmt(return_periods[i]) +
+                       " years) must lie in [30, 2475] years, the range of the hazard data");
+  for (std::size_t i = 0; i < ida_levels.size(); ++i)
+    if (!(ida_levels[i] > 0.0) || !std::isfinite(ida_levels[i]))
+      throw InputError("--ida-levels: level " + std::to_string(i + 1) + " must be a PGA > 0 (g)");
+  if (records < 0 || records > 1000) throw InputError("--records: expected 0 (the case's count) to 1000 records");
+  if (bootstrap < 0 || bootstrap > 100000) throw InputError("--bootstrap: expected 0 to 100000 replicates");
+  if (!(confidence > 0.0 && confidence < 1.0)) throw InputError("confidence: expected a fraction in (0, 1)");
+}
+
+std::uint64_t FragilityStudy::groups() const {
+  std::uint64_t n = 0;
+  for (const Stripe& s : stripes) n += s.records.size();
+  return n;
+}
+
+std::pair<std::size_t, std::size_t> FragilityStudy::group(std::uint64_t g) const {
+  for (std::size_t i = 0; i < stripes.size(); ++i) {
+    if (g < stripes[i].records.size()) return {i, std::size_t(g)};
+    g -= stripes[i].records.size();
+  }
+  throw InputError("fragility: group " + std::to_string(g) + " out of range");
+}
+
+FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& opt) {
+  opt.validate();
+  FragilityStudy st;
+  st.file = kase.file;
+  st.project = kase.project;
+  st.options = opt;
+  if (!kase.site)
+    throw InputError(kase.file + ": /site: missing: a fragility analysis needs the site's hazard curve (give "
+                     "\"lat\"/\"lon\" or \"island\")");
+  if (kase.dynamic.is_null())
+    throw InputError(kase.file + ": /dynamic: missing: a fragility analysis needs the dynamic section (model, "
+                     "restitution, records or select; docs/user/case-file.md)");
+  const Site site(*kase.site);
+  st.site_description = site.describe();
+  st.VN = kase.site->vn_years;
+  st.VR = site.VR();
+  try {
+    st.hazard = site_pga_hazard_curve(site);
+    st.ag_hazard = site_ag_hazard_curve(site);
+  } catch (const InputError& e) {
+    throw InputError(kase.file + ": /site: " + e.what());
+  }
+  for (LimitState ls : all_limit_states) {
+    st.actions[ls] = site.action(ls);
+    st.action_pga[ls] = ElasticSpectrum(st.actions[ls].hazard, kase.site->conditions, 5.0).Se(0.0);
+  }
+
+  // The mechanism: the governing candidate, as in the façade assessment.
+  const KinematicCaseResult kin = run_kinematic_case(kase);
+  st.checks = kin.checks;
+  const CandidateResult& gov = kin.candidates[kin.governing];
+  st.mechanism = gov.label;
+  st.kinematic = gov.result;
+  st.dynamic = parse_dynamic(kase.dynamic, kase.file, directory_of(kase.file));
+  const DynamicSpec& d = st.dynamic;
+  try {
+    st.body = rocking_body_from_chain(kase.mechanism.candidates[kin.governing].chain);
+  } catch (const InputError& e) {
+    throw InputError(kase.file + ": /mechanism: the dynamic analysis does not apply: " + e.what());
+  }
+  if (gov.Z > 0.0)
+    throw InputError(kase.file + ": /mechanism: the governing mechanism is at height (Z = " + fmt(gov.Z, "%.2f") +
+                     " m): floor accelerograms are not implemented, so the fragility (ground records) does not apply");
+  const Foundation found = d.smooth ? Foundation::winkler(d.k) : Foundation::rigid();
+  for (std::size_t i = 0; i < d.restitutions.size(); ++i) {
+    try {
+      st.models.emplace_back(st.body.body, found, d.sidedness, d.restitutions[i]);
+    } catch (const InputError& e) {
+      throw InputError(kase.file + ": /dynamic/restitution/" + std::to_string(i) + ": " + e.what());
+    }
+    st.restitution_labels.push_back(describe(d.restitutions[i]));
+  }
+  if (d.polarity != Polarity::reversed) st.polarities.push_back(false);
+  if (d.polarity != Polarity::normal) st.polarities.push_back(true);
+
+  const int count = opt.records > 0 ? opt.records : (d.selection ? d.selection->count : 7);
+  const double max_scale = d.selection ? d.selection->max_scale : 5.0;
+  const KinematicResult& k = gov.result;
+  const double T1 = std::min(k.Ts, k.T_SLV), T2 = std::max(k.Ts, k.T_SLV);
+  const PeriodRange range = (d.selection && d.selection->T_min && d.selection->T_max)
+                                ? PeriodRange{*d.selection->T_min, *d.selection->T_max}
+                                : rocking_period_range(T1, T2);
+
+  // The candidate records: the catalogue's design records (or the listed ones for an IDA).
+  const bool listed = !d.selection;
+  std::vector<CandidateInfo> infos;  // event/station grouping of catalogue candidates
+  if (listed && opt.method == FragilityMethod::stripes)
+    throw InputError(kase.file + ": /dynamic/records: a multiple-stripe analysis selects records at each return "
+                     "period from the catalogue: give \"select\" instead of \"records\", or use --ida to scale the "
+                     "listed records");
+  if (listed) {
+    for (const ListedRecord& lr : d.records) {
+      try {
+        st.records.push_back(read_listed_record(lr));
+        st.record_files.push_back(lr.file);
+      } catch (const InputError& e) {
+        throw InputError(kase.file + ": " + lr.json_path + "/file: " + e.what());
+      }
+    }
+  } else {
+    const RecordCatalogue cat = read_catalogue(d.selection->catalogue);
+    for (const CatalogueEntry& e : cat.design_candidates()) {
+      try {
+        st.records.push_back(cat.load(e.id));
+        st.record_files.push_back(cat.directory + "/" + e.file);
+        infos.push_back(candidate_info(e));
+      } catch (const InputError& err) {
+        throw InputError(kase.file + ": /dynamic/select/catalogue: " + e.file + ": " + err.what());
+      }
+    }
+    if (st.records.empty())
+      throw InputError(kase.file + ": /dynamic/select/catalogue: the catalogue has no design record");
+  }
+
+  const SiteConditions& cond = kase.site->conditions;
+  if (opt.method == FragilityMethod::stripes) {
+    std::vector<double> trs = opt.return_periods;
+    if (trs.empty()) trs.assign(grid_return_periods.begin(), grid_return_periods.end());
+    std::sort(trs.begin(), trs.end());
+    trs.erase(std::unique(trs.begin(), trs.end()), trs.end());
+    SelectionOptions so;
+    so.n_records = count;
+    so.max_scale = max_scale;
+    so.range = range;
+    so.scale_rule = ScaleRule::Pga;
+    for (double tr : trs) {
+      const ElasticSpectrum target(site.hazard_at_tr(tr), cond, 5.0);
+      const SelectionResult sel =
+          infos.empty() ? select_records([&target](double T) { return target.Se(T); }, st.records, so)
+                        : select_records([&target](double T) { return target.Se(T); }, st.records, infos, so);
+      Stripe s;
+      s.im = target.Se(0.0);
+      s.TR = tr;
+      s.compatible = sel.band_satisfied;
+      s.selection = sel.message;
+      for (const SelectedRecord& r : sel.records) s.records.push_back({r.index, r.scale});
+      if (s.records.empty())
+        throw InputError(kase.file + ": /dynamic/select: no catalogue record can be scaled to the PGA of the " +
+                         fmt(tr) + "-year stripe (" + fmt(s.im / units::g, "%.3f") + " g) within max_scale " +
+                         fmt(max_scale));
+      st.stripes.push_back(std::move(s));
+    }
+  } else {
+    // The fixed set: listed records, or the selection at SLV (least-squares scaling, as `assess run`).
+    std::vector<std::size_t> set;
+    if (listed) {
+      for (std::size_t i = 0; i < st.records.size(); ++i) set.push_back(i);
+    } else {
+      SelectionOptions so;
+      so.n_records = count;
+      so.max_scale = max_scale;
+      so.range = range;
+      const SelectionResult sel = select_records(ElasticSpectrum(st.actions.at(LimitState::SLV).hazard, cond, 5.0),
+                                                 st.records, so);
+      for (const SelectedRecord& r : sel.records) set.push_back(r.index);
+      if (set.empty()) throw InputError(kase.file + ": /dynamic/select: no compatible record in the catalogue");
+    }
+    std::vector<double> levels = opt.ida_levels;
+    if (levels.empty()) {
+      const double lo = 0.5 * st.hazard->points().front().im, hi = 3.0 * st.hazard->points().back().im;
+      constexpr int n = 16;
+      for (int i = 0; i < n; ++i) levels.push_back(lo * std::pow(hi / lo, double(i) / (n - 1)));
+    }
+    std::sort(levels.begin(), levels.end());
+    levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
+    for (double im : levels) {
+      Stripe s;
+      s.im = im;
+      s.TR = 1.0 / st.hazard->lambda(im);
+      for (std::size_t r : set) {
+        const double pga = st.records[r].pga();
+        if (!(pga > 0.0)) throw InputError(st.record_files[r] + ": the record's PGA is zero: it cannot be scaled");
+        s.records.push_back({r, im / pga});
+      }
+      st.stripes.push_back(std::move(s));
+    }
+  }
+  return st;
+}
+
+MechanismResponse FragilityStudy::respond(const Record& record, double scale, bool reversed,
+                                          std::size_t restitution) const {
+  RockingOptions ro = dynamic.options;
+  ro.record_history = false;
+  ro.scale = scale;
+  ro.reverse = reversed;
+  const RockingResult r = analyse(models.at(restitution), record, ro);
+  MechanismResponse m;
+  m.termination = r.termination;
+  if (!m.ok()) {
+    m.message = r.message.empty() ? to_string(r.termination) : r.message;
+    return m;
+  }
+  m.theta_max = r.theta_max;
+  m.theta_u = r.theta_u;
+  // As in the façade assessment: the control point's peak horizontal
+  // displacement, in the equivalent SDOF [C8.7.1.4].
+  const double d_control = std::fabs(body.horizontal_displacement(kinematic.control_point, r.theta_max));
+  m.d_star = d_control * kinematic.d_star_per_dk;
+  m.dc_energy = r.dc;
+  m.dc_displacement = kinematic.d_SLV > 0 ? m.d_star / kinematic.d_SLV : 0.0;
+  m.overturned = r.overturned;
+  return m;
+}
+
+}  // namespace assess

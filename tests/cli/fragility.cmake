@@ -1,0 +1,68 @@
+# CLI tests of `assess fragility` (issue 16).
+set(_frag_case ${PROJECT_SOURCE_DIR}/tests/data/fragility/free_wall.json)
+set(_frag_out ${PROJECT_BINARY_DIR}/tests/fragility_cli)
+
+add_test(NAME cli.fragility_free_wall
+  COMMAND ${CMAKE_COMMAND} -E env ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}
+          sh -c "rm -rf '${_frag_out}/run' && '$<TARGET_FILE:assess_cli>' fragility '${_frag_case}' --stripes 72,475,2475 --records 3 --bootstrap 50 --out '${_frag_out}/run' --quiet")
+set_tests_properties(cli.fragility_free_wall PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "stripes: 3 levels, 18 analyses \\(0 failed\\).*overturning: .*code: TR SLV 475 years.*report:  .*report.html")
+
+add_test(NAME cli.fragility_json
+  COMMAND ${CMAKE_COMMAND} -E env ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}
+          sh -c "rm -rf '${_frag_out}/json' && '$<TARGET_FILE:assess_cli>' fragility '${_frag_case}' --stripes 72,475,2475 --records 3 --bootstrap 0 --no-plots --out '${_frag_out}/json' --quiet --json")
+set_tests_properties(cli.fragility_json PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "\"code\": \\{.*\"SLV\".*\"curves\": \\[.*\"limit_state\": \"overturning\".*\"hazard_curve\"")
+
+add_test(NAME cli.fragility_threads_identical
+  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:assess_cli> -DCOMMAND=fragility -DCAMPAIGN=${_frag_case} -DOUT=${_frag_out}/threads
+          "-DFIRST_ARGS=--threads;1;--stripes;72,2475;--records;3;--bootstrap;0"
+          "-DSECOND_ARGS=--threads;2;--stripes;72,2475;--records;3;--bootstrap;0"
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/campaign_compare.cmake)
+set_tests_properties(cli.fragility_threads_identical PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "identical results.csv \\(13 lines\\)" ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+
+assess_cli_error_test(fragility_no_dynamic "no_dynamic.json: /dynamic: missing"
+  fragility tests/data/fragility/no_dynamic.json --out ${_frag_out}/bad)
+assess_cli_error_test(fragility_given_hazard "given_hazard.json: /site: .*given per limit state.*no hazard curve"
+  fragility tests/data/fragility/given_hazard.json --out ${_frag_out}/bad)
+assess_cli_error_test(fragility_listed_stripes "listed_records.json: /dynamic/records: a multiple-stripe analysis.*--ida"
+  fragility tests/data/fragility/listed_records.json --out ${_frag_out}/bad)
+assess_cli_error_test(fragility_bad_stripe "--stripes: 'abc' is not a number.*years"
+  fragility tests/data/fragility/free_wall.json --stripes 30,abc --out ${_frag_out}/bad)
+assess_cli_error_test(fragility_stripe_range "--stripes: return period 1 \\(10 years\\) must lie in \\[30, 2475\\] years"
+  fragility tests/data/fragility/free_wall.json --stripes 10 --out ${_frag_out}/bad)
+
+# The HTML page loads in headless Chromium with its 3 plots (fragility,
+# hazard, integrand of the governing fitted curve) and no console error.
+add_test(NAME cli.fragility_html_browser
+  COMMAND sh -c "rm -rf \"$2\" && \"$1\" fragility tests/data/fragility/free_wall.json --stripes 72,475,2475 --records 3 --bootstrap 20 --out \"$2\" --quiet > /dev/null && sh tests/browser/check_html.sh \"$2/report.html\" 3"
+          sh $<TARGET_FILE:assess_cli> ${_frag_out}/html
+  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.fragility_html_browser PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77
+  ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+
+# With MPI: 2 ranks write the same results.csv as one process.
+find_program(ASSESS_MPIRUN mpirun)
+get_target_property(_assess_cli_defs assess_cli COMPILE_DEFINITIONS)
+if(ASSESS_MPIRUN AND "ASSESS_HAVE_MPI=1" IN_LIST _assess_cli_defs)
+  add_test(NAME cli.fragility_mpi_identical
+    COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:assess_cli> -DCOMMAND=fragility -DCAMPAIGN=${_frag_case} -DOUT=${_frag_out}/mpi
+            "-DSECOND=${ASSESS_MPIRUN};--allow-run-as-root;--oversubscribe;-np;2"
+            "-DFIRST_ARGS=--stripes;72,2475;--records;3;--bootstrap;0"
+            "-DSECOND_ARGS=--stripes;72,2475;--records;3;--bootstrap;0"
+            -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/campaign_compare.cmake)
+  set_tests_properties(cli.fragility_mpi_identical PROPERTIES LABELS cli
+    PASS_REGULAR_EXPRESSION "run on 2 MPI ranks.*identical results.csv \\(13 lines\\)" ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+endif()
+
+# `assess run --fragility DIR` adds the fragility line; a fragility of another case is refused.
+add_test(NAME cli.fragility_in_run
+  COMMAND ${CMAKE_COMMAND} -E env ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}
+          sh -c "rm -rf '${_frag_out}/inrun' && '$<TARGET_FILE:assess_cli>' fragility '${_frag_case}' --stripes 72,475,2475 --records 3 --bootstrap 0 --no-plots --out '${_frag_out}/inrun' --quiet > /dev/null && '$<TARGET_FILE:assess_cli>' run '${_frag_case}' --fragility '${_frag_out}/inrun'"
+  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.fragility_in_run PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "NTC2018.*fragility \\(stripes, restitution Housner\\): overturning .*code TR SLV 475 years")
+assess_cli_error_test(fragility_in_run_other_case "summary.json.*belongs to another case"
+  run mechanisms/free_wall_laquila.json --fragility ${_frag_out}/inrun)
+set_tests_properties(cli.fragility_in_run_other_case PROPERTIES DEPENDS cli.fragility_in_run)
