@@ -139,7 +139,7 @@ std::string facade_text(const FacadeAssessment& a, TextWidth width) {
       const int rw = wide ? 34 : 32;  // record column
       // Why each record was chosen: scale, scaled PGA, deviation from the target, rank, Mw, site class,
       // distance and its kind, seconds integrated; the event/station line below (120 columns).
-      o += format("  %-*s %7s %8s %6s %4s %5s %2s %7s %4s %8s\n", rw, "record", "scale", "PGA (g)", "dev", "rank", "Mw",
+      o += format("  %-*s %7s %8s %6s %4s %-5s %2s %7s %4s %8s\n", rw, "record", "scale", "PGA (g)", "dev", "rank", "Mw",
                   "cl", "R (km)", "kind", "used (s)");
       for (const RecordUsed& r : a.records) {
         o += format("  %-*s %7.3f %8.4f %6.3f %4d %5.2f %2s %7.1f %4s %8.1f\n", rw, r.name.c_str(), r.scale, r.pga / g,
