@@ -13,6 +13,8 @@
 #include "assess/campaign/output_lock.hpp"
 #include "assess/support/error.hpp"
 
+#include "campaign/csv_fields.hpp"
+
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -41,49 +43,10 @@ const char* const kColumns[] = {
     "reason"};
 constexpr std::size_t kNumColumns = sizeof(kColumns) / sizeof(kColumns[0]);
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
-
-std::string quoted(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"') out += "\"\"";
-    else if (c == '\n' || c == '\r') out += ' ';
-    else out += c;
-  }
-  return out + "\"";
-}
-
-std::vector<std::string> split_csv(const std::string& line) {
-  std::vector<std::string> f(1);
-  bool q = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (q) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') f.back() += '"', ++i;
-      else if (c == '"') q = false;
-      else f.back() += c;
-    } else if (c == '"') {
-      q = true;
-    } else if (c == ',') {
-      f.emplace_back();
-    } else {
-      f.back() += c;
-    }
-  }
-  return f;
-}
-
-double to_double(const std::string& s) {
-  std::size_t n = 0;
-  const double v = std::stod(s, &n);
-  if (n != s.size()) throw std::invalid_argument(s);
-  return v;
-}
+using csv::num;
+using csv::quoted;
+using csv::to_double;
+const auto& split_csv = csv::split;
 
 struct Task {
   std::uint64_t first, end;
