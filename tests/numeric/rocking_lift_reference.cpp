@@ -299,3 +299,63 @@ TEST_CASE("lift-off from rest: both library paths match an independent RK4 refer
       }
   CHECK(n_cases == 8);
 }
+
+TEST_CASE("lift margin at rest: exactly 0 for a centred smooth block at ug = 0, the closed form otherwise") {
+  // I0 s theta''(0) = -s W (b - b_bed) - s m h ug (ref_lifts above): rigid b_bed = 0, smooth b_bed = b.
+  constexpr double kMarginRelTol = 1e-13;  // rad/s^2, relative (rounding of the closed form)
+  int checked = 0;
+  for (double t : {0.25, 0.45, 0.8})
+    for (double H : {2.0, 3.5, 9.0})
+      for (double k : {0.0, 5e8, 1e10}) {
+        const RockingBody body = RockingBody::rectangle(t, H, 18e3);
+        const double b = 0.5 * t, h = 0.5 * H, W = 18e3 * t * H, m = W / kG, I0 = body.I0;
+        if (k > 0 && !(k > 3 * W * h / (2 * b * b * b))) continue;
+        const RockingModel model(body, k > 0 ? Foundation::winkler(k) : Foundation::rigid(), Sidedness::two_sided,
+                                 k > 0 ? Restitution::none() : Restitution::housner());
+        CAPTURE(t);
+        CAPTURE(H);
+        CAPTURE(k);
+        if (k > 0) {
+          CHECK(model.lift_margin(+1, 0.0) == 0.0);  // no rounding residue: the rising crossing is seen at t = 0
+          CHECK(model.lift_margin(-1, 0.0) == 0.0);
+        }
+        for (double ug : {-3.0, -0.1, 0.0, 0.1, 3.0})
+          for (int s : {+1, -1}) {
+            const double expected = (-(k > 0 ? 0.0 : W * b) - s * m * h * ug) / I0;
+            CHECK_CLOSE(model.lift_margin(s, ug), expected, assess::test::rel_tol(kMarginRelTol));
+            CHECK(model.lifts(s, ug) == (expected > 0.0));
+          }
+        ++checked;
+      }
+  CHECK(checked >= 20);
+}
+
+TEST_CASE("chain equation of motion: trial stages far off stay finite (the step is rejected, not an error)") {
+  // Before: q'' overflowed (q'^2 term, and a double -> long conversion out of range in the
+  // table lookup), so GSL ended the analysis; a finite value lets the error control reject the step.
+  Block lower, upper;  // vertical flexure (M'(q) != 0): lower block on the ground hinge, upper on a slider
+  lower.name = "lower", lower.polygon = {V2(-0.4, 0.0), V2(0.0, 0.0), V2(0.0, 2.4), V2(-0.4, 2.4)};
+  upper.name = "upper", upper.polygon = {V2(-0.4, 2.4), V2(0.0, 2.4), V2(0.0, 4.0), V2(-0.4, 4.0)};
+  lower.unit_weight = upper.unit_weight = 18e3;
+  lower.length = upper.length = 1.0;
+  Constraint g0, hi, top;
+  g0.type = ConstraintType::GroundHinge, g0.block = 0, g0.point = V2(0.0, 0.0);
+  hi.type = ConstraintType::Hinge, hi.block = 0, hi.other = 1, hi.point = V2(-0.4, 2.4);
+  top.type = ConstraintType::Slider, top.block = 1, top.point = V2(0.0, 4.0), top.direction = V2(0.0, 1.0);
+  const Chain flexure({lower, upper}, {g0, hi, top}, {});
+  for (const Chain* chain : {&flexure})
+    for (const Foundation f : {Foundation::rigid(), Foundation::winkler(2e8)}) {
+      const ChainDynamics cd(*chain, f);
+      int n = 0;
+      for (double q : {-1e300, -1e142, -1.0, -1e-3, 0.0, 1e-300, 1e-3, 1.0, 1e142, 1e300})
+        for (double qd : {0.0, 1e150, -1e300})
+          for (bool partial : {false, true})
+            for (int side : {+1, -1}) {
+              CAPTURE(q);
+              CAPTURE(qd);
+              CHECK(std::isfinite(cd.acceleration(q, qd, partial, 5.0, side)));
+              ++n;
+            }
+      CHECK(n == 120);
+    }
+}
