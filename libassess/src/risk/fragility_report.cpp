@@ -98,6 +98,7 @@ json fragility_to_json(const FragilityStudy& st, const FragilityResult& r) {
   j["case_absolute"] = ec ? st.file : abs.lexically_normal().string();
   j["project"] = st.project;
   j["mechanism"] = st.mechanism;
+  j["model"] = st.dynamics.describe();
   j["site"] = st.site_description;
   j["method"] = to_string(st.options.method);
   j["intensity_measure"] = "PGA on the site's ground, Se(0) = ag S (m/s^2)";
@@ -142,6 +143,7 @@ json fragility_to_json(const FragilityStudy& st, const FragilityResult& r) {
 std::string fragility_text(const FragilityStudy& st, const FragilityResult& r) {
   std::ostringstream os;
   os << "fragility of '" << st.mechanism << "' (" << st.file << "), site " << st.site_description << "\n";
+  os << "model: " << st.dynamics.describe() << "\n";
   os << to_string(st.options.method) << ": " << st.stripes.size() << " levels, " << r.analyses << " analyses ("
      << r.failed << " failed); IM = PGA on the site's ground\n";
   for (std::size_t e = 0; e < st.restitutions(); ++e) {
@@ -231,7 +233,8 @@ FragilityReportFiles write_fragility_report(const FragilityStudy& st, const Frag
   // HTML page.
   HtmlReport html("Fragility and annual risk of overturning: " + st.project);
   html.add_heading("Summary");
-  html.add_paragraph("Case " + st.file + ", mechanism '" + st.mechanism + "', site " + st.site_description +
+  html.add_paragraph("Case " + st.file + ", mechanism '" + st.mechanism + "' (" + st.dynamics.describe() +
+                     "), site " + st.site_description +
                      ", VN " + fmt(st.VN, "%.0f") + " years, VR " + fmt(st.VR, "%.0f") + " years. Method: " +
                      (st.options.method == FragilityMethod::stripes
                           ? "multiple-stripe analysis (records compatible with the site spectrum at each return "

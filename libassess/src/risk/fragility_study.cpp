@@ -1,8 +1,9 @@
 // fragility_study.cpp: set-up of a fragility analysis (docs/theory/fragility.md §4).
 //
-// The mechanism part mirrors assess_facade (assessment/facade_assessment.cpp):
-// the governing candidate of the kinematic analysis, its rocking body from the
-// chain, one model per restitution value. The records are chosen per stripe
+// The mechanism part is the one of assess_facade (assessment/facade_assessment.cpp):
+// the governing candidate of the kinematic analysis and its dynamic model from
+// build_mechanism_dynamics (rocking body, or chain model for several blocks;
+// at height the first-mode floor motion, records/floor_motion). The records are chosen per stripe
 // with records/record_selection (ScaleRule::Pga: each record's PGA equals the
 // stripe's Se(0), so every analysis of a stripe has exactly the stripe's IM).
 #include "assess/risk/fragility_study.hpp"
@@ -99,23 +100,19 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
   st.kinematic = gov.result;
   st.dynamic = parse_dynamic(kase.dynamic, kase.file, directory_of(kase.file));
   const DynamicSpec& d = st.dynamic;
-  try {
-    st.body = rocking_body_from_chain(kase.mechanism.candidates[kin.governing].chain);
-  } catch (const InputError& e) {
-    throw InputError(kase.file + ": /mechanism: the dynamic analysis does not apply: " + e.what());
-  }
-  if (gov.Z > 0.0)
-    throw InputError(kase.file + ": /mechanism: the governing mechanism is at height (Z = " + fmt(gov.Z, "%.2f") +
-                     " m): floor accelerograms are not implemented, so the fragility (ground records) does not apply");
-  const Foundation found = d.smooth ? Foundation::winkler(d.k) : Foundation::rigid();
-  for (std::size_t i = 0; i < d.restitutions.size(); ++i) {
-    try {
-      st.models.emplace_back(st.body.body, found, d.sidedness, d.restitutions[i]);
-    } catch (const InputError& e) {
-      throw InputError(kase.file + ": /dynamic/restitution/" + std::to_string(i) + ": " + e.what());
-    }
-    st.restitution_labels.push_back(describe(d.restitutions[i]));
-  }
+  // The IM is the PGA of the ground motion (the hazard curve's): floor motions
+  // given by the user have no hazard curve to scale them to.
+  if (d.floor_input)
+    throw InputError(kase.file + ": /dynamic/input: \"floor\": a fragility scales ground records to the PGA on the "
+                     "site's ground (the hazard curve's intensity measure); floor motions given by the user have no "
+                     "hazard curve: give ground records (at height they are filtered to the floor by the building's "
+                     "first mode, /building)");
+  // The dynamic model of `assess run` (errors name the file and the JSON path).
+  st.dynamics = build_mechanism_dynamics(kase, gov, kase.mechanism.candidates[kin.governing].chain, d);
+  if (!st.dynamics.applies)
+    throw InputError(kase.file + ": /mechanism: the dynamic model does not apply to the governing mechanism '" +
+                     gov.label + "': " + st.dynamics.note + "; a fragility needs its dynamic analyses");
+  for (const Restitution& r : d.restitutions) st.restitution_labels.push_back(describe(r));
   if (d.polarity != Polarity::reversed) st.polarities.push_back(false);
   if (d.polarity != Polarity::normal) st.polarities.push_back(true);
 
@@ -221,16 +218,26 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
       st.stripes.push_back(std::move(s));
     }
   }
+  // At height: the floor motion of every record a stripe uses, once (the
+  // first-mode filter is linear: filter(scale x record) = scale x filter(record)).
+  if (st.dynamics.filter) {
+    std::vector<bool> used(st.records.size(), false);
+    for (const Stripe& s : st.stripes)
+      for (const StripeRecord& r : s.records) used[r.record] = true;
+    st.floor_inputs.resize(st.records.size());
+    for (std::size_t i = 0; i < st.records.size(); ++i)
+      if (used[i]) st.floor_inputs[i] = st.dynamics.input(st.records[i]);
+  }
   return st;
 }
 
-MechanismResponse FragilityStudy::respond(const Record& record, double scale, bool reversed,
+MechanismResponse FragilityStudy::respond(const Record& input, double scale, bool reversed,
                                           std::size_t restitution) const {
   RockingOptions ro = dynamic.options;
   ro.record_history = false;
   ro.scale = scale;
   ro.reverse = reversed;
-  const RockingResult r = analyse(models.at(restitution), record, ro);
+  const RockingResult r = dynamics.analyse(restitution, input, ro);
   MechanismResponse m;
   m.termination = r.termination;
   if (!m.ok()) {
@@ -240,8 +247,9 @@ MechanismResponse FragilityStudy::respond(const Record& record, double scale, bo
   m.theta_max = r.theta_max;
   m.theta_u = r.theta_u;
   // As in the façade assessment: the control point's peak horizontal
-  // displacement, in the equivalent SDOF [C8.7.1.4].
-  const double d_control = std::fabs(body.horizontal_displacement(kinematic.control_point, r.theta_max));
+  // displacement at the peak coordinate (signed by its side), in the
+  // equivalent SDOF [C8.7.1.4].
+  const double d_control = dynamics.control_displacement(kinematic, r.theta_max_side * r.theta_max);
   m.d_star = d_control * kinematic.d_star_per_dk;
   m.dc_energy = r.dc;
   m.dc_displacement = kinematic.d_SLV > 0 ? m.d_star / kinematic.d_SLV : 0.0;
