@@ -102,3 +102,18 @@ assess_cli_error_test(fragility_floor_input_refused
   fragility tests/data/fragility/floor_input.json --ida --out ${_frag_out}/bad)
 assess_cli_error_test(fragility_height_no_building "height_no_building.json: /building: missing"
   fragility tests/data/fragility/height_no_building.json --out ${_frag_out}/bad)
+
+# `assess run --fragility DIR` (issue 16): the additional probabilistic result
+# in the JSON ("fragility": median, beta, lambda_c, return period, P in VN, TR
+# of SLV; equal to summary.json and to their closed forms) and in the HTML
+# relazione (IT and EN box after the verdicts by approach, labelled as not a
+# code check); the terminal within 120 columns.
+find_program(ASSESS_PYTHON3 python3)
+if(ASSESS_PYTHON3)
+  add_test(NAME cli.fragility_in_run_report
+    COMMAND ${ASSESS_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/check_fragility_in_report.py
+            $<TARGET_FILE:assess_cli> tests/data/fragility/free_wall.json ${_frag_out}/in_report
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+  set_tests_properties(cli.fragility_in_run_report PROPERTIES LABELS cli
+    PASS_REGULAR_EXPRESSION "fragility in report: .*: ok" ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+endif()

@@ -397,7 +397,8 @@ json read_fragility_summary(const std::string& dir, const std::string& case_file
 std::string fragility_line(const json& s) {
   try {
     const json& g = s.at("governing");
-    std::string line = "fragility (" + s.at("method").get<std::string>() + ", restitution " +
+    std::string line = "additional probabilistic result, not a code check: fragility (" +
+                       s.at("method").get<std::string>() + ", restitution " +
                        g.at("restitution").get<std::string>() + "): overturning ";
     if (g.contains("return_period_years")) {
       line += "median PGA " + g_units(g.at("theta_m_s2").get<double>()) + " g, beta " +
@@ -413,6 +414,39 @@ std::string fragility_line(const json& s) {
   } catch (const json::exception& e) {
     throw InputError(std::string("fragility summary: missing or malformed key: ") + e.what());
   }
+}
+
+ProbabilisticResult probabilistic_result(const json& s, const std::string& source) {
+  ProbabilisticResult r;
+  r.source = source;
+  try {
+    const json& g = s.at("governing");
+    r.method = s.at("method").get<std::string>();
+    r.model = s.value("model", std::string("rocking body (summary written before the model was recorded)"));
+    r.restitution = g.at("restitution").get<std::string>();
+    r.analyses = s.at("analyses").get<int>();
+    r.failed = s.at("failed").get<int>();
+    r.VN = s.at("VN_years").get<double>();
+    const json& slv = s.at("code").at("SLV");
+    r.TR_SLV = slv.at("TR_years").get<double>();
+    r.pga_SLV = slv.at("pga_m_s2").get<double>();
+    r.has_risk = g.contains("return_period_years");
+    if (r.has_risk) {
+      r.median_pga = g.at("theta_m_s2").get<double>();
+      r.beta = g.at("beta").get<double>();
+      r.lambda = g.at("lambda_per_year").get<double>();
+      r.return_period = g.at("return_period_years").get<double>();
+      r.p_vn = g.at("probability_in_VN").get<double>();
+      // NaN is written as null by nlohmann::json: no value then.
+      if (slv.contains("P_overturning_at_pga") && slv.at("P_overturning_at_pga").is_number())
+        r.p_at_SLV = slv.at("P_overturning_at_pga").get<double>();
+    } else {
+      r.note = g.value("note", g.value("message", std::string("not fitted")));
+    }
+  } catch (const json::exception& e) {
+    throw InputError("'" + source + "': fragility summary: missing or malformed key: " + e.what());
+  }
+  return r;
 }
 
 }  // namespace assess
