@@ -99,6 +99,7 @@ json fragility_to_json(const FragilityStudy& st, const FragilityResult& r) {
   j["project"] = st.project;
   j["mechanism"] = st.mechanism;
   j["model"] = st.dynamics.describe();
+  j["selection_warnings"] = st.selection_warnings;
   j["site"] = st.site_description;
   j["method"] = to_string(st.options.method);
   j["intensity_measure"] = "PGA on the site's ground, Se(0) = ag S (m/s^2)";
@@ -144,6 +145,7 @@ std::string fragility_text(const FragilityStudy& st, const FragilityResult& r) {
   std::ostringstream os;
   os << "fragility of '" << st.mechanism << "' (" << st.file << "), site " << st.site_description << "\n";
   os << "model: " << st.dynamics.describe() << "\n";
+  for (const std::string& w : st.selection_warnings) os << "selection: " << w << "\n";
   os << to_string(st.options.method) << ": " << st.stripes.size() << " levels, " << r.analyses << " analyses ("
      << r.failed << " failed); IM = PGA on the site's ground\n";
   for (std::size_t e = 0; e < st.restitutions(); ++e) {

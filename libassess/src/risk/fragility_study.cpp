@@ -118,6 +118,25 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
 
   const int count = opt.records > 0 ? opt.records : (d.selection ? d.selection->count : 7);
   const double max_scale = d.selection ? d.selection->max_scale : 5.0;
+  // The case's selection limits, as `assess run` (assessment/facade_assessment.cpp,
+  // docs/theory/record-selection.md §2): scale, mean scale, PGA guard, records
+  // per event and per station; the count may be overridden (--records).
+  auto selection_options = [&](ScaleRule rule) {
+    SelectionOptions so;
+    so.n_records = count;
+    so.scale_rule = rule;
+    if (d.selection) {
+      const RecordSelectionSpec& rs = *d.selection;
+      so.max_scale = rs.max_scale;
+      so.max_mean_scale = rs.max_mean_scale;
+      so.max_pga_ratio = rs.max_pga_ratio;
+      so.max_per_event = rs.max_per_event;
+      so.max_per_station = rs.max_per_station;
+    } else {
+      so.max_scale = max_scale;
+    }
+    return so;
+  };
   const KinematicResult& k = gov.result;
   const double T1 = std::min(k.Ts, k.T_SLV), T2 = std::max(k.Ts, k.T_SLV);
   const PeriodRange range = (d.selection && d.selection->T_min && d.selection->T_max)
@@ -141,8 +160,22 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
       }
     }
   } else {
-    const RecordCatalogue cat = read_catalogue(d.selection->catalogue);
-    for (const CatalogueEntry& e : cat.design_candidates()) {
+    const RecordSelectionSpec& rs = *d.selection;
+    const RecordCatalogue cat = read_catalogue(rs.catalogue);
+    // The case's catalogue filters, as `assess run` (record-selection.md §2.1):
+    // Mw and distance windows, site classes (default the site's soil class,
+    // relaxed with a warning), countries.
+    CatalogueFilters filters;
+    if (rs.Mw_min) filters.Mw_min = *rs.Mw_min, filters.Mw_max = *rs.Mw_max, filters.Mw_given = true;
+    if (rs.R_min_km) filters.R_min_km = *rs.R_min_km, filters.R_max_km = *rs.R_max_km, filters.R_given = true;
+    filters.site_classes = rs.site_classes;
+    if (filters.site_classes.empty()) filters.site_classes = {to_string(kase.site->conditions.soil)};
+    filters.relax_site_class = rs.relax_site_class;
+    filters.countries = rs.countries;
+    filters.min_candidates = std::size_t(3 * count);
+    const CatalogueFilterResult fr = filter_catalogue(cat.entries, filters);
+    st.selection_warnings = fr.warnings;
+    for (const CatalogueEntry& e : fr.kept) {
       try {
         st.records.push_back(cat.load(e.id));
         st.record_files.push_back(cat.directory + "/" + e.file);
@@ -152,7 +185,7 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
       }
     }
     if (st.records.empty())
-      throw InputError(kase.file + ": /dynamic/select/catalogue: the catalogue has no design record");
+      throw InputError(kase.file + ": /dynamic/select: no design record of the catalogue passes the filters");
   }
 
   const SiteConditions& cond = kase.site->conditions;
@@ -161,11 +194,8 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
     if (trs.empty()) trs.assign(grid_return_periods.begin(), grid_return_periods.end());
     std::sort(trs.begin(), trs.end());
     trs.erase(std::unique(trs.begin(), trs.end()), trs.end());
-    SelectionOptions so;
-    so.n_records = count;
-    so.max_scale = max_scale;
+    SelectionOptions so = selection_options(ScaleRule::Pga);
     so.range = range;
-    so.scale_rule = ScaleRule::Pga;
     for (double tr : trs) {
       const ElasticSpectrum target(site.hazard_at_tr(tr), cond, 5.0);
       const SelectionResult sel =
@@ -178,9 +208,10 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
       s.selection = sel.message;
       for (const SelectedRecord& r : sel.records) s.records.push_back({r.index, r.scale});
       if (s.records.empty())
-        throw InputError(kase.file + ": /dynamic/select: no catalogue record can be scaled to the PGA of the " +
-                         fmt(tr) + "-year stripe (" + fmt(s.im / units::g, "%.3f") + " g) within max_scale " +
-                         fmt(max_scale));
+        throw InputError(kase.file + ": /dynamic/select: no set of " + std::to_string(count) +
+                         " catalogue records for the " + fmt(tr) + "-year stripe (PGA " +
+                         fmt(s.im / units::g, "%.3f") + " g, max_scale " + fmt(max_scale) + "): " + sel.message +
+                         "; ask for fewer records per stripe (--records, select/count)");
       st.stripes.push_back(std::move(s));
     }
   } else {
@@ -189,12 +220,10 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
     if (listed) {
       for (std::size_t i = 0; i < st.records.size(); ++i) set.push_back(i);
     } else {
-      SelectionOptions so;
-      so.n_records = count;
-      so.max_scale = max_scale;
+      SelectionOptions so = selection_options(SelectionOptions{}.scale_rule);
       so.range = range;
-      const SelectionResult sel = select_records(ElasticSpectrum(st.actions.at(LimitState::SLV).hazard, cond, 5.0),
-                                                 st.records, so);
+      const ElasticSpectrum slv(st.actions.at(LimitState::SLV).hazard, cond, 5.0);
+      const SelectionResult sel = select_records([&slv](double T) { return slv.Se(T); }, st.records, infos, so);
       for (const SelectedRecord& r : sel.records) set.push_back(r.index);
       if (set.empty()) throw InputError(kase.file + ": /dynamic/select: no compatible record in the catalogue");
     }

@@ -112,6 +112,7 @@ struct FragilityStudy {
   /// with it); empty at ground level (the records themselves).
   std::vector<Record> floor_inputs;
   std::vector<Stripe> stripes;               ///< increasing im
+  std::vector<std::string> selection_warnings;  ///< the catalogue filters' warnings (default windows, relaxed class)
 
   /// The motion at the mechanism's base of record i, unscaled: the ground
   /// record, or its floor motion at height.
