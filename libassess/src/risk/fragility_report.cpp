@@ -10,6 +10,7 @@
 #include "assess/support/units.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -71,6 +72,24 @@ json curve_json(const FragilityStudy& st, const FragilityCurve& c) {
   return j;
 }
 
+// FNV-1a 64-bit hash of a file's bytes, as 16 hex digits ("" if unreadable):
+// ties a summary to the case file's content, so that a report does not show
+// the fragility of a case edited since (Fowler, Noll, Vo; offset basis
+// 14695981039346656037, prime 1099511628211).
+std::string file_fnv1a64(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "";
+  std::uint64_t h = 14695981039346656037ull;
+  char c;
+  while (in.get(c)) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 1099511628211ull;
+  }
+  char buf[20];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
 PlotSeries series(std::string name, PlotSeries::Style style) {
   PlotSeries s;
   s.name = std::move(name);
@@ -96,6 +115,7 @@ json fragility_to_json(const FragilityStudy& st, const FragilityResult& r) {
   std::error_code ec;
   const auto abs = std::filesystem::absolute(st.file, ec);
   j["case_absolute"] = ec ? st.file : abs.lexically_normal().string();
+  if (const std::string h = file_fnv1a64(st.file); !h.empty()) j["case_fnv1a64"] = h;
   j["project"] = st.project;
   j["mechanism"] = st.mechanism;
   j["model"] = st.dynamics.describe();
@@ -393,6 +413,11 @@ json read_fragility_summary(const std::string& dir, const std::string& case_file
   if (!std::filesystem::equivalent(of, case_file, ec))
     throw InputError("'" + path + "': /case is '" + j["case"].get<std::string>() + "', not '" + case_file +
                      "': the fragility belongs to another case");
+  if (j.contains("case_fnv1a64") && j["case_fnv1a64"].is_string() &&
+      j["case_fnv1a64"].get<std::string>() != file_fnv1a64(case_file))
+    throw InputError("'" + path + "': the case file '" + case_file +
+                     "' has changed since this fragility was computed (content hash differs): rerun `assess fragility " +
+                     case_file + " --out " + dir + "`");
   return j;
 }
 

@@ -36,9 +36,12 @@ def close(a, b, tol):
 
 
 def main():
-    exe, case, out = sys.argv[1:4]
+    exe, source_case, out = sys.argv[1:4]
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(out)
+    # A copy of the case (edited at the end: a stale result must be refused).
+    case = os.path.join(out, os.path.basename(source_case))
+    shutil.copyfile(source_case, case)
     frag = os.path.join(out, "frag")
     run(exe, "fragility", case, "--stripes", "72,475,2475", "--records", "3", "--bootstrap", "0", "--no-plots",
         "--out", frag, "--quiet")
@@ -101,6 +104,13 @@ def main():
     # Without --fragility (and no CASE.fragility in the working directory) there is no fragility result.
     if "fragility" in json.loads(run(exe, "run", case, "--json")):
         errors.append("JSON without --fragility has a fragility result")
+
+    # The case edited after the fragility: its result is refused, naming the change (exit status 2).
+    with open(case, "a") as f:
+        f.write("\n")
+    p = subprocess.run([exe, "run", case, "--fragility", frag, "--json"], capture_output=True, text=True)
+    if p.returncode != 2 or "has changed since this fragility was computed" not in p.stderr:
+        errors.append(f"edited case: exit {p.returncode}, stderr {p.stderr.strip()!r}")
 
     if errors:
         sys.exit("\n".join(errors))
