@@ -30,6 +30,7 @@
 #include <assess/records/record_io.hpp>
 #include <assess/records/record_selection.hpp>
 #include <assess/records/response_spectrum.hpp>
+#include <assess/records/selection_candidates.hpp>
 #include <assess/records/strong_motion.hpp>
 
 // dynamics

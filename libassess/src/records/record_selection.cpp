@@ -14,9 +14,9 @@
 //   violation      sum_j max(0, 1 - lower_tol - m_j) + max(0, m_j - 1 - upper_tol)
 //   rms            sqrt((1/n) sum_j (m_j - 1)^2)
 #include "assess/records/record_selection.hpp"
+#include "assess/records/selection_candidates.hpp"
 
 #include "assess/support/error.hpp"
-#include "support/parallel_for.hpp"
 #include "assess/records/response_spectrum.hpp"
 #include "assess/support/units.hpp"
 
@@ -86,15 +86,36 @@ double binomial(std::size_t n, std::size_t k) {
 /// Every feasible k-subset of `order` (depth-first, lexicographic in `order`),
 /// with the running sums of the ratios per level; keeps the best. Empty if
 /// no subset satisfies the group and scale limits.
+///
+/// Cost (the result, the set kept and `evaluated` are those of the plain
+/// enumeration, bit for bit): the group limits are tested with per-event and
+/// per-station counters (O(1) per node instead of a pass over the set); the
+/// last member's ratios are added inside the score, and the score of a set
+/// stops as soon as it cannot beat the best: its band violation is a sum of
+/// non-negative terms (a floating-point sum of such terms never decreases),
+/// so a partial violation above the best one is final; and when the partial
+/// violation already equals the best one, a partial sum of squares above the
+/// best's (with a relative margin of 1e-9, far above rounding) means a larger
+/// RMS. Sets are counted in `evaluated` before their score is cut short.
 std::vector<std::size_t> exhaustive_search(const Pool& p, const std::vector<std::size_t>& order, std::size_t k,
                                            double& evaluated) {
   const std::size_t nT = p.r.front().size(), n = order.size();
-  std::vector<std::vector<double>> sums(k + 1, std::vector<double>(nT, 0.0));
-  std::vector<std::size_t> set, best;
+  // Ratios of the pool in search order, one contiguous row per position.
+  std::vector<double> r(n * nT);
+  for (std::size_t q = 0; q < n; ++q)
+    for (std::size_t j = 0; j < nT; ++j) r[q * nT + j] = p.r[order[q]][j];
+  int n_event = 0, n_station = 0;
+  for (std::size_t q = 0; q < n; ++q)
+    n_event = std::max(n_event, p.event[order[q]] + 1), n_station = std::max(n_station, p.station[order[q]] + 1);
+  std::vector<int> in_event(std::size_t(n_event), 0), in_station(std::size_t(n_station), 0);
+  std::vector<double> sums((k + 1) * nT, 0.0);
+  std::vector<std::size_t> best;
   std::vector<double> scale_sum(k + 1, 0.0);
   Score best_score;
+  double best_ss_limit = 0.0;  // best_score.rms^2 nT (1 + 1e-9)
   evaluated = 0.0;
   const double inv = 1.0 / double(k);
+  const double scale_limit = p.max_scale_sum * (1.0 + 1e-12);
   // Iterative DFS: pos[d] = position in `order` chosen at depth d.
   std::vector<std::size_t> pos(k, 0);
   std::size_t d = 0;
@@ -103,32 +124,52 @@ std::vector<std::size_t> exhaustive_search(const Pool& p, const std::vector<std:
     if (pos[d] + (k - d) > n) {  // not enough left at this depth: backtrack
       if (d == 0) break;
       --d;
-      set.pop_back();
+      const std::size_t prev = order[pos[d]];
+      --in_event[std::size_t(p.event[prev])];
+      --in_station[std::size_t(p.station[prev])];
       ++pos[d];
       continue;
     }
     const std::size_t i = order[pos[d]];
-    if (!p.fits(set, i, scale_sum[d])) {
+    if (scale_sum[d] + p.scale[i] > scale_limit || in_event[std::size_t(p.event[i])] >= p.max_event ||
+        in_station[std::size_t(p.station[i])] >= p.max_station) {
       ++pos[d];
       continue;
     }
-    for (std::size_t j = 0; j < nT; ++j) sums[d + 1][j] = sums[d][j] + p.r[i][j];
-    scale_sum[d + 1] = scale_sum[d] + p.scale[i];
-    set.push_back(i);
+    const double* ri = &r[pos[d] * nT];
+    const double* sd = &sums[d * nT];
     if (d + 1 == k) {
+      evaluated += 1.0;
       Score s;
+      bool worse = false;
+      const bool have_best = !best.empty();
       for (std::size_t j = 0; j < nT; ++j) {
-        const double m = sums[k][j] * inv;
+        const double m = (sd[j] + ri[j]) * inv;
         s.violation += std::max(0.0, p.lo - m) + std::max(0.0, m - p.hi);
         s.rms += (m - 1.0) * (m - 1.0);
+        if (have_best && (s.violation > best_score.violation ||
+                          (s.violation == best_score.violation && s.rms > best_ss_limit))) {
+          worse = true;
+          break;
+        }
       }
-      s.rms = std::sqrt(s.rms / double(nT));
-      evaluated += 1.0;
-      if (best.empty() || s.better_than(best_score)) best = set, best_score = s;
-      set.pop_back();
+      if (!worse) {
+        s.rms = std::sqrt(s.rms / double(nT));
+        if (!have_best || s.better_than(best_score)) {
+          best.clear();
+          for (std::size_t q = 0; q < k; ++q) best.push_back(order[pos[q]]);
+          best_score = s;
+          best_ss_limit = s.rms * s.rms * double(nT) * (1.0 + 1e-9);
+        }
+      }
       ++pos[d];
       continue;
     }
+    double* sn = &sums[(d + 1) * nT];
+    for (std::size_t j = 0; j < nT; ++j) sn[j] = sd[j] + ri[j];
+    scale_sum[d + 1] = scale_sum[d] + p.scale[i];
+    ++in_event[std::size_t(p.event[i])];
+    ++in_station[std::size_t(p.station[i])];
     ++d;
     pos[d] = pos[d - 1] + 1;
   }
@@ -242,19 +283,22 @@ std::string to_string(SelectionResult::Status s) {
 
 SelectionResult select_records(const std::function<double(double)>& target,
                                const std::vector<Record>& candidates, const SelectionOptions& opts) {
-  std::vector<CandidateInfo> info(candidates.size());
-  for (std::size_t i = 0; i < candidates.size(); ++i) info[i].event = info[i].station = "#" + std::to_string(i);
-  return select_records(target, candidates, info, opts);
+  return select_records(target, SelectionCandidates(candidates, opts), opts);
 }
 
 SelectionResult select_records(const std::function<double(double)>& target,
                                const std::vector<Record>& candidates, const std::vector<CandidateInfo>& info,
                                const SelectionOptions& opts) {
+  return select_records(target, SelectionCandidates(candidates, info, opts), opts);
+}
+
+SelectionResult select_records(const std::function<double(double)>& target, const SelectionCandidates& cands,
+                               const SelectionOptions& opts) {
   opts.validate();
-  if (candidates.empty()) throw InputError("select_records: no candidate records");
-  if (info.size() != candidates.size()) throw InputError("select_records: one CandidateInfo per candidate");
+  cands.check_compatible(opts);
+  const std::vector<SelectionCandidates::Candidate>& candidates = cands.candidates();
   SelectionResult res;
-  res.periods = log_spaced_periods(opts.range.T_min, opts.range.T_max, opts.n_periods);
+  res.periods = cands.periods();
   for (double T : res.periods) {
     const double se = target(T);
     if (!(se > 0.0) || !std::isfinite(se))
@@ -266,49 +310,43 @@ SelectionResult select_records(const std::function<double(double)>& target,
   if ((opts.scale_rule == ScaleRule::Pga || opts.max_pga_ratio > 0.0) && !(res.target_pga > 0.0))
     throw InputError("select_records: PGA scaling and the PGA guard need Se(0) > 0 (m/s^2)");
 
-  // Per-record limits: usable period, scale factor, scaled PGA.
+  // Per-record limits: usable period, scale factor, scaled PGA. The spectra
+  // are the candidates' unscaled PSA; f S is the scaled record's spectrum.
   const std::size_t nT = res.periods.size();
   std::vector<std::size_t> eligible;
   std::vector<double> scale, dev;
   std::vector<std::vector<double>> ratios, psa;
-  const ResponseOptions ro{opts.damping_ratio, ResponseOptions{}.min_steps_per_period};
-  std::vector<std::size_t> to_compute;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
-    if (info[i].max_usable_period_s < opts.range.T_max) {
+    if (!candidates[i].usable) {
       res.rejected.push_back({i, candidates[i].name, 0.0,
-                              "usable only up to " + fmt(info[i].max_usable_period_s) + " s (1/lowest usable "
-                              "frequency) < T_max = " + fmt(opts.range.T_max) + " s"});
-      continue;
+                              "usable only up to " + fmt(candidates[i].info.max_usable_period_s) +
+                                  " s (1/lowest usable frequency) < T_max = " + fmt(opts.range.T_max) + " s"});
     }
-    to_compute.push_back(i);
   }
-  std::vector<ResponseSpectrum> spectra(to_compute.size());
-  detail::parallel_for(to_compute.size(), [&](std::size_t k) {
-    spectra[k] = response_spectrum(candidates[to_compute[k]], res.periods, ro);
-  });
   std::map<std::string, int> event_id, station_id;
   std::vector<int> ev, st;
-  for (std::size_t k = 0; k < to_compute.size(); ++k) {
-    const std::size_t i = to_compute[k];
-    const ResponseSpectrum& rs = spectra[k];
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (!candidates[i].usable) continue;
+    const std::vector<double>& S = candidates[i].psa;
+    const CandidateInfo& ci = candidates[i].info;
     std::vector<double> rho(nT);
     double sum_log = 0.0;
     bool zero = false;
     for (std::size_t j = 0; j < nT; ++j) {
-      rho[j] = rs.ordinates[j].PSA / res.target[j];
+      rho[j] = S[j] / res.target[j];
       zero = zero || !(rho[j] > 0.0);
       if (!zero) sum_log += std::log(rho[j]);
     }
     double f = 0.0;
     if (opts.scale_rule == ScaleRule::LeastSquares) f = zero ? 0.0 : std::exp(-sum_log / double(nT));
-    else f = candidates[i].pga() > 0.0 ? res.target_pga / candidates[i].pga() : 0.0;
+    else f = candidates[i].pga > 0.0 ? res.target_pga / candidates[i].pga : 0.0;
     if (!(f > 0.0) || f > opts.max_scale) {
       res.rejected.push_back({i, candidates[i].name, f,
                               f > 0.0 ? "scale factor " + fmt(f) + " > max " + fmt(opts.max_scale)
                                       : "zero spectrum"});
       continue;
     }
-    const double spga = f * candidates[i].pga();
+    const double spga = f * candidates[i].pga;
     if (opts.max_pga_ratio > 0.0 && spga > opts.max_pga_ratio * res.target_pga) {
       res.rejected.push_back({i, candidates[i].name, f,
                               "scaled PGA " + fmt(spga / units::g_n) + " g > " + fmt(opts.max_pga_ratio) +
@@ -318,13 +356,13 @@ SelectionResult select_records(const std::function<double(double)>& target,
     double d2 = 0.0;
     for (double& r : rho) r *= f, d2 += (r - 1.0) * (r - 1.0);
     std::vector<double> p(nT);
-    for (std::size_t j = 0; j < nT; ++j) p[j] = f * rs.ordinates[j].PSA;
+    for (std::size_t j = 0; j < nT; ++j) p[j] = f * S[j];
     eligible.push_back(i);
     scale.push_back(f);
     dev.push_back(std::sqrt(d2 / double(nT)));
     ratios.push_back(std::move(rho));
     psa.push_back(std::move(p));
-    const std::string ek = info[i].event, sk = info[i].event + "|" + info[i].station;
+    const std::string ek = ci.event, sk = ci.event + "|" + ci.station;
     ev.push_back(event_id.emplace(ek, int(event_id.size())).first->second);
     st.push_back(station_id.emplace(sk, int(station_id.size())).first->second);
   }
@@ -375,10 +413,10 @@ SelectionResult select_records(const std::function<double(double)>& target,
   res.mean_psa.assign(nT, 0.0);
   for (std::size_t c : chosen) {
     const std::size_t i = eligible[c];
-    res.records.push_back({i, candidates[i].name, scale[c], scale[c] * candidates[i].pga(), dev[c], rank_of[c], psa[c]});
+    res.records.push_back({i, candidates[i].name, scale[c], scale[c] * candidates[i].pga, dev[c], rank_of[c], psa[c]});
     for (std::size_t j = 0; j < nT; ++j) res.mean_psa[j] += psa[c][j] / double(chosen.size());
     res.mean_scale += scale[c] / double(chosen.size());
-    res.max_scaled_pga = std::max(res.max_scaled_pga, scale[c] * candidates[i].pga());
+    res.max_scaled_pga = std::max(res.max_scaled_pga, scale[c] * candidates[i].pga);
   }
   res.min_ratio = 1e300;
   res.max_ratio = 0.0;

@@ -11,6 +11,7 @@
 #include "assess/hazard/site.hpp"
 #include "assess/records/record_catalogue.hpp"
 #include "assess/records/record_io.hpp"
+#include "assess/records/selection_candidates.hpp"
 #include "assess/records/response_spectrum.hpp"
 #include "assess/support/error.hpp"
 #include "assess/support/units.hpp"
@@ -196,11 +197,14 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
     trs.erase(std::unique(trs.begin(), trs.end()), trs.end());
     SelectionOptions so = selection_options(ScaleRule::Pga);
     so.range = range;
+    // The candidates' response spectra at the check periods, once for every
+    // stripe (they do not depend on the target; a scaled record's spectrum is
+    // f times the record's): selection_candidates.hpp.
+    const SelectionCandidates candidates =
+        infos.empty() ? SelectionCandidates(st.records, so) : SelectionCandidates(st.records, infos, so);
     for (double tr : trs) {
       const ElasticSpectrum target(site.hazard_at_tr(tr), cond, 5.0);
-      const SelectionResult sel =
-          infos.empty() ? select_records([&target](double T) { return target.Se(T); }, st.records, so)
-                        : select_records([&target](double T) { return target.Se(T); }, st.records, infos, so);
+      const SelectionResult sel = select_records([&target](double T) { return target.Se(T); }, candidates, so);
       Stripe s;
       s.im = target.Se(0.0);
       s.TR = tr;
