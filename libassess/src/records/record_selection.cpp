@@ -87,16 +87,27 @@ double binomial(std::size_t n, std::size_t k) {
 /// with the running sums of the ratios per level; keeps the best. Empty if
 /// no subset satisfies the group and scale limits.
 ///
-/// Cost (the result, the set kept and `evaluated` are those of the plain
-/// enumeration, bit for bit): the group limits are tested with per-event and
-/// per-station counters (O(1) per node instead of a pass over the set); the
-/// last member's ratios are added inside the score, and the score of a set
-/// stops as soon as it cannot beat the best: its band violation is a sum of
-/// non-negative terms (a floating-point sum of such terms never decreases),
-/// so a partial violation above the best one is final; and when the partial
-/// violation already equals the best one, a partial sum of squares above the
-/// best's (with a relative margin of 1e-9, far above rounding) means a larger
-/// RMS. Sets are counted in `evaluated` before their score is cut short.
+/// The result (the set kept) and `evaluated` (every feasible set, i.e. the
+/// number of k-subsets that pass the group and scale limits) are those of
+/// the plain enumeration, bit for bit; what is saved is arithmetic:
+///  - group limits tested with per-event and per-station counters (O(1));
+///  - a set's score stops as soon as it cannot beat the best: its band
+///    violation is a sum of non-negative terms (a floating-point sum of such
+///    terms never decreases), so a partial violation above the best one is
+///    final; when the partial violation equals the best one, a partial sum of
+///    squares above the best's (relative margin 1e-9) means a larger RMS;
+///  - a subtree (the sets sharing the first members chosen so far) whose
+///    every completion is provably worse than the best is only counted, not
+///    scored: with c members left to choose from positions q.., the final
+///    sum of ratios at T_j lies between the current sum plus the c smallest
+///    and plus the c largest ratios at T_j among those positions (group and
+///    scale limits ignored: a wider interval), which bounds m_j, hence the
+///    violation and (m_j - 1)^2 from below. A subtree is cut only when the
+///    bound exceeds the best by a margin of 1e-9 (absolute on the violation,
+///    relative on the sum of squares), far above the round-off of the sums
+///    (~1e-13), so no set that the plain enumeration would keep is skipped;
+///    the RMS bound is used only once a set inside the band is known
+///    (violation 0), when no completion can have a smaller violation.
 std::vector<std::size_t> exhaustive_search(const Pool& p, const std::vector<std::size_t>& order, std::size_t k,
                                            double& evaluated) {
   const std::size_t nT = p.r.front().size(), n = order.size();
@@ -104,6 +115,25 @@ std::vector<std::size_t> exhaustive_search(const Pool& p, const std::vector<std:
   std::vector<double> r(n * nT);
   for (std::size_t q = 0; q < n; ++q)
     for (std::size_t j = 0; j < nT; ++j) r[q * nT + j] = p.r[order[q]][j];
+  // low/high[(q (k+1) + c) nT + j]: sum of the c smallest / largest ratios at
+  // T_j among positions q..n-1 (c <= n - q; unused entries stay 0).
+  std::vector<double> low((n + 1) * (k + 1) * nT, 0.0), high((n + 1) * (k + 1) * nT, 0.0);
+  {
+    std::vector<double> col;
+    for (std::size_t q = 0; q < n; ++q)
+      for (std::size_t j = 0; j < nT; ++j) {
+        col.clear();
+        for (std::size_t t = q; t < n; ++t) col.push_back(r[t * nT + j]);
+        std::sort(col.begin(), col.end());
+        double lo_sum = 0.0, hi_sum = 0.0;
+        for (std::size_t c = 1; c <= std::min(k, col.size()); ++c) {
+          lo_sum += col[c - 1];
+          hi_sum += col[col.size() - c];
+          low[(q * (k + 1) + c) * nT + j] = lo_sum;
+          high[(q * (k + 1) + c) * nT + j] = hi_sum;
+        }
+      }
+  }
   int n_event = 0, n_station = 0;
   for (std::size_t q = 0; q < n; ++q)
     n_event = std::max(n_event, p.event[order[q]] + 1), n_station = std::max(n_station, p.station[order[q]] + 1);
@@ -113,12 +143,36 @@ std::vector<std::size_t> exhaustive_search(const Pool& p, const std::vector<std:
   std::vector<double> scale_sum(k + 1, 0.0);
   Score best_score;
   double best_ss_limit = 0.0;  // best_score.rms^2 nT (1 + 1e-9)
+  constexpr double margin = 1e-9;
   evaluated = 0.0;
   const double inv = 1.0 / double(k);
   const double scale_limit = p.max_scale_sum * (1.0 + 1e-12);
-  // Iterative DFS: pos[d] = position in `order` chosen at depth d.
+  // Can no completion of the first d + 1 members (sums at level d + 1, next
+  // position q) beat the best? (see above)
+  auto subtree_worse = [&](std::size_t d, std::size_t q) {
+    if (best.empty()) return false;
+    const std::size_t c = k - d - 1;
+    const double* sn = &sums[(d + 1) * nT];
+    const double* lo_c = &low[(q * (k + 1) + c) * nT];
+    const double* hi_c = &high[(q * (k + 1) + c) * nT];
+    const bool use_rms = best_score.violation == 0.0;
+    double v = 0.0, ss = 0.0;
+    for (std::size_t j = 0; j < nT; ++j) {
+      const double m_lo = (sn[j] + lo_c[j]) * inv, m_hi = (sn[j] + hi_c[j]) * inv;
+      v += std::max(0.0, p.lo - m_hi) + std::max(0.0, m_lo - p.hi);
+      if (v > best_score.violation + margin) return true;
+      if (use_rms) {
+        const double e = m_lo > 1.0 ? m_lo - 1.0 : (m_hi < 1.0 ? 1.0 - m_hi : 0.0);
+        ss += e * e;
+        if (ss > best_ss_limit * (1.0 + margin)) return true;
+      }
+    }
+    return false;
+  };
+  // Iterative DFS: pos[d] = position in `order` chosen at depth d. Depths
+  // >= count_only are inside a cut subtree: feasible sets counted, not scored.
   std::vector<std::size_t> pos(k, 0);
-  std::size_t d = 0;
+  std::size_t d = 0, count_only = k;
   pos[0] = 0;
   while (true) {
     if (pos[d] + (k - d) > n) {  // not enough left at this depth: backtrack
@@ -127,6 +181,7 @@ std::vector<std::size_t> exhaustive_search(const Pool& p, const std::vector<std:
       const std::size_t prev = order[pos[d]];
       --in_event[std::size_t(p.event[prev])];
       --in_station[std::size_t(p.station[prev])];
+      if (count_only > d) count_only = k;
       ++pos[d];
       continue;
     }
@@ -136,40 +191,47 @@ std::vector<std::size_t> exhaustive_search(const Pool& p, const std::vector<std:
       ++pos[d];
       continue;
     }
-    const double* ri = &r[pos[d] * nT];
-    const double* sd = &sums[d * nT];
     if (d + 1 == k) {
       evaluated += 1.0;
-      Score s;
-      bool worse = false;
-      const bool have_best = !best.empty();
-      for (std::size_t j = 0; j < nT; ++j) {
-        const double m = (sd[j] + ri[j]) * inv;
-        s.violation += std::max(0.0, p.lo - m) + std::max(0.0, m - p.hi);
-        s.rms += (m - 1.0) * (m - 1.0);
-        if (have_best && (s.violation > best_score.violation ||
-                          (s.violation == best_score.violation && s.rms > best_ss_limit))) {
-          worse = true;
-          break;
+      if (count_only == k) {
+        const double* ri = &r[pos[d] * nT];
+        const double* sd = &sums[d * nT];
+        Score s;
+        bool worse = false;
+        const bool have_best = !best.empty();
+        for (std::size_t j = 0; j < nT; ++j) {
+          const double m = (sd[j] + ri[j]) * inv;
+          s.violation += std::max(0.0, p.lo - m) + std::max(0.0, m - p.hi);
+          s.rms += (m - 1.0) * (m - 1.0);
+          if (have_best && (s.violation > best_score.violation ||
+                            (s.violation == best_score.violation && s.rms > best_ss_limit))) {
+            worse = true;
+            break;
+          }
         }
-      }
-      if (!worse) {
-        s.rms = std::sqrt(s.rms / double(nT));
-        if (!have_best || s.better_than(best_score)) {
-          best.clear();
-          for (std::size_t q = 0; q < k; ++q) best.push_back(order[pos[q]]);
-          best_score = s;
-          best_ss_limit = s.rms * s.rms * double(nT) * (1.0 + 1e-9);
+        if (!worse) {
+          s.rms = std::sqrt(s.rms / double(nT));
+          if (!have_best || s.better_than(best_score)) {
+            best.clear();
+            for (std::size_t q = 0; q < k; ++q) best.push_back(order[pos[q]]);
+            best_score = s;
+            best_ss_limit = s.rms * s.rms * double(nT) * (1.0 + margin);
+          }
         }
       }
       ++pos[d];
       continue;
     }
-    double* sn = &sums[(d + 1) * nT];
-    for (std::size_t j = 0; j < nT; ++j) sn[j] = sd[j] + ri[j];
     scale_sum[d + 1] = scale_sum[d] + p.scale[i];
     ++in_event[std::size_t(p.event[i])];
     ++in_station[std::size_t(p.station[i])];
+    if (count_only == k) {
+      const double* ri = &r[pos[d] * nT];
+      const double* sd = &sums[d * nT];
+      double* sn = &sums[(d + 1) * nT];
+      for (std::size_t j = 0; j < nT; ++j) sn[j] = sd[j] + ri[j];
+      if (subtree_worse(d, pos[d] + 1)) count_only = d + 1;
+    }
     ++d;
     pos[d] = pos[d - 1] + 1;
   }
