@@ -83,162 +83,6 @@ double binomial(std::size_t n, std::size_t k) {
   return std::round(c);
 }
 
-/// Every feasible k-subset of `order` (depth-first, lexicographic in `order`),
-/// with the running sums of the ratios per level; keeps the best. Empty if
-/// no subset satisfies the group and scale limits.
-///
-/// The result (the set kept) and `evaluated` (every feasible set, i.e. the
-/// number of k-subsets that pass the group and scale limits) are those of
-/// the plain enumeration, bit for bit; what is saved is arithmetic:
-///  - group limits tested with per-event and per-station counters (O(1));
-///  - a set's score stops as soon as it cannot beat the best: its band
-///    violation is a sum of non-negative terms (a floating-point sum of such
-///    terms never decreases), so a partial violation above the best one is
-///    final; when the partial violation equals the best one, a partial sum of
-///    squares above the best's (relative margin 1e-9) means a larger RMS;
-///  - a subtree (the sets sharing the first members chosen so far) whose
-///    every completion is provably worse than the best is only counted, not
-///    scored: with c members left to choose from positions q.., the final
-///    sum of ratios at T_j lies between the current sum plus the c smallest
-///    and plus the c largest ratios at T_j among those positions (group and
-///    scale limits ignored: a wider interval), which bounds m_j, hence the
-///    violation and (m_j - 1)^2 from below. A subtree is cut only when the
-///    bound exceeds the best by a margin of 1e-9 (absolute on the violation,
-///    relative on the sum of squares), far above the round-off of the sums
-///    (~1e-13), so no set that the plain enumeration would keep is skipped;
-///    the RMS bound is used only once a set inside the band is known
-///    (violation 0), when no completion can have a smaller violation.
-std::vector<std::size_t> exhaustive_search(const Pool& p, const std::vector<std::size_t>& order, std::size_t k,
-                                           double& evaluated) {
-  const std::size_t nT = p.r.front().size(), n = order.size();
-  // Ratios of the pool in search order, one contiguous row per position.
-  std::vector<double> r(n * nT);
-  for (std::size_t q = 0; q < n; ++q)
-    for (std::size_t j = 0; j < nT; ++j) r[q * nT + j] = p.r[order[q]][j];
-  // low/high[(q (k+1) + c) nT + j]: sum of the c smallest / largest ratios at
-  // T_j among positions q..n-1 (c <= n - q; unused entries stay 0).
-  std::vector<double> low((n + 1) * (k + 1) * nT, 0.0), high((n + 1) * (k + 1) * nT, 0.0);
-  {
-    std::vector<double> col;
-    for (std::size_t q = 0; q < n; ++q)
-      for (std::size_t j = 0; j < nT; ++j) {
-        col.clear();
-        for (std::size_t t = q; t < n; ++t) col.push_back(r[t * nT + j]);
-        std::sort(col.begin(), col.end());
-        double lo_sum = 0.0, hi_sum = 0.0;
-        for (std::size_t c = 1; c <= std::min(k, col.size()); ++c) {
-          lo_sum += col[c - 1];
-          hi_sum += col[col.size() - c];
-          low[(q * (k + 1) + c) * nT + j] = lo_sum;
-          high[(q * (k + 1) + c) * nT + j] = hi_sum;
-        }
-      }
-  }
-  int n_event = 0, n_station = 0;
-  for (std::size_t q = 0; q < n; ++q)
-    n_event = std::max(n_event, p.event[order[q]] + 1), n_station = std::max(n_station, p.station[order[q]] + 1);
-  std::vector<int> in_event(std::size_t(n_event), 0), in_station(std::size_t(n_station), 0);
-  std::vector<double> sums((k + 1) * nT, 0.0);
-  std::vector<std::size_t> best;
-  std::vector<double> scale_sum(k + 1, 0.0);
-  Score best_score;
-  double best_ss_limit = 0.0;  // best_score.rms^2 nT (1 + 1e-9)
-  constexpr double margin = 1e-9;
-  evaluated = 0.0;
-  const double inv = 1.0 / double(k);
-  const double scale_limit = p.max_scale_sum * (1.0 + 1e-12);
-  // Can no completion of the first d + 1 members (sums at level d + 1, next
-  // position q) beat the best? (see above)
-  auto subtree_worse = [&](std::size_t d, std::size_t q) {
-    if (best.empty()) return false;
-    const std::size_t c = k - d - 1;
-    const double* sn = &sums[(d + 1) * nT];
-    const double* lo_c = &low[(q * (k + 1) + c) * nT];
-    const double* hi_c = &high[(q * (k + 1) + c) * nT];
-    const bool use_rms = best_score.violation == 0.0;
-    double v = 0.0, ss = 0.0;
-    for (std::size_t j = 0; j < nT; ++j) {
-      const double m_lo = (sn[j] + lo_c[j]) * inv, m_hi = (sn[j] + hi_c[j]) * inv;
-      v += std::max(0.0, p.lo - m_hi) + std::max(0.0, m_lo - p.hi);
-      if (v > best_score.violation + margin) return true;
-      if (use_rms) {
-        const double e = m_lo > 1.0 ? m_lo - 1.0 : (m_hi < 1.0 ? 1.0 - m_hi : 0.0);
-        ss += e * e;
-        if (ss > best_ss_limit * (1.0 + margin)) return true;
-      }
-    }
-    return false;
-  };
-  // Iterative DFS: pos[d] = position in `order` chosen at depth d. Depths
-  // >= count_only are inside a cut subtree: feasible sets counted, not scored.
-  std::vector<std::size_t> pos(k, 0);
-  std::size_t d = 0, count_only = k;
-  pos[0] = 0;
-  while (true) {
-    if (pos[d] + (k - d) > n) {  // not enough left at this depth: backtrack
-      if (d == 0) break;
-      --d;
-      const std::size_t prev = order[pos[d]];
-      --in_event[std::size_t(p.event[prev])];
-      --in_station[std::size_t(p.station[prev])];
-      if (count_only > d) count_only = k;
-      ++pos[d];
-      continue;
-    }
-    const std::size_t i = order[pos[d]];
-    if (scale_sum[d] + p.scale[i] > scale_limit || in_event[std::size_t(p.event[i])] >= p.max_event ||
-        in_station[std::size_t(p.station[i])] >= p.max_station) {
-      ++pos[d];
-      continue;
-    }
-    if (d + 1 == k) {
-      evaluated += 1.0;
-      if (count_only == k) {
-        const double* ri = &r[pos[d] * nT];
-        const double* sd = &sums[d * nT];
-        Score s;
-        bool worse = false;
-        const bool have_best = !best.empty();
-        for (std::size_t j = 0; j < nT; ++j) {
-          const double m = (sd[j] + ri[j]) * inv;
-          s.violation += std::max(0.0, p.lo - m) + std::max(0.0, m - p.hi);
-          s.rms += (m - 1.0) * (m - 1.0);
-          if (have_best && (s.violation > best_score.violation ||
-                            (s.violation == best_score.violation && s.rms > best_ss_limit))) {
-            worse = true;
-            break;
-          }
-        }
-        if (!worse) {
-          s.rms = std::sqrt(s.rms / double(nT));
-          if (!have_best || s.better_than(best_score)) {
-            best.clear();
-            for (std::size_t q = 0; q < k; ++q) best.push_back(order[pos[q]]);
-            best_score = s;
-            best_ss_limit = s.rms * s.rms * double(nT) * (1.0 + margin);
-          }
-        }
-      }
-      ++pos[d];
-      continue;
-    }
-    scale_sum[d + 1] = scale_sum[d] + p.scale[i];
-    ++in_event[std::size_t(p.event[i])];
-    ++in_station[std::size_t(p.station[i])];
-    if (count_only == k) {
-      const double* ri = &r[pos[d] * nT];
-      const double* sd = &sums[d * nT];
-      double* sn = &sums[(d + 1) * nT];
-      for (std::size_t j = 0; j < nT; ++j) sn[j] = sd[j] + ri[j];
-      if (subtree_worse(d, pos[d] + 1)) count_only = d + 1;
-    }
-    ++d;
-    pos[d] = pos[d - 1] + 1;
-  }
-  std::sort(best.begin(), best.end());
-  return best;
-}
-
 /// Greedy forward selection, then best-improvement swaps until none helps
 /// (feasible moves only).
 std::vector<std::size_t> greedy_search(const Pool& p, const std::vector<std::size_t>& order, std::size_t k,
@@ -291,6 +135,202 @@ std::vector<std::size_t> greedy_search(const Pool& p, const std::vector<std::siz
   }
   std::sort(set.begin(), set.end());
   return set;
+}
+
+/// Every feasible k-subset of `order` (depth-first, lexicographic in `order`),
+/// with the running sums of the ratios per level; keeps the best. Empty if
+/// no subset satisfies the group and scale limits.
+///
+/// The result (the set kept) and `evaluated` (every feasible set, i.e. the
+/// number of k-subsets that pass the group and scale limits) are those of
+/// the plain enumeration, bit for bit; what is saved is arithmetic:
+///  - group limits tested with per-event and per-station counters (O(1));
+///  - a set's score stops as soon as it cannot beat the best: its band
+///    violation is a sum of non-negative terms (a floating-point sum of such
+///    terms never decreases), so a partial violation above the best one is
+///    final; when the partial violation equals the best one, a partial sum of
+///    squares above the best's (relative margin 1e-9) means a larger RMS;
+///  - a subtree (the sets sharing the first members chosen so far) whose
+///    every completion is provably worse than the best is only counted, not
+///    scored: with c members left to choose from positions q.., the final
+///    sum of ratios at T_j lies between the current sum plus the c smallest
+///    and plus the c largest ratios at T_j among those positions (group and
+///    scale limits ignored: a wider interval), which bounds m_j, hence the
+///    violation and (m_j - 1)^2 from below. A subtree is cut only when the
+///    bound exceeds the best by a margin of 1e-9 (absolute on the violation,
+///    relative on the sum of squares), far above the round-off of the sums
+///    (~1e-13), so no set that the plain enumeration would keep is skipped;
+///    the RMS bound is used only once a set inside the band is known
+///    (violation 0), when no completion can have a smaller violation;
+///  - the first bound is the score of the greedy set (greedy_search), computed
+///    with the enumeration's own arithmetic, so it is exactly the score the
+///    enumeration gives that feasible set: sets as good as it are still
+///    scored and the first best in lexicographic order is the one kept.
+std::vector<std::size_t> exhaustive_search(const Pool& p, const std::vector<std::size_t>& order, std::size_t k,
+                                           double& evaluated) {
+  const std::size_t nT = p.r.front().size(), n = order.size();
+  // Ratios of the pool in search order, one contiguous row per position.
+  std::vector<double> r(n * nT);
+  for (std::size_t q = 0; q < n; ++q)
+    for (std::size_t j = 0; j < nT; ++j) r[q * nT + j] = p.r[order[q]][j];
+  // low/high[(q (k+1) + c) nT + j]: sum of the c smallest / largest ratios at
+  // T_j among positions q..n-1 (c <= n - q; unused entries stay 0).
+  std::vector<double> low((n + 1) * (k + 1) * nT, 0.0), high((n + 1) * (k + 1) * nT, 0.0);
+  {
+    std::vector<double> col;
+    for (std::size_t q = 0; q < n; ++q)
+      for (std::size_t j = 0; j < nT; ++j) {
+        col.clear();
+        for (std::size_t t = q; t < n; ++t) col.push_back(r[t * nT + j]);
+        std::sort(col.begin(), col.end());
+        double lo_sum = 0.0, hi_sum = 0.0;
+        for (std::size_t c = 1; c <= std::min(k, col.size()); ++c) {
+          lo_sum += col[c - 1];
+          hi_sum += col[col.size() - c];
+          low[(q * (k + 1) + c) * nT + j] = lo_sum;
+          high[(q * (k + 1) + c) * nT + j] = hi_sum;
+        }
+      }
+  }
+  // Scale factor, event and station of each position (contiguous).
+  std::vector<double> scale_at(n);
+  std::vector<std::size_t> event_at(n), station_at(n);
+  std::size_t n_event = 0, n_station = 0;
+  for (std::size_t q = 0; q < n; ++q) {
+    scale_at[q] = p.scale[order[q]];
+    event_at[q] = std::size_t(p.event[order[q]]);
+    station_at[q] = std::size_t(p.station[order[q]]);
+    n_event = std::max(n_event, event_at[q] + 1), n_station = std::max(n_station, station_at[q] + 1);
+  }
+  std::vector<int> in_event(n_event, 0), in_station(n_station, 0);
+  const int max_event = p.max_event, max_station = p.max_station;
+  std::vector<double> sums((k + 1) * nT, 0.0);
+  std::vector<std::size_t> best;
+  std::vector<double> scale_sum(k + 1, 0.0);
+  Score best_score;
+  double best_ss_limit = 0.0;  // best_score.rms^2 nT (1 + 1e-9)
+  constexpr double margin = 1e-9;
+  evaluated = 0.0;
+  const double inv = 1.0 / double(k);
+  // A bound before the first set: the greedy set's score (greedy_search,
+  // cheap), computed with the enumeration's own arithmetic (ratios added in
+  // position order from 0, then times 1/k), i.e. exactly the score the
+  // enumeration gives that feasible set. Sets provably worse than it are not
+  // scored; sets as good are, so the first best in lexicographic order is
+  // still the one kept.
+  bool have_bound = false;
+  {
+    double unused = 0.0;
+    std::vector<std::size_t> g = greedy_search(p, order, k, unused);
+    if (g.size() == k) {
+      std::vector<std::size_t> gpos;
+      for (std::size_t q = 0; q < n; ++q)
+        if (std::find(g.begin(), g.end(), order[q]) != g.end()) gpos.push_back(q);
+      std::vector<double> acc(nT, 0.0);
+      for (std::size_t q : gpos)
+        for (std::size_t j = 0; j < nT; ++j) acc[j] = acc[j] + r[q * nT + j];
+      Score sg;
+      for (std::size_t j = 0; j < nT; ++j) {
+        const double m = acc[j] * inv;
+        sg.violation += std::max(0.0, p.lo - m) + std::max(0.0, m - p.hi);
+        sg.rms += (m - 1.0) * (m - 1.0);
+      }
+      sg.rms = std::sqrt(sg.rms / double(nT));
+      best_score = sg;
+      best_ss_limit = sg.rms * sg.rms * double(nT) * (1.0 + margin);
+      have_bound = true;
+    }
+  }
+  const double scale_limit = p.max_scale_sum * (1.0 + 1e-12);
+  // Can no completion of the first d + 1 members (sums at level d + 1, next
+  // position q) beat the best? (see above)
+  auto subtree_worse = [&](std::size_t d, std::size_t q) {
+    if (!have_bound) return false;
+    const std::size_t c = k - d - 1;
+    const double* sn = &sums[(d + 1) * nT];
+    const double* lo_c = &low[(q * (k + 1) + c) * nT];
+    const double* hi_c = &high[(q * (k + 1) + c) * nT];
+    const bool use_rms = best_score.violation == 0.0;
+    double v = 0.0, ss = 0.0;
+    for (std::size_t j = 0; j < nT; ++j) {
+      const double m_lo = (sn[j] + lo_c[j]) * inv, m_hi = (sn[j] + hi_c[j]) * inv;
+      v += std::max(0.0, p.lo - m_hi) + std::max(0.0, m_lo - p.hi);
+      if (v > best_score.violation + margin) return true;
+      if (use_rms) {
+        const double e = m_lo > 1.0 ? m_lo - 1.0 : (m_hi < 1.0 ? 1.0 - m_hi : 0.0);
+        ss += e * e;
+        if (ss > best_ss_limit * (1.0 + margin)) return true;
+      }
+    }
+    return false;
+  };
+  // Iterative DFS: pos[d] = position in `order` chosen at depth d. Depths
+  // >= count_only are inside a cut subtree: feasible sets counted, not scored.
+  std::vector<std::size_t> pos(k, 0);
+  std::size_t d = 0, count_only = k;
+  pos[0] = 0;
+  while (true) {
+    if (pos[d] + (k - d) > n) {  // not enough left at this depth: backtrack
+      if (d == 0) break;
+      --d;
+      --in_event[event_at[pos[d]]];
+      --in_station[station_at[pos[d]]];
+      if (count_only > d) count_only = k;
+      ++pos[d];
+      continue;
+    }
+    const std::size_t q = pos[d];
+    if (scale_sum[d] + scale_at[q] > scale_limit || in_event[event_at[q]] >= max_event ||
+        in_station[station_at[q]] >= max_station) {
+      ++pos[d];
+      continue;
+    }
+    if (d + 1 == k) {
+      evaluated += 1.0;
+      if (count_only == k) {
+        const double* ri = &r[q * nT];
+        const double* sd = &sums[d * nT];
+        Score s;
+        bool worse = false;
+        for (std::size_t j = 0; j < nT; ++j) {
+          const double m = (sd[j] + ri[j]) * inv;
+          s.violation += std::max(0.0, p.lo - m) + std::max(0.0, m - p.hi);
+          s.rms += (m - 1.0) * (m - 1.0);
+          if (have_bound && (s.violation > best_score.violation ||
+                            (s.violation == best_score.violation && s.rms > best_ss_limit))) {
+            worse = true;
+            break;
+          }
+        }
+        if (!worse) {
+          s.rms = std::sqrt(s.rms / double(nT));
+          if (best.empty() || s.better_than(best_score)) {
+            have_bound = true;
+            best.clear();
+            for (std::size_t t = 0; t < k; ++t) best.push_back(order[pos[t]]);
+            best_score = s;
+            best_ss_limit = s.rms * s.rms * double(nT) * (1.0 + margin);
+          }
+        }
+      }
+      ++pos[d];
+      continue;
+    }
+    scale_sum[d + 1] = scale_sum[d] + scale_at[q];
+    ++in_event[event_at[q]];
+    ++in_station[station_at[q]];
+    if (count_only == k) {
+      const double* ri = &r[q * nT];
+      const double* sd = &sums[d * nT];
+      double* sn = &sums[(d + 1) * nT];
+      for (std::size_t j = 0; j < nT; ++j) sn[j] = sd[j] + ri[j];
+      if (subtree_worse(d, q + 1)) count_only = d + 1;
+    }
+    ++d;
+    pos[d] = pos[d - 1] + 1;
+  }
+  std::sort(best.begin(), best.end());
+  return best;
 }
 
 std::string fmt(double x, int prec = 3) {
