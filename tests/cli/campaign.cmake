@@ -28,7 +28,8 @@ if(ASSESS_MPIRUN AND "ASSESS_HAVE_MPI=1" IN_LIST _assess_cli_defs)
     COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:assess_cli> -DCAMPAIGN=${_campaign_tiny} -DOUT=${_campaign_out}/mpi
             "-DSECOND=${ASSESS_MPIRUN};--allow-run-as-root;--oversubscribe;-np;2"
             -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/campaign_compare.cmake)
-  set_tests_properties(cli.campaign_mpi_identical PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "on 2 MPI ranks.*identical results.csv \\(49 lines\\)")
+  set_tests_properties(cli.campaign_mpi_identical PROPERTIES LABELS cli PASS_REGULAR_EXPRESSION "on 2 MPI ranks.*identical results.csv \\(49 lines\\)"
+    ENVIRONMENT_MODIFICATION "${ASSESS_MPI_TEST_ENV}")
 endif()
 
 # Unperturbed campaign rows equal single `assess rocking` runs.

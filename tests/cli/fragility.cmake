@@ -53,7 +53,8 @@ if(ASSESS_MPIRUN AND "ASSESS_HAVE_MPI=1" IN_LIST _assess_cli_defs)
             "-DSECOND_ARGS=--stripes;72,2475;--records;3;--bootstrap;0"
             -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/campaign_compare.cmake)
   set_tests_properties(cli.fragility_mpi_identical PROPERTIES LABELS cli
-    PASS_REGULAR_EXPRESSION "run on 2 MPI ranks.*identical results.csv \\(13 lines\\)" ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+    PASS_REGULAR_EXPRESSION "run on 2 MPI ranks.*identical results.csv \\(13 lines\\)" ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}"
+    ENVIRONMENT_MODIFICATION "${ASSESS_MPI_TEST_ENV}")
 endif()
 
 # `assess run --fragility DIR` adds the fragility line; a fragility of another case is refused.

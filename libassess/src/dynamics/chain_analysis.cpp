@@ -11,6 +11,7 @@
 #include "assess/dynamics/chain_analysis.hpp"
 
 #include "assess/support/error.hpp"
+#include "dynamics/integration_run.hpp"
 #include "support/bracket_root.hpp"
 
 #include <cmath>
@@ -196,37 +197,15 @@ RockingResult analyse_chain(const ChainDynamics& model, const GroundMotion& moti
   }
   sys.push_history(0.0, y);
 
-  HybridOdeOptions hopt;
-  hopt.stepper = options.stepper;
-  hopt.rel_tol = options.rel_tol;
-  hopt.abs_tol = options.abs_tol;
-  hopt.event_time_tol = options.event_time_tol;
-  hopt.max_steps = options.max_steps;
-  hopt.max_events = options.max_events;
-  hopt.h_max = motion.max_step();
-  const HybridOdeResult h = integrate_hybrid(sys, 0.0, motion.duration() + options.tail_s, y, mode, hopt);
+  const HybridOdeResult h = integrate_hybrid(sys, 0.0, motion.duration() + options.tail_s, y, mode,
+                                              detail::hybrid_options(options, motion));
 
   RockingResult r = std::move(sys.result());
-  r.steps = h.steps;
-  r.rejected_steps = h.rejected_steps;
-  r.event_steps = h.event_steps;
-  r.rhs_evaluations = h.rhs_evaluations;
-  r.t_end = h.t;
+  detail::take_integration(h, r);
   r.impacts = sys.impacts();
   r.alpha = 0.0;
   if (model.smooth()) r.theta_cr = model.q_cr();
   r.restitution = e;
-  r.message = h.message;
-  switch (h.termination) {
-    case HybridTermination::completed: r.termination = RockingTermination::completed; break;
-    case HybridTermination::stopped_by_event:
-      r.termination = RockingTermination::overturned;
-      r.message = "overturned";
-      break;
-    case HybridTermination::step_limit: r.termination = RockingTermination::step_limit; break;
-    case HybridTermination::event_limit: r.termination = RockingTermination::event_limit; break;
-    case HybridTermination::integrator_error: r.termination = RockingTermination::integrator_error; break;
-  }
   r.theta_u = model.q_u();
   r.capacity = model.capacity();
   if (r.overturned) {

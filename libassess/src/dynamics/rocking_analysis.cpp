@@ -8,7 +8,11 @@
 //   in full contact |theta| <= theta_cr); mode s*2: smooth, partial contact.
 //   e: restitution (velocity ratio) applied at theta = 0 (rocking.md §1.2-1.3)
 //   Events per mode (all "falling" unless stated):
-//     rest:     lift about s = +1 (and -1 if two-sided): s theta''(0) rising through 0
+//     rest:     lift about s = +1 (and -1 if two-sided): s theta''(0) rising through 0,
+//               from RockingModel::lift_margin (static moment from the geometry:
+//               exactly 0 for a centred smooth block at ug'' = 0, so a rising
+//               crossing is seen from t = 0; angular_acceleration(0, ...) left
+//               +1.1e-16 there and the block never left rest, docs/theory/rocking.md)
 //     rocking:  impact s theta = 0; ultimate rotation theta_u - s theta;
 //               pi/2 - s theta (half_pi criterion); branch switch at theta_cr.
 #include "assess/dynamics/rocking_analysis.hpp"
@@ -16,6 +20,7 @@
 #include "assess/dynamics/analysis_limits.hpp"
 #include "assess/support/error.hpp"
 #include "assess/support/units.hpp"
+#include "dynamics/integration_run.hpp"
 #include "support/bracket_root.hpp"
 
 #include <algorithm>
@@ -98,8 +103,8 @@ class RockingSystem final : public HybridSystem {
   void events(double t, const double* y, int mode, double* g) const override {
     if (mode == 0) {  // at rest: lift-off about +1 (and -1), with ug''(t) looked up once
       const double ug = motion_.acc(t);
-      g[0] = model_.angular_acceleration(0.0, +1, false, ug);
-      if (two_sided_) g[1] = -model_.angular_acceleration(0.0, -1, false, ug);
+      g[0] = model_.lift_margin(+1, ug);
+      if (two_sided_) g[1] = model_.lift_margin(-1, ug);
       return;
     }
     for (std::size_t k = 0, n = n_events_[mode + 2]; k < n; ++k) g[k] = ev_a_[mode + 2][k] + ev_b_[mode + 2][k] * y[0];
@@ -127,8 +132,7 @@ class RockingSystem final : public HybridSystem {
   // expressions written there); at rest the lift-off events depend on ug''(t).
   double event(std::size_t k, double t, const double* y, int mode) const override {
     if (mode != 0) return ev_a_[mode + 2][k] + ev_b_[mode + 2][k] * y[0];
-    return event_kind(k, mode) == Ev::lift_out ? model_.angular_acceleration(0.0, +1, false, motion_.acc(t))
-                                               : -model_.angular_acceleration(0.0, -1, false, motion_.acc(t));
+    return model_.lift_margin(event_kind(k, mode) == Ev::lift_out ? +1 : -1, motion_.acc(t));
   }
 
   // The jump map: one named step per kind of event (lift-off, impact,
@@ -430,37 +434,15 @@ RockingResult analyse(const RockingModel& model, const GroundMotion& motion, con
   }
   sys.push_history(0.0, y);
 
-  HybridOdeOptions hopt;
-  hopt.stepper = options.stepper;
-  hopt.rel_tol = options.rel_tol;
-  hopt.abs_tol = options.abs_tol;
-  hopt.event_time_tol = options.event_time_tol;
-  hopt.max_steps = options.max_steps;
-  hopt.max_events = options.max_events;
-  hopt.h_max = motion.max_step();
-  const HybridOdeResult h = integrate_hybrid(sys, 0.0, motion.duration() + options.tail_s, y, mode, hopt);
+  const HybridOdeResult h = integrate_hybrid(sys, 0.0, motion.duration() + options.tail_s, y, mode,
+                                              detail::hybrid_options(options, motion));
 
   RockingResult r = std::move(sys.result());
-  r.steps = h.steps;
-  r.rejected_steps = h.rejected_steps;
-  r.event_steps = h.event_steps;
-  r.rhs_evaluations = h.rhs_evaluations;
-  r.t_end = h.t;
+  detail::take_integration(h, r);
   r.impacts = sys.impacts();
   r.alpha = model.body().alpha;
   if (!model.foundation().is_rigid()) r.theta_cr = model.theta_cr();
   if (model.has_restitution()) r.restitution = model.restitution();
-  r.message = h.message;
-  switch (h.termination) {
-    case HybridTermination::completed: r.termination = RockingTermination::completed; break;
-    case HybridTermination::stopped_by_event:
-      r.termination = RockingTermination::overturned;
-      r.message = "overturned";
-      break;
-    case HybridTermination::step_limit: r.termination = RockingTermination::step_limit; break;
-    case HybridTermination::event_limit: r.termination = RockingTermination::event_limit; break;
-    case HybridTermination::integrator_error: r.termination = RockingTermination::integrator_error; break;
-  }
   const int side = r.theta_max_side;
   r.theta_u = model.theta_u(side);
   r.capacity = model.work(r.theta_u, side);

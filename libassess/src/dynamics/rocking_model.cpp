@@ -197,13 +197,20 @@ double RockingModel::energy_demand(double a, int side) const {
 // (W/g) ug R cos(alpha), with the static moment M(0) = s W x_G (rigid base)
 // or s W (x_G - b) (Winkler base: zero for a body centred on its base). M(0)
 // is taken from the geometry, not from sin/cos of alpha, so that a centred
-// smooth block at rest does not lift off on a rounding error at ug = 0.
-bool RockingModel::lifts(int pivot, double ug) const {
-  if (sidedness_ == Sidedness::one_sided && pivot < 0) return false;
+// smooth block at rest does not lift off on a rounding error at ug = 0, and
+// so that its margin is exactly 0 at ug = 0: the lift-off event of the
+// integration (rising through 0) then fires as soon as ug takes the right
+// sign, also at t = 0 (docs/theory/rocking.md, "Lift-off from rest").
+double RockingModel::lift_margin(int pivot, double ug) const {
   const double s = pivot >= 0 ? 1.0 : -1.0;
   const double arm = foundation_.is_rigid() ? body_.x_G() : body_.x_G() - body_.b;
   const double M0 = std::fabs(arm) <= 1e-12 * body_.R ? 0.0 : s * body_.W * arm;
-  return s * (body_.M_ext - M0 - body_.mass() * body_.R * cos_a_ * ug) > 0.0;
+  return s * (body_.M_ext - M0 - body_.mass() * body_.R * cos_a_ * ug) / body_.I0;
+}
+
+bool RockingModel::lifts(int pivot, double ug) const {
+  if (sidedness_ == Sidedness::one_sided && pivot < 0) return false;
+  return lift_margin(pivot, ug) > 0.0;
 }
 
 }  // namespace assess

@@ -30,6 +30,8 @@
 #include "assess/kinematic/chain.hpp"
 
 #include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace assess {
@@ -95,7 +97,15 @@ class ChainDynamics {
   /// Winkler branch. The side comes from the integrator's mode, not from the
   /// sign of q, so each side's equation extends smoothly across q = 0.
   double acceleration(double q, double qd, bool partial, double ug, int side = +1) const {
-    const double s = side >= 0 ? 1.0 : -1.0, a = s * q;
+    // A trial stage of a step that the error control will reject can lie far
+    // off (the partial branch's 1/sqrt(q) extended to q <= 0 gives ~1e148
+    // rad/s^2): the coordinate is held within +-(grid end) and the speed in
+    // the q'^2 term within kStageSpeedMax, so such a stage stays finite and the
+    // step is rejected, where an overflow ended the analysis with a GSL error
+    // (docs/theory/chain-dynamics.md). Values on the grid are unchanged.
+    const double s = side >= 0 ? 1.0 : -1.0, q_end = double(n_) * h_;
+    const double a = std::min(std::max(s * q, -q_end), q_end);
+    const double w = std::min(std::fabs(qd), kStageSpeedMax);
     double t;
     const double* c = &coefs_[locate(a, t) * 18];
     const double M = c[0] + t * (c[1] + t * (c[2] + t * (c[3] + t * (c[4] + t * c[5]))));
@@ -104,7 +114,7 @@ class ChainDynamics {
     const double dV = v[0] + t * (v[1] + t * (v[2] + t * (v[3] + t * (v[4] + t * v[5]))));
     const double* b = c + 12;
     const double B = b[0] + t * (b[1] + t * (b[2] + t * (b[3] + t * (b[4] + t * b[5]))));
-    return (s * (-0.5 * dM * qd * qd - dV - foundation_moment(a, partial)) - ug * B) / M;
+    return (s * (-0.5 * dM * w * w - dV - foundation_moment(a, partial)) - ug * B) / M;
   }
   /// Net restoring force -(V' + Mf) at q (N m), restoring sense positive.
   double net_restoring(double q) const { return dpotential(q) + foundation_moment(q, q > q_cr_); }
@@ -138,11 +148,12 @@ class ChainDynamics {
   std::size_t grid_intervals() const { return n_; }
 
  private:
+  static constexpr double kStageSpeedMax = 1e4;  // rad/s, far above any wall's motion
   // Interval holding q (clamped to the grid) and the offset t = q - q_k.
   std::size_t locate(double q, double& t) const {
     const double x = q * inv_h_;
-    long k = x <= 0.0 ? 0 : static_cast<long>(x);
-    if (k >= static_cast<long>(n_)) k = static_cast<long>(n_) - 1;
+    // No conversion of an out-of-range double to long (undefined behaviour).
+    const long k = !(x > 0.0) ? 0 : x >= double(n_) ? static_cast<long>(n_) - 1 : static_cast<long>(x);
     t = q - double(k) * h_;
     return std::size_t(k);
   }

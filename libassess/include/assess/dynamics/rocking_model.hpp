@@ -113,6 +113,11 @@ class RockingModel {
   /// True if, at rest at theta = 0, the excitation ug drives the body off the
   /// base about pivot s (s theta'' > 0); one-sided: only s = +1.
   bool lifts(int pivot, double ug) const;
+  /// At rest at theta = 0 on pivot s: s theta''(0) (rad/s^2) with the static
+  /// moment from the geometry (exactly 0 for a centred smooth block at ug = 0,
+  /// where angular_acceleration leaves a rounding residue); lifts() is
+  /// margin > 0 (one-sided: s = +1 only). The lift-off event function at rest.
+  double lift_margin(int pivot, double ug) const;
   /// Post-impact angular velocity at theta = 0 (rad/s): e * omega_minus.
   double impact(double omega_minus) const { return e_ * omega_minus; }
 
