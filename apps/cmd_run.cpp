@@ -21,6 +21,26 @@
 namespace assess::cli {
 namespace {
 
+// Word-wraps one line within `width` columns (continuation lines indented by
+// two spaces), for the terminal's 120-column tables (issue 14).
+std::string wrap(const std::string& line, std::size_t width) {
+  std::string out, cur;
+  std::size_t start = 0;
+  while (start < line.size()) {
+    std::size_t end = line.find(' ', start);
+    if (end == std::string::npos) end = line.size();
+    const std::string word = line.substr(start, end - start);
+    if (!cur.empty() && cur.size() + 1 + word.size() > width) {
+      out += cur + "\n";
+      cur = "  " + word;
+    } else {
+      cur += (cur.empty() ? "" : " ") + word;
+    }
+    start = end + 1;
+  }
+  return out + cur + "\n";
+}
+
 struct RunArgs {
   std::string file, html, pdf, lang = "it", fragility;
   bool json = false, keep_going = false, wide = false;
@@ -34,9 +54,29 @@ void run(const RunArgs& a) {
   opt.histories = !a.html.empty() || !a.pdf.empty();
   const FacadeAssessment res = assess_facade(c, opt);
   print_warnings(res.warnings);
+  // A fragility result of this case: --fragility DIR, or the default output
+  // directory of `assess fragility` (CASE.fragility) when it holds this case's.
+  std::optional<nlohmann::json> frag;
+  std::string frag_dir;
+  const std::string auto_dir = std::filesystem::path(a.file).stem().string() + ".fragility";
+  if (!a.fragility.empty()) {
+    frag = read_fragility_summary(a.fragility, a.file);
+    frag_dir = a.fragility;
+  } else if (std::filesystem::exists(auto_dir + "/summary.json")) {
+    try {
+      frag = read_fragility_summary(auto_dir, a.file);
+      frag_dir = auto_dir;
+    } catch (const InputError&) {
+      // another case's results: not this report's business
+    }
+  }
+  // The additional probabilistic result of the report (HTML box, JSON).
+  std::optional<ProbabilisticResult> prob;
+  if (frag) prob = probabilistic_result(*frag, frag_dir + "/summary.json");
   if (!a.html.empty() || !a.pdf.empty()) {
     ReportOptions ro;
     ro.lang = lang;
+    ro.fragility = prob;
     {
       std::ifstream in(a.file, std::ios::binary);
       ro.case_text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
@@ -48,25 +88,18 @@ void run(const RunArgs& a) {
     }
     if (!a.pdf.empty()) html_to_pdf(page, a.pdf);
   }
-  // A fragility result of this case: --fragility DIR, or the default output
-  // directory of `assess fragility` (CASE.fragility) when it holds this case's.
-  std::optional<nlohmann::json> frag;
-  const std::string auto_dir = std::filesystem::path(a.file).stem().string() + ".fragility";
-  if (!a.fragility.empty()) frag = read_fragility_summary(a.fragility, a.file);
-  else if (std::filesystem::exists(auto_dir + "/summary.json")) {
-    try {
-      frag = read_fragility_summary(auto_dir, a.file);
-    } catch (const InputError&) {
-      // another case's results: not this report's business
-    }
-  }
   if (a.json) {
     nlohmann::json j = facade_json(res);
-    if (frag) j["fragility"] = {{"line", fragility_line(*frag)}, {"governing", (*frag)["governing"]}};
+    if (frag) {
+      nlohmann::json f = probabilistic_result_json(*prob);
+      f["line"] = fragility_line(*frag);
+      f["governing"] = (*frag)["governing"];
+      j["fragility"] = f;
+    }
     std::cout << stamp_version(j).dump(2) << "\n";
   } else {
     std::cout << facade_text(res, a.wide ? TextWidth::wide : TextWidth::columns120)
-              << (frag ? fragility_line(*frag) + "\n" : "")
+              << (frag ? (a.wide ? fragility_line(*frag) + "\n" : wrap(fragility_line(*frag), 120)) : "")
               << (a.html.empty() ? "" : "\nHTML report written to " + a.html + "\n")
               << (a.pdf.empty() ? "" : "PDF report written to " + a.pdf + "\n");
   }

@@ -67,3 +67,54 @@ set_tests_properties(cli.fragility_in_run PROPERTIES LABELS cli
 assess_cli_error_test(fragility_in_run_other_case "summary.json.*belongs to another case"
   run mechanisms/free_wall_laquila.json --fragility ${_frag_out}/inrun)
 set_tests_properties(cli.fragility_in_run_other_case PROPERTIES DEPENDS cli.fragility_in_run)
+
+# Chains and mechanisms at height (the dynamic model of `assess run`,
+# assessment/mechanism_dynamics): a 2-block chain at Z = 3 m (floor motions)
+# and a one-body mechanism at Z = 4 m run end to end; 2 stripes x 2 records x
+# 2 polarities x 2 restitution values = 16 analyses each.
+add_test(NAME cli.fragility_chain
+  COMMAND ${CMAKE_COMMAND} -E env ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}
+          sh -c "rm -rf '${_frag_out}/chain' && '$<TARGET_FILE:assess_cli>' fragility mechanisms/vertical_flexure_dynamic.json --stripes 475,2475 --records 2 --bootstrap 0 --no-plots --out '${_frag_out}/chain' --quiet"
+  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.fragility_chain PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "model: one-sided chain of 2 blocks.*base at Z = 3.00 m, floor motions a_Z.*stripes: 2 levels, 16 analyses \\(0 failed\\).*restitution e = -0.5:.*restitution e = 0:.*report:  .*report.html")
+add_test(NAME cli.fragility_at_height
+  COMMAND ${CMAKE_COMMAND} -E env ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}
+          sh -c "rm -rf '${_frag_out}/height' && '$<TARGET_FILE:assess_cli>' fragility mechanisms/upper_storey_dynamic.json --stripes 475,2475 --records 2 --bootstrap 0 --no-plots --out '${_frag_out}/height' --quiet --json"
+  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.fragility_at_height PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "\"analyses\": 16,.*\"failed\": 0,.*\"model\": \"one body rotating about its ground hinge \\(rocking model, seed Eq. 1\\); base at Z = 4.00 m, floor motions a_Z")
+add_test(NAME cli.fragility_chain_threads_identical
+  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:assess_cli> -DCOMMAND=fragility
+          -DCAMPAIGN=${PROJECT_SOURCE_DIR}/mechanisms/vertical_flexure_dynamic.json -DOUT=${_frag_out}/chain_threads
+          "-DFIRST_ARGS=--threads;1;--stripes;475,2475;--records;2;--bootstrap;0"
+          "-DSECOND_ARGS=--threads;2;--stripes;475,2475;--records;2;--bootstrap;0"
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/campaign_compare.cmake)
+set_tests_properties(cli.fragility_chain_threads_identical PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "identical results.csv \\(17 lines\\)" ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+# Refusals (exit status 2): a chain the dynamic model cannot represent
+# (interlocking friction), floor motions given by the user (no hazard curve),
+# a mechanism at height without the building.
+assess_cli_error_test(fragility_friction_refused
+  "friction_block.json: /mechanism: the dynamic model does not apply to the governing mechanism.*interlocking friction"
+  fragility tests/data/fragility/friction_block.json --stripes 475,975 --out ${_frag_out}/bad)
+assess_cli_error_test(fragility_floor_input_refused
+  "floor_input.json: /dynamic/input: \"floor\": a fragility scales ground records.*no hazard curve"
+  fragility tests/data/fragility/floor_input.json --ida --out ${_frag_out}/bad)
+assess_cli_error_test(fragility_height_no_building "height_no_building.json: /building: missing"
+  fragility tests/data/fragility/height_no_building.json --out ${_frag_out}/bad)
+
+# `assess run --fragility DIR` (issue 16): the additional probabilistic result
+# in the JSON ("fragility": median, beta, lambda_c, return period, P in VN, TR
+# of SLV; equal to summary.json and to their closed forms) and in the HTML
+# relazione (IT and EN box after the verdicts by approach, labelled as not a
+# code check); the terminal within 120 columns.
+find_program(ASSESS_PYTHON3 python3)
+if(ASSESS_PYTHON3)
+  add_test(NAME cli.fragility_in_run_report
+    COMMAND ${ASSESS_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/check_fragility_in_report.py
+            $<TARGET_FILE:assess_cli> tests/data/fragility/free_wall.json ${_frag_out}/in_report
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+  set_tests_properties(cli.fragility_in_run_report PROPERTIES LABELS cli
+    PASS_REGULAR_EXPRESSION "fragility in report: .*: ok" ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+endif()

@@ -108,6 +108,18 @@ TEST_CASE("MLE: degenerate counts are reported, not fitted") {
   const FragilityFit f = fit_lognormal_mle(sep);
   CHECK(f.status == FragilityFit::Status::separated);
   CHECK(f.message.find("[2, 3]") != std::string::npos);
+  // Quasi-complete separation (Albert & Anderson 1984): exceedances only at
+  // the highest stripe, mixed there: the likelihood's supremum is at beta -> 0.
+  std::vector<StripeCount> quasi{{1.0, 6, 0}, {2.0, 6, 0}, {3.0, 6, 2}};
+  const FragilityFit q = fit_lognormal_mle(quasi);
+  CHECK(q.status == FragilityFit::Status::separated);
+  CHECK(q.message.find("[3, 3]") != std::string::npos);
+  // ... and at a middle stripe between all-free and all-reaching ones.
+  std::vector<StripeCount> quasi_mid{{1.0, 6, 0}, {2.0, 6, 3}, {3.0, 6, 6}};
+  CHECK(fit_lognormal_mle(quasi_mid).status == FragilityFit::Status::separated);
+  // Two mixed stripes: the MLE exists (not separated).
+  std::vector<StripeCount> two_mixed{{1.0, 6, 0}, {2.0, 6, 1}, {3.0, 6, 4}};
+  CHECK(fit_lognormal_mle(two_mixed).status == FragilityFit::Status::ok);
   CHECK(fit_lognormal_mle({{1.0, 10, 3}}).status == FragilityFit::Status::too_few);
   // A fraction that falls with the intensity has no lognormal fit.
   std::vector<StripeCount> down{{1.0, 10, 6}, {2.0, 10, 5}, {3.0, 10, 4}};

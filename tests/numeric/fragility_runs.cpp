@@ -118,7 +118,7 @@ TEST_CASE("rows equal direct analyses; identical results with threads, parts and
     RockingOptions ro = st.dynamic.options;
     ro.scale = sr.scale;
     ro.reverse = r.reversed;
-    const RockingResult direct = analyse(st.models[r.restitution], st.records[sr.record], ro);
+    const RockingResult direct = analyse(st.dynamics.rocking.at(r.restitution), st.records[sr.record], ro);
     CHECK(r.ok);
     CHECK(r.stripe == si);
     CHECK(r.reversed == (r.id % 2 == 1));

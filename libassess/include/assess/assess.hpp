@@ -51,6 +51,7 @@
 #include <assess/report/html_report.hpp>
 #include <assess/report/kinematic_report.hpp>
 #include <assess/report/plot.hpp>
+#include <assess/report/probabilistic_result.hpp>
 
 // campaign
 #include <assess/campaign/campaign.hpp>

@@ -645,6 +645,48 @@ void add_comparison(const Ctx& c) {
                      orows, "");
 }
 
+// The additional probabilistic result (issue 16; docs/theory/fragility.md §3):
+// a neutral box after the verdicts by approach, labelled as not a code check,
+// with the governing overturning fragility's median and beta, lambda_c, the
+// return period 1/lambda_c and P = 1 - exp(-lambda_c VN) beside the code's SLV
+// return period [NTC 2018 3.2.0]. Formatting only: numbers from the options.
+void add_probabilistic(const Ctx& c) {
+  if (!c.o.fragility) return;
+  const ProbabilisticResult& r = *c.o.fragility;
+  c.h.add_heading(c.t("prob.heading"), 2, false);
+  std::string html = "<section class=\"probabilistic\" aria-label=\"" + xml_escape(c.t("prob.heading")) +
+                     "\" style=\"border:2px solid #4a5a7a;border-radius:4px;background:#f2f4f8;padding:0.5em 0.8em;"
+                     "margin:0.6em 0;break-inside:avoid\">\n";
+  html += "<p><strong>" + xml_escape(c.t("prob.not_a_check")) + "</strong> " + xml_escape(c.t("prob.explain")) +
+          "</p>\n";
+  const std::string method = r.method == "ida" ? c.t("prob.method.ida") : c.t("prob.method.stripes");
+  html += "<p class=\"meta\">" + xml_escape(c.t("prob.method")) + ": " + xml_escape(method) + "; " +
+          std::to_string(r.analyses) + " " + xml_escape(c.t("prob.analyses")) + ", " + std::to_string(r.failed) + " " +
+          xml_escape(c.t("prob.failed")) + ". " + xml_escape(c.t("prob.model")) + ": " + xml_escape(r.model) + ". " +
+          xml_escape(c.t("prob.restitution")) + ": " + xml_escape(r.restitution) + ".</p>\n";
+  auto row = [](const std::string& k, const std::string& v) {
+    return "<tr><td>" + xml_escape(k) + "</td><td class=\"num\">" + xml_escape(v) + "</td></tr>\n";
+  };
+  const std::string years = " " + c.t("prob.years");
+  html += "<table><thead><tr><th>" + xml_escape(c.t("prob.quantity")) + "</th><th class=\"num\">" +
+          xml_escape(c.t("prob.value")) + "</th></tr></thead><tbody>\n";
+  if (r.has_risk) {
+    html += row(c.t("prob.median"), fixed(r.median_pga / g, 3) + " g");
+    html += row(c.t("prob.beta"), fixed(r.beta, 3));
+    html += row(c.t("prob.lambda"), format("%.3e", r.lambda) + c.t("prob.per_year"));
+    html += row(c.t("prob.return_period"), fixed(r.return_period, 0) + years);
+    html += row(c.t("prob.p_vn") + " (VN = " + fixed(r.VN, 0) + years + ")", fixed(100.0 * r.p_vn, 1) + " %");
+  } else {
+    html += row(c.t("prob.no_risk"), r.note);
+  }
+  html += row(c.t("prob.tr_slv"), fixed(r.TR_SLV, 0) + years);
+  if (r.has_risk && std::isfinite(r.p_at_SLV))
+    html += row(c.t("prob.p_at_slv") + " (" + fixed(r.pga_SLV / g, 3) + " g)", fixed(100.0 * r.p_at_SLV, 1) + " %");
+  html += "</tbody></table>\n<p class=\"meta\">" + xml_escape(c.t("prob.cap")) + " " + xml_escape(c.t("prob.source")) +
+          ": " + xml_escape(r.source) + "</p>\n</section>";
+  c.h.add_raw_html(html);
+}
+
 void add_warnings(const Ctx& c) {
   if (c.a.warnings.empty()) return;
   c.h.add_heading(c.t("warnings.heading"), 2, false);
@@ -692,6 +734,7 @@ std::string facade_html(const FacadeAssessment& a, const ReportOptions& options)
   add_checks(c);
   add_dynamic(c);
   add_comparison(c);
+  add_probabilistic(c);
   add_warnings(c);
   add_legend(c);
   add_appendix(c);

@@ -23,7 +23,8 @@ constexpr const char* kCss = R"(
   h2 { font-size: 14pt; border-bottom: 1px solid #999; margin-top: 1.6em; }
   h3 { font-size: 12pt; } h4 { font-size: 11pt; }
   table { border-collapse: collapse; margin: 0.6em 0; font-size: 9pt; max-width: 100%; }
-  td.num, th.num { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
+  td.num, th.num { text-align: right; font-variant-numeric: tabular-nums; }
+  td.num { white-space: nowrap; } th { hyphens: auto; overflow-wrap: anywhere; }
   th .note, td .note { display: block; font-weight: normal; font-size: 7.5pt; color: #555; }
   .dc-ok { color: #11661f; font-weight: bold; } .dc-fail { color: #b3001b; font-weight: bold; }
   td.ok { color: #11661f; white-space: nowrap; } td.fail { color: #b3001b; font-weight: bold; white-space: nowrap; }

@@ -253,6 +253,46 @@ const std::map<std::string, Entry>& catalogue() {
       {"cmp.overall", {"esito complessivo", "overall verdict"}},
       {"cmp.failing", {"verifiche non soddisfatte", "checks failing"}},
       {"cmp.max_dc", {"D/C massimo", "largest D/C"}},
+      // Additional probabilistic result (assess run --fragility DIR; issue 16).
+      {"prob.heading", {"Risultato probabilistico aggiuntivo: rischio annuo di ribaltamento",
+                        "Additional probabilistic result: annual risk of overturning"}},
+      {"prob.not_a_check",
+       {"Non è una verifica di norma: l'esito della verifica è quello del riquadro iniziale e delle verifiche sopra.",
+        "Not a code check: the verdict is the one of the box at the top and of the checks above."}},
+      {"prob.explain",
+       {"Curva di fragilità lognormale del ribaltamento (massima verosimiglianza, Baker 2015) da analisi dinamiche "
+        "al variare dell'intensità, integrata sulla curva di pericolosità del sito: λc = ∫ P(C | PGA) |dλ(PGA)|, "
+        "periodo di ritorno 1/λc, probabilità nella vita nominale 1 − exp(−λc VN).",
+        "Lognormal fragility curve of overturning (maximum likelihood, Baker 2015) from dynamic analyses at "
+        "increasing intensity, integrated over the site's hazard curve: λc = ∫ P(C | PGA) |dλ(PGA)|, return "
+        "period 1/λc, probability in the nominal life 1 − exp(−λc VN)."}},
+      {"prob.method.stripes", {"analisi a strisce multiple (accelerogrammi compatibili con lo spettro del sito a "
+                               "ciascun periodo di ritorno)",
+                               "multiple-stripe analysis (records compatible with the site's spectrum at each "
+                               "return period)"}},
+      {"prob.method.ida", {"analisi dinamica incrementale (un gruppo di accelerogrammi scalato a ciascun livello)",
+                           "incremental dynamic analysis (one record set scaled to each level)"}},
+      {"prob.method", {"Metodo", "Method"}},
+      {"prob.model", {"Modello dinamico", "Dynamic model"}},
+      {"prob.restitution", {"Coefficiente di restituzione che governa", "Governing restitution value"}},
+      {"prob.analyses", {"analisi", "analyses"}},
+      {"prob.failed", {"non riuscite (contate come ribaltamento)", "failed (counted as overturning)"}},
+      {"prob.quantity", {"Grandezza", "Quantity"}},
+      {"prob.value", {"Valore", "Value"}},
+      {"prob.median", {"Mediana della fragilità (PGA al suolo)", "Median of the fragility (PGA on the ground)"}},
+      {"prob.beta", {"Dispersione β", "Dispersion β"}},
+      {"prob.lambda", {"Frequenza media annua di ribaltamento λc", "Mean annual frequency of overturning λc"}},
+      {"prob.return_period", {"Periodo di ritorno del ribaltamento 1/λc", "Return period of overturning 1/λc"}},
+      {"prob.p_vn", {"Probabilità di ribaltamento nella vita nominale", "Probability of overturning in the nominal life"}},
+      {"prob.tr_slv", {"Periodo di ritorno dello SLV (norma, NTC 2018 §3.2.1)",
+                       "Return period of SLV (code, NTC 2018 §3.2.1)"}},
+      {"prob.p_at_slv", {"Probabilità di ribaltamento alla PGA dello SLV", "Probability of overturning at the PGA of SLV"}},
+      {"prob.years", {"anni", "years"}},
+      {"prob.per_year", {"/anno", "/year"}},
+      {"prob.no_risk", {"Nessun valore di rischio", "No risk figure"}},
+      {"prob.source", {"Fonte", "Source"}},
+      {"prob.cap", {"Risultato del comando assess fragility (docs/theory/fragility.md), riportato a titolo informativo.",
+                    "Result of the command assess fragility (docs/theory/fragility.md), given for information."}},
       {"warnings.heading", {"Avvertenze", "Warnings"}},
       // Legend and appendix.
       {"legend.heading", {"Legenda delle etichette delle clausole", "Legend of the clause tags"}},

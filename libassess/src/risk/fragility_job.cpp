@@ -1,7 +1,8 @@
-// fragility_job.cpp: one rocking analysis per (stripe, record, polarity,
-// restitution), with the quantities of the three limit states
-// (docs/theory/fragility.md §4): overturning (the integrator's criterion),
-// energy D/C >= 1 (seed §3.2), and d* >= d_SLV (Circ. 2019 C8.7.1.2.1.9).
+// fragility_job.cpp: one dynamic analysis (rocking body or chain,
+// FragilityStudy::respond) per (stripe, record, polarity, restitution), with
+// the quantities of the three limit states (docs/theory/fragility.md §4):
+// overturning (the integrator's criterion), energy D/C >= 1 (seed §3.2), and
+// d* >= d_SLV (Circ. 2019 C8.7.1.2.1.9).
 #include "assess/risk/fragility_job.hpp"
 
 #include "assess/support/error.hpp"
@@ -145,7 +146,7 @@ std::vector<FragilityRow> FragilityJob::evaluate(std::uint64_t first, std::uint6
   const auto [si, ri] = s_.group(first / G);
   const Stripe& stripe = s_.stripes[si];
   const StripeRecord& sr = stripe.records[ri];
-  const Record& rec = s_.records[sr.record];
+  const Record& rec = s_.base_motion(sr.record);  // ground record, or its floor motion at height
   std::vector<FragilityRow> rows;
   for (std::uint64_t id = first; id < end; ++id) {
     const std::uint64_t in_group = id % G;

@@ -10,6 +10,7 @@
 #include "assess/support/units.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -71,6 +72,24 @@ json curve_json(const FragilityStudy& st, const FragilityCurve& c) {
   return j;
 }
 
+// FNV-1a 64-bit hash of a file's bytes, as 16 hex digits ("" if unreadable):
+// ties a summary to the case file's content, so that a report does not show
+// the fragility of a case edited since (Fowler, Noll, Vo; offset basis
+// 14695981039346656037, prime 1099511628211).
+std::string file_fnv1a64(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "";
+  std::uint64_t h = 14695981039346656037ull;
+  char c;
+  while (in.get(c)) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 1099511628211ull;
+  }
+  char buf[20];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
 PlotSeries series(std::string name, PlotSeries::Style style) {
   PlotSeries s;
   s.name = std::move(name);
@@ -96,8 +115,11 @@ json fragility_to_json(const FragilityStudy& st, const FragilityResult& r) {
   std::error_code ec;
   const auto abs = std::filesystem::absolute(st.file, ec);
   j["case_absolute"] = ec ? st.file : abs.lexically_normal().string();
+  if (const std::string h = file_fnv1a64(st.file); !h.empty()) j["case_fnv1a64"] = h;
   j["project"] = st.project;
   j["mechanism"] = st.mechanism;
+  j["model"] = st.dynamics.describe();
+  j["selection_warnings"] = st.selection_warnings;
   j["site"] = st.site_description;
   j["method"] = to_string(st.options.method);
   j["intensity_measure"] = "PGA on the site's ground, Se(0) = ag S (m/s^2)";
@@ -142,6 +164,8 @@ json fragility_to_json(const FragilityStudy& st, const FragilityResult& r) {
 std::string fragility_text(const FragilityStudy& st, const FragilityResult& r) {
   std::ostringstream os;
   os << "fragility of '" << st.mechanism << "' (" << st.file << "), site " << st.site_description << "\n";
+  os << "model: " << st.dynamics.describe() << "\n";
+  for (const std::string& w : st.selection_warnings) os << "selection: " << w << "\n";
   os << to_string(st.options.method) << ": " << st.stripes.size() << " levels, " << r.analyses << " analyses ("
      << r.failed << " failed); IM = PGA on the site's ground\n";
   for (std::size_t e = 0; e < st.restitutions(); ++e) {
@@ -231,7 +255,8 @@ FragilityReportFiles write_fragility_report(const FragilityStudy& st, const Frag
   // HTML page.
   HtmlReport html("Fragility and annual risk of overturning: " + st.project);
   html.add_heading("Summary");
-  html.add_paragraph("Case " + st.file + ", mechanism '" + st.mechanism + "', site " + st.site_description +
+  html.add_paragraph("Case " + st.file + ", mechanism '" + st.mechanism + "' (" + st.dynamics.describe() +
+                     "), site " + st.site_description +
                      ", VN " + fmt(st.VN, "%.0f") + " years, VR " + fmt(st.VR, "%.0f") + " years. Method: " +
                      (st.options.method == FragilityMethod::stripes
                           ? "multiple-stripe analysis (records compatible with the site spectrum at each return "
@@ -388,13 +413,19 @@ json read_fragility_summary(const std::string& dir, const std::string& case_file
   if (!std::filesystem::equivalent(of, case_file, ec))
     throw InputError("'" + path + "': /case is '" + j["case"].get<std::string>() + "', not '" + case_file +
                      "': the fragility belongs to another case");
+  if (j.contains("case_fnv1a64") && j["case_fnv1a64"].is_string() &&
+      j["case_fnv1a64"].get<std::string>() != file_fnv1a64(case_file))
+    throw InputError("'" + path + "': the case file '" + case_file +
+                     "' has changed since this fragility was computed (content hash differs): rerun `assess fragility " +
+                     case_file + " --out " + dir + "`");
   return j;
 }
 
 std::string fragility_line(const json& s) {
   try {
     const json& g = s.at("governing");
-    std::string line = "fragility (" + s.at("method").get<std::string>() + ", restitution " +
+    std::string line = "additional probabilistic result, not a code check: fragility (" +
+                       s.at("method").get<std::string>() + ", restitution " +
                        g.at("restitution").get<std::string>() + "): overturning ";
     if (g.contains("return_period_years")) {
       line += "median PGA " + g_units(g.at("theta_m_s2").get<double>()) + " g, beta " +
@@ -410,6 +441,39 @@ std::string fragility_line(const json& s) {
   } catch (const json::exception& e) {
     throw InputError(std::string("fragility summary: missing or malformed key: ") + e.what());
   }
+}
+
+ProbabilisticResult probabilistic_result(const json& s, const std::string& source) {
+  ProbabilisticResult r;
+  r.source = source;
+  try {
+    const json& g = s.at("governing");
+    r.method = s.at("method").get<std::string>();
+    r.model = s.value("model", std::string("rocking body (summary written before the model was recorded)"));
+    r.restitution = g.at("restitution").get<std::string>();
+    r.analyses = s.at("analyses").get<int>();
+    r.failed = s.at("failed").get<int>();
+    r.VN = s.at("VN_years").get<double>();
+    const json& slv = s.at("code").at("SLV");
+    r.TR_SLV = slv.at("TR_years").get<double>();
+    r.pga_SLV = slv.at("pga_m_s2").get<double>();
+    r.has_risk = g.contains("return_period_years");
+    if (r.has_risk) {
+      r.median_pga = g.at("theta_m_s2").get<double>();
+      r.beta = g.at("beta").get<double>();
+      r.lambda = g.at("lambda_per_year").get<double>();
+      r.return_period = g.at("return_period_years").get<double>();
+      r.p_vn = g.at("probability_in_VN").get<double>();
+      // NaN is written as null by nlohmann::json: no value then.
+      if (slv.contains("P_overturning_at_pga") && slv.at("P_overturning_at_pga").is_number())
+        r.p_at_SLV = slv.at("P_overturning_at_pga").get<double>();
+    } else {
+      r.note = g.value("note", g.value("message", std::string("not fitted")));
+    }
+  } catch (const json::exception& e) {
+    throw InputError("'" + source + "': fragility summary: missing or malformed key: " + e.what());
+  }
+  return r;
 }
 
 }  // namespace assess

@@ -1,8 +1,9 @@
 // fragility_study.cpp: set-up of a fragility analysis (docs/theory/fragility.md §4).
 //
-// The mechanism part mirrors assess_facade (assessment/facade_assessment.cpp):
-// the governing candidate of the kinematic analysis, its rocking body from the
-// chain, one model per restitution value. The records are chosen per stripe
+// The mechanism part is the one of assess_facade (assessment/facade_assessment.cpp):
+// the governing candidate of the kinematic analysis and its dynamic model from
+// build_mechanism_dynamics (rocking body, or chain model for several blocks;
+// at height the first-mode floor motion, records/floor_motion). The records are chosen per stripe
 // with records/record_selection (ScaleRule::Pga: each record's PGA equals the
 // stripe's Se(0), so every analysis of a stripe has exactly the stripe's IM).
 #include "assess/risk/fragility_study.hpp"
@@ -99,28 +100,43 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
   st.kinematic = gov.result;
   st.dynamic = parse_dynamic(kase.dynamic, kase.file, directory_of(kase.file));
   const DynamicSpec& d = st.dynamic;
-  try {
-    st.body = rocking_body_from_chain(kase.mechanism.candidates[kin.governing].chain);
-  } catch (const InputError& e) {
-    throw InputError(kase.file + ": /mechanism: the dynamic analysis does not apply: " + e.what());
-  }
-  if (gov.Z > 0.0)
-    throw InputError(kase.file + ": /mechanism: the governing mechanism is at height (Z = " + fmt(gov.Z, "%.2f") +
-                     " m): floor accelerograms are not implemented, so the fragility (ground records) does not apply");
-  const Foundation found = d.smooth ? Foundation::winkler(d.k) : Foundation::rigid();
-  for (std::size_t i = 0; i < d.restitutions.size(); ++i) {
-    try {
-      st.models.emplace_back(st.body.body, found, d.sidedness, d.restitutions[i]);
-    } catch (const InputError& e) {
-      throw InputError(kase.file + ": /dynamic/restitution/" + std::to_string(i) + ": " + e.what());
-    }
-    st.restitution_labels.push_back(describe(d.restitutions[i]));
-  }
+  // The IM is the PGA of the ground motion (the hazard curve's): floor motions
+  // given by the user have no hazard curve to scale them to.
+  if (d.floor_input)
+    throw InputError(kase.file + ": /dynamic/input: \"floor\": a fragility scales ground records to the PGA on the "
+                     "site's ground (the hazard curve's intensity measure); floor motions given by the user have no "
+                     "hazard curve: give ground records (at height they are filtered to the floor by the building's "
+                     "first mode, /building)");
+  // The dynamic model of `assess run` (errors name the file and the JSON path).
+  st.dynamics = build_mechanism_dynamics(kase, gov, kase.mechanism.candidates[kin.governing].chain, d);
+  if (!st.dynamics.applies)
+    throw InputError(kase.file + ": /mechanism: the dynamic model does not apply to the governing mechanism '" +
+                     gov.label + "': " + st.dynamics.note + "; a fragility needs its dynamic analyses");
+  for (const Restitution& r : d.restitutions) st.restitution_labels.push_back(describe(r));
   if (d.polarity != Polarity::reversed) st.polarities.push_back(false);
   if (d.polarity != Polarity::normal) st.polarities.push_back(true);
 
   const int count = opt.records > 0 ? opt.records : (d.selection ? d.selection->count : 7);
   const double max_scale = d.selection ? d.selection->max_scale : 5.0;
+  // The case's selection limits, as `assess run` (assessment/facade_assessment.cpp,
+  // docs/theory/record-selection.md §2): scale, mean scale, PGA guard, records
+  // per event and per station; the count may be overridden (--records).
+  auto selection_options = [&](ScaleRule rule) {
+    SelectionOptions so;
+    so.n_records = count;
+    so.scale_rule = rule;
+    if (d.selection) {
+      const RecordSelectionSpec& rs = *d.selection;
+      so.max_scale = rs.max_scale;
+      so.max_mean_scale = rs.max_mean_scale;
+      so.max_pga_ratio = rs.max_pga_ratio;
+      so.max_per_event = rs.max_per_event;
+      so.max_per_station = rs.max_per_station;
+    } else {
+      so.max_scale = max_scale;
+    }
+    return so;
+  };
   const KinematicResult& k = gov.result;
   const double T1 = std::min(k.Ts, k.T_SLV), T2 = std::max(k.Ts, k.T_SLV);
   const PeriodRange range = (d.selection && d.selection->T_min && d.selection->T_max)
@@ -144,8 +160,22 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
       }
     }
   } else {
-    const RecordCatalogue cat = read_catalogue(d.selection->catalogue);
-    for (const CatalogueEntry& e : cat.design_candidates()) {
+    const RecordSelectionSpec& rs = *d.selection;
+    const RecordCatalogue cat = read_catalogue(rs.catalogue);
+    // The case's catalogue filters, as `assess run` (record-selection.md §2.1):
+    // Mw and distance windows, site classes (default the site's soil class,
+    // relaxed with a warning), countries.
+    CatalogueFilters filters;
+    if (rs.Mw_min) filters.Mw_min = *rs.Mw_min, filters.Mw_max = *rs.Mw_max, filters.Mw_given = true;
+    if (rs.R_min_km) filters.R_min_km = *rs.R_min_km, filters.R_max_km = *rs.R_max_km, filters.R_given = true;
+    filters.site_classes = rs.site_classes;
+    if (filters.site_classes.empty()) filters.site_classes = {to_string(kase.site->conditions.soil)};
+    filters.relax_site_class = rs.relax_site_class;
+    filters.countries = rs.countries;
+    filters.min_candidates = std::size_t(3 * count);
+    const CatalogueFilterResult fr = filter_catalogue(cat.entries, filters);
+    st.selection_warnings = fr.warnings;
+    for (const CatalogueEntry& e : fr.kept) {
       try {
         st.records.push_back(cat.load(e.id));
         st.record_files.push_back(cat.directory + "/" + e.file);
@@ -155,7 +185,7 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
       }
     }
     if (st.records.empty())
-      throw InputError(kase.file + ": /dynamic/select/catalogue: the catalogue has no design record");
+      throw InputError(kase.file + ": /dynamic/select: no design record of the catalogue passes the filters");
   }
 
   const SiteConditions& cond = kase.site->conditions;
@@ -164,11 +194,8 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
     if (trs.empty()) trs.assign(grid_return_periods.begin(), grid_return_periods.end());
     std::sort(trs.begin(), trs.end());
     trs.erase(std::unique(trs.begin(), trs.end()), trs.end());
-    SelectionOptions so;
-    so.n_records = count;
-    so.max_scale = max_scale;
+    SelectionOptions so = selection_options(ScaleRule::Pga);
     so.range = range;
-    so.scale_rule = ScaleRule::Pga;
     for (double tr : trs) {
       const ElasticSpectrum target(site.hazard_at_tr(tr), cond, 5.0);
       const SelectionResult sel =
@@ -181,9 +208,10 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
       s.selection = sel.message;
       for (const SelectedRecord& r : sel.records) s.records.push_back({r.index, r.scale});
       if (s.records.empty())
-        throw InputError(kase.file + ": /dynamic/select: no catalogue record can be scaled to the PGA of the " +
-                         fmt(tr) + "-year stripe (" + fmt(s.im / units::g, "%.3f") + " g) within max_scale " +
-                         fmt(max_scale));
+        throw InputError(kase.file + ": /dynamic/select: no set of " + std::to_string(count) +
+                         " catalogue records for the " + fmt(tr) + "-year stripe (PGA " +
+                         fmt(s.im / units::g, "%.3f") + " g, max_scale " + fmt(max_scale) + "): " + sel.message +
+                         "; ask for fewer records per stripe (--records, select/count)");
       st.stripes.push_back(std::move(s));
     }
   } else {
@@ -192,12 +220,10 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
     if (listed) {
       for (std::size_t i = 0; i < st.records.size(); ++i) set.push_back(i);
     } else {
-      SelectionOptions so;
-      so.n_records = count;
-      so.max_scale = max_scale;
+      SelectionOptions so = selection_options(SelectionOptions{}.scale_rule);
       so.range = range;
-      const SelectionResult sel = select_records(ElasticSpectrum(st.actions.at(LimitState::SLV).hazard, cond, 5.0),
-                                                 st.records, so);
+      const ElasticSpectrum slv(st.actions.at(LimitState::SLV).hazard, cond, 5.0);
+      const SelectionResult sel = select_records([&slv](double T) { return slv.Se(T); }, st.records, infos, so);
       for (const SelectedRecord& r : sel.records) set.push_back(r.index);
       if (set.empty()) throw InputError(kase.file + ": /dynamic/select: no compatible record in the catalogue");
     }
@@ -221,16 +247,26 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
       st.stripes.push_back(std::move(s));
     }
   }
+  // At height: the floor motion of every record a stripe uses, once (the
+  // first-mode filter is linear: filter(scale x record) = scale x filter(record)).
+  if (st.dynamics.filter) {
+    std::vector<bool> used(st.records.size(), false);
+    for (const Stripe& s : st.stripes)
+      for (const StripeRecord& r : s.records) used[r.record] = true;
+    st.floor_inputs.resize(st.records.size());
+    for (std::size_t i = 0; i < st.records.size(); ++i)
+      if (used[i]) st.floor_inputs[i] = st.dynamics.input(st.records[i]);
+  }
   return st;
 }
 
-MechanismResponse FragilityStudy::respond(const Record& record, double scale, bool reversed,
+MechanismResponse FragilityStudy::respond(const Record& input, double scale, bool reversed,
                                           std::size_t restitution) const {
   RockingOptions ro = dynamic.options;
   ro.record_history = false;
   ro.scale = scale;
   ro.reverse = reversed;
-  const RockingResult r = analyse(models.at(restitution), record, ro);
+  const RockingResult r = dynamics.analyse(restitution, input, ro);
   MechanismResponse m;
   m.termination = r.termination;
   if (!m.ok()) {
@@ -240,8 +276,9 @@ MechanismResponse FragilityStudy::respond(const Record& record, double scale, bo
   m.theta_max = r.theta_max;
   m.theta_u = r.theta_u;
   // As in the façade assessment: the control point's peak horizontal
-  // displacement, in the equivalent SDOF [C8.7.1.4].
-  const double d_control = std::fabs(body.horizontal_displacement(kinematic.control_point, r.theta_max));
+  // displacement at the peak coordinate (signed by its side), in the
+  // equivalent SDOF [C8.7.1.4].
+  const double d_control = dynamics.control_displacement(kinematic, r.theta_max_side * r.theta_max);
   m.d_star = d_control * kinematic.d_star_per_dk;
   m.dc_energy = r.dc;
   m.dc_displacement = kinematic.d_SLV > 0 ? m.d_star / kinematic.d_SLV : 0.0;

@@ -121,6 +121,42 @@ FragilityFit fit_lognormal_mle(const std::vector<StripeCount>& input) {
                   fmt(s.front().im) + ")";
     return fit;
   }
+  // (Quasi-)complete separation, read from the counts: with one covariate
+  // (ln im) the MLE exists only if no threshold c has every analysis below c
+  // free of the limit state and every one above c reaching it (Albert &
+  // Anderson 1984, Biometrika 71(1): complete or quasi-complete separation).
+  // Stripes at the same im are pooled. Then beta -> 0 and the iteration cannot
+  // converge: say so instead of "not converged".
+  {
+    std::vector<StripeCount> pooled;
+    for (const auto& c : s) {
+      if (!pooled.empty() && pooled.back().im == c.im) {
+        pooled.back().n += c.n, pooled.back().k += c.k;
+      } else {
+        pooled.push_back(c);
+      }
+    }
+    std::size_t first_hit = pooled.size(), last_miss = 0;
+    for (std::size_t i = 0; i < pooled.size(); ++i)
+      if (pooled[i].k > 0.0) {
+        first_hit = i;
+        break;
+      }
+    for (std::size_t i = pooled.size(); i-- > 0;)
+      if (pooled[i].k < pooled[i].n) {
+        last_miss = i;
+        break;
+      }
+    if (first_hit >= last_miss) {  // at most one mixed stripe, between the all-zero and the all-one ones
+      const double lo = pooled[std::min(first_hit, last_miss)].im, hi = pooled[std::max(first_hit, last_miss)].im;
+      fit.status = FragilityFit::Status::separated;
+      fit.message = "the counts separate (beta -> 0, no maximum-likelihood estimate): every analysis below " +
+                    fmt(lo) + " is free of the limit state and every one above " + fmt(hi) +
+                    " reaches it; the median is only bracketed near [" + fmt(lo) + ", " + fmt(hi) +
+                    "]; more records or stripes in between are needed";
+      return fit;
+    }
+  }
   // Start: median at the geometric mean of the stripes weighted by how close
   // each stripe's fraction is to 1/2, beta = 0.4.
   double wsum = 0, xsum = 0;

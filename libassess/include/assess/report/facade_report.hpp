@@ -6,9 +6,11 @@
 #include "assess/assessment/facade_assessment.hpp"
 #include "assess/report/kinematic_report.hpp"
 #include "assess/report/messages.hpp"
+#include "assess/report/probabilistic_result.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
 #include <string>
 
 namespace assess {
@@ -30,6 +32,9 @@ struct ReportOptions {
   Lang lang = Lang::it;     ///< language of the text (--lang)
   std::string date;         ///< date printed in the header; empty: today (UTC, YYYY-MM-DD)
   std::string case_text;    ///< the case file's text, echoed in the appendix; empty: a note
+  /// An additional probabilistic result (`assess run --fragility DIR`): shown
+  /// in its own box after the verdicts by approach, labelled as not a code check.
+  std::optional<ProbabilisticResult> fragility;
 };
 
 /// The summary row (index in v.rows) that the verdict box of `code` names as
@@ -42,7 +47,8 @@ int governing_verdict_row(const Verdict& v, const std::string& code);
 /// per code, site and spectra, a drawing of the mechanism, the virtual-work
 /// and candidates tables, the kinematic quantities and the ADRS plot, the
 /// checks, the dynamic analysis (compatibility of the records, theta/theta_u
-/// histories, summary), the grouped D/C bars, the legend of the clause tags
+/// histories, summary), the grouped D/C bars, the additional probabilistic
+/// result when given (options.fragility), the legend of the clause tags
 /// and the case file. Plots are drawn by gnuplot.
 /// @throws InputError if gnuplot is missing (names the package gnuplot-nox)
 std::string facade_html(const FacadeAssessment& a, const ReportOptions& options = {});

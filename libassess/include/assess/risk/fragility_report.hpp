@@ -5,6 +5,7 @@
 // code's SLV/SLC return periods and checks (docs/user/fragility.md).
 #pragma once
 
+#include "assess/report/probabilistic_result.hpp"
 #include "assess/risk/fragility_result.hpp"
 #include "assess/risk/fragility_study.hpp"
 
@@ -40,5 +41,10 @@ nlohmann::json read_fragility_summary(const std::string& dir, const std::string&
 /// curve's median, return period and probability in VN beside the code's SLV
 /// return period, or why there is no risk figure.
 std::string fragility_line(const nlohmann::json& summary);
+
+/// The same for the façade report's box and JSON (report/probabilistic_result):
+/// the governing overturning curve of a summary read by read_fragility_summary
+/// from `source`. @throws InputError naming the missing or malformed key.
+ProbabilisticResult probabilistic_result(const nlohmann::json& summary, const std::string& source);
 
 }  // namespace assess

@@ -1,21 +1,24 @@
 // fragility_study.hpp: the set-up of a fragility analysis of a case's
-// governing mechanism: its rocking models (one per restitution value of the
-// case's dynamic section), the site's hazard curve, and the intensity levels
-// with their records and scale factors:
+// governing mechanism: its dynamic model (assessment/mechanism_dynamics, the
+// one `assess run` uses: a rocking body or a chain of several blocks, with
+// one analysis per restitution value of the case's dynamic section, and at
+// height the first-mode floor motion), the site's hazard curve, and the
+// intensity levels with their records and scale factors:
 //  - multiple-stripe analysis (MSA): at each return period, records selected
 //    from the catalogue compatible with the site's elastic spectrum at that
 //    return period and scaled to its PGA (records/record_selection, rule Pga);
 //  - incremental dynamic analysis (IDA): one fixed set (the case's listed
 //    records, or its selection at SLV) scaled to each PGA level.
 // The intensity measure is the PGA on the site's ground, IM = Se(0) = ag S
-// (m/s^2), the same as the hazard curve's. See docs/theory/fragility.md.
+// (m/s^2), the same as the hazard curve's (also for a mechanism at height:
+// the ground record is scaled, then filtered to the floor). See
+// docs/theory/fragility.md.
 #pragma once
 
 #include "assess/assessment/case_file.hpp"
 #include "assess/assessment/dynamic_case.hpp"
+#include "assess/assessment/mechanism_dynamics.hpp"
 #include "assess/dynamics/rocking_analysis.hpp"
-#include "assess/dynamics/rocking_from_chain.hpp"
-#include "assess/dynamics/rocking_model.hpp"
 #include "assess/hazard/hazard_curve.hpp"
 #include "assess/records/record.hpp"
 #include "assess/records/record_selection.hpp"
@@ -72,7 +75,7 @@ struct Stripe {
 struct MechanismResponse {
   RockingTermination termination = RockingTermination::completed;
   std::string message;          ///< why the analysis failed, if it did
-  double theta_max = 0.0, theta_u = 0.0;  ///< rad
+  double theta_max = 0.0, theta_u = 0.0;  ///< rad (a chain: its coordinate q and q_u)
   double d_star = 0.0;          ///< peak d* of the control point [C8.7.1.4] (m)
   double dc_energy = 0.0;       ///< energy demand/capacity (seed §3.2)
   double dc_displacement = 0.0; ///< d* / d_SLV [C8.7.1.2.1.9]
@@ -97,21 +100,29 @@ struct FragilityStudy {
   std::string mechanism;        ///< its label
   KinematicResult kinematic;    ///< its kinematic result (d_SLV, dk0, control point, ...)
   std::vector<CheckRow> checks; ///< the code's checks of the case (both editions)
-  ChainRockingBody body;
   DynamicSpec dynamic;
-  std::vector<RockingModel> models;          ///< one per restitution value
+  MechanismDynamics dynamics;                ///< rocking body or chain, base motion (as `assess run`)
   std::vector<std::string> restitution_labels;
   std::vector<bool> polarities;              ///< false = as recorded, true = reversed
   // Records and levels.
-  std::vector<Record> records;               ///< unscaled
+  std::vector<Record> records;               ///< unscaled ground records
   std::vector<std::string> record_files;
+  /// At height: the unscaled floor motion of each record used by a stripe
+  /// (dynamics.input; the filter is linear, so scaling and reversing commute
+  /// with it); empty at ground level (the records themselves).
+  std::vector<Record> floor_inputs;
   std::vector<Stripe> stripes;               ///< increasing im
+  std::vector<std::string> selection_warnings;  ///< the catalogue filters' warnings (default windows, relaxed class)
+
+  /// The motion at the mechanism's base of record i, unscaled: the ground
+  /// record, or its floor motion at height.
+  const Record& base_motion(std::size_t i) const { return floor_inputs.empty() ? records.at(i) : floor_inputs.at(i); }
 
   /// The only entry point to the dynamics: one analysis of the mechanism under
-  /// `record` scaled by `scale`, polarity flipped if `reversed`, with
-  /// restitution value `restitution`. Thread-safe. (Where chains of several
-  /// blocks will plug in: nothing else of risk/ knows the model.)
-  MechanismResponse respond(const Record& record, double scale, bool reversed, std::size_t restitution) const;
+  /// the base motion `input` (base_motion) scaled by `scale`, polarity flipped
+  /// if `reversed`, with restitution value `restitution`, through
+  /// MechanismDynamics::analyse (rocking model or chain model). Thread-safe.
+  MechanismResponse respond(const Record& input, double scale, bool reversed, std::size_t restitution) const;
 
   /// Number of restitution values.
   std::size_t restitutions() const { return restitution_labels.size(); }
@@ -126,8 +137,11 @@ struct FragilityStudy {
 };
 
 /// Builds the study of a case with a "site" (grid or island: a hazard curve
-/// is needed) and a "dynamic" section whose governing mechanism the dynamics
-/// module handles. @throws InputError naming the file, the JSON path and why.
+/// is needed) and a "dynamic" section with ground records whose governing
+/// mechanism the dynamics module handles (build_mechanism_dynamics: one body,
+/// any 1-DOF chain, at ground level or at height with a "building").
+/// @throws InputError naming the file, the JSON path and why (among them a
+///   mechanism the dynamic model cannot represent, and "input": "floor").
 FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& options);
 
 }  // namespace assess
