@@ -62,6 +62,9 @@ TEST_CASE("linear_piece is acc() on every sample interval, before the record and
     GroundMotion::LinearPiece p;
     REQUIRE(g.linear_piece(t, p));
     CAPTURE(t);
+    // The piece carries next_breakpoint(t) itself, the same double (the
+    // integrator uses it instead of asking): exact equality, before the record too.
+    CHECK(p.end == g.next_breakpoint(t));
     // The piece ends at the next breakpoint and starts one sample before it (at or before t).
     if (t >= 0.0) {
       CHECK(p.origin <= t);

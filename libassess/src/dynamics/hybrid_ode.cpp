@@ -136,8 +136,8 @@ class Integration {
     double next_bp = -std::numeric_limits<double>::infinity();
     while (t_ < t_end_) {
       if (!(t_ < next_bp)) {
-        next_bp = sys_.next_breakpoint(t_);
-        use_kernel();
+        use_kernel();  // a kernel may bring the breakpoint with it (RhsKernel::end)
+        next_bp = std::isnan(kernel_end_) ? sys_.next_breakpoint(t_) : kernel_end_;
       }
       double t_bp = std::min(next_bp, t_end_);
       if (!(t_bp > t_)) t_bp = t_end_;
@@ -164,6 +164,7 @@ class Integration {
   /// the system's kernel if it has one, else the adapter to rhs().
   void use_kernel() {
     const RhsKernel k = sys_.rhs_kernel(mode_, t_);
+    kernel_end_ = k.end;
     if (k.fn) {
       gsys_.function = k.fn;
       gsys_.params = k.ctx;
@@ -417,6 +418,7 @@ class Integration {
   Adapter adapter_;
   gsl_odeiv2_system gsys_;
   double origin_ = 0.0;  // s: GSL's time is t - origin
+  double kernel_end_ = std::numeric_limits<double>::quiet_NaN();  // s: RhsKernel::end of the last kernel
   HybridOdeResult res_;
   bool step_failed_ = false;
   bool stationary_ = false;  // sys.stationary(mode), read once per mode

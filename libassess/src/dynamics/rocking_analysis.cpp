@@ -96,6 +96,7 @@ class RockingSystem final : public HybridSystem {
          : mode == 2 ? &kernel<+1, true> : &kernel<-1, true>;
     k.ctx = &kernel_;
     k.origin = piece.origin;
+    k.end = piece.end;  // = motion_.next_breakpoint(t), so the integrator need not ask
     return k;
   }
 

@@ -61,8 +61,8 @@ double GroundMotion::next_breakpoint(double t) const {
 
 bool GroundMotion::linear_piece(double t, LinearPiece& out) const {
   if (samples_.empty()) return false;
-  if (t < 0.0) {  // acc() is zero before the record starts
-    out = {t, 0.0, 0.0};
+  if (t < 0.0) {  // acc() is zero before the record starts; next_breakpoint(t) = 0
+    out = {t, 0.0, 0.0, 0.0};
     return true;
   }
   // The interval [t_k, t_k+1] whose end is next_breakpoint(t): the same index
@@ -71,6 +71,7 @@ bool GroundMotion::linear_piece(double t, LinearPiece& out) const {
   if (double(j) * dt_ <= t) ++j;
   const auto k = static_cast<std::size_t>(j - 1);
   out.origin = double(k) * dt_;
+  out.end = double(j) * dt_;  // next_breakpoint(t): the same i (as a double) times dt_
   if (k + 1 >= samples_.size()) {  // past the last sample: acc() is zero (the tail)
     out.a0 = out.a1 = 0.0;
     return true;

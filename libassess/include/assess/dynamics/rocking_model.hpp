@@ -178,16 +178,28 @@ inline void sin_cos(double x, double& sn, double& cs) {
 //   F = M_ext / I0 + [s W b - (2/3) k b^3 theta] / I0 (full) or + s (W/3) sqrt(2W/(k s theta)) / I0 (partial);
 // P and Q do not depend on theta, which keeps the chain of operations after
 // sin(theta), cos(theta) and the square root short.
+//
+// Partial contact: s cp / sqrt(x), x = s theta, is evaluated as sqrt(x) (cp / x)
+// (the same value to within 2 ulp: three correctly rounded operations). The
+// square root and the division do not wait for each other, so the latency from
+// theta to theta'' is one sqrt and one multiply instead of a sqrt followed by a
+// division (issue 15: perf annotate put the partial branch's time on that
+// chain; callgrind/perf figures in docs/theory/rocking.md, "Speed"). x is floored
+// at 1e-200 (a stage that strays to theta <= 0 in the partial branch gets a huge
+// finite value, as before, which the error control rejects): cp / 1e-200 stays
+// finite for any cp below 1e108 1/s^2 (cp is of order 1e-2 for masonry walls).
+// Its term is added last, after the theta-independent M_ext / I0, so the
+// square root's chain ends in a single addition.
 inline double RockingModel::angular_acceleration(double theta, int pivot, bool partial, double ug) const {
   const double s = pivot >= 0 ? 1.0 : -1.0;
   const double P = -(s * g_sin_ + u_cos_ * ug), Q = g_cos_ - s * u_sin_ * ug;
-  double F = ext_;
-  if (kb3_ > 0.0) {  // Winkler foundation
-    F += partial ? s * cp_ / std::sqrt(std::max(s * theta, 1e-300)) : s * wb_ - kb3_i_ * theta;
-  }
   double st, ct;
   detail::sin_cos(theta, st, ct);
-  return (P * ct + Q * st) + F;
+  const double gravity = (P * ct + Q * st) + ext_;
+  if (!(kb3_ > 0.0)) return gravity;  // rigid base
+  if (!partial) return gravity + (s * wb_ - kb3_i_ * theta);  // full contact
+  const double x = std::max(s * theta, 1e-200);
+  return gravity + s * (std::sqrt(x) * (cp_ / x));  // partial contact
 }
 
 }  // namespace assess

@@ -50,10 +50,12 @@ class GroundMotion {
     double origin = 0.0;  ///< s: the sample time at the start of the interval
     double a0 = 0.0;      ///< m/s^2: ug'' at origin
     double a1 = 0.0;      ///< m/s^3: slope
+    double end = 0.0;     ///< s: next_breakpoint(t) for the t asked, the same value to the bit
   };
   /// For a record: the piece of the interval that ends at next_breakpoint(t)
   /// (before the record, t < 0: the zero piece up to t = 0). None for a
-  /// function of time, which has no such form.
+  /// function of time, which has no such form. `end` saves the caller a
+  /// separate next_breakpoint(t) (one index computation per sample interval).
   bool linear_piece(double t, LinearPiece& out) const;
   double duration() const { return duration_; }  ///< s
   /// Largest integration step that resolves the excitation (s): +inf for
