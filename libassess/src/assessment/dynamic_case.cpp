@@ -209,4 +209,16 @@ DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, co
   return s;
 }
 
+CatalogueFilters catalogue_filters(const RecordSelectionSpec& rs, const std::string& soil_class, int count) {
+  CatalogueFilters filters;
+  if (rs.Mw_min) filters.Mw_min = *rs.Mw_min, filters.Mw_max = *rs.Mw_max, filters.Mw_given = true;
+  if (rs.R_min_km) filters.R_min_km = *rs.R_min_km, filters.R_max_km = *rs.R_max_km, filters.R_given = true;
+  filters.site_classes = rs.site_classes;
+  if (filters.site_classes.empty()) filters.site_classes = {soil_class};
+  filters.relax_site_class = rs.relax_site_class;
+  filters.countries = rs.countries;
+  filters.min_candidates = std::size_t(3 * count);
+  return filters;
+}
+
 }  // namespace assess

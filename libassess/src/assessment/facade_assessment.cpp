@@ -59,15 +59,7 @@ void load_records(FacadeAssessment& a, const DynamicSpec& d, const FacadeOptions
   }
   const RecordSelectionSpec& rs = *d.selection;
   const RecordCatalogue cat = read_catalogue(rs.catalogue);
-  // Catalogue filters (docs/theory/record-selection.md §2.1): default site class = the site's soil class.
-  CatalogueFilters filters;
-  if (rs.Mw_min) filters.Mw_min = *rs.Mw_min, filters.Mw_max = *rs.Mw_max, filters.Mw_given = true;
-  if (rs.R_min_km) filters.R_min_km = *rs.R_min_km, filters.R_max_km = *rs.R_max_km, filters.R_given = true;
-  filters.site_classes = rs.site_classes;
-  if (filters.site_classes.empty()) filters.site_classes = {to_string(a.kase.site->conditions.soil)};
-  filters.relax_site_class = rs.relax_site_class;
-  filters.countries = rs.countries;
-  filters.min_candidates = std::size_t(3 * rs.count);
+  const CatalogueFilters filters = catalogue_filters(rs, to_string(a.kase.site->conditions.soil), rs.count);
   const CatalogueFilterResult fr = filter_catalogue(cat.entries, filters);
   a.selection_warnings = fr.warnings;
   a.selection_site_classes = fr.site_classes;

@@ -163,17 +163,8 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
   } else {
     const RecordSelectionSpec& rs = *d.selection;
     const RecordCatalogue cat = read_catalogue(rs.catalogue);
-    // The case's catalogue filters, as `assess run` (record-selection.md §2.1):
-    // Mw and distance windows, site classes (default the site's soil class,
-    // relaxed with a warning), countries.
-    CatalogueFilters filters;
-    if (rs.Mw_min) filters.Mw_min = *rs.Mw_min, filters.Mw_max = *rs.Mw_max, filters.Mw_given = true;
-    if (rs.R_min_km) filters.R_min_km = *rs.R_min_km, filters.R_max_km = *rs.R_max_km, filters.R_given = true;
-    filters.site_classes = rs.site_classes;
-    if (filters.site_classes.empty()) filters.site_classes = {to_string(kase.site->conditions.soil)};
-    filters.relax_site_class = rs.relax_site_class;
-    filters.countries = rs.countries;
-    filters.min_candidates = std::size_t(3 * count);
+    // The case's catalogue filters, as `assess run` (record-selection.md §2.1).
+    const CatalogueFilters filters = catalogue_filters(rs, to_string(kase.site->conditions.soil), count);
     const CatalogueFilterResult fr = filter_catalogue(cat.entries, filters);
     st.selection_warnings = fr.warnings;
     for (const CatalogueEntry& e : fr.kept) {

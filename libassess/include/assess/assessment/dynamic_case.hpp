@@ -7,6 +7,7 @@
 #include "assess/dynamics/rocking_analysis.hpp"
 #include "assess/dynamics/rocking_model.hpp"
 #include "assess/records/record_io.hpp"
+#include "assess/records/record_selection.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -44,6 +45,12 @@ struct RecordSelectionSpec {
   std::vector<std::string> countries;        ///< default: any
   std::string catalogue;              ///< catalogue.json (default: data_dir()/spectra/records/catalogue.json)
 };
+
+/// The catalogue filters of a selection of `count` records (docs/theory/
+/// record-selection.md §2.1): the Mw and distance windows, the site classes
+/// (default: `soil_class`, the site's, relaxed with a warning), the countries,
+/// and at least 3 count candidates. One place for `assess run` and fragility.
+CatalogueFilters catalogue_filters(const RecordSelectionSpec& rs, const std::string& soil_class, int count);
 
 enum class Polarity { normal, reversed, both };
 
