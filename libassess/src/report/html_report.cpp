@@ -24,7 +24,7 @@ constexpr const char* kCss = R"(
   h3 { font-size: 12pt; } h4 { font-size: 11pt; }
   table { border-collapse: collapse; margin: 0.6em 0; font-size: 9pt; max-width: 100%; }
   td.num, th.num { text-align: right; font-variant-numeric: tabular-nums; }
-  td.num { white-space: nowrap; } th { hyphens: auto; overflow-wrap: anywhere; }
+  td.num { white-space: nowrap; }
   th .note, td .note { display: block; font-weight: normal; font-size: 7.5pt; color: #555; }
   .dc-ok { color: #11661f; font-weight: bold; } .dc-fail { color: #b3001b; font-weight: bold; }
   td.ok { color: #11661f; white-space: nowrap; } td.fail { color: #b3001b; font-weight: bold; white-space: nowrap; }
@@ -43,8 +43,8 @@ constexpr const char* kCss = R"(
   pre { font-size: 7.5pt; white-space: pre-wrap; word-break: break-all; border: 1px solid #ccc; padding: 0.5em; background: #fafafa; }
   ul.legend { font-size: 9.5pt; }
   caption { caption-side: top; text-align: left; font-style: italic; padding-bottom: 0.3em; }
-  th, td { border: 1px solid #bbb; padding: 0.2em 0.5em; text-align: left; vertical-align: top; }
-  th { background: #eee; }
+  th, td { border: 1px solid #bbb; padding: 0.2em 0.35em; text-align: left; vertical-align: top; }
+  th { background: #eee; font-size: 8pt; }
   figure { margin: 1em 0; break-inside: avoid; page-break-inside: avoid; }
   figure svg { width: 100%; height: auto; max-width: 170mm; display: block; }
   figcaption { font-size: 10pt; font-style: italic; margin-top: 0.3em; }
