@@ -42,7 +42,15 @@ void load_records(FacadeAssessment& a, const DynamicSpec& d, const FacadeOptions
     for (const ListedRecord& lr : d.records) {
       try {
         Record r = read_listed_record(lr);
-        RecordUsed u{r.name, lr.file, r.event, r.station, r.component, lr.scale, r.pga() * lr.scale, lr.json_path};
+        RecordUsed u;
+        u.name = r.name;
+        u.file = lr.file;
+        u.event = r.event;
+        u.station = r.station;
+        u.component = r.component;
+        u.scale = lr.scale;
+        u.pga = r.pga() * lr.scale;
+        u.json_path = lr.json_path;
         a.records.push_back(u);
         recs.push_back(std::move(r));
       } catch (const InputError& e) {
@@ -104,7 +112,14 @@ void load_records(FacadeAssessment& a, const DynamicSpec& d, const FacadeOptions
   for (const SelectedRecord& s : sel.records) {
     const CatalogueEntry& e = entries[s.index];
     Record r = candidates[s.index];
-    RecordUsed u{r.name, cat.directory + "/" + e.file, e.event, e.station, e.component, s.scale, r.pga() * s.scale, ""};
+    RecordUsed u;
+    u.name = r.name;
+    u.file = cat.directory + "/" + e.file;
+    u.event = e.event;
+    u.station = e.station;
+    u.component = e.component;
+    u.scale = s.scale;
+    u.pga = r.pga() * s.scale;
     u.Mw = e.Mw;
     u.distance_km = e.distance_km;
     u.distance_kind = e.distance_kind;

@@ -87,14 +87,15 @@ void parse_numbers(const std::string& line, const std::string& path, std::size_t
     char* end = nullptr;
     errno = 0;
     const double v = std::strtod(p, &end);
-    const std::string where = path + ":" + std::to_string(line_no) + ": ";
+    // The location is built only for an error message (not once per value).
+    const auto where = [&] { return path + ":" + std::to_string(line_no) + ": "; };
     if (end == p || std::isnan(v))
-      throw InputError(where + "non-numeric value '" + token(p) + "' (expected an acceleration value)");
+      throw InputError(where() + "non-numeric value '" + token(p) + "' (expected an acceleration value)");
     if (!std::isfinite(v) || (errno == ERANGE && std::fabs(v) > 1.0))
-      throw InputError(where + "value '" + token(p) + "' is out of the range of a double (|a| < 1.8e308)");
+      throw InputError(where() + "value '" + token(p) + "' is out of the range of a double (|a| < 1.8e308)");
     const double a = v * factor;
     if (!std::isfinite(a))
-      throw InputError(where + "value '" + token(p) + "' overflows once converted to m/s^2");
+      throw InputError(where() + "value '" + token(p) + "' overflows once converted to m/s^2");
     out.push_back(a);
     p = end;
   }

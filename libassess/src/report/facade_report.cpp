@@ -22,15 +22,6 @@ std::string record_label(const FacadeAssessment& a, const DynamicRun& r) {
   return a.records[r.record].name + (r.reversed ? " (reversed)" : "");
 }
 
-// One row per approach and code, built once in the assessment layer
-// (assessment/verdict.hpp): the report only formats it.
-std::string approach_name(const VerdictRow& r) {
-  if (r.code == "seed") return "seed energy D/C (mean), " + r.clause.substr(r.clause.rfind(", ") + 2);
-  std::string n = r.code + " " + r.limit_state + " " + r.approach + " (" + r.location + ")";
-  if (r.approach == "dynamic") n += ", " + r.clause.substr(r.clause.rfind(", ") + 2);
-  return n;
-}
-
 const char* dyn_verdict(const RestitutionSummary& s) {
   return s.no_verdict ? "no verdict" : verdict(s.slv_satisfied);
 }
