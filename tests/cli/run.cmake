@@ -13,14 +13,8 @@ assess_cli_error_test(run_restitution_2 "/dynamic/restitution/1.*\\[-1, 1\\]|/dy
 assess_cli_error_test(run_scale_string "/dynamic/records/1/scale" run tests/cli/run_bad/scale_string.json)
 assess_cli_error_test(run_unknown_key "polarty.*polarity" run tests/cli/run_bad/unknown_key.json)
 
-# The HTML report loads in headless Chromium with every plot and no console
-# error (skipped, exit 77, when chromium is not installed).
-add_test(NAME cli.run_church_html_browser
-  COMMAND sh -c "\"$1\" run mechanisms/church-facade.json --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 7 \"class=.verdict \""
-          sh $<TARGET_FILE:assess_cli> ${CMAKE_CURRENT_BINARY_DIR}/church-report.html
-  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
-set_tests_properties(cli.run_church_html_browser PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77
-  ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+# The church HTML report in headless Chromium (7 plots, no console message):
+# cli.report_church_it and cli.report_church_en (tests/cli/report.cmake).
 # Issue 13: the dynamic analysis applies at height (floor motions) and to multi-block chains.
 assess_cli_test(run_dynamic_at_height ARGS run tests/cli/run_bad/gable_dynamic.json
   PASS "SLV  dynamic      height.*base at Z = 7.00 m, floor motions a_Z.*gamma psi = 1.2000.*floor motions, 5 % spectrum"
