@@ -36,20 +36,27 @@ std::string directory_of(const std::string& path) {
   return p == std::string::npos ? "." : path.substr(0, p);
 }
 
+// A record used by the dynamic analysis, with the name, event, station and
+// component of its file and the scale factor applied (PGA of the scaled record).
+RecordUsed record_used(const Record& r, const std::string& file, double scale) {
+  RecordUsed u;
+  u.name = r.name;
+  u.file = file;
+  u.event = r.event;
+  u.station = r.station;
+  u.component = r.component;
+  u.scale = scale;
+  u.pga = r.pga() * scale;
+  return u;
+}
+
 void load_records(FacadeAssessment& a, const DynamicSpec& d, const FacadeOptions& opt,
                   const ElasticSpectrum& target, const KinematicResult& kin, std::vector<Record>& recs) {
   if (!d.selection) {
     for (const ListedRecord& lr : d.records) {
       try {
         Record r = read_listed_record(lr);
-        RecordUsed u;
-        u.name = r.name;
-        u.file = lr.file;
-        u.event = r.event;
-        u.station = r.station;
-        u.component = r.component;
-        u.scale = lr.scale;
-        u.pga = r.pga() * lr.scale;
+        RecordUsed u = record_used(r, lr.file, lr.scale);
         u.json_path = lr.json_path;
         a.records.push_back(u);
         recs.push_back(std::move(r));
@@ -112,14 +119,10 @@ void load_records(FacadeAssessment& a, const DynamicSpec& d, const FacadeOptions
   for (const SelectedRecord& s : sel.records) {
     const CatalogueEntry& e = entries[s.index];
     Record r = candidates[s.index];
-    RecordUsed u;
-    u.name = r.name;
-    u.file = cat.directory + "/" + e.file;
-    u.event = e.event;
+    RecordUsed u = record_used(r, cat.directory + "/" + e.file, s.scale);
+    u.event = e.event;  // the catalogue's names
     u.station = e.station;
     u.component = e.component;
-    u.scale = s.scale;
-    u.pga = r.pga() * s.scale;
     u.Mw = e.Mw;
     u.distance_km = e.distance_km;
     u.distance_kind = e.distance_kind;
