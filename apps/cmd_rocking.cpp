@@ -41,7 +41,7 @@ struct RockingArgs {
   std::string stepper = "rk8pd";
   double rtol = RockingOptions{}.rel_tol;
   double atol = RockingOptions{}.abs_tol;
-  double tail = 0.0;
+  double tail = RockingOptions{}.tail_s;  // the one default of every dynamic command
 };
 
 Restitution parse_restitution(const std::string& text, bool one_sided) {
@@ -160,6 +160,9 @@ void run(const RockingArgs& a) {
     j["dc"] = r.dc;
     j["d_max"] = r.d_max;
     j["termination"] = to_string(r.termination);
+    j["end"] = to_string(r.end);
+    j["t_end"] = r.t_end;
+    j["motion_duration"] = r.motion_duration;
     j["steps"] = r.steps;
     j["rhs_evaluations"] = r.rhs_evaluations;
     j["record"] = {{"name", record.name}, {"format", record.format}, {"npts", record.size()},
@@ -187,13 +190,15 @@ void run(const RockingArgs& a) {
               r.capacity / units::kN);
   std::printf("  termination    = %s (%ld steps, %ld rhs evaluations)\n", to_string(r.termination), r.steps,
               r.rhs_evaluations);
+  std::printf("  end            = %s at t = %.4f s (record %.4f s, free motion cap %g s)\n", to_string(r.end), r.t_end,
+              r.motion_duration, a.tail);
 }
 
 // `assess dynamic CASE --record FILE`: the governing mechanism of a case file
 // (any 1-DOF chain, at ground level or at height) under one record.
 struct CaseDynamicArgs {
   std::string file, record, unit, history, model, restitution, stepper = "rk8pd";
-  double dt = std::nan(""), scale = 1.0, k_kN = std::nan(""), tail = 0.0;
+  double dt = std::nan(""), scale = 1.0, k_kN = std::nan(""), tail = RockingOptions{}.tail_s;
   double rtol = RockingOptions{}.rel_tol, atol = RockingOptions{}.abs_tol;
   bool reverse = false, json = false, floor = false;
 };
@@ -279,6 +284,9 @@ void run_case(const CaseDynamicArgs& a) {
     j["restitution"] = md.e.front();
     j["dc"] = r.dc;
     j["termination"] = to_string(r.termination);
+    j["end"] = to_string(r.end);
+    j["t_end"] = r.t_end;
+    j["motion_duration"] = r.motion_duration;
     j["steps"] = r.steps;
     j["record"] = {{"name", record.name}, {"npts", record.size()}, {"dt", record.dt},
                    {"pga_g", record.pga() / units::g_n}, {"scale", a.scale}, {"reverse", a.reverse},
@@ -300,6 +308,8 @@ void run_case(const CaseDynamicArgs& a) {
   std::printf("  overturned     = %s\n", r.overturned ? "yes" : "no");
   std::printf("  energy D/C     = %.4f\n", r.dc);
   std::printf("  termination    = %s (%ld steps)\n", to_string(r.termination), r.steps);
+  std::printf("  end            = %s at t = %.4f s (motion %.4f s, free motion cap %g s)\n", to_string(r.end), r.t_end,
+              r.motion_duration, a.tail);
 }
 
 }  // namespace
@@ -326,7 +336,7 @@ void add_case_dynamic_command(CLI::App& app) {
   cmd->add_option("--stepper", a->stepper, "rk8pd (default), rkck or rkf45");
   cmd->add_option("--rtol", a->rtol, "relative tolerance per step (default 1e-7)");
   cmd->add_option("--atol", a->atol, "absolute tolerance per step, rad and rad/s (default 1e-9)");
-  cmd->add_option("--tail", a->tail, "free motion after the record (s, default 0)");
+  cmd->add_option("--tail", a->tail, "cap on the free motion after the whole record (s, default 30): it ends earlier at rest or when the energy left cannot reach the peak");
   cmd->callback([a] { run_case(*a); });
 }
 
@@ -353,7 +363,7 @@ void add_rocking_command(CLI::App& app) {
   cmd->add_option("--stepper", args->stepper, "rk8pd (default), rkck or rkf45");
   cmd->add_option("--rtol", args->rtol, "relative tolerance per step (default 1e-7)");
   cmd->add_option("--atol", args->atol, "absolute tolerance per step, rad and rad/s (default 1e-9)");
-  cmd->add_option("--tail", args->tail, "free motion after the record (s, default 0)");
+  cmd->add_option("--tail", args->tail, "cap on the free motion after the whole record (s, default 30): it ends earlier at rest or when the energy left cannot reach the peak");
   cmd->callback([args, cmd] {
     args->dt_given = cmd->count("--dt") > 0;
     run(*args);

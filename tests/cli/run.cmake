@@ -43,3 +43,6 @@ set_tests_properties(cli.run_kinematic_only_html_browser PROPERTIES LABELS "cli;
 assess_cli_test(run_explicit_chain_dynamic ARGS run tests/data/chains/rocking_frame.json
   PASS "chain of 3 blocks.*q_u = 0.12435 rad.*\\(reversed\\)"
   FAIL_REGEX "not applicable")
+# Issue 21: records are never cut; the old trimming keys are refused with the key that replaces them.
+assess_cli_error_test(run_whole_record_false "/dynamic/whole_record.*integrated to its last sample.*tail_s" run tests/cli/run_bad/whole_record_false.json)
+assess_cli_error_test(run_free_tail_s "/dynamic/free_tail_s.*capped by \"tail_s\"" run tests/cli/run_bad/free_tail_s.json)

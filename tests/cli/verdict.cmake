@@ -55,3 +55,11 @@ add_test(NAME cli.verdict_plain_case_vs_rocking
           -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/plain_case_vs_rocking.cmake)
 set_tests_properties(cli.verdict_plain_case_vs_rocking PROPERTIES LABELS cli
   ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+# Issue 21: `assess run` and `assess rocking` on the same wall and motion agree
+# to 1e-10 (theta_max, energy D/C, centroid displacement; impacts, overturning
+# and the end reason equal): rigid/smooth x one-/two-sided x both polarities x
+# a one-sine pulse and El Centro, the catalogue's wall and the same wall as an
+# explicit one-block chain.
+add_test(NAME cli.run_vs_rocking
+  COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/run_vs_rocking.py $<TARGET_FILE:assess_cli> ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.run_vs_rocking PROPERTIES LABELS cli ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")

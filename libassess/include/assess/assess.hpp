@@ -36,6 +36,7 @@
 // dynamics
 #include <assess/dynamics/analysis_limits.hpp>
 #include <assess/dynamics/hybrid_ode.hpp>
+#include <assess/dynamics/analysis_end.hpp>
 #include <assess/dynamics/rocking_analysis.hpp>
 #include <assess/dynamics/rocking_body.hpp>
 #include <assess/dynamics/rocking_from_chain.hpp>

@@ -109,10 +109,19 @@ DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, co
   if (d.has("overturn_at"))
     s.options.overturn = d.choice("overturn_at", {"theta_u", "half_pi"}) == "half_pi" ? OverturnCriterion::half_pi
                                                                                       : OverturnCriterion::theta_u;
-  s.options.tail_s = d.number_or("tail_s", 0.0, "s (free motion after the record)", 0.0, limits::tail_max_s);
-  s.trim = !d.boolean_or("whole_record", false);
-  s.free_tail_s = d.number_or("free_tail_s", s.free_tail_s, "s (free rocking after the strong motion)", 0.0,
-                              limits::tail_max_s);
+  s.options.tail_s = d.number_or("tail_s", s.options.tail_s,
+                                 "s (cap on the free motion after the record; it ends earlier at rest or when its "
+                                 "energy has decayed)",
+                                 0.0, limits::tail_max_s);
+  // Issue 21: every record is integrated to its last sample. "whole_record":
+  // true is what always happens (accepted); asking for a cut is an error.
+  if (d.has("whole_record") && !d.boolean_or("whole_record", true))
+    d.at("whole_record").fail("records are no longer cut at 99.9 % of their Arias intensity: every record is "
+                              "integrated to its last sample, then the free motion (cap \"tail_s\", s); remove the "
+                              "key");
+  if (d.has("free_tail_s"))
+    d.at("free_tail_s").fail("no longer used: the free motion after the whole record is capped by \"tail_s\" (s, "
+                             "default 30) and ends earlier at rest or when its energy has decayed; rename the key");
   if (auto in = d.find("integrator")) {
     in->allow_only({"stepper", "rel_tol", "abs_tol"});
     if (in->has("stepper")) {

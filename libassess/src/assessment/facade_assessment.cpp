@@ -293,17 +293,14 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
     for (double T : a.periods) a.code_floor_Se.push_back(fs.Se(T));
   }
 
-  // Long tails (docs/theory/record-selection.md §4): integrate to the end of
-  // the strong motion (99.9 % Arias) and let the wall rock freely for
-  // free_tail_s; the whole record on request. The trim applies to the motion
-  // at the mechanism's base (the floor motion at height).
-  a.trimmed = d.trim;
-  a.free_tail_s = d.trim ? std::max(d.free_tail_s, d.options.tail_s) : d.options.tail_s;
-  std::vector<Record> run_recs;
+  // Every record is integrated to its last sample (at height: the floor
+  // motion at the mechanism's base), then the free motion up to tail_s; the
+  // end rule is the one of every dynamic command (dynamics/analysis_end.hpp).
+  a.free_tail_s = d.options.tail_s;
+  const std::vector<Record>& run_recs = inputs;
   for (std::size_t ir = 0; ir < recs.size(); ++ir) {
     a.records[ir].duration_s = recs[ir].duration();
-    run_recs.push_back(d.trim ? strong_motion_part(inputs[ir]) : inputs[ir]);
-    a.records[ir].integrated_s = run_recs.back().duration();
+    a.records[ir].integrated_s = run_recs[ir].duration();
   }
 
   // Control point of the kinematic analysis, for the C8.7.1.2.1.9 displacements.
@@ -328,7 +325,6 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
     ro.record_history = opt.histories;
     ro.scale = a.records[run.record].scale;
     ro.reverse = run.reversed;
-    ro.tail_s = a.free_tail_s;
     run.result = md.analyse(run.restitution, run_recs[run.record], ro);
     run.theta_ratio = run.result.theta_u > 0 ? run.result.theta_max / run.result.theta_u : 0.0;
     // Peak outward rotation moves the control point outward (one-sided:

@@ -94,10 +94,19 @@ class ChainSystem final : public HybridSystem {
           } else {
             mode = 0, y[1] = 0.0;
           }
-        } else if (two_sided_) {
-          y[1] = w, mode = w >= 0.0 ? 1 : -1;
         } else {
-          y[1] = std::fabs(w), mode = 1;
+          if (two_sided_) {
+            y[1] = w, mode = w >= 0.0 ? 1 : -1;
+          } else {
+            y[1] = std::fabs(w), mode = 1;
+          }
+          // Free motion: can the energy left (kinetic; the potential is zero
+          // at q = 0) reach the peak again? Symmetric two-sided chains have
+          // the same work on both sides.
+          if (detail::energy_decayed(motion_, t, 0.5 * model_.mass(0.0) * w * w, model_.work(res_.theta_max))) {
+            decayed_ = true;
+            why_ = AnalysisEnd::energy_decayed;
+          }
         }
         break;
       }
@@ -131,6 +140,15 @@ class ChainSystem final : public HybridSystem {
   }
   double next_breakpoint(double t) const override { return motion_.next_breakpoint(t); }
   bool stationary(int mode) const override { return mode == 0; }
+  // The end rule (analysis_end.hpp), as the rocking analysis.
+  bool finished(double t, const double*, int mode) override {
+    if (mode == 0) {
+      auto lifts = [this](double ug) { return model_.lifts(ug, +1) || (two_sided_ && model_.lifts(ug, -1)); };
+      return detail::rests_for_good(motion_, t, lifts, why_);
+    }
+    return decayed_;
+  }
+  AnalysisEnd why() const { return why_; }
 
   void push_history(double t, const double* y) {
     if (!opt_.record_history) return;
@@ -160,6 +178,8 @@ class ChainSystem final : public HybridSystem {
   RockingResult res_;
   long impacts_ = 0;
   double ke_q_u_ = 0.0;
+  bool decayed_ = false;
+  AnalysisEnd why_ = AnalysisEnd::free_motion_cap;
 };
 
 }  // namespace
@@ -202,6 +222,7 @@ RockingResult analyse_chain(const ChainDynamics& model, const GroundMotion& moti
 
   RockingResult r = std::move(sys.result());
   detail::take_integration(h, r);
+  r.motion_duration = motion.duration();
   r.impacts = sys.impacts();
   r.alpha = 0.0;
   if (model.smooth()) r.theta_cr = model.q_cr();
@@ -216,6 +237,7 @@ RockingResult analyse_chain(const ChainDynamics& model, const GroundMotion& moti
   }
   r.dc = r.energy_demand / r.capacity;
   r.d_max = 0.0;
+  r.end = detail::analysis_end(r, h, sys.why());
   return r;
 }
 

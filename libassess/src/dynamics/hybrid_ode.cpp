@@ -132,6 +132,7 @@ class Integration {
   HybridOdeResult run() {
     h_ = std::min(opt_.h_initial, std::max(t_end_ - t_, 0.0));
     if (!restart()) return finish(HybridTermination::integrator_error, "right-hand side failed at the start");
+    if (sys_.finished(t_, y_, mode_)) return finish(HybridTermination::finished, "");
     // The next breakpoint after t stays valid while t has not reached it (t never decreases).
     double next_bp = -std::numeric_limits<double>::infinity();
     while (t_ < t_end_) {
@@ -217,6 +218,7 @@ class Integration {
     if (!restart())
       return finish(HybridTermination::integrator_error,
                     "right-hand side failed after an event at t = " + std::to_string(t_) + " s");
+    if (sys_.finished(t_, y_, mode_)) return finish(HybridTermination::finished, "");
     return std::nullopt;
   }
 
@@ -242,6 +244,7 @@ class Integration {
     sys_.on_step(t_prev, y0_.data(), f_.data(), t_, y_, f_.data(), mode_);
     if (k_hit == g_end_.size()) {
       g_start_.swap(g_end_);
+      if (sys_.finished(t_, y_, mode_)) return finish(HybridTermination::finished, "");
       return std::nullopt;
     }
     return fire(k_hit);
@@ -471,6 +474,7 @@ std::optional<OdeStepper> parse_stepper(const std::string& name) {
 const char* to_string(HybridTermination t) {
   switch (t) {
     case HybridTermination::completed: return "completed";
+    case HybridTermination::finished: return "finished";
     case HybridTermination::stopped_by_event: return "stopped_by_event";
     case HybridTermination::step_limit: return "step_limit";
     case HybridTermination::event_limit: return "event_limit";

@@ -171,6 +171,17 @@ class RockingSystem final : public HybridSystem {
   double next_breakpoint(double t) const override { return motion_.next_breakpoint(t); }
   bool stationary(int mode) const override { return mode == 0; }  // at rest on the base
 
+  // The end rule (analysis_end.hpp): at rest for good, or the energy after
+  // an impact in the free motion cannot reach the peak again.
+  bool finished(double t, const double*, int mode) override {
+    if (mode == 0) {
+      auto lifts = [this](double ug) { return model_.lifts(+1, ug) || (two_sided_ && model_.lifts(-1, ug)); };
+      return detail::rests_for_good(motion_, t, lifts, why_);
+    }
+    return decayed_;
+  }
+  AnalysisEnd why() const { return why_; }
+
   void push_history(double t, const double* y) {
     if (!opt_.record_history) return;
     res_.history.t.push_back(t);
@@ -260,6 +271,14 @@ class RockingSystem final : public HybridSystem {
     if (!(model_.has_restitution() && std::fabs(w) < opt_.rest_velocity)) {
       y[1] = w;
       mode = w >= 0.0 ? +1 : -1;
+      if (t >= motion_.duration()) {  // free motion: can the energy left reach the peak again?
+        double peak_work = model_.work(res_.theta_max, +1);
+        if (two_sided_) peak_work = std::min(peak_work, model_.work(res_.theta_max, -1));
+        if (detail::energy_decayed(motion_, t, 0.5 * model_.body().I0 * w * w, peak_work)) {
+          decayed_ = true;
+          why_ = AnalysisEnd::energy_decayed;
+        }
+      }
       return;
     }
     const double ug = motion_.acc(t);
@@ -302,6 +321,8 @@ class RockingSystem final : public HybridSystem {
   RockingResult res_;
   long impacts_ = 0;
   double ke_theta_u_ = 0.0;
+  bool decayed_ = false;                        // energy_decayed reached at an impact
+  AnalysisEnd why_ = AnalysisEnd::free_motion_cap;  // reason when finished() returns true
 };
 
 }  // namespace
@@ -331,6 +352,18 @@ void RockingOptions::validate() const {
   if (max_steps <= 0 || max_events <= 0 || double(max_steps) > limits::max_steps_max ||
       double(max_events) > limits::max_events_max)
     throw InputError("step and event limits must lie in [1, 1e9]");
+}
+
+const char* to_string(AnalysisEnd e) {
+  switch (e) {
+    case AnalysisEnd::overturned: return "overturned";
+    case AnalysisEnd::rest_input_below: return "rest_input_below";
+    case AnalysisEnd::rest_after_motion: return "rest_after_motion";
+    case AnalysisEnd::energy_decayed: return "energy_decayed";
+    case AnalysisEnd::free_motion_cap: return "free_motion_cap";
+    case AnalysisEnd::failed: return "failed";
+  }
+  return "unknown";
 }
 
 const char* to_string(RockingTermination t) {
@@ -439,6 +472,7 @@ RockingResult analyse(const RockingModel& model, const GroundMotion& motion, con
 
   RockingResult r = std::move(sys.result());
   detail::take_integration(h, r);
+  r.motion_duration = motion.duration();
   r.impacts = sys.impacts();
   r.alpha = model.body().alpha;
   if (!model.foundation().is_rigid()) r.theta_cr = model.theta_cr();
@@ -457,6 +491,7 @@ RockingResult analyse(const RockingModel& model, const GroundMotion& motion, con
   const RockingBody& b = model.body();
   r.d_max = b.R * std::fabs(std::sin(b.alpha) - std::sin(b.alpha - r.theta_max));
   flag_untrustworthy(model, options, r);
+  r.end = detail::analysis_end(r, h, sys.why());
   return r;
 }
 
@@ -467,7 +502,9 @@ RockingResult analyse(const RockingModel& model, const Record& record, const Roc
 
 RockingResult analyse_free(const RockingModel& model, const RockingInitialState& initial, double duration_s,
                            const RockingOptions& options) {
-  return analyse(model, GroundMotion::none(duration_s), options, initial);
+  RockingOptions o = options;
+  o.tail_s = 0.0;  // the duration is the free motion
+  return analyse(model, GroundMotion::none(duration_s), o, initial);
 }
 
 }  // namespace assess

@@ -26,7 +26,40 @@ GroundMotion GroundMotion::from_record(const Record& record, double scale, bool 
   g.dt_ = record.dt;
   g.inv_dt_ = 1.0 / record.dt;
   g.duration_ = record.duration();
+  // Suffix extremes, the zero after the record included.
+  const std::size_t n = g.samples_.size();
+  g.suffix_min_.resize(n);
+  g.suffix_max_.resize(n);
+  double lo = 0.0, hi = 0.0;
+  for (std::size_t i = n; i-- > 0;) {
+    lo = std::min(lo, g.samples_[i]);
+    hi = std::max(hi, g.samples_[i]);
+    g.suffix_min_[i] = lo;
+    g.suffix_max_[i] = hi;
+  }
   return g;
+}
+
+void GroundMotion::acc_range_from(double t, double& lo, double& hi) const {
+  if (!samples_.empty()) {
+    // ug'' on [t_i, t_i+1] lies between samples i and i+1: from sample
+    // i = floor(t / dt) on, one sample earlier against the rounding of t / dt.
+    const double x = t < 0.0 ? 0.0 : std::max(0.0, std::floor(t * inv_dt_) - 1.0);
+    if (x >= double(samples_.size())) {
+      lo = hi = 0.0;
+      return;
+    }
+    const auto i = static_cast<std::size_t>(x);
+    lo = suffix_min_[i];
+    hi = suffix_max_[i];
+    return;
+  }
+  if (!fn_ || t > duration_) {
+    lo = hi = 0.0;
+    return;
+  }
+  lo = -std::numeric_limits<double>::infinity();
+  hi = std::numeric_limits<double>::infinity();
 }
 
 GroundMotion GroundMotion::from_function(std::function<double(double)> acc_m_s2, double duration_s,

@@ -535,6 +535,14 @@ void add_dynamic(const Ctx& c) {
                              fixed(a.selection_range.T_max, 2).c_str()) +
                       a.selection->message);
   if (a.compatibility.computed) c.h.add_paragraph(c.t("dyn.compat_msg") + ": " + a.compatibility.message + ".");
+  {
+    std::map<std::string, int> ends;  // why each analysis ended (dynamics/analysis_end.hpp)
+    for (const DynamicRun& r : a.runs) ++ends[to_string(r.result.end)];
+    std::string list;
+    for (const auto& [k, n] : ends) list += (list.empty() ? "" : ", ") + c.t("end." + k) + " " + std::to_string(n);
+    c.h.add_paragraph(c.t("dyn.duration") + " " + fixed(a.free_tail_s, 0) + " s. " + c.t("dyn.ends") + ": " + list +
+                      ".");
+  }
   add_records_compatibility(c);
   c.h.add_heading(c.t("dyn.histories"), 3);
   add_histories(c);

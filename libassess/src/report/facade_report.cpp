@@ -141,12 +141,15 @@ std::string facade_text(const FacadeAssessment& a, TextWidth width) {
                   6) +
              "\n";
       }
-      if (a.trimmed)
-        o += format("  each record integrated to 99.9 %% of its Arias intensity, then %.0f s of free rocking\n",
-                    a.free_tail_s);
+      o += para(format("  each record integrated to its last sample, then the free motion until rest, until the "
+                       "energy after an impact can no longer reach the peak rotation, or for at most %.0f s "
+                       "(column 'end': why each analysis ended)",
+                       a.free_tail_s),
+                4) +
+           "\n";
       o += format(wide ? "\n  %-*s %-18s %9s %7s %9s %8s %8s %10s  %s\n" : "\n  %-*s %-12s %7s %7s %8s %7s %7s %9s  %s\n",
                   rw, "record", "restitution", "th/th_u", "impacts", "overturn", "energy", "d* (m)", "t_end (s)",
-                  "termination");
+                  "end");
       for (const DynamicRun& r : a.runs)
         if (!succeeded(r.result))  // a failed analysis shows no numbers
           o += para(format("  %-*s %-18s FAILED (%s): %s", rw, record_label(a, r).c_str(),
@@ -160,7 +163,7 @@ std::string facade_text(const FacadeAssessment& a, TextWidth width) {
                       rw, record_label(a, r).c_str(),
                     describe(a.dynamic->restitutions[r.restitution]).c_str(), r.theta_ratio, r.result.impacts,
                     r.result.overturned ? "yes" : "no", r.result.dc, r.d_star, r.result.t_end,
-                    to_string(r.result.termination));
+                    to_string(r.result.end));
       o += "\n" +
            para(format("  summary per restitution (energy D/C = demand/capacity, the seed paper's measure (seed §3.2), "
                        "not a code check; Circ. 2019 C8.7.1.2.1.9 acceptance: d0 never exceeded and peak d* <= d_SLV = "
@@ -315,7 +318,9 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
                              for (const auto& sr : a.selection->records) rp.push_back(sr.psa);
                              return rp;
                            }()}};
-      d["trim"] = {{"trimmed", a.trimmed}, {"arias_fraction", 0.999}, {"free_tail_s", a.free_tail_s}};
+      d["duration"] = {{"whole_record", true},
+                       {"free_motion_cap_s", a.free_tail_s},
+                       {"free_energy_fraction", free_energy_fraction}};
       nlohmann::json runs = nlohmann::json::array();
       for (const DynamicRun& r : a.runs)
         runs.push_back({{"record", a.records[r.record].name},
@@ -336,6 +341,9 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
                         {"d_star", r.d_star},
                         {"collapse", r.collapse},
                         {"termination", to_string(r.result.termination)},
+                        {"end", to_string(r.result.end)},
+                        {"t_end", r.result.t_end},
+                        {"motion_duration_s", r.result.motion_duration},
                         {"failed", !succeeded(r.result)}});
       d["analyses"] = runs;
       nlohmann::json sums = nlohmann::json::array();

@@ -229,6 +229,21 @@ const std::map<std::string, Entry>& catalogue() {
         "exceeded and peak d* ≤ d_SLV, the records combined by NTC 2018 §7.3.5 (mean with at least 7, the most "
         "unfavourable with 3–6, no verdict with fewer)."}},
       {"dyn.compat_msg", {"Accelerogrammi e spettro SLV", "Records and the SLV spectrum"}},
+      {"dyn.duration",
+       {"Durata delle analisi: ogni accelerogramma è integrato fino all'ultimo campione, poi il moto libero fino "
+        "alla quiete, o fino a quando l'energia residua dopo un urto non può più raggiungere la rotazione massima "
+        "(la rotazione massima, il D/C in energia e d* sono allora definitivi), al più per",
+        "Duration of the analyses: each record is integrated to its last sample, then the free motion until rest, or "
+        "until the energy left after an impact can no longer reach the peak rotation (the peak rotation, the energy "
+        "D/C and d* are then final), for at most"}},
+      {"dyn.ends", {"fine delle analisi", "end of the analyses"}},
+      {"end.overturned", {"ribaltamento", "overturning"}},
+      {"end.rest_input_below",
+       {"quiete, il resto dell'accelerogramma non può sollevare il corpo", "at rest, the rest of the record cannot lift the body"}},
+      {"end.rest_after_motion", {"quiete dopo l'accelerogramma", "at rest after the record"}},
+      {"end.energy_decayed", {"energia residua insufficiente a raggiungere il picco", "energy left cannot reach the peak"}},
+      {"end.free_motion_cap", {"durata massima del moto libero", "cap of the free motion"}},
+      {"end.failed", {"analisi fallita", "failed analysis"}},
       {"dyn.skipped", {"accelerogramma escluso", "record skipped"}},
       // Comparison.
       {"cmp.heading", {"Esito per approccio (Lipo & de Felice 2017, Fig. 8)",

@@ -73,11 +73,8 @@ struct DynamicSpec {
   /// "floor_filter": {"T1_s", "damping_pct"}: period (s) and damping (%) of the
   /// first-mode filter; default the building's T1 and damping.
   std::optional<double> filter_T1, filter_damping_pct;
-  /// Integrate each record only to the end of its strong motion (99.9 % of the
-  /// Arias intensity) followed by free rocking for free_tail_s; false keeps
-  /// the whole record ("whole_record": true). docs/theory/record-selection.md §4.
-  bool trim = true;
-  double free_tail_s = 30.0;  ///< s, the documented maximum free-rocking tail after the trim
+  // Every record is integrated to its last sample, then the free motion up
+  // to options.tail_s (issue 21, dynamics/analysis_end.hpp): no trimming.
 };
 
 /// Reads a listed record: a plain text file when `unit` is given (with `dt`

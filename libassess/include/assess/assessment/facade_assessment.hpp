@@ -40,7 +40,7 @@ struct RecordUsed {
   double deviation = std::numeric_limits<double>::quiet_NaN();  ///< individual RMS of f S/Se - 1 over the range (-)
   int rank = 0;                  ///< rank of that deviation among the eligible records (1 = best)
   double duration_s = 0.0;       ///< length of the record file (s)
-  double integrated_s = 0.0;     ///< excitation integrated (s): to 99.9 % Arias if trimmed, else the whole record
+  double integrated_s = 0.0;     ///< excitation integrated (s): the whole motion at the mechanism's base
 };
 
 /// One time-history analysis.
@@ -118,8 +118,7 @@ struct FacadeAssessment {
   std::vector<std::string> selection_site_classes;  ///< classes accepted in the end (empty = any)
   double selection_max_pga_ratio = 0.0;         ///< the PGA guard used (-)
   double selection_max_scale = 0.0, selection_max_mean_scale = 0.0;  ///< scale limits used (-)
-  bool trimmed = false;       ///< records integrated to 99.9 % Arias + free tail
-  double free_tail_s = 0.0;   ///< free-rocking tail after the excitation (s)
+  double free_tail_s = 0.0;   ///< cap on the free motion after each record (s; dynamics/analysis_end.hpp)
   std::vector<std::string> record_failures;  ///< "<path>: <message>" of records skipped (--keep-going)
   std::vector<DynamicRun> runs;
   std::vector<RestitutionSummary> summaries;

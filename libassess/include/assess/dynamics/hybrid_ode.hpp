@@ -86,6 +86,12 @@ class HybridSystem {
   /// change in time with the state held constant. Read once per mode (at the
   /// start and after each jump). Default: false.
   virtual bool stationary(int /*mode*/) const { return false; }
+  /// True if integrating further cannot change anything the system reports
+  /// (e.g. a body at rest that the rest of the excitation cannot move): the
+  /// integration then ends with HybridTermination::finished. Asked at the
+  /// start, after every jump and at every breakpoint of a stationary mode.
+  /// Default: false (integrate to t_end).
+  virtual bool finished(double /*t*/, const double* /*y*/, int /*mode*/) { return false; }
 
   // Optional fast paths (defaults: none; results are the same either way).
 
@@ -125,6 +131,7 @@ struct HybridOdeOptions {
 /// How an integration ended.
 enum class HybridTermination {
   completed,         ///< reached t_end
+  finished,          ///< the system declared itself finished before t_end (HybridSystem::finished)
   stopped_by_event,  ///< an event callback returned stop
   step_limit,        ///< max_steps reached
   event_limit,       ///< max_events reached (e.g. an accumulation of events)

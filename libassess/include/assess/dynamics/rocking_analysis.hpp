@@ -3,6 +3,7 @@
 // results (peak rotation, impacts, overturning, energy demand/capacity).
 #pragma once
 
+#include "assess/dynamics/analysis_end.hpp"
 #include "assess/records/ground_motion.hpp"
 #include "assess/dynamics/hybrid_ode.hpp"
 #include "assess/records/record.hpp"
@@ -32,7 +33,10 @@ struct RockingOptions {
   OverturnCriterion overturn = OverturnCriterion::theta_u;  ///< default theta_u
   double scale = 1.0;     ///< factor on the record (record overload only; default 1)
   bool reverse = false;   ///< flip the record's polarity (record overload only; default false)
-  double tail_s = 0.0;    ///< free motion after the end of the excitation (s; default 0)
+  /// Cap on the free motion after the end of the excitation (s; default 30):
+  /// the free motion ends earlier when the body is at rest or its energy has
+  /// decayed (analysis_end.hpp). The one default of every front end.
+  double tail_s = 30.0;
   bool record_history = false;  ///< keep theta(t), theta'(t) (default false)
   /// Rest (Zeno) criterion: after an impact, if |theta'+| < rest_velocity and the
   /// excitation cannot lift the body, it comes to rest on its base (rad/s; default 1e-6).
@@ -73,6 +77,8 @@ struct RockingResult {
   RockingTermination termination = RockingTermination::completed;
   std::string message;
   double t_end = 0.0;         ///< time reached (s)
+  double motion_duration = 0.0;  ///< duration of the excitation, integrated to its last sample (s)
+  AnalysisEnd end = AnalysisEnd::free_motion_cap;  ///< why the analysis ended (analysis_end.hpp)
   long steps = 0, rejected_steps = 0, event_steps = 0, rhs_evaluations = 0;
   RockingHistory history;     ///< filled if RockingOptions::record_history
 
@@ -107,7 +113,8 @@ RockingResult analyse(const RockingModel& model, const Record& record, const Roc
 ///   theta_cr < 10 abs_tol (docs/theory/rocking.md, "Upper bound on k").
 RockingResult analyse(const RockingModel& model, const GroundMotion& motion, const RockingOptions& options,
                       const RockingInitialState& initial = {});
-/// Free rocking from an initial state for duration_s (s).
+/// Free rocking from an initial state for duration_s (s): options.tail_s is
+/// not added (the duration is the free motion), the end rule applies.
 RockingResult analyse_free(const RockingModel& model, const RockingInitialState& initial, double duration_s,
                            const RockingOptions& options);
 

@@ -27,7 +27,8 @@ class GroundMotion {
   /// No excitation for duration_s (free rocking).
   static GroundMotion none(double duration_s);
 
-  /// ug''(t) (m/s^2); 0 outside [0, duration] for records.
+  /// ug''(t) (m/s^2); 0 outside [0, duration] (records and functions alike:
+  /// the motion is the excitation on [0, duration], then free motion).
   double acc(double t) const {
     if (!samples_.empty()) {
       if (t < 0.0) return 0.0;
@@ -36,8 +37,15 @@ class GroundMotion {
       if (static_cast<std::size_t>(i) + 1 >= samples_.size()) return t <= duration_ ? samples_.back() : 0.0;
       return samples_[i] + (x - double(i)) * (samples_[i + 1] - samples_[i]);
     }
-    return fn_ ? fn_(t) : 0.0;
+    return fn_ && t <= duration_ ? fn_(t) : 0.0;
   }
+  /// The range [lo, hi] of ug'' (m/s^2) over [t, +inf): the samples from the
+  /// one at or before t to the last, and the zero after the end (records); for
+  /// a function of time, [0, 0] from its end on and (-inf, +inf) before it
+  /// (unknown). O(1): suffix extremes computed with the record (issue 21: the
+  /// exact early end of an analysis whose body rests and cannot be lifted by
+  /// what is left of the motion, docs/theory/rocking.md §8).
+  void acc_range_from(double t, double& lo, double& hi) const;
   /// Next breakpoint strictly after t (s), +inf if none.
   double next_breakpoint(double t) const;
 
@@ -65,6 +73,7 @@ class GroundMotion {
 
  private:
   std::vector<double> samples_;  // m/s^2, already scaled
+  std::vector<double> suffix_min_, suffix_max_;  // min/max of samples_[i..] and 0 (m/s^2)
   double dt_ = 0.0, inv_dt_ = 0.0;
   std::function<double(double)> fn_;
   std::vector<double> breakpoints_;
