@@ -88,3 +88,12 @@ add_test(NAME cli.campaign_index_browser
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.campaign_index_browser PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77
   ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+# Issue 24: two runs give byte-identical HTML, in both languages (church, with record selection).
+foreach(lang it en)
+  add_test(NAME cli.report_church_reproducible_${lang}
+    COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:assess_cli> -DSRC=${PROJECT_SOURCE_DIR}
+            -DOUT=${CMAKE_CURRENT_BINARY_DIR}/reproducible_${lang} -DCASE=mechanisms/church-facade.json -DLANG=${lang}
+            -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/html_reproducible.cmake)
+  set_tests_properties(cli.report_church_reproducible_${lang} PROPERTIES LABELS cli
+    ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+endforeach()

@@ -46,3 +46,9 @@ assess_cli_test(run_explicit_chain_dynamic ARGS run tests/data/chains/rocking_fr
 # Issue 21: records are never cut; the old trimming keys are refused with the key that replaces them.
 assess_cli_error_test(run_whole_record_false "/dynamic/whole_record.*integrated to its last sample.*tail_s" run tests/cli/run_bad/whole_record_false.json)
 assess_cli_error_test(run_free_tail_s "/dynamic/free_tail_s.*capped by \"tail_s\"" run tests/cli/run_bad/free_tail_s.json)
+# Issue 24: the man page in UTF-8.
+if(TARGET assess_man)
+  add_test(NAME cli.man_page_utf8
+    COMMAND ${CMAKE_COMMAND} -DMAN=${PROJECT_BINARY_DIR}/apps/assess.1 -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/man_page_utf8.cmake)
+  set_tests_properties(cli.man_page_utf8 PROPERTIES LABELS cli)
+endif()

@@ -9,6 +9,8 @@
 #include "assess/report/messages.hpp"
 #include "assess/support/error.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <limits>
 #include <set>
@@ -70,6 +72,37 @@ TEST_CASE("message catalogue: every key in both languages, Italian code terms") 
   CHECK(mechanism_name(Lang::it, "vertical_flexure") == "flessione verticale");
   CHECK(mechanism_name(Lang::en, "gable_overturning") == "gable overturning");
   CHECK_THROWS_AS(msg(Lang::it, "no.such.key"), std::logic_error);
+  // Issue 24: messages with arguments are formatted by {fmt} ("{}" placeholders):
+  // a "%" is text, never a conversion ("+30 % dello" once printed stray memory).
+  // Every entry: the same placeholders in both languages, no braces but "{}",
+  // no printf conversion left, and formatting with its arguments puts each in.
+  auto placeholders = [](const std::string& s) {
+    int n = 0;
+    for (std::size_t p = s.find("{}"); p != std::string::npos; p = s.find("{}", p + 2)) ++n;
+    return n;
+  };
+  int with_args = 0;
+  for (const std::string& k : keys) {
+    CAPTURE(k);
+    const std::string& it = msg(Lang::it, k);
+    const std::string& en = msg(Lang::en, k);
+    const int n = placeholders(it);
+    CHECK(placeholders(en) == n);
+    for (const std::string* s : {&it, &en}) {
+      CAPTURE(*s);
+      std::string rest = *s;
+      for (std::size_t p = rest.find("{}"); p != std::string::npos; p = rest.find("{}")) rest.erase(p, 2);
+      CHECK(rest.find('{') == std::string::npos);
+      CHECK(rest.find('}') == std::string::npos);
+      for (const char* conv : {"%s", "%d", "%llu", "%g", "%f", "%.", "%%", "%-", "%*"}) CHECK(s->find(conv) == std::string::npos);
+      if (n == 0) continue;
+      const std::string out = fmt::format(fmt::runtime(*s), "<A0>", "<A1>", "<A2>", "<A3>");
+      for (int i = 0; i < n; ++i) CHECK(out.find("<A" + std::to_string(i) + ">") != std::string::npos);
+      CHECK(out.find("<A" + std::to_string(n) + ">") == std::string::npos);
+    }
+    with_args += n > 0 ? 1 : 0;
+  }
+  CHECK(with_args >= 6);  // mech.candidates_cap, kin.adrs_*, dyn.selection, camp.intro
   CHECK(parse_lang("en") == Lang::en);
   CHECK_THROWS_AS(parse_lang("fr"), InputError);
 }

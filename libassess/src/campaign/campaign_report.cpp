@@ -9,6 +9,8 @@
 //   moved            theta_max > 0: the block left its rest position
 #include "assess/campaign/campaign_report.hpp"
 
+#include "report/text_format.hpp"
+
 #include "assess/report/html_report.hpp"
 #include "assess/report/kinematic_report.hpp"
 #include "assess/report/messages.hpp"
@@ -299,9 +301,8 @@ std::string campaign_index_html(const json& s, const std::vector<std::pair<std::
   const Lang L = Lang::en;  // campaigns are research output: English (messages.cpp "camp.*")
   HtmlReport h(msg(L, "camp.title") + " — " + s.value("campaign", std::string()));
   h.set_lang(to_string(L));
-  h.add_paragraph(format(msg(L, "camp.intro").c_str(), (unsigned long long)s.value("analyses", 0ull),
-                         (unsigned long long)s.value("analyses_in_campaign", 0ull),
-                         (unsigned long long)s.value("failed", 0ull)));
+  h.add_paragraph(msgf(L, "camp.intro", s.value("analyses", 0ull), s.value("analyses_in_campaign", 0ull),
+                       s.value("failed", 0ull)));
   using C = HtmlCell;
   if (s.contains("by_model")) {
     std::vector<std::vector<C>> rows;

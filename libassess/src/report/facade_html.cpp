@@ -3,6 +3,8 @@
 // FacadeAssessment; every sentence from the message catalogue (messages.cpp).
 #include "assess/report/facade_report.hpp"
 
+#include "report/text_format.hpp"
+
 #include "report/xml_escape.hpp"
 
 #include "assess/hazard/comuni.hpp"
@@ -245,7 +247,7 @@ void add_mechanism(const Ctx& c) {
       row.push_back(HtmlCell(gov, cls));
       crows.push_back(row);
     }
-    c.h.add_cell_table(head, crows, format(c.t("mech.candidates_cap").c_str(), a.kase.mechanism.parameter_name.c_str()));
+    c.h.add_cell_table(head, crows, msgf(c.L, "mech.candidates_cap", a.kase.mechanism.parameter_name));
   }
 }
 
@@ -294,7 +296,7 @@ void add_kinematic(const Ctx& c) {
   for (const auto& [ls, colour] : colours) {
     const auto sp = c.a.spectra.find(ls);
     if (sp == c.a.spectra.end()) continue;
-    PlotSeries s = series(format(c.t("kin.adrs_spectrum").c_str(), to_string(ls).c_str()),
+    PlotSeries s = series(msgf(c.L, "kin.adrs_spectrum", to_string(ls)),
                           ls == LimitState::SLV ? PlotSeries::Style::Line : PlotSeries::Style::Dashed);
     for (double T : c.a.periods) s.x.push_back(sp->second.SDe(T)), s.y.push_back(sp->second.Se(T));
     s.color = colour;
@@ -321,7 +323,7 @@ void add_kinematic(const Ctx& c) {
       PlotSeries line = series("", PlotSeries::Style::Dashed, {0.0, row.demand * 1.15}, {0.0, row.demand * 1.15 * w2});
       line.color = "#888888";
       p.series.push_back(line);
-      PlotSeries d = series(format(c.t("kin.adrs_demand").c_str(), who.c_str(), "").c_str(), PlotSeries::Style::Points,
+      PlotSeries d = series(msgf(c.L, "kin.adrs_demand", who), PlotSeries::Style::Points,
                             {row.demand}, {row.demand * w2});
       d.color = colour;
       d.point_size = row.code == "NTC2008" ? 0.9 : 1.3;
@@ -329,7 +331,7 @@ void add_kinematic(const Ctx& c) {
       p.series.push_back(d);
       d_show = std::max(d_show, row.demand * 1.2);
     }
-    PlotSeries q = series(format(c.t("kin.adrs_capacity").c_str(), who.c_str(), "").c_str(), PlotSeries::Style::Points,
+    PlotSeries q = series(msgf(c.L, "kin.adrs_capacity", who), PlotSeries::Style::Points,
                           {row.capacity}, {a_on_curve(row.capacity)});
     q.color = colour;
     q.point_type = row.code == "NTC2008" ? 4 : 5;
@@ -531,8 +533,7 @@ void add_dynamic(const Ctx& c) {
                 rrows, "");
   for (const std::string& f : a.record_failures) c.h.add_paragraph(c.t("dyn.skipped") + ": " + f);
   if (a.selection)
-    c.h.add_paragraph(format(c.t("dyn.selection").c_str(), fixed(a.selection_range.T_min, 2).c_str(),
-                             fixed(a.selection_range.T_max, 2).c_str()) +
+    c.h.add_paragraph(msgf(c.L, "dyn.selection", fixed(a.selection_range.T_min, 2), fixed(a.selection_range.T_max, 2)) +
                       a.selection->message);
   if (a.compatibility.computed) c.h.add_paragraph(c.t("dyn.compat_msg") + ": " + a.compatibility.message + ".");
   {

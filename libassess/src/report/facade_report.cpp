@@ -1,6 +1,8 @@
 // facade_report.cpp: text, JSON and HTML reports of a façade assessment.
 #include "assess/report/facade_report.hpp"
 
+#include "report/text_format.hpp"
+
 #include "assess/hazard/comuni.hpp"
 #include "assess/report/kinematic_report.hpp"
 #include "assess/support/units.hpp"

@@ -3,25 +3,12 @@
 #include "assess/report/kinematic_report.hpp"
 
 #include "assess/support/units.hpp"
+#include "report/text_format.hpp"
 
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
 
 namespace assess {
-
-std::string format(const char* fmt, ...) {
-  va_list ap;
-  va_start(ap, fmt);
-  va_list ap2;
-  va_copy(ap2, ap);
-  const int n = std::vsnprintf(nullptr, 0, fmt, ap);
-  va_end(ap);
-  std::string s(static_cast<std::size_t>(n > 0 ? n : 0), '\0');
-  if (n > 0) std::vsnprintf(s.data(), s.size() + 1, fmt, ap2);
-  va_end(ap2);
-  return s;
-}
 
 const char* verdict(bool satisfied) {
   return satisfied ? "verificato / satisfied" : "non verificato / not satisfied";

@@ -87,9 +87,9 @@ const std::map<std::string, Entry>& catalogue() {
                     "The mechanism drawn from the kinematic chain: blocks, hinges, loads and thrusts with their values, "
                     "ties, control point, storeys and hinge level. x outward."}},
       {"mech.candidates", {"Meccanismi candidati", "Candidate mechanisms"}},
-      {"mech.candidates_cap", {"Candidati esaminati (parametro: %s); per ciascuna norma governa il candidato con il D/C "
+      {"mech.candidates_cap", {"Candidati esaminati (parametro: {}); per ciascuna norma governa il candidato con il D/C "
                                "massimo sulle sue verifiche (Circ. 2019 C8.7.1; C8A.4: il meccanismo più sfavorevole).",
-                               "Candidates analysed (parameter: %s); for each code the candidate with the largest D/C "
+                               "Candidates analysed (parameter: {}); for each code the candidate with the largest D/C "
                                "over its checks governs (Circ. 2019 C8.7.1; C8A.4: the most unfavourable mechanism)."}},
       {"mech.candidate", {"candidato", "candidate"}},
       {"mech.governs", {"governa", "governs"}},
@@ -139,9 +139,9 @@ const std::map<std::string, Entry>& catalogue() {
       {"kin.adrs_x", {"spostamento spettrale d*, Sd (m)", "spectral displacement d*, Sd (m)"}},
       {"kin.adrs_y", {"accelerazione spettrale a*, Sa (m/s²)", "spectral acceleration a*, Sa (m/s²)"}},
       {"kin.adrs_curve", {"curva di capacità a*–d*", "capacity curve a*–d*"}},
-      {"kin.adrs_spectrum", {"spettro elastico %s (5 %%)", "%s elastic spectrum (5 %%)"}},
-      {"kin.adrs_demand", {"domanda %s %s", "%s %s demand"}},
-      {"kin.adrs_capacity", {"capacità %s %s", "%s %s capacity"}},
+      {"kin.adrs_spectrum", {"spettro elastico {} (5 %)", "{} elastic spectrum (5 %)"}},
+      {"kin.adrs_demand", {"domanda {}", "{} demand"}},
+      {"kin.adrs_capacity", {"capacità {}", "{} capacity"}},
       {"kin.adrs_fig",
        {"Curva di capacità dell'oscillatore equivalente (C8A.4.5 / C8.7.1.4) nel piano Sa–Sd con gli spettri "
         "elastici SLV e SLC del sito (5 %) e i punti delle verifiche in spostamento al piede: domanda (cerchi) "
@@ -187,8 +187,8 @@ const std::map<std::string, Entry>& catalogue() {
       {"dyn.station", {"stazione", "station"}},
       {"dyn.component", {"componente", "component"}},
       {"dyn.scale", {"fattore di scala", "scale factor"}},
-      {"dyn.selection", {"Selezione (regola di REXEL: media entro −10 %/+30 % dello spettro SLV tra %s e %s s): ",
-                         "Selection (REXEL's rule: mean within −10 %/+30 % of the SLV spectrum over %s–%s s): "}},
+      {"dyn.selection", {"Selezione (regola di REXEL: media entro −10 %/+30 % dello spettro SLV tra {} e {} s): ",
+                         "Selection (REXEL's rule: mean within −10 %/+30 % of the SLV spectrum over {}–{} s): "}},
       {"dyn.compat_title", {"Compatibilità spettrale degli accelerogrammi", "Spectral compatibility of the records"}},
       {"dyn.compat_fig",
        {"Spettro elastico SLV (5 %) con la fascia di tolleranza −10 %/+30 % (ombreggiata) nell'intervallo di periodi "
@@ -324,9 +324,9 @@ const std::map<std::string, Entry>& catalogue() {
       {"appendix.missing", {"(testo del file non disponibile)", "(file text not available)"}},
       // Campaign index (English: campaigns are research output).
       {"camp.title", {"Campagna parametrica", "Parametric campaign"}},
-      {"camp.intro", {"%llu analisi su %llu della campagna, %llu non riuscite. Tabelle da summary.json; risultati "
+      {"camp.intro", {"{} analisi su {} della campagna, {} non riuscite. Tabelle da summary.json; risultati "
                       "completi in results.csv.",
-                      "%llu analyses of the %llu of the campaign, %llu failed. Tables from summary.json; every "
+                      "{} analyses of the {} of the campaign, {} failed. Tables from summary.json; every "
                       "result in results.csv."}},
       {"camp.by_model", {"Per modello", "By model"}},
       {"camp.by_scale", {"Per modello e fattore di scala", "By model and scale factor"}},

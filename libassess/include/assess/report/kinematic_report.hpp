@@ -11,8 +11,6 @@
 
 namespace assess {
 
-/// printf-style formatting into a std::string.
-std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
 /// "verificato / satisfied" or "non verificato / not satisfied".
 const char* verdict(bool satisfied);
 
