@@ -6,7 +6,7 @@
 # Gable: the summary carries the failing at-height rows (before: only the two
 # NTC 2008 ground rows, "<= 1").
 assess_cli_test(verdict_gable_summary ARGS run mechanisms/gable.json
-  PASS "Verdict by approach.*NTC2008  strength        SLV  height     2\\.226  non verificato.*NTC2018  strength        SLV  height     2\\.237  non verificato.*NTC2008  NON VERIFICATO / NOT SATISFIED.*NTC2018  NON VERIFICATO / NOT SATISFIED")
+  PASS "Verdict by approach.*NTC2008  strength        SLV  height     2\\.226  non verificato.*NTC2018  strength        SLV  height     2\\.237  non verificato.*NTC2008  linear     NON VERIFICATO / NOT SATISFIED.*\\(for comparison\\).*NTC2018  linear     NON VERIFICATO / NOT SATISFIED.*NTC2018  nonlinear  NON VERIFICATO / NOT SATISFIED: 2 of 2.*conclusion \\(adopted procedure: nonlinear, NTC2018.*NON VERIFICATO / NOT SATISFIED, D/C = 1\\.129")
 assess_cli_test(verdict_gable_json ARGS run mechanisms/gable.json --json
   PASS "\"comparison\": \\[[^{}]*\\{[^{}]*\"approach\": \"strength\",[^{}]*\"dc\": 2\\.22[^{}]*\"limit_state\": \"SLV\",[^{}]*\"location\": \"height\",[^{}]*\"satisfied\": false")
 # Two-storey façade: the first-floor hinge governs (before: the ground hinge, smallest alpha0).
@@ -15,7 +15,7 @@ assess_cli_test(verdict_two_storey_governing ARGS kinematic mechanisms/two_store
 # An overturning under one of two records: "overturned in 1 of 2" and a collapse,
 # never "<= 1" (before: "dynamic energy D/C 0.513 <= 1").
 assess_cli_test(verdict_overturn_two_records ARGS run tests/cli/verdict/overturn_two_records.json
-  PASS "seed     energy \\(mean\\)   SLV  ground     0\\.5[0-9]+  collapse \\(overturned\\).*overturned in 1 of 2 analyses.*NTC2018  NON VERIFICATO"
+  PASS "seed     energy \\(mean\\)   SLV  ground     0\\.5[0-9]+  collapse \\(overturned\\).*overturned in 1 of 2 analyses.*NTC2018  dynamic    NON VERIFICATO"
   FAIL_REGEX "<= 1, no overturning")
 # Plain records (one column with dt and unit, two columns with the unit only)
 # through the same reader as `assess rocking` (before: unknown key "dt").

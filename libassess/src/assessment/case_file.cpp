@@ -377,7 +377,7 @@ std::vector<std::string> input_warnings(const nlohmann::json& mech, const std::s
 CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
   const JsonNode root(doc, file);
   root.allow_only({"schema_version", "project", "site", "mechanism", "knowledge_level", "FC", "codes",
-                   "building", "analysis", "dynamic"});
+                   "building", "analysis", "dynamic", "method", "check_SLD"});
   CaseFile c;
   c.file = file;
   if (root.find("schema_version")) root.integer("schema_version", 1, 1);
@@ -413,6 +413,13 @@ CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
       c.checks.codes.push_back(parse_code_edition(s));
     }
   }
+  // The adopted procedure (Circ. 2019 C8.7.1.2) and the SLD checks (issue 24).
+  if (root.find("method")) {
+    c.method = root.choice("method", {"linear", "nonlinear", "dynamic"});
+    if (c.method == "dynamic" && !root.find("dynamic"))
+      root.at("method").fail("the dynamic procedure (C8.7.1.2.1.9) needs a \"dynamic\" section with its records");
+  }
+  c.checks.sld = root.find("check_SLD") ? root.boolean_or("check_SLD", false) : false;
   if (const auto b = root.find("building")) {
     b->allow_only({"height_m", "storeys", "T1_s", "damping_pct", "Z_m"});
     BuildingModel bm;
@@ -581,7 +588,7 @@ KinematicCaseResult run_kinematic_case(const CaseFile& c) {
   warn_alpha0(out.governing);
   std::vector<CheckRow> all;
   for (const CandidateResult& cr : out.candidates) all.insert(all.end(), cr.checks.begin(), cr.checks.end());
-  out.verdict = build_verdict(all);
+  out.verdict = build_verdict(all, c.method);
   return out;
 }
 

@@ -192,7 +192,7 @@ void finish(FacadeAssessment& a) {
   for (const CheckRow& r : a.checks)
     if (r.kind == "dynamic") all.push_back(r);
   all.insert(all.end(), a.energy_rows.begin(), a.energy_rows.end());
-  a.verdict = build_verdict(all);
+  a.verdict = build_verdict(all, a.kase.method);
 }
 
 }  // namespace

@@ -7,9 +7,13 @@
 //  - a failing check always outranks a satisfied one (a collapse with a small
 //    mean D/C, a non-finite D/C), a check without a verdict outranks a
 //    satisfied one;
-//  - the overall verdict of a code is "satisfied" only if every check of that
-//    code is satisfied; "seed" rows (the energy D/C of the seed paper) are
-//    informative and never enter a code's verdict.
+//  - per code and method (linear = strength, non-linear = displacement,
+//    dynamic; Circ. 2019 C8.7.1.2 alternatives): "satisfied" only if every
+//    check of that method is satisfied; the conclusion is the adopted
+//    method's verdict under NTC 2018 (NTC 2008 is for comparison);
+//  - "overall" per code (every check of the code) is kept for reference;
+//  - "seed" rows (the energy D/C of the seed paper) are informative and never
+//    enter a verdict.
 #include "assess/assessment/verdict.hpp"
 
 #include <algorithm>
@@ -41,8 +45,27 @@ int approach_rank(const std::string& kind) {
 
 }  // namespace
 
-Verdict build_verdict(const std::vector<CheckRow>& rows) {
+std::string method_of_kind(const std::string& kind) {
+  if (kind == "strength") return "linear";
+  if (kind == "displacement") return "nonlinear";
+  if (kind == "dynamic") return "dynamic";
+  return "";
+}
+
+const std::vector<std::string>& method_names() {
+  static const std::vector<std::string> m{"linear", "nonlinear", "dynamic"};
+  return m;
+}
+
+const MethodVerdict* Verdict::conclusion() const {
+  for (const MethodVerdict& m : methods)
+    if (m.code == conclusion_code && m.method == adopted) return &m;
+  return nullptr;
+}
+
+Verdict build_verdict(const std::vector<CheckRow>& rows, const std::string& adopted) {
   Verdict v;
+  v.adopted = adopted;
   // Group key: code order of first appearance, approach rank, clause (dynamic kinds only).
   std::vector<std::string> codes;
   for (const CheckRow& r : rows) {
@@ -100,7 +123,40 @@ Verdict build_verdict(const std::vector<CheckRow>& rows) {
     }
     cv.satisfied = cv.checks > 0 && cv.failing == 0;
     v.overall.push_back(cv);
+    for (const std::string& method : method_names()) {
+      MethodVerdict mv;
+      mv.code = c;
+      mv.method = method;
+      for (const CheckRow& r : rows) {
+        if (r.code != c || method_of_kind(r.kind) != method) continue;
+        ++mv.checks;
+        const int s = severity(r);
+        mv.failing += s == 2 || !std::isfinite(r.dc) ? 1 : 0;
+        mv.no_verdict += s == 1 ? 1 : 0;
+        mv.max_dc = std::max(mv.max_dc, dc_key(r.dc));
+      }
+      if (mv.checks == 0) continue;
+      mv.satisfied = mv.failing == 0 && mv.no_verdict == 0;
+      // Its governing row: the worst summary row of the method (failing first, then the largest D/C).
+      for (std::size_t i = 0; i < v.rows.size(); ++i) {
+        const VerdictRow& x = v.rows[i];
+        if (x.code != c || method_of_kind(x.approach) != method) continue;
+        if (mv.governing < 0) {
+          mv.governing = int(i);
+          continue;
+        }
+        const VerdictRow& g = v.rows[std::size_t(mv.governing)];
+        const int sx = x.no_verdict ? 1 : (x.satisfied ? 0 : 2), sg = g.no_verdict ? 1 : (g.satisfied ? 0 : 2);
+        if (sx > sg || (sx == sg && dc_key(x.dc) > dc_key(g.dc))) mv.governing = int(i);
+      }
+      v.methods.push_back(mv);
+    }
   }
+  for (const std::string& c : codes)
+    if (c == "NTC2018") v.conclusion_code = c;
+  if (v.conclusion_code.empty())
+    for (const std::string& c : codes)
+      if (c != "seed" && v.conclusion_code.empty()) v.conclusion_code = c;
   return v;
 }
 

@@ -185,6 +185,9 @@ std::vector<CheckRow> run_code_checks(const KinematicResult& r, const CheckInput
       }
     }
   }
+  if (!in.sld)
+    rows.erase(std::remove_if(rows.begin(), rows.end(), [](const CheckRow& x) { return x.limit_state == "SLD"; }),
+               rows.end());
   return rows;
 }
 

@@ -105,31 +105,63 @@ void add_header(const Ctx& c) {
   c.h.add_paragraph(c.t("doc.intro"));
 }
 
+// The verdict box (issue 24): per code, the verdict of each method
+// (linear, non-linear, dynamic: alternative procedures of Circ. 2019
+// C8.7.1.2), then the conclusion: the adopted method's verdict under NTC
+// 2018; NTC 2008 is shown for comparison. Every count is a count of checks
+// listed in the tables of §verifiche and the appendix.
 void add_verdict_box(const Ctx& c) {
   const Verdict& v = c.a.verdict;
   std::string html = "<section class=\"verdicts\" aria-label=\"" + xml_escape(c.t("verdict.heading")) + "\">\n";
   html += "<h2 class=\"verdicts-heading\" style=\"border:none;margin-top:0.4em\">" + xml_escape(c.t("verdict.heading")) +
-          "</h2>\n<div class=\"verdicts\">\n";
+          "</h2>\n";
+  const MethodVerdict* concl = v.conclusion();
+  if (concl) {
+    const bool ok = concl->satisfied && std::isfinite(concl->max_dc);
+    html += std::string("<div class=\"conclusion ") + (ok ? "ok" : "fail") + "\" data-method=\"" + xml_escape(v.adopted) +
+            "\"><strong>" + xml_escape(c.t("verdict.conclusion")) + "</strong> (" + xml_escape(c.t("verdict.adopted")) +
+            ": " + xml_escape(c.t("method." + v.adopted)) + ", " + xml_escape(code_name(concl->code)) + "): " +
+            "<span class=\"outcome\">" + xml_escape(c.t(ok ? "verdict.ok" : "verdict.fail")) + "</span> <span class=\"" +
+            (ok ? "dc-ok" : "dc-fail") + "\">D/C = " + xml_escape(fixed(concl->max_dc, 3)) + "</span></div>\n";
+  } else if (!v.overall.empty()) {
+    html += "<div class=\"conclusion fail\"><strong>" + xml_escape(c.t("verdict.conclusion")) + "</strong>: " +
+            xml_escape(c.t("verdict.no_method_checks")) + " (" + xml_escape(c.t("method." + v.adopted)) + ")</div>\n";
+  }
+  html += "<div class=\"verdicts\">\n";
   if (v.overall.empty()) html += "<p>" + xml_escape(c.t("verdict.no_checks")) + "</p>\n";
   for (const CodeVerdict& cv : v.overall) {
-    const int gi = governing_verdict_row(v, cv.code);
-    const bool ok = cv.satisfied && std::isfinite(cv.max_dc);
-    html += std::string("<div class=\"verdict ") + (ok ? "ok" : "fail") + "\" data-code=\"" + xml_escape(cv.code) +
+    // The box's colour: the adopted method's verdict in this code, else the worst of its methods.
+    const MethodVerdict* adopted = nullptr;
+    bool all_ok = true;
+    for (const MethodVerdict& m : v.methods)
+      if (m.code == cv.code) {
+        all_ok = all_ok && m.satisfied && std::isfinite(m.max_dc);
+        if (m.method == v.adopted) adopted = &m;
+      }
+    const bool box_ok = adopted ? adopted->satisfied && std::isfinite(adopted->max_dc) : all_ok;
+    html += std::string("<div class=\"verdict ") + (box_ok ? "ok" : "fail") + "\" data-code=\"" + xml_escape(cv.code) +
             "\">\n";
-    html += "<div class=\"code\">" + xml_escape(code_name(cv.code)) + " — " + std::to_string(cv.checks) + " " +
-            xml_escape(c.t("verdict.checks")) + ", " + std::to_string(cv.failing) + " " +
-            xml_escape(c.t("verdict.failing"));
-    if (cv.no_verdict > 0) html += ", " + std::to_string(cv.no_verdict) + " " + xml_escape(c.t("verdict.no_verdict"));
-    html += "</div>\n";
-    html += "<div class=\"outcome\">" + xml_escape(c.t(ok ? "verdict.ok" : "verdict.fail")) + " <span class=\"" +
-            (ok ? "dc-ok" : "dc-fail") + "\">D/C = " + xml_escape(fixed(cv.max_dc, 3)) + "</span></div>\n";
-    if (gi >= 0) {
-      const VerdictRow& r = v.rows[std::size_t(gi)];
-      html += "<div class=\"governing\">" + xml_escape(c.t("verdict.governing")) + ": " +
-              xml_escape(c.row_name(r)) + ", D/C = " + xml_escape(fixed(r.dc, 3)) + " (" + xml_escape(r.clause) +
-              (r.candidate.empty() ? "" : "; " + xml_escape(r.candidate)) + ")";
-      if (r.no_verdict || !std::isfinite(r.dc)) html += " — " + xml_escape(c.t("verdict.untrusted"));
-      if (!r.note.empty()) html += " — " + xml_escape(r.note);
+    html += "<div class=\"code\">" + xml_escape(code_name(cv.code)) +
+            (cv.code == v.conclusion_code ? std::string() : " — " + xml_escape(c.t("verdict.comparison"))) + "</div>\n";
+    for (const MethodVerdict& m : v.methods) {
+      if (m.code != cv.code) continue;
+      const bool ok = m.satisfied && std::isfinite(m.max_dc);
+      html += std::string("<div class=\"method ") + (ok ? "ok" : "fail") + "\" data-method=\"" + xml_escape(m.method) +
+              "\">" + xml_escape(c.t("method." + m.method)) + (m.method == v.adopted ? " (" + xml_escape(c.t("verdict.adopted")) + ")" : "") +
+              ": <span class=\"outcome\">" + xml_escape(c.t(ok ? "verdict.ok" : "verdict.fail")) + "</span> <span class=\"" +
+              (ok ? "dc-ok" : "dc-fail") + "\">D/C = " + xml_escape(fixed(m.max_dc, 3)) + "</span> — " +
+              std::to_string(m.checks) + " " + xml_escape(c.t("verdict.checks")) + ", " + std::to_string(m.failing) + " " +
+              xml_escape(c.t("verdict.failing"));
+      if (m.no_verdict > 0) html += ", " + std::to_string(m.no_verdict) + " " + xml_escape(c.t("verdict.no_verdict"));
+      if (m.governing >= 0) {
+        const VerdictRow& r = v.rows[std::size_t(m.governing)];
+        html += "<div class=\"governing\">" + xml_escape(c.t("verdict.governing")) + ": " + xml_escape(c.row_name(r)) +
+                ", D/C = " + xml_escape(fixed(r.dc, 3)) + " (" + xml_escape(r.clause) +
+                (r.candidate.empty() ? "" : "; " + xml_escape(r.candidate)) + ")";
+        if (r.no_verdict || !std::isfinite(r.dc)) html += " — " + xml_escape(c.t("verdict.untrusted"));
+        if (!r.note.empty()) html += " — " + xml_escape(r.note);
+        html += "</div>";
+      }
       html += "</div>\n";
     }
     html += "</div>\n";
@@ -643,13 +675,15 @@ void add_comparison(const Ctx& c) {
   c.h.add_cell_table({c.t("checks.code"), c.t("cmp.approach"), HtmlCell("D/C", "num"), c.t("checks.outcome")}, rows,
                      c.t("cmp.table_cap"));
   std::vector<std::vector<HtmlCell>> orows;
-  for (const CodeVerdict& cv : v.overall) {
-    const bool ok = cv.satisfied && std::isfinite(cv.max_dc);
-    orows.push_back({code_name(cv.code), HtmlCell(c.t(ok ? "verdict.ok" : "verdict.fail"), ok ? "ok" : "fail"),
-                     HtmlCell(std::to_string(cv.failing) + " / " + std::to_string(cv.checks), "num"),
-                     num(cv.no_verdict, 0), dc_cell(cv.max_dc, !ok)});
+  for (const MethodVerdict& m : v.methods) {
+    const bool ok = m.satisfied && std::isfinite(m.max_dc);
+    orows.push_back({code_name(m.code) + (m.code == v.conclusion_code ? "" : " (" + c.t("verdict.comparison") + ")"),
+                     c.t("method." + m.method) + (m.method == v.adopted ? " (" + c.t("verdict.adopted") + ")" : ""),
+                     HtmlCell(c.t(ok ? "verdict.ok" : "verdict.fail"), ok ? "ok" : "fail"),
+                     HtmlCell(std::to_string(m.failing) + " / " + std::to_string(m.checks), "num"),
+                     num(m.no_verdict, 0), dc_cell(m.max_dc, !ok)});
   }
-  c.h.add_cell_table({c.t("checks.code"), c.t("cmp.overall"), HtmlCell(c.t("cmp.failing"), "num"),
+  c.h.add_cell_table({c.t("checks.code"), c.t("cmp.method"), c.t("cmp.overall"), HtmlCell(c.t("cmp.failing"), "num"),
                       HtmlCell(c.t("verdict.no_verdict"), "num"), HtmlCell(c.t("cmp.max_dc"), "num")},
                      orows, "");
 }

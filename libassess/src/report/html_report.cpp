@@ -36,6 +36,12 @@ constexpr const char* kCss = R"(
   div.verdict .code { font-size: 10pt; color: #333; } div.verdict .outcome { font-size: 16pt; font-weight: bold; white-space: nowrap; }
   div.verdict.ok .outcome { color: #11661f; } div.verdict.fail .outcome { color: #b3001b; }
   div.verdict .governing { font-size: 9pt; }
+  div.verdict .method { margin: 0.25em 0; font-size: 10pt; } div.verdict .method .outcome { font-size: 11pt; }
+  div.verdict .method.ok .outcome { color: #11661f; } div.verdict .method.fail .outcome { color: #b3001b; }
+  div.conclusion { border: 3px solid; border-radius: 4px; padding: 0.5em 0.8em; margin: 0.6em 0; font-size: 12pt; break-inside: avoid; }
+  div.conclusion.ok { border-color: #11661f; background: #eef8ef; } div.conclusion.fail { border-color: #b3001b; background: #fdeeee; }
+  div.conclusion .outcome { font-size: 16pt; font-weight: bold; }
+  div.conclusion.ok .outcome { color: #11661f; } div.conclusion.fail .outcome { color: #b3001b; }
   p.meta { font-size: 9.5pt; color: #333; margin-top: 0; }
   div.grid { display: grid; grid-template-columns: repeat(3, 1fr); gap: 0.3em; }
   div.grid div.panel { font-size: 8pt; text-align: center; break-inside: avoid; }

@@ -353,7 +353,22 @@ nlohmann::json to_json(const Verdict& v) {
                        {"failing", c.failing},
                        {"no_verdict", c.no_verdict},
                        {"max_dc", std::isfinite(c.max_dc) ? nlohmann::json(c.max_dc) : nlohmann::json(nullptr)}});
-  return {{"by_approach", rows}, {"overall", overall}};
+  nlohmann::json methods = nlohmann::json::array();
+  for (const MethodVerdict& m : v.methods)
+    methods.push_back({{"code", m.code},
+                       {"method", m.method},
+                       {"satisfied", m.satisfied},
+                       {"checks", m.checks},
+                       {"failing", m.failing},
+                       {"no_verdict", m.no_verdict},
+                       {"max_dc", std::isfinite(m.max_dc) ? nlohmann::json(m.max_dc) : nlohmann::json(nullptr)},
+                       {"for_comparison", m.code != v.conclusion_code}});
+  nlohmann::json conclusion = nullptr;
+  if (const MethodVerdict* c = v.conclusion())
+    conclusion = {{"method", c->method}, {"code", c->code}, {"satisfied", c->satisfied},
+                  {"max_dc", std::isfinite(c->max_dc) ? nlohmann::json(c->max_dc) : nlohmann::json(nullptr)}};
+  return {{"by_approach", rows}, {"overall", overall}, {"by_method", methods}, {"adopted_method", v.adopted},
+          {"conclusion", conclusion}};
 }
 
 std::string verdict_word(const VerdictRow& r) {
@@ -386,17 +401,27 @@ std::string verdict_text(const Verdict& v, TextWidth width) {
                                     r.limit_state.c_str(), r.location.c_str(), dc.c_str(), verdict_word(r).c_str());
     out += (wide ? cols + " " + tail : cols + "\n" + wrap_items(std::string(11, ' '), split_items(tail), 11)) + "\n";
   }
-  out += para("overall verdict per code (not satisfied if any check of the code fails; the seed's energy D/C is not a "
-              "code check):",
+  out += para("verdict per procedure (Circ. 2019 C8.7.1.2: linear C8.7.1.2.1.7, non-linear C8.7.1.2.1.8 and "
+              "dynamic C8.7.1.2.1.9 are alternatives; each fails if any of its checks fails; the seed's energy D/C "
+              "is not a code check):",
               2) +
          "\n";
-  for (const CodeVerdict& c : v.overall) {
-    out += format("  %-8s %s: %d of %d checks fail, largest D/C %.3f", c.code.c_str(),
-                  c.satisfied ? "VERIFICATO / SATISFIED" : "NON VERIFICATO / NOT SATISFIED", c.failing, c.checks,
-                  c.max_dc);
-    if (c.no_verdict > 0) out += format(" (%d without a verdict)", c.no_verdict);
+  for (const MethodVerdict& m : v.methods) {
+    out += format("  %-8s %-10s %s: %d of %d checks fail, largest D/C %.3f", m.code.c_str(), m.method.c_str(),
+                  m.satisfied ? "VERIFICATO / SATISFIED" : "NON VERIFICATO / NOT SATISFIED", m.failing, m.checks,
+                  m.max_dc);
+    if (m.no_verdict > 0) out += format(" (%d without a verdict)", m.no_verdict);
+    if (m.code != v.conclusion_code) out += " (for comparison)";
     out += "\n";
   }
+  if (const MethodVerdict* c = v.conclusion())
+    out += para(format("conclusion (adopted procedure: %s, %s; case key \"method\"): %s, D/C = %.3f",
+                       c->method.c_str(), c->code.c_str(),
+                       c->satisfied ? "VERIFICATO / SATISFIED" : "NON VERIFICATO / NOT SATISFIED", c->max_dc),
+                2) +
+           "\n";
+  else if (!v.methods.empty())
+    out += "conclusion: the adopted procedure (" + v.adopted + ") has no check in this case: no verdict\n";
   return out;
 }
 

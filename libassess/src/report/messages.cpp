@@ -43,10 +43,28 @@ const std::map<std::string, Entry>& catalogue() {
       {"verdict.untrusted",
        {"D/C non calcolabile: la verifica è considerata non soddisfatta", "D/C not computable: the check counts as failed"}},
       {"verdict.note",
-       {"Il riquadro riporta, per ciascuna norma, il massimo D/C su tutte le verifiche (al piede e in quota, "
-        "lineari, non lineari e dinamiche): una sola verifica non soddisfatta rende l'esito NON VERIFICATO.",
-        "For each code the box gives the largest D/C over all its checks (ground and at height, linear, non-linear "
-        "and dynamic): a single failing check makes the outcome NOT SATISFIED."}},
+       {"La Circolare 7/2019 (C8.7.1.2) propone l'analisi cinematica lineare (C8.7.1.2.1.7), quella non lineare "
+        "(C8.7.1.2.1.8) e l'analisi dinamica non lineare (C8.7.1.2.1.9) come procedure alternative: per ciascuna il "
+        "riquadro riporta il massimo D/C sulle sue verifiche (tutti i candidati, al piede e in quota), e una sola "
+        "verifica non soddisfatta la rende NON VERIFICATA. La conclusione è l'esito della procedura adottata nel "
+        "caso (chiave \"method\", in mancanza la non lineare) secondo le NTC 2018; le NTC 2008 (Circ. 617/2009 "
+        "C8A.4) sono riportate a titolo di confronto. Le verifiche allo SLD compaiono solo se il caso le richiede "
+        "(\"check_SLD\").",
+        "Circolare 7/2019 (C8.7.1.2) offers the linear kinematic analysis (C8.7.1.2.1.7), the non-linear one "
+        "(C8.7.1.2.1.8) and the non-linear dynamic analysis (C8.7.1.2.1.9) as alternative procedures: for each the "
+        "box gives the largest D/C over its checks (every candidate, at ground and at height), and a single failing "
+        "check makes it NOT SATISFIED. The conclusion is the verdict of the procedure the case adopts (key "
+        "\"method\", by default the non-linear one) under NTC 2018; NTC 2008 (Circ. 617/2009 C8A.4) is shown for "
+        "comparison. SLD checks appear only when the case asks for them (\"check_SLD\")."}},
+      {"verdict.conclusion", {"Conclusione", "Conclusion"}},
+      {"verdict.adopted", {"procedura adottata", "adopted procedure"}},
+      {"verdict.comparison", {"a titolo di confronto", "for comparison"}},
+      {"verdict.no_method_checks",
+       {"la procedura adottata non ha verifiche in questo caso: nessun esito", "the adopted procedure has no check in this case: no verdict"}},
+      {"method.linear", {"analisi cinematica lineare (resistenza)", "linear kinematic analysis (strength)"}},
+      {"method.nonlinear", {"analisi cinematica non lineare (spostamento)", "non-linear kinematic analysis (displacement)"}},
+      {"method.dynamic", {"analisi dinamica non lineare", "non-linear dynamic analysis"}},
+      {"cmp.method", {"procedura", "procedure"}},
       {"verdict.no_checks", {"Nessuna verifica: il caso non ha un sito.", "No checks: the case has no site."}},
       {"verdict.no_verdict", {"senza esito", "without a verdict"}},
       {"verdict.no_verdict_short", {"nessun esito", "no verdict"}},

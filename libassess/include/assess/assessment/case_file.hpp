@@ -30,7 +30,11 @@ struct CaseFile {
   std::optional<BuildingModel> building;
   KinematicOptions options;       ///< FC from knowledge_level or FC
   std::string knowledge_level;    ///< "LC1".."LC3" or "given"
-  CheckInput checks;              ///< codes, q, damping (hazard filled from the site when run)
+  CheckInput checks;              ///< codes, q, damping, SLD (hazard filled from the site when run)
+  /// The procedure the engineer adopts (Circ. 2019 C8.7.1.2, alternatives):
+  /// "linear", "nonlinear" (default) or "dynamic"; its verdict is the
+  /// conclusion (assessment/verdict.hpp, docs/theory/facade.md §6).
+  std::string method = "nonlinear";
   /// Reserved for the façade issue: the raw "dynamic" section, not parsed here.
   nlohmann::json dynamic;
   /// Plausibility warnings of the input (field, value, unit, why); the run goes on.

@@ -39,15 +39,48 @@ struct CodeVerdict {
   double max_dc = 0.0;     ///< the largest D/C
 };
 
+/// The verdict of one method of one code edition (issue 24; docs/theory/facade.md §6).
+/// Circ. 2019 C8.7.1.2 offers the linear kinematic analysis (C8.7.1.2.1.7,
+/// strength), the non-linear one (C8.7.1.2.1.8, displacement) and the dynamic
+/// one (C8.7.1.2.1.9) as alternative procedures; Circ. 2009 C8A.4 the linear
+/// and the non-linear. Each method's verdict is the worst of its checks, over
+/// every candidate, limit state and location.
+struct MethodVerdict {
+  std::string code;        ///< "NTC2018" | "NTC2008"
+  std::string method;      ///< "linear" | "nonlinear" | "dynamic"
+  bool satisfied = false;  ///< every check of the method satisfied (and at least one)
+  int checks = 0, failing = 0, no_verdict = 0;
+  double max_dc = 0.0;     ///< largest D/C (-); inf if one is not finite
+  int governing = -1;      ///< index in Verdict::rows of its governing row(s): the worst; -1 if none
+};
+
+/// "linear" (rows of kind "strength"), "nonlinear" ("displacement"), "dynamic" ("dynamic"); "" otherwise.
+std::string method_of_kind(const std::string& kind);
+/// The accepted method names, in the order of the reports.
+const std::vector<std::string>& method_names();
+
 struct Verdict {
   std::vector<VerdictRow> rows;      ///< code order as given, then approach order
-  std::vector<CodeVerdict> overall;  ///< one per code edition present in the rows
+  /// One per code edition present in the rows: every check of the code (all
+  /// methods together). Listed for reference; the conclusion is the adopted
+  /// method's verdict (methods, adopted).
+  std::vector<CodeVerdict> overall;
+  /// Per code and method present, code order as given, then linear, non-linear, dynamic.
+  std::vector<MethodVerdict> methods;
+  /// The method the engineer adopts (case key "method"; default "nonlinear").
+  std::string adopted = "nonlinear";
+  /// The code edition of the conclusion: NTC 2018 when checked, else the first
+  /// code (NTC 2008 rows are otherwise "a titolo di confronto").
+  std::string conclusion_code;
+  /// The adopted method's verdict under conclusion_code; nullptr if that
+  /// method has no check (e.g. no site).
+  const MethodVerdict* conclusion() const;
 };
 
 /// Builds the summary from every check row (all candidates' kinematic rows,
 /// the dynamic rows, and "seed" energy rows, which are listed but never enter
-/// a code's overall verdict). Rows of kind "dynamic" are grouped per clause
-/// (one per restitution value).
-Verdict build_verdict(const std::vector<CheckRow>& rows);
+/// a verdict). Rows of kind "dynamic" are grouped per clause (one per
+/// restitution value). `adopted`: "linear", "nonlinear" or "dynamic".
+Verdict build_verdict(const std::vector<CheckRow>& rows, const std::string& adopted = "nonlinear");
 
 }  // namespace assess

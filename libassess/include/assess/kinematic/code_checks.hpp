@@ -65,6 +65,10 @@ struct CheckInput {
   double damping_SLV_pct = 8.0;      ///< xi of the mechanism at SLV (%)
   double damping_SLC_pct = 10.0;     ///< xi of the mechanism at SLC (%)
   std::vector<CodeEdition> codes{CodeEdition::NTC2008, CodeEdition::NTC2018};
+  /// Include the SLD checks (damage limitation, not required for the safety
+  /// of existing buildings, NTC 2018 §8.3): case key "check_SLD", default
+  /// false in case files (issue 24); true here so the library computes every check.
+  bool sld = true;
   void validate() const;             ///< InputError naming the missing item
 };
 
