@@ -97,3 +97,9 @@ foreach(lang it en)
   set_tests_properties(cli.report_church_reproducible_${lang} PROPERTIES LABELS cli
     ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
 endforeach()
+# Issue 24: the Italian relazione of every shipped case is entirely Italian outside
+# the input appendix, the user's project line and the warnings (marked lang="en").
+add_test(NAME cli.report_italian_only
+  COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/italian_only.py $<TARGET_FILE:assess_cli> ${PROJECT_SOURCE_DIR}
+          ${CMAKE_CURRENT_BINARY_DIR}/italian_only)
+set_tests_properties(cli.report_italian_only PROPERTIES LABELS cli ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")

@@ -54,6 +54,8 @@ struct Ctx {
   Lang L;
   HtmlReport& h;
   const std::string& t(const std::string& key) const { return msg(L, key); }
+  /// A text generated in English by the analysis (labels, notes, descriptions) in the report's language.
+  std::string loc(const std::string& text) const { return localise(L, text); }
   const CandidateResult& gc() const { return a.kinematic.candidates[a.kinematic.governing]; }
   const KinematicResult& k() const { return gc().result; }
   /// "verifica allo SLV, lineare (resistenza), al piede"
@@ -70,7 +72,7 @@ struct Ctx {
   std::string row_name(const VerdictRow& r) const {
     return t("checks.verifica") + " " + r.limit_state + ", " + kind_name(r.approach) + ", " + t("where." + r.location);
   }
-  std::string restitution(std::size_t i) const { return describe(a.dynamic->restitutions[i]); }
+  std::string restitution(std::size_t i) const { return loc(describe(a.dynamic->restitutions[i])); }
   std::string record_label(const DynamicRun& r) const {
     return a.records[r.record].name + (r.reversed ? " (" + t("dyn.reversed") + ")" : "");
   }
@@ -156,10 +158,10 @@ void add_verdict_box(const Ctx& c) {
       if (m.governing >= 0) {
         const VerdictRow& r = v.rows[std::size_t(m.governing)];
         html += "<div class=\"governing\">" + xml_escape(c.t("verdict.governing")) + ": " + xml_escape(c.row_name(r)) +
-                ", D/C = " + xml_escape(fixed(r.dc, 3)) + " (" + xml_escape(r.clause) +
-                (r.candidate.empty() ? "" : "; " + xml_escape(r.candidate)) + ")";
+                ", D/C = " + xml_escape(fixed(r.dc, 3)) + " (" + xml_escape(c.loc(r.clause)) +
+                (r.candidate.empty() ? "" : "; " + xml_escape(c.loc(r.candidate))) + ")";
         if (r.no_verdict || !std::isfinite(r.dc)) html += " — " + xml_escape(c.t("verdict.untrusted"));
-        if (!r.note.empty()) html += " — " + xml_escape(r.note);
+        if (!r.note.empty()) html += " — " + xml_escape(c.loc(r.note));
         html += "</div>";
       }
       html += "</div>\n";
@@ -175,7 +177,7 @@ void add_site(const Ctx& c) {
   const FacadeAssessment& a = c.a;
   c.h.add_heading(c.t("site.heading"));
   const SiteSpec& sp = *a.kase.site;
-  c.h.add_paragraph(c.t("site.site") + ": " + a.site_description + "; " + c.t("site.soil") + " " +
+  c.h.add_paragraph(c.t("site.site") + ": " + c.loc(a.site_description) + "; " + c.t("site.soil") + " " +
                     to_string(sp.conditions.soil) + ", " + c.t("site.topography") + " " +
                     to_string(sp.conditions.topography) + "; " + c.t("site.vn") + " = " + fixed(sp.vn_years, 0) + " " +
                     c.t("site.years") + ", " + c.t("site.cu") + " = " + fixed(sp.cu, 2) + ", " + c.t("site.vr") +
@@ -224,7 +226,7 @@ void add_mechanism(const Ctx& c) {
   c.h.add_heading(c.t("mech.heading"));
   const std::size_t gi = a.kinematic.governing;
   c.h.add_paragraph(c.t("mech.type") + ": " + mechanism_name(c.L, a.kase.mechanism.type) + "; " +
-                    c.t("mech.governing") + ": " + c.gc().label + " (Z = " + fixed(c.gc().Z, 2) + " m).");
+                    c.t("mech.governing") + ": " + c.loc(c.gc().label) + " (Z = " + fixed(c.gc().Z, 2) + " m).");
   const Chain& chain = a.kase.mechanism.candidates.at(gi).chain;
   c.h.add_svg(mechanism_svg(chain, c.k(), c.L), c.t("mech.fig"), "fig-mechanism");
 
@@ -233,7 +235,7 @@ void add_mechanism(const Ctx& c) {
   std::vector<std::vector<HtmlCell>> rows;
   for (const LoadWork& w : c.k().loads) {
     const bool weight = w.load.type == LoadType::Weight || w.load.type == LoadType::SelfWeight;
-    rows.push_back({w.load.name, c.t("load." + to_string(w.load.type)), num(w.load.point.x(), 3),
+    rows.push_back({c.loc(w.load.name), c.t("load." + to_string(w.load.type)), num(w.load.point.x(), 3),
                     num(w.load.point.y(), 3), num((weight ? w.load.weight : w.load.force.norm()) / units::kN, 2),
                     num(w.dx, 4), num(w.dz, 4), num(w.W_dx / units::kN, 3), num(w.W_dx2 / units::kN, 3),
                     num(w.work / units::kN, 3)});
@@ -251,7 +253,7 @@ void add_mechanism(const Ctx& c) {
   // Candidates (the governing one of each code: the largest D/C over its checks, Circ. 2019 C8.7.1).
   if (a.kinematic.candidates.size() > 1) {
     c.h.add_heading(c.t("mech.candidates"), 3);
-    std::vector<HtmlCell> head{c.t("mech.candidate"), HtmlCell(a.kase.mechanism.parameter_name, "num"),
+    std::vector<HtmlCell> head{c.t("mech.candidate"), HtmlCell(c.loc(a.kase.mechanism.parameter_name), "num"),
                                HtmlCell("Z (m)", "num"), HtmlCell("α0 (-)", "num"), HtmlCell("a0* (m/s²)", "num")};
     for (const auto& [code, g] : a.kinematic.governing_by_code) head.push_back(HtmlCell("D/C " + code_name(code), "num"));
     if (!a.kinematic.governing_by_code.empty()) head.push_back(HtmlCell("ag,cap (g)", "num"));
@@ -264,7 +266,7 @@ void add_mechanism(const Ctx& c) {
         if (g == i) gov += (gov.empty() ? "" : ", ") + code_name(code);
       if (a.kinematic.governing_by_code.empty() && i == gi) gov = "α0 min";
       const std::string cls = gov.empty() ? "" : "gov";
-      std::vector<HtmlCell> row{HtmlCell(cr.label, cls), num(cr.parameter, 3, cls), num(cr.Z, 2, cls),
+      std::vector<HtmlCell> row{HtmlCell(c.loc(cr.label), cls), num(cr.parameter, 3, cls), num(cr.Z, 2, cls),
                                 num(cr.result.alpha0, 4, cls), num(cr.result.a0_star, 3, cls)};
       for (const auto& [code, g] : a.kinematic.governing_by_code) {
         const auto it = cr.max_dc.find(code);
@@ -279,7 +281,7 @@ void add_mechanism(const Ctx& c) {
       row.push_back(HtmlCell(gov, cls));
       crows.push_back(row);
     }
-    c.h.add_cell_table(head, crows, msgf(c.L, "mech.candidates_cap", a.kase.mechanism.parameter_name));
+    c.h.add_cell_table(head, crows, msgf(c.L, "mech.candidates_cap", c.loc(a.kase.mechanism.parameter_name)));
   }
 }
 
@@ -390,7 +392,7 @@ void add_checks(const Ctx& c) {
   for (const CheckRow& r : c.a.checks) {
     const bool fails = check_fails(r);
     const int prec = 4;
-    rows.push_back({code_name(r.code), HtmlCell(c.check_name(r), "", r.formula + "; " + r.clause),
+    rows.push_back({code_name(r.code), HtmlCell(c.check_name(r), "", c.loc(r.formula + "; " + r.clause)),
                     num(r.demand, prec), num(r.capacity, prec), r.unit == "m/s2" ? "m/s²" : r.unit,
                     dc_cell(r.dc, fails),
                     r.has_pga ? HtmlCell(fixed(r.ag_capacity_g, 3) + " / " + fixed(r.ag_demand_g, 3), "num")
@@ -517,7 +519,7 @@ void add_dynamic(const Ctx& c) {
   if (!a.dynamic) return;
   c.h.add_heading(c.t("dyn.heading"));
   if (!a.dynamic_applies) {
-    c.h.add_paragraph(c.t("dyn.na") + ": " + a.dynamic_note);
+    c.h.add_paragraph(c.t("dyn.na") + ": " + c.loc(a.dynamic_note));
     return;
   }
   if (a.model) {
@@ -529,7 +531,7 @@ void add_dynamic(const Ctx& c) {
                       fixed(m.theta_u(+1), 4) + " rad, " + c.t("dyn.capacity") + " " +
                       fixed(m.capacity() / units::kN, 3) + " kJ/m.");
   }
-  c.h.add_paragraph(c.t("dyn.model") + ": " + a.mechanism_dynamics->describe() + "; " + c.t("dyn.capacity") + " " +
+  c.h.add_paragraph(c.t("dyn.model") + ": " + c.loc(a.mechanism_dynamics->describe()) + "; " + c.t("dyn.capacity") + " " +
                     fixed(a.mechanism_dynamics->capacity() / units::kN, 3) + " kJ/m.");
   Plot mr;
   mr.title = c.t("dyn.mr_title");
@@ -566,8 +568,8 @@ void add_dynamic(const Ctx& c) {
   for (const std::string& f : a.record_failures) c.h.add_paragraph(c.t("dyn.skipped") + ": " + f);
   if (a.selection)
     c.h.add_paragraph(msgf(c.L, "dyn.selection", fixed(a.selection_range.T_min, 2), fixed(a.selection_range.T_max, 2)) +
-                      a.selection->message);
-  if (a.compatibility.computed) c.h.add_paragraph(c.t("dyn.compat_msg") + ": " + a.compatibility.message + ".");
+                      c.loc(a.selection->message));
+  if (a.compatibility.computed) c.h.add_paragraph(c.t("dyn.compat_msg") + ": " + c.loc(a.compatibility.message) + ".");
   {
     std::map<std::string, int> ends;  // why each analysis ended (dynamics/analysis_end.hpp)
     for (const DynamicRun& r : a.runs) ++ends[to_string(r.result.end)];
@@ -588,7 +590,7 @@ void add_dynamic(const Ctx& c) {
                      HtmlCell(std::to_string(x.overturned) + " / " + std::to_string(x.analyses) +
                                   (x.failed > 0 ? " (" + std::to_string(x.failed) + " " + c.t("dyn.failed") + ")" : ""),
                               x.failed > 0 ? "num fail" : "num"),
-                     num(x.mean_dc, 3), num(x.max_dc, 3), num(x.mean_d_star, 4), num(x.max_d_star, 4), x.rule,
+                     num(x.mean_dc, 3), num(x.max_dc, 3), num(x.mean_d_star, 4), num(x.max_d_star, 4), c.loc(x.rule),
                      x.no_verdict ? HtmlCell("—", "num") : dc_cell(x.dc_slv, fails),
                      x.no_verdict ? HtmlCell(c.t("verdict.no_verdict_short"), "fail")
                                   : HtmlCell(c.t(fails ? "fail" : "ok"), fails ? "fail" : "ok")});
@@ -621,7 +623,7 @@ void add_comparison(const Ctx& c) {
   auto bar_name = [&](const VerdictRow& r) {
     std::string n = c.kind_name(r.approach) + " " + r.limit_state;
     if (r.location == "height") n += " (" + c.t("where.height") + ")";
-    if (r.approach == "dynamic" || r.approach == "dynamic energy") n += ", " + r.clause.substr(r.clause.rfind(", ") + 2);
+    if (r.approach == "dynamic" || r.approach == "dynamic energy") n += ", " + c.loc(r.clause.substr(r.clause.rfind(", ") + 2));
     return n;
   };
   // Short tick labels under the bars (the table below names each row in full).
@@ -630,7 +632,7 @@ void add_comparison(const Ctx& c) {
                     r.limit_state;
     if (r.location == "height") n += " " + c.t("short.height");
     if (r.approach == "dynamic" || r.approach == "dynamic energy") {
-      const std::string e = r.clause.substr(r.clause.rfind(", ") + 2);
+      const std::string e = c.loc(r.clause.substr(r.clause.rfind(", ") + 2));
       n += " " + (e.rfind("e = ", 0) == 0 ? "e=" + e.substr(4) : e);
     }
     return n;
@@ -651,8 +653,8 @@ void add_comparison(const Ctx& c) {
       p.x_tic_labels.push_back({x, short_name(r)});
       dc_max = std::max(dc_max, dc);
       const bool fails = !r.satisfied || r.no_verdict || !std::isfinite(r.dc);
-      std::string note = r.candidate.empty() ? r.clause : r.candidate + "; " + r.clause;
-      if (!r.note.empty()) note += "; " + r.note;
+      std::string note = c.loc(r.candidate.empty() ? r.clause : r.candidate + "; " + r.clause);
+      if (!r.note.empty()) note += "; " + c.loc(r.note);
       rows.push_back({groups[gi] == "seed" ? c.t("cmp.group_seed") : code_name(r.code), HtmlCell(bar_name(r), "", note),
                       r.no_verdict ? HtmlCell("—", "num") : dc_cell(r.dc, fails),
                       r.code == "seed" ? HtmlCell(r.satisfied ? "≤ 1" : "> 1", r.satisfied ? "ok" : "fail")
@@ -733,7 +735,12 @@ void add_probabilistic(const Ctx& c) {
 void add_warnings(const Ctx& c) {
   if (c.a.warnings.empty()) return;
   c.h.add_heading(c.t("warnings.heading"), 2, false);
-  for (const std::string& w : c.a.warnings) c.h.add_paragraph(w);
+  // The warnings are the program's own sentences (English, as printed in the
+  // terminal); marked lang="en" so the Italian edition declares them.
+  if (c.L == Lang::it) c.h.add_paragraph(c.t("warnings.english"));
+  std::string html = "<div class=\"warnings\" lang=\"en\">\n";
+  for (const std::string& w : c.a.warnings) html += "<p>" + xml_escape(w) + "</p>\n";
+  c.h.add_raw_html(html + "</div>");
 }
 
 void add_legend(const Ctx& c) {

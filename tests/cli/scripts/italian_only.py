@@ -1,0 +1,66 @@
+#!/usr/bin/env python3
+"""The Italian relazione is entirely Italian (issue 24): renders the Italian
+HTML of every shipped case and scans its text for English words, outside the
+input appendix (<pre>), the project line (the user's own text), and elements
+that declare lang="en" (the program's warnings, marked as English).
+
+usage: italian_only.py ASSESS_EXE SOURCE_DIR OUT_DIR
+"""
+import glob
+import html
+import os
+import re
+import subprocess
+import sys
+
+# Words that are English and not Italian, nor part of a code clause or symbol.
+ENGLISH = ["the", "of", "and", "hinge", "records", "record", "analyses", "mean", "overturned", "compatible",
+           "level", "body", "rotating", "chain", "floor", "motions", "warning", "relaxed", "default", "used",
+           "blocks", "rotation", "result", "results", "band", "wedge", "gable", "crack", "middle", "above",
+           "exceeded", "within", "outside", "spectrum", "seed", "over", "largest", "peak", "most", "none",
+           "theory", "one-sided", "two-sided", "filter", "given", "each", "with", "not", "satisfied"]
+
+
+def text_of(page):
+    page = re.sub(r"<style.*?</style>", " ", page, flags=re.S)
+    page = re.sub(r"<pre>.*?</pre>", " ", page, flags=re.S)
+    page = re.sub(r'<p class="meta">.*?</p>', " ", page, flags=re.S)  # project, file: the user's words
+    page = re.sub(r'<(div|p|span)[^>]*lang="en"[^>]*>.*?</\1>', " ", page, flags=re.S)
+    page = re.sub(r"<title>.*?</title>", " ", page, flags=re.S)
+    page = re.sub(r"<[^>]+>", " ", page)
+    return html.unescape(page)
+
+
+def main():
+    exe, src, out = sys.argv[1:4]
+    os.makedirs(out, exist_ok=True)
+    failures = []
+    cases = sorted(glob.glob(os.path.join(src, "mechanisms", "*.json")))
+    for case in cases:
+        name = os.path.basename(case)[:-5]
+        if name.startswith("campaign"):
+            continue
+        page_file = os.path.join(out, name + ".it.html")
+        p = subprocess.run([exe, "run", case, "--html", page_file], cwd=src, capture_output=True, text=True)
+        if p.returncode != 0 and "/site: missing" in p.stderr:
+            continue  # a mechanism without a site is analysed by `assess kinematic`, not reported
+        if p.returncode != 0:
+            failures.append(f"{name}: assess run failed: {p.stderr.strip()[:300]}")
+            continue
+        with open(page_file, encoding="utf-8") as f:
+            text = text_of(f.read())
+        found = {}
+        for w in ENGLISH:
+            for m in re.finditer(r"(?<![\w'./-])" + re.escape(w) + r"(?![\w'-])", text):
+                ctx = text[max(0, m.start() - 50):m.end() + 50].replace("\n", " ")
+                found.setdefault(w, ctx)
+        for w, ctx in found.items():
+            failures.append(f"{name}: English '{w}' in the Italian relazione: ...{ctx}...")
+        print(f"{name}: {'OK' if not found else str(len(found)) + ' English words'}")
+    if failures:
+        sys.exit("\n".join(failures))
+    print(f"{len(cases)} cases: Italian relazioni, no English word outside the input appendix and the warnings")
+
+
+if __name__ == "__main__":
+    main()
