@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <ctime>
+#include <filesystem>
 #include <limits>
 #include <map>
 
@@ -98,13 +99,58 @@ std::string today_utc() {
 
 // ------------------------------------------------------------ steps
 
+// The case file as shown: a relative path as given, an absolute one by its
+// file name only (a signed report carries no machine paths; issue 24).
+std::string shown_file(const std::string& f) {
+  const std::filesystem::path p(f);
+  return p.is_absolute() ? p.filename().string() : f;
+}
+
 void add_header(const Ctx& c) {
   std::string meta;
   if (!c.a.kase.project.empty()) meta += c.t("doc.project") + ": " + c.a.kase.project + ". ";
-  meta += c.t("doc.case_file") + ": " + c.a.kase.file + ". " + c.t("doc.generated") + " " + c.t("doc.version") +
-          " " + ASSESS_VERSION + ", " + c.t("doc.date") + " " + (c.o.date.empty() ? today_utc() : c.o.date) + ".";
+  meta += c.t("doc.case_file") + ": " + shown_file(c.a.kase.file) + ". " + c.t("doc.generated") + " " +
+          c.t("doc.version") + " " + ASSESS_VERSION + ", " + c.t("doc.date") + " " +
+          (c.o.date.empty() ? today_utc() : c.o.date) + ".";
   c.h.set_subtitle(meta);
   c.h.add_paragraph(c.t("doc.intro"));
+}
+
+// Premessa and normativa di riferimento (the opening of a relazione di calcolo).
+void add_premessa(const Ctx& c) {
+  const FacadeAssessment& a = c.a;
+  c.h.add_heading(c.t("doc.premessa"), 2, false);
+  std::string p = c.t("doc.premessa_text") + " " + mechanism_name(c.L, a.kase.mechanism.type) + ".";
+  c.h.add_paragraph(p);  // the project, the user's own words, is in the header
+  c.h.add_paragraph(c.t("doc.procedures") + " " + c.t("method." + a.verdict.adopted) + ".");
+  c.h.add_heading(c.t("doc.normativa"), 2, false);
+  c.h.add_raw_html("<ul class=\"normativa\">\n<li>" + xml_escape(c.t("norm.ntc2018")) + "</li>\n<li>" +
+                   xml_escape(c.t("norm.circ2019")) + "</li>\n<li>" + xml_escape(c.t("norm.ntc2008")) + "</li>\n<li>" +
+                   xml_escape(c.t("norm.dpcm2011")) + "</li>\n<li>" + xml_escape(c.t("norm.seed")) + "</li>\n</ul>");
+}
+
+// Conclusioni and the place/date/signature block.
+void add_conclusions(const Ctx& c) {
+  const Verdict& v = c.a.verdict;
+  c.h.add_heading(c.t("doc.conclusioni"), 2, false);
+  if (const MethodVerdict* m = v.conclusion()) {
+    const bool ok = m->satisfied && std::isfinite(m->max_dc);
+    c.h.add_paragraph(c.t("doc.concl_adopted") + " " + c.t("method." + m->method) + " (" + code_name(m->code) + "): " +
+                      c.t(ok ? "verdict.ok" : "verdict.fail") + ", D/C = " + fixed(m->max_dc, 3) + ".");
+    std::string others;
+    for (const MethodVerdict& o : v.methods) {
+      if (o.code != m->code || o.method == m->method) continue;
+      const bool ook = o.satisfied && std::isfinite(o.max_dc);
+      others += (others.empty() ? "" : "; ") + c.t("method." + o.method) + ": " +
+                c.t(ook ? "verdict.ok" : "verdict.fail") + " (D/C = " + fixed(o.max_dc, 3) + ")";
+    }
+    if (!others.empty()) c.h.add_paragraph(c.t("doc.concl_others") + ": " + others + ".");
+  } else {
+    c.h.add_paragraph(c.t("verdict.no_method_checks") + ".");
+  }
+  c.h.add_raw_html("<div class=\"signature\"><p>" + xml_escape(c.t("doc.place_date")) +
+                   ": ______________________</p><p>" + xml_escape(c.t("doc.engineer")) +
+                   ": ______________________</p></div>");
 }
 
 // The verdict box (issue 24): per code, the verdict of each method
@@ -124,7 +170,7 @@ void add_verdict_box(const Ctx& c) {
             "\"><strong>" + xml_escape(c.t("verdict.conclusion")) + "</strong> (" + xml_escape(c.t("verdict.adopted")) +
             ": " + xml_escape(c.t("method." + v.adopted)) + ", " + xml_escape(code_name(concl->code)) + "): " +
             "<span class=\"outcome\">" + xml_escape(c.t(ok ? "verdict.ok" : "verdict.fail")) + "</span> <span class=\"" +
-            (ok ? "dc-ok" : "dc-fail") + "\">D/C = " + xml_escape(fixed(concl->max_dc, 3)) + "</span></div>\n";
+            (concl->max_dc <= 1.0 ? "dc-ok" : "dc-fail") + "\">D/C = " + xml_escape(fixed(concl->max_dc, 3)) + "</span></div>\n";
   } else if (!v.overall.empty()) {
     html += "<div class=\"conclusion fail\"><strong>" + xml_escape(c.t("verdict.conclusion")) + "</strong>: " +
             xml_escape(c.t("verdict.no_method_checks")) + " (" + xml_escape(c.t("method." + v.adopted)) + ")</div>\n";
@@ -151,7 +197,7 @@ void add_verdict_box(const Ctx& c) {
       html += std::string("<div class=\"method ") + (ok ? "ok" : "fail") + "\" data-method=\"" + xml_escape(m.method) +
               "\">" + xml_escape(c.t("method." + m.method)) + (m.method == v.adopted ? " (" + xml_escape(c.t("verdict.adopted")) + ")" : "") +
               ": <span class=\"outcome\">" + xml_escape(c.t(ok ? "verdict.ok" : "verdict.fail")) + "</span> <span class=\"" +
-              (ok ? "dc-ok" : "dc-fail") + "\">D/C = " + xml_escape(fixed(m.max_dc, 3)) + "</span> — " +
+              (m.max_dc <= 1.0 ? "dc-ok" : "dc-fail") + "\">D/C = " + xml_escape(fixed(m.max_dc, 3)) + "</span> — " +
               std::to_string(m.checks) + " " + xml_escape(c.t("verdict.checks")) + ", " + std::to_string(m.failing) + " " +
               xml_escape(c.t("verdict.failing"));
       if (m.no_verdict > 0) html += ", " + std::to_string(m.no_verdict) + " " + xml_escape(c.t("verdict.no_verdict"));
@@ -394,10 +440,11 @@ void add_checks(const Ctx& c) {
     const int prec = 4;
     rows.push_back({code_name(r.code), HtmlCell(c.check_name(r), "", c.loc(r.formula + "; " + r.clause)),
                     num(r.demand, prec), num(r.capacity, prec), r.unit == "m/s2" ? "m/s²" : r.unit,
-                    dc_cell(r.dc, fails),
+                    dc_cell(r.dc, !(r.dc <= 1.0)),
                     r.has_pga ? HtmlCell(fixed(r.ag_capacity_g, 3) + " / " + fixed(r.ag_demand_g, 3), "num")
                               : HtmlCell("—", "num"),
-                    HtmlCell(c.t(fails ? "fail" : "ok"), fails ? "fail" : "ok")});
+                    HtmlCell(c.t(fails ? "fail" : "ok"), fails ? "fail" : "ok",
+                             fails && r.dc <= 1.0 ? c.loc(r.note) : "")});
   }
   c.h.add_cell_table({c.t("checks.code"), c.t("checks.check"), HtmlCell(c.t("checks.demand"), "num"),
                  HtmlCell(c.t("checks.capacity"), "num"), c.t("kin.unit"), HtmlCell("D/C", "num"),
@@ -560,11 +607,23 @@ void add_dynamic(const Ctx& c) {
 
   c.h.add_heading(c.t("dyn.records"), 3);
   std::vector<std::vector<HtmlCell>> rrows;
+  // Why each record was chosen (issue 24): magnitude, distance and its kind,
+  // site class, scale, scaled PGA, individual deviation from the target and its rank.
+  auto opt_num = [](double v, int prec) { return std::isfinite(v) ? num(v, prec) : HtmlCell("—", "num"); };
   for (const RecordUsed& r : a.records)
-    rrows.push_back({r.name, r.event, r.station, r.component, num(r.scale, 3), num(r.pga / g, 4)});
-  c.h.add_cell_table({c.t("dyn.record"), c.t("dyn.event"), c.t("dyn.station"), c.t("dyn.component"),
-                 HtmlCell(c.t("dyn.scale"), "num"), HtmlCell("PGA (g)", "num")},
-                rrows, "");
+    rrows.push_back({r.name, r.event + " / " + r.station + ", " + r.component, opt_num(r.Mw, 2),
+                     std::isfinite(r.distance_km) ? HtmlCell(fixed(r.distance_km, 1) + " " + r.distance_kind, "num")
+                                                  : HtmlCell("—", "num"),
+                     r.site_class.empty() ? HtmlCell("—") : HtmlCell(r.site_class), num(r.scale, 3), num(r.pga / g, 4),
+                     opt_num(r.deviation, 3), r.rank > 0 ? num(r.rank, 0) : HtmlCell("—", "num"),
+                     num(r.integrated_s, 1)});
+  c.h.add_cell_table({c.t("dyn.record"), c.t("dyn.event_station"), HtmlCell("Mw", "num"), HtmlCell(c.t("dyn.distance"), "num"),
+                      c.t("dyn.site_class"), HtmlCell(c.t("dyn.scale"), "num"), HtmlCell("PGA (g)", "num"),
+                      HtmlCell(c.t("dyn.deviation"), "num"), HtmlCell(c.t("dyn.rank"), "num"),
+                      HtmlCell(c.t("dyn.integrated"), "num")},
+                     rrows, c.t("dyn.records_cap"));
+  // The selection's caveats (default windows, relaxed site class): what a verificatore asks first.
+  for (const std::string& w : a.selection_warnings) c.h.add_paragraph(c.t("dyn.selection_warning") + ": " + c.loc(w));
   for (const std::string& f : a.record_failures) c.h.add_paragraph(c.t("dyn.skipped") + ": " + f);
   if (a.selection)
     c.h.add_paragraph(msgf(c.L, "dyn.selection", fixed(a.selection_range.T_min, 2), fixed(a.selection_range.T_max, 2)) +
@@ -583,6 +642,17 @@ void add_dynamic(const Ctx& c) {
   add_histories(c);
 
   c.h.add_heading(c.t("dyn.summary"), 3);
+  // Why a restitution value fails when its D/C does not exceed 1.
+  auto fail_reason = [&](const RestitutionSummary& x) -> std::string {
+    if (x.slv_satisfied || x.no_verdict) return "";
+    int collapses = 0;
+    for (const DynamicRun& r : a.runs) collapses += r.restitution == x.restitution && r.collapse ? 1 : 0;
+    std::string why;
+    if (x.failed > 0) why = msgf(c.L, "dyn.reason_failed", x.failed, x.analyses);
+    if (collapses > 0) why += (why.empty() ? "" : "; ") + msgf(c.L, "dyn.reason_collapse", collapses, x.analyses);
+    if (x.dc_slv > 1.0) why += (why.empty() ? "" : "; ") + c.t("dyn.reason_dc");
+    return why;
+  };
   std::vector<std::vector<HtmlCell>> srows;
   for (const RestitutionSummary& x : a.summaries) {
     const bool fails = !x.slv_satisfied || !std::isfinite(x.dc_slv);
@@ -591,9 +661,11 @@ void add_dynamic(const Ctx& c) {
                                   (x.failed > 0 ? " (" + std::to_string(x.failed) + " " + c.t("dyn.failed") + ")" : ""),
                               x.failed > 0 ? "num fail" : "num"),
                      num(x.mean_dc, 3), num(x.max_dc, 3), num(x.mean_d_star, 4), num(x.max_d_star, 4), c.loc(x.rule),
-                     x.no_verdict ? HtmlCell("—", "num") : dc_cell(x.dc_slv, fails),
+                     // Red only where the D/C itself exceeds 1; a check that fails for another
+                     // reason (d0 exceeded, a failed analysis) says why in its own row (issue 24).
+                     x.no_verdict ? HtmlCell("—", "num") : dc_cell(x.dc_slv, !(x.dc_slv <= 1.0)),
                      x.no_verdict ? HtmlCell(c.t("verdict.no_verdict_short"), "fail")
-                                  : HtmlCell(c.t(fails ? "fail" : "ok"), fails ? "fail" : "ok")});
+                                  : HtmlCell(c.t(fails ? "fail" : "ok"), fails ? "fail" : "ok", fail_reason(x))});
   }
   c.h.add_cell_table({c.t("dyn.restitution"), HtmlCell(c.t("dyn.analyses"), "num"),
                       HtmlCell(c.t("dyn.overturned"), "num"), HtmlCell(c.t("dyn.mean_dc"), "num"),
@@ -656,10 +728,11 @@ void add_comparison(const Ctx& c) {
       std::string note = c.loc(r.candidate.empty() ? r.clause : r.candidate + "; " + r.clause);
       if (!r.note.empty()) note += "; " + c.loc(r.note);
       rows.push_back({groups[gi] == "seed" ? c.t("cmp.group_seed") : code_name(r.code), HtmlCell(bar_name(r), "", note),
-                      r.no_verdict ? HtmlCell("—", "num") : dc_cell(r.dc, fails),
+                      r.no_verdict ? HtmlCell("—", "num") : dc_cell(r.dc, !(r.dc <= 1.0)),
                       r.code == "seed" ? HtmlCell(r.satisfied ? "≤ 1" : "> 1", r.satisfied ? "ok" : "fail")
                       : r.no_verdict   ? HtmlCell(c.t("verdict.no_verdict_short"), "fail")
-                                       : HtmlCell(c.t(fails ? "fail" : "ok"), fails ? "fail" : "ok")});
+                                       : HtmlCell(c.t(fails ? "fail" : "ok"), fails ? "fail" : "ok",
+                                                  fails && r.dc <= 1.0 ? c.loc(r.note) : "")});
       x += 1.0;
     }
     p.series.push_back(bars);
@@ -683,7 +756,7 @@ void add_comparison(const Ctx& c) {
                      c.t("method." + m.method) + (m.method == v.adopted ? " (" + c.t("verdict.adopted") + ")" : ""),
                      HtmlCell(c.t(ok ? "verdict.ok" : "verdict.fail"), ok ? "ok" : "fail"),
                      HtmlCell(std::to_string(m.failing) + " / " + std::to_string(m.checks), "num"),
-                     num(m.no_verdict, 0), dc_cell(m.max_dc, !ok)});
+                     num(m.no_verdict, 0), dc_cell(m.max_dc, !(m.max_dc <= 1.0))});
   }
   c.h.add_cell_table({c.t("checks.code"), c.t("cmp.method"), c.t("cmp.overall"), HtmlCell(c.t("cmp.failing"), "num"),
                       HtmlCell(c.t("verdict.no_verdict"), "num"), HtmlCell(c.t("cmp.max_dc"), "num")},
@@ -752,7 +825,7 @@ void add_legend(const Ctx& c) {
 
 void add_appendix(const Ctx& c) {
   c.h.add_heading(c.t("appendix.heading"));
-  c.h.add_paragraph(c.t("appendix.note") + " (" + c.a.kase.file + ")");
+  c.h.add_paragraph(c.t("appendix.note") + " (" + shown_file(c.a.kase.file) + ")");
   c.h.add_pre(c.o.case_text.empty() ? c.t("appendix.missing") : c.o.case_text);
 }
 
@@ -778,6 +851,7 @@ std::string facade_html(const FacadeAssessment& a, const ReportOptions& options)
   const Ctx c{a, options, L, h};
   add_header(c);
   add_verdict_box(c);
+  add_premessa(c);
   add_site(c);
   add_mechanism(c);
   add_kinematic(c);
@@ -786,6 +860,7 @@ std::string facade_html(const FacadeAssessment& a, const ReportOptions& options)
   add_comparison(c);
   add_probabilistic(c);
   add_warnings(c);
+  add_conclusions(c);
   add_legend(c);
   add_appendix(c);
   return h.str();

@@ -21,6 +21,10 @@ constexpr const char* kCss = R"(
   body { font-family: sans-serif; font-size: 11pt; line-height: 1.4; max-width: 180mm; margin: 1em auto; color: #111; }
   h1 { font-size: 18pt; margin-bottom: 0.2em; }
   h2 { font-size: 14pt; border-bottom: 1px solid #999; margin-top: 1.6em; }
+  body { counter-reset: sec; } h2:not(.verdicts-heading) { counter-increment: sec; counter-reset: sub; }
+  h2:not(.verdicts-heading)::before { content: counter(sec) ". "; }
+  h3 { counter-increment: sub; } h2 ~ h3::before { content: counter(sec) "." counter(sub) " "; }
+  div.signature { margin-top: 2.5em; break-inside: avoid; } div.signature p { margin: 1.5em 0; }
   h3 { font-size: 12pt; } h4 { font-size: 11pt; }
   table { border-collapse: collapse; margin: 0.6em 0; font-size: 9pt; max-width: 100%; }
   td.num, th.num { text-align: right; font-variant-numeric: tabular-nums; }

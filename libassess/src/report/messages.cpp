@@ -34,6 +34,41 @@ const std::map<std::string, Entry>& catalogue() {
         "di affidabilità (legenda in fondo).",
         "Every number can be redone by hand from the quantities listed; each quantity cites its clause (NTC 2018, "
         "Circolare 7/2019 C8.7.1, Circolare 617/2009 C8A.4) with its reliability tag (legend at the end)."}},
+      // Structure of the relazione (issue 24).
+      {"doc.premessa", {"Premessa", "Introduction"}},
+      {"doc.premessa_text",
+       {"La presente relazione riporta la verifica sismica fuori piano di un meccanismo locale di collasso di una "
+        "parete in muratura di un edificio esistente (NTC 2018 §8.7.1, Circolare 7/2019 C8.7.1), con l'analisi "
+        "cinematica lineare, quella non lineare e l'analisi dinamica non lineare del moto di ribaltamento; "
+        "meccanismo esaminato:",
+        "This report gives the out-of-plane seismic assessment of a local collapse mechanism of a masonry wall of "
+        "an existing building (NTC 2018 §8.7.1, Circolare 7/2019 C8.7.1), by the linear and non-linear kinematic "
+        "analyses and the non-linear dynamic analysis of the rocking motion; mechanism examined:"}},
+      {"doc.procedures",
+       {"Le tre procedure sono alternative (C8.7.1.2); la procedura adottata per la conclusione è:",
+        "The three procedures are alternatives (C8.7.1.2); the procedure adopted for the conclusion is:"}},
+      {"doc.normativa", {"Normativa di riferimento", "Codes and references"}},
+      {"norm.ntc2018", {"D.M. 17 gennaio 2018, Aggiornamento delle «Norme tecniche per le costruzioni» (NTC 2018).",
+                        "D.M. 17 January 2018, Norme tecniche per le costruzioni (NTC 2018)."}},
+      {"norm.circ2019", {"Circolare 21 gennaio 2019, n. 7 C.S.LL.PP., Istruzioni per l'applicazione dell'Aggiornamento "
+                         "delle NTC di cui al D.M. 17 gennaio 2018 (§C8.7.1).",
+                         "Circolare 21 January 2019, n. 7 C.S.LL.PP., instructions for the application of NTC 2018 "
+                         "(§C8.7.1)."}},
+      {"norm.ntc2008", {"D.M. 14 gennaio 2008 e Circolare 2 febbraio 2009, n. 617 (§C8A.4), a titolo di confronto.",
+                        "D.M. 14 January 2008 and Circolare 2 February 2009, n. 617 (§C8A.4), for comparison."}},
+      {"norm.dpcm2011", {"D.P.C.M. 9 febbraio 2011, Linee guida per la valutazione e riduzione del rischio sismico del "
+                         "patrimonio culturale (per gli edifici tutelati).",
+                         "D.P.C.M. 9 February 2011, guidelines for the assessment and reduction of the seismic risk of "
+                         "cultural heritage (for listed buildings)."}},
+      {"norm.seed", {"S. Lipo, G. de Felice (2017), modello del blocco su suolo alla Winkler e misura energetica D/C "
+                     "(riferimento scientifico, non normativo).",
+                     "S. Lipo, G. de Felice (2017), the block on a Winkler bed and the energy D/C (scientific reference, "
+                     "not a code)."}},
+      {"doc.conclusioni", {"Conclusioni", "Conclusions"}},
+      {"doc.concl_adopted", {"Con la procedura adottata,", "By the adopted procedure,"}},
+      {"doc.concl_others", {"Esiti delle altre procedure, riportati per completezza", "Verdicts of the other procedures, for completeness"}},
+      {"doc.place_date", {"Luogo e data", "Place and date"}},
+      {"doc.engineer", {"Il tecnico (timbro e firma)", "The engineer (stamp and signature)"}},
       // Verdict box.
       {"verdict.heading", {"Esito delle verifiche", "Outcome of the checks"}},
       {"verdict.ok", {"VERIFICATO", "SATISFIED"}},
@@ -255,7 +290,26 @@ const std::map<std::string, Entry>& catalogue() {
         "Duration of the analyses: each record is integrated to its last sample, then the free motion until rest, or "
         "until the energy left after an impact can no longer reach the peak rotation (the peak rotation, the energy "
         "D/C and d* are then final), for at most"}},
-      {"dyn.ends", {"fine delle analisi", "end of the analyses"}},
+      {"dyn.reason_failed", {"{} analisi su {} non riuscite", "{} of {} analyses failed"}},
+      {"dyn.reason_collapse", {"spostamento d0 superato (o ribaltamento) in {} analisi su {}",
+                               "displacement d0 exceeded (or overturning) in {} of {} analyses"}},
+      {"dyn.reason_dc", {"D/C > 1", "D/C > 1"}},
+      {"dyn.event_station", {"evento / stazione, componente", "event / station, component"}},
+      {"dyn.distance", {"R (km)", "R (km)"}},
+      {"dyn.site_class", {"cat. suolo", "site class"}},
+      {"dyn.deviation", {"scarto", "deviation"}},
+      {"dyn.rank", {"posizione", "rank"}},
+      {"dyn.integrated", {"integrato (s)", "integrated (s)"}},
+      {"dyn.records_cap",
+       {"Accelerogrammi usati: magnitudo Mw, distanza R (Rjb, Rrup o Repi), categoria di sottosuolo della stazione "
+        "(NTC 2018 Tab. 3.2.II da Vs30), fattore di scala, PGA scalata, scarto quadratico medio individuale f·S/Se − 1 "
+        "sull'intervallo di periodi e sua posizione fra gli accelerogrammi ammissibili, durata integrata (l'intero "
+        "accelerogramma).",
+        "Records used: magnitude Mw, distance R (Rjb, Rrup or Repi), the station's site class (NTC 2018 Tab. 3.2.II "
+        "from Vs30), scale factor, scaled PGA, individual RMS deviation f·S/Se − 1 over the period range and its rank "
+        "among the eligible records, duration integrated (the whole record)."}},
+      {"dyn.selection_warning", {"Avvertenza sulla selezione", "Selection caveat"}},
+      {"dyn.ends", {"Fine delle analisi", "End of the analyses"}},
       {"end.overturned", {"ribaltamento", "overturning"}},
       {"end.rest_input_below",
        {"quiete, il resto dell'accelerogramma non può sollevare il corpo", "at rest, the rest of the record cannot lift the body"}},
@@ -339,8 +393,12 @@ const std::map<std::string, Entry>& catalogue() {
                      "[V-S]: checked against a public secondary source (software manual, thesis, other code)."}},
       {"legend.R", {"[R]: richiamata a memoria, non verificata sul testo ufficiale: controllarla prima dell'uso.",
                     "[R]: recalled, not checked against the official text: verify before relying on it."}},
-      {"legend.dc", {"D/C in rosso: > 1 (non verificato); in verde: ≤ 1 (verificato).",
-                     "D/C in red: > 1 (not satisfied); in green: ≤ 1 (satisfied)."}},
+      {"legend.dc", {"D/C in rosso: > 1; in verde: ≤ 1. Una verifica può non essere soddisfatta anche con D/C ≤ 1 "
+                     "(spostamento d0 superato o ribaltamento in un'analisi, analisi non riuscita): il suo esito è "
+                     "in rosso con il motivo nella stessa riga.",
+                     "D/C in red: > 1; in green: ≤ 1. A check can fail with D/C ≤ 1 (displacement d0 exceeded or "
+                     "overturning in an analysis, a failed analysis): its outcome is in red with the reason in the "
+                     "same row."}},
       {"appendix.heading", {"Appendice — file del caso", "Appendix — case file"}},
       {"appendix.note", {"Il file di ingresso, riportato integralmente.", "The input file, in full."}},
       {"appendix.missing", {"(testo del file non disponibile)", "(file text not available)"}},
@@ -416,6 +474,22 @@ const std::vector<std::pair<std::string, std::string>>& phrases_it() {
       {" of ", " su "},
       {" records", " accelerogrammi"},
       {"most unfavourable", "più sfavorevole"},
+      {"default Mw window ", "finestra di magnitudo Mw predefinita "},
+      {" and distance window ", " e finestra di distanza "},
+      {"default distance window ", "finestra di distanza predefinita "},
+      {" km used: NTC 2018 §3.2.3.6 asks for records consistent with the site's seismogenesis; give the windows from "
+       "the hazard disaggregation of the site",
+       " km usate: le NTC 2018 §3.2.3.6 chiedono accelerogrammi coerenti con la sismogenesi del sito; indicare le "
+       "finestre dalla disaggregazione della pericolosità del sito"},
+      {" used: NTC 2018 §3.2.3.6 asks for records consistent with the site's seismogenesis; give the windows from "
+       "the hazard disaggregation of the site",
+       " usata: le NTC 2018 §3.2.3.6 chiedono accelerogrammi coerenti con la sismogenesi del sito; indicare le "
+       "finestre dalla disaggregazione della pericolosità del sito"},
+      {"site class relaxed from ", "categoria di sottosuolo estesa da "},
+      {": fewer than ", ": meno di "},
+      {" candidates of class ", " candidati di categoria "},
+      {" pass the other filters", " superano gli altri filtri"},
+      {"any class", "qualsiasi categoria"},
       {"hazard given per limit state", "pericolosità assegnata per stato limite"},
       {"none", "nessuna"},
       {"mean", "media"},

@@ -2,7 +2,10 @@
 """The Italian relazione is entirely Italian (issue 24): renders the Italian
 HTML of every shipped case and scans its text for English words, outside the
 input appendix (<pre>), the project line (the user's own text), and elements
-that declare lang="en" (the program's warnings, marked as English).
+that declare lang="en" (the program's warnings, marked as English). Also:
+red only where a D/C exceeds 1 (issue 24, finding 7): no D/C <= 1 in the
+"dc-fail" class and no D/C > 1 in "dc-ok" (a check that fails with D/C <= 1
+says why in its outcome cell).
 
 usage: italian_only.py ASSESS_EXE SOURCE_DIR OUT_DIR
 """
@@ -22,6 +25,7 @@ ENGLISH = ["the", "of", "and", "hinge", "records", "record", "analyses", "mean",
 
 
 def text_of(page):
+    page = page.split("Appendice — file del caso")[0]  # the input appendix: the user's file
     page = re.sub(r"<style.*?</style>", " ", page, flags=re.S)
     page = re.sub(r"<pre>.*?</pre>", " ", page, flags=re.S)
     page = re.sub(r'<p class="meta">.*?</p>', " ", page, flags=re.S)  # project, file: the user's words
@@ -48,7 +52,12 @@ def main():
             failures.append(f"{name}: assess run failed: {p.stderr.strip()[:300]}")
             continue
         with open(page_file, encoding="utf-8") as f:
-            text = text_of(f.read())
+            page = f.read()
+        text = text_of(page)
+        for m in re.finditer(r'class="[^"]*dc-(fail|ok)[^"]*">(?:D/C = )?([0-9.]+)<', page):
+            v = float(m.group(2))  # printed to 3 decimals: 1.000 may be 1.0004 (> 1, red)
+            if (m.group(1) == "fail" and v < 1.0 - 5e-4) or (m.group(1) == "ok" and v > 1.0 + 5e-4):
+                failures.append(f"{name}: D/C {v} shown as dc-{m.group(1)}")
         found = {}
         for w in ENGLISH:
             for m in re.finditer(r"(?<![\w'./-])" + re.escape(w) + r"(?![\w'-])", text):
