@@ -103,3 +103,7 @@ add_test(NAME cli.report_italian_only
   COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/italian_only.py $<TARGET_FILE:assess_cli> ${PROJECT_SOURCE_DIR}
           ${CMAKE_CURRENT_BINARY_DIR}/italian_only)
 set_tests_properties(cli.report_italian_only PROPERTIES LABELS cli ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+# Issue 24: the outputs quoted in docs/user are the tool's (every "$ assess run CASE" block).
+add_test(NAME cli.doc_outputs
+  COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/doc_outputs.py $<TARGET_FILE:assess_cli> ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.doc_outputs PROPERTIES LABELS cli ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")

@@ -183,18 +183,15 @@ std::string facade_text(const FacadeAssessment& a, TextWidth width) {
                       describe(a.dynamic->restitutions[s.restitution]).c_str(), s.analyses,
                       format("%d of %d", s.overturned, s.analyses).c_str(), s.mean_dc, s.max_dc, s.mean_theta_ratio,
                       s.mean_d_star, s.max_d_star, s.rule.c_str(), s.dc_slv, dyn_verdict(s));
-      } else {  // 120 columns: the verdict wraps to a second line when the rule is long
+      } else {  // 120 columns: the verdict on its own line under each row, never cut mid-phrase
         o += format("  %-12s %4s %-10s %8s %8s %9s %9s %9s %-14s %6s\n", "restitution", "runs", "overturned",
                     "mean D/C", "max D/C", "mean th/u", "mean d*", "max d*", "rule (§7.3.5)", "D/C d*");
         o += format("  %-12s %s\n", "", "verdict (C8.7.1.2.1.9)");
         for (const RestitutionSummary& s : a.summaries)
-          o += wrap_text(format("  %-12s %4d %-10s %8.4f %8.4f %9.4f %9.4f %9.4f %-14s %6.3f  %s",
-                                describe(a.dynamic->restitutions[s.restitution]).c_str(), s.analyses,
-                                format("%d of %d", s.overturned, s.analyses).c_str(), s.mean_dc, s.max_dc,
-                                s.mean_theta_ratio, s.mean_d_star, s.max_d_star, s.rule.c_str(), s.dc_slv,
-                                dyn_verdict(s)),
-                         15) +
-               "\n";
+          o += format("  %-12s %4d %-10s %8.4f %8.4f %9.4f %9.4f %9.4f %-14s %6.3f\n%15s%s\n",
+                      describe(a.dynamic->restitutions[s.restitution]).c_str(), s.analyses,
+                      format("%d of %d", s.overturned, s.analyses).c_str(), s.mean_dc, s.max_dc, s.mean_theta_ratio,
+                      s.mean_d_star, s.max_d_star, s.rule.c_str(), s.dc_slv, "", dyn_verdict(s));
       }
     }
   }
