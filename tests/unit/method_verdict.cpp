@@ -40,8 +40,10 @@ TEST_CASE("each procedure is the worst of its checks; the adopted one is the con
                                    row("NTC2018", "strength", "SLV", 3.102), row("NTC2018", "displacement", "SLV", 0.664),
                                    row("NTC2018", "displacement", "SLC", 0.991), row("NTC2018", "dynamic", "SLV", 2.047),
                                    row("seed", "dynamic energy", "SLV", 1.6)};
-  for (const auto& [adopted, satisfied, dc] :
+  for (const auto& [adopted_, satisfied, dc] :
        {std::tuple<std::string, bool, double>{"linear", false, 3.102}, {"nonlinear", true, 0.991}, {"dynamic", false, 2.047}}) {
+    // A copy: doctest's CAPTURE is a lambda, and C++17 lambdas cannot capture structured bindings (clang).
+    const std::string adopted = adopted_;
     CAPTURE(adopted);
     const Verdict v = build_verdict(rows, adopted);
     CHECK(v.conclusion_code == "NTC2018");
