@@ -24,6 +24,13 @@ namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
 
+// The inputs of a demand at height: the building's first mode (C8.7.1.2.1.7 / C8A.4.10).
+std::vector<std::pair<std::string, double>> height_inputs(const BuildingModel& b, double Z, double psi, double gam,
+                                                          double Se_T1) {
+  return {{"Z (m)", Z}, {"H (m)", b.H}, {"N (storeys)", double(b.storeys)}, {"T1 (s)", b.T1},
+          {"psi(Z) (-)", psi}, {"gamma (-)", gam}, {"Se(T1) (m/s2)", Se_T1}};
+}
+
 CheckRow row(CodeEdition code, LimitState ls, const char* kind, const char* location, std::string clause,
              std::string formula, double demand, double capacity, const char* unit) {
   CheckRow r;
@@ -107,25 +114,35 @@ std::vector<CheckRow> run_code_checks(const KinematicResult& r, const CheckInput
       if (!at_height) {
         rows.push_back(row(code, LimitState::SLD, "strength", "ground", "C8A.4 SLD [R]", "ag S",
                            sSLD.PGA(), r.a0_star, "m/s2"));
+        rows.back().inputs = {{"ag (g)", hSLD.ag_g}, {"S (-)", sSLD.S()}};
       } else {
         const BuildingModel& b = *in.building;
         const double psi = code_rules::psi_first_mode(in.Z, b.H), gam = code_rules::gamma_first_mode(b.storeys);
         rows.push_back(row(code, LimitState::SLD, "strength", "height", "C8A.4 SLD at height [R]",
                            "Se(T1) psi gamma", sSLD.Se(b.T1) * psi * gam, r.a0_star, "m/s2"));
+        rows.back().inputs = height_inputs(b, in.Z, psi, gam, sSLD.Se(b.T1));
       }
       if (!at_height || code_rules::height_also_checks_ground_2008)
+      {
         rows.push_back(row(code, LimitState::SLV, "strength", "ground", "C8A.4.9 [V-S]", "ag S / q",
                            sSLV.PGA() / in.q, r.a0_star, "m/s2"));
+        rows.back().inputs = {{"ag (g)", hSLV.ag_g}, {"S (-)", sSLV.S()}, {"q (-)", in.q}};
+      }
       if (at_height) {
         const BuildingModel& b = *in.building;
         const double psi = code_rules::psi_first_mode(in.Z, b.H), gam = code_rules::gamma_first_mode(b.storeys);
         rows.push_back(row(code, LimitState::SLV, "strength", "height", "C8A.4.10 [V-S]",
                            "Se(T1) psi gamma / q", sSLV.Se(b.T1) * psi * gam / in.q, r.a0_star, "m/s2"));
+        rows.back().inputs = height_inputs(b, in.Z, psi, gam, sSLV.Se(b.T1));
+        rows.back().inputs.push_back({"q (-)", in.q});
       }
       if (nonlinear) {
         if (!at_height || code_rules::height_also_checks_ground_2008)
+        {
           rows.push_back(row(code, LimitState::SLV, "displacement", "ground", "C8A.4.11 [R]", "SDe(Ts)",
                              sSLV.SDe(r.Ts), r.du_star, "m"));
+          rows.back().inputs = {{"Ts (s)", r.Ts}, {"xi (%)", 5.0}, {"eta (-)", sSLV.eta()}};
+        }
         if (at_height) {
           const BuildingModel& b = *in.building;
           const double psi = code_rules::psi_first_mode(in.Z, b.H), gam = code_rules::gamma_first_mode(b.storeys);
@@ -133,6 +150,9 @@ std::vector<CheckRow> run_code_checks(const KinematicResult& r, const CheckInput
                              "SDe(T1) psi gamma (Ts/T1)^2 / sqrt((1 - Ts/T1)^2 + 0.02 Ts/T1)",
                              code_rules::demand_at_height_2008(sSLV.SDe(b.T1), psi, gam, r.Ts, b.T1), r.du_star,
                              "m"));
+          rows.back().inputs = height_inputs(b, in.Z, psi, gam, sSLV.Se(b.T1));
+          rows.back().inputs.push_back({"SDe(T1) (m)", sSLV.SDe(b.T1)});
+          rows.back().inputs.push_back({"Ts (s)", r.Ts});
         }
       }
       continue;
@@ -159,16 +179,31 @@ std::vector<CheckRow> run_code_checks(const KinematicResult& r, const CheckInput
       return solve_ag([&](double ag) { return peak(with_ag(h, ag)); }, r.a0_star);
     };
     const std::string peak_name = at_height ? "a_Z [C7.2.7-8]" : "ag S";
+    // The inputs of the peak demand: ag, S at ground; the first mode and a_Z at height.
+    auto peak_inputs = [&](const HazardParams& h) {
+      const ElasticSpectrum e(h, in.site);
+      std::vector<std::pair<std::string, double>> v{{"ag (g)", h.ag_g}, {"S (-)", e.S()}};
+      if (at_height) {
+        const FloorSpectrum fs(h, in.site, *in.building, in.Z, 5.0);
+        const auto hi = height_inputs(*in.building, in.Z, fs.psi(), fs.gamma(), e.Se(in.building->T1));
+        v.insert(v.end(), hi.begin(), hi.end());
+        v.push_back({"a_Z (m/s2)", fs.a_Z()});
+      }
+      return v;
+    };
 
     CheckRow sld = row(code, LimitState::SLD, "strength", loc, "C8.7.1.2.1.5 [C8.7.1.8] [V-T]", peak_name,
                        peak(hSLD), r.a0_star, "m/s2");
     const double ag_SLD_cap = ag_activation(hSLD);
     set_pga(sld, ag_SLD_cap, hSLD.ag_g);
+    sld.inputs = peak_inputs(hSLD);
     rows.push_back(sld);
 
     CheckRow slv = row(code, LimitState::SLV, "strength", loc, "C8.7.1.2.1.7 [V-T]", peak_name + " / q",
                        peak(hSLV) / in.q, r.a0_star, "m/s2");
     set_pga(slv, in.q * ag_activation(hSLV), hSLV.ag_g);
+    slv.inputs = peak_inputs(hSLV);
+    slv.inputs.push_back({"q (-)", in.q});
     rows.push_back(slv);
 
     if (nonlinear) {
@@ -181,6 +216,16 @@ std::vector<CheckRow> run_code_checks(const KinematicResult& r, const CheckInput
         double ag_cap = solve_ag([&](double ag) { return disp(with_ag(*x.h, ag), x.T, x.xi); }, x.d);
         ag_cap = std::max(ag_cap, ag_activation(*x.h));  // "if ag,SLV < ag,SLD use ag,SLD"
         set_pga(c, ag_cap, x.h->ag_g);
+        // T = T_SLV or T_SLC: the secant period 2 pi sqrt(d / a(d)) at the capacity point [C8.7.1.10-11].
+        c.inputs = {{"ag (g)", x.h->ag_g}, {"T (s)", x.T}, {"xi (%)", x.xi},
+                    {"eta (-)", ElasticSpectrum(*x.h, in.site, x.xi).eta()}};
+        if (at_height) {
+          const FloorSpectrum fs(*x.h, in.site, *in.building, in.Z, x.xi);
+          const auto hi = height_inputs(*in.building, in.Z, fs.psi(), fs.gamma(),
+                                        ElasticSpectrum(*x.h, in.site).Se(in.building->T1));
+          c.inputs.insert(c.inputs.end(), hi.begin(), hi.end());
+          c.inputs.push_back({"S_eZ(T) (m/s2)", fs.Se(x.T)});
+        }
         rows.push_back(c);
       }
     }

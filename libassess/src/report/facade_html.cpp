@@ -438,7 +438,9 @@ void add_checks(const Ctx& c) {
   for (const CheckRow& r : c.a.checks) {
     const bool fails = check_fails(r);
     const int prec = 4;
-    rows.push_back({code_name(r.code), HtmlCell(c.check_name(r), "", c.loc(r.formula + "; " + r.clause)),
+    std::string inputs;  // every input of the demand (issue 24), "T1 (s) = 0.227"
+    for (const auto& [name, v] : r.inputs) inputs += (inputs.empty() ? "; " : ", ") + name + " = " + format("%.4g", v);
+    rows.push_back({code_name(r.code), HtmlCell(c.check_name(r), "", c.loc(r.formula + "; " + r.clause) + inputs),
                     num(r.demand, prec), num(r.capacity, prec), r.unit == "m/s2" ? "m/s²" : r.unit,
                     dc_cell(r.dc, !(r.dc <= 1.0)),
                     r.has_pga ? HtmlCell(fixed(r.ag_capacity_g, 3) + " / " + fixed(r.ag_demand_g, 3), "num")

@@ -27,6 +27,11 @@ nlohmann::json to_json(const CheckRow& r) {
   if (!r.candidate.empty()) j["candidate"] = r.candidate;
   if (r.no_verdict) j["satisfied"] = nullptr;
   if (!r.note.empty()) j["note"] = r.note;
+  if (!r.inputs.empty()) {
+    nlohmann::json in = nlohmann::json::object();
+    for (const auto& [name, v] : r.inputs) in[name] = v;
+    j["inputs"] = in;  // every input of the demand, name with its unit (issue 24)
+  }
   if (!std::isfinite(r.dc)) j["dc"] = nullptr;
   if (r.has_pga) {
     j["ag_capacity_g"] = std::isfinite(r.ag_capacity_g) ? nlohmann::json(r.ag_capacity_g) : nlohmann::json(nullptr);
@@ -178,6 +183,13 @@ std::vector<std::string> split_items(const std::string& s) {
   return out;
 }
 
+// "inputs: ag (g) = 0.1937, S (-) = 1.411, q (-) = 2" (the demand's inputs, issue 24).
+std::string inputs_text(const CheckRow& x) {
+  std::string s;
+  for (const auto& [name, v] : x.inputs) s += (s.empty() ? "inputs: " : ", ") + name + " = " + format("%.6g", v);
+  return s;
+}
+
 std::string checks_text(const std::vector<CheckRow>& checks, TextWidth width) {
   std::string out;
   out += format("checks (D/C = demand / capacity; satisfied if D/C <= 1):\n");
@@ -193,6 +205,7 @@ std::string checks_text(const std::vector<CheckRow>& checks, TextWidth width) {
                     x.limit_state.c_str(), x.kind.c_str(), x.location.c_str(), x.demand, x.capacity, x.unit.c_str(),
                     x.dc, pga, x.no_verdict ? "no verdict" : verdict(x.satisfied), x.formula.c_str(),
                     x.clause.c_str(), x.note.empty() ? "" : ("; " + x.note).c_str());
+      if (!x.inputs.empty()) out += "           " + inputs_text(x) + "\n";
     }
     return out;
   }
@@ -212,6 +225,7 @@ std::string checks_text(const std::vector<CheckRow>& checks, TextWidth width) {
                                   "; " + x.clause + (x.note.empty() ? "" : "; " + x.note)),
                       11) +
            "\n";
+    if (!x.inputs.empty()) out += wrap_text(std::string(11, ' ') + inputs_text(x), 11) + "\n";
   }
   return out;
 }

@@ -12,6 +12,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace assess {
@@ -46,6 +47,10 @@ struct CheckRow {
   /// `note` says why. A report shows "no verdict", never "satisfied".
   bool no_verdict = false;
   std::string note;             ///< remarks for the reader ("overturned in 1 of 2 analyses" ...)
+  /// Every input of the demand, so that it can be redone by hand (issue 24):
+  /// name with its unit ("T1 (s)", "psi(Z) (-)", "gamma (-)", "N (storeys)",
+  /// "Se(T1) (m/s2)", "a_Z (m/s2)", "q (-)", "xi (%)", "eta (-)", "T (s)", ...) and value.
+  std::vector<std::pair<std::string, double>> inputs;
 };
 
 /// What the checks need besides the analysis.
