@@ -107,3 +107,9 @@ set_tests_properties(cli.report_italian_only PROPERTIES LABELS cli ENVIRONMENT "
 add_test(NAME cli.doc_outputs
   COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/doc_outputs.py $<TARGET_FILE:assess_cli> ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.doc_outputs PROPERTIES LABELS cli ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+# Issue 24, point 3: the other candidates that govern or fail are analysed dynamically, each equal to
+# its run alone; the dynamic verdict is the worst; the checks tables hold every check the verdict counts.
+add_test(NAME cli.every_candidate_checked
+  COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/every_candidate.py $<TARGET_FILE:assess_cli>
+          ${CMAKE_CURRENT_BINARY_DIR}/every_candidate)
+set_tests_properties(cli.every_candidate_checked PROPERTIES LABELS cli ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")

@@ -197,6 +197,19 @@ void finish(FacadeAssessment& a) {
 
 }  // namespace
 
+std::vector<std::size_t> dynamic_candidates(const KinematicCaseResult& k) {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < k.candidates.size(); ++i) {
+    if (i == k.governing) continue;
+    bool wanted = false;
+    for (const auto& [code, g] : k.governing_by_code) wanted = wanted || g == i;
+    for (const CheckRow& r : k.candidates[i].checks)
+      wanted = wanted || !r.satisfied || r.no_verdict || !std::isfinite(r.dc) || r.dc > 1.0;
+    if (wanted) out.push_back(i);
+  }
+  return out;
+}
+
 FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   if (!kase.site)
     throw InputError(kase.file + ": /site: missing: the assessment checks the mechanism against the site's "
@@ -440,6 +453,24 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
     en.satisfied = s.overturned == 0 && s.mean_dc <= 1.0;
     en.note = "overturned in " + std::to_string(s.overturned) + " of " + std::to_string(s.analyses) + " analyses";
     a.energy_rows.push_back(en);
+  }
+  // The other candidates that govern a code or fail a kinematic check (issue
+  // 24): each analysed as the case restricted to it, as if run alone.
+  if (kase.mechanism.candidates.size() > 1) {
+    FacadeOptions sub_opt = opt;
+    sub_opt.histories = false;
+    for (std::size_t i : dynamic_candidates(a.kinematic)) {
+      CaseFile one = kase;
+      one.mechanism.candidates = {kase.mechanism.candidates[i]};
+      FacadeAssessment sub = assess_facade(one, sub_opt);
+      for (const CheckRow& r : sub.checks)
+        if (r.kind == "dynamic") a.checks.push_back(r);
+      a.energy_rows.insert(a.energy_rows.end(), sub.energy_rows.begin(), sub.energy_rows.end());
+      for (const std::string& w : sub.warnings)
+        if (std::find(a.warnings.begin(), a.warnings.end(), w) == a.warnings.end()) a.warnings.push_back(w);
+      a.other_dynamics.push_back(std::move(sub));
+      a.other_dynamics_candidate.push_back(i);
+    }
   }
   finish(a);
   return a;

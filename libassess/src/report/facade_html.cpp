@@ -431,11 +431,11 @@ void add_kinematic(const Ctx& c) {
   c.h.add_svg(render_svg(p), c.t("kin.adrs_fig"), "fig-adrs");
 }
 
-void add_checks(const Ctx& c) {
-  if (c.a.checks.empty()) return;
-  c.h.add_heading(c.t("checks.heading"), 2, false);
+// The rows of a checks table: every check with every input of its demand
+// (issue 24), red only where the check fails, the reason in the same row.
+std::vector<std::vector<HtmlCell>> check_rows(const Ctx& c, const std::vector<CheckRow>& checks) {
   std::vector<std::vector<HtmlCell>> rows;
-  for (const CheckRow& r : c.a.checks) {
+  for (const CheckRow& r : checks) {
     const bool fails = check_fails(r);
     const int prec = 4;
     std::string inputs;  // every input of the demand (issue 24), "T1 (s) = 0.227"
@@ -448,10 +448,56 @@ void add_checks(const Ctx& c) {
                     HtmlCell(c.t(fails ? "fail" : "ok"), fails ? "fail" : "ok",
                              fails && r.dc <= 1.0 ? c.loc(r.note) : "")});
   }
-  c.h.add_cell_table({c.t("checks.code"), c.t("checks.check"), HtmlCell(c.t("checks.demand"), "num"),
-                 HtmlCell(c.t("checks.capacity"), "num"), c.t("kin.unit"), HtmlCell("D/C", "num"),
-                 HtmlCell(c.t("checks.ag"), "num"), c.t("checks.outcome")},
-                rows, "", "checks");
+  return rows;
+}
+
+std::vector<HtmlCell> check_head(const Ctx& c) {
+  return {c.t("checks.code"), c.t("checks.check"), HtmlCell(c.t("checks.demand"), "num"),
+          HtmlCell(c.t("checks.capacity"), "num"), c.t("kin.unit"), HtmlCell("D/C", "num"),
+          HtmlCell(c.t("checks.ag"), "num"), c.t("checks.outcome")};
+}
+
+// The checks of candidate i that are not in the body's table: those of the
+// codes it does not govern (the body lists each code's governing candidate).
+std::vector<CheckRow> appendix_checks(const FacadeAssessment& a, std::size_t i) {
+  std::vector<CheckRow> out;
+  for (const CheckRow& r : a.kinematic.candidates[i].checks) {
+    const auto g = a.kinematic.governing_by_code.find(r.code);
+    if (g == a.kinematic.governing_by_code.end() || g->second != i) out.push_back(r);
+  }
+  return out;
+}
+
+bool has_appendix_checks(const FacadeAssessment& a) {
+  for (std::size_t i = 0; i < a.kinematic.candidates.size(); ++i)
+    if (!appendix_checks(a, i).empty()) return true;
+  return false;
+}
+
+void add_checks(const Ctx& c) {
+  if (c.a.checks.empty()) return;
+  c.h.add_heading(c.t("checks.heading"), 2, false);
+  // The body: the checks of each code's governing candidate and every dynamic
+  // check; the other candidates' checks are in the appendix, so that the
+  // counts of the verdict box are the rows of these tables (issue 24).
+  if (has_appendix_checks(c.a)) c.h.add_paragraph(c.t("checks.body_note"));
+  c.h.add_cell_table(check_head(c), check_rows(c, c.a.checks), "", "checks");
+}
+
+// Appendix: every check of the other candidates, one table per candidate.
+void add_checks_appendix(const Ctx& c) {
+  if (!has_appendix_checks(c.a)) return;
+  c.h.add_heading(c.t("checks_all.heading"));
+  c.h.add_paragraph(c.t("checks_all.note"));
+  for (std::size_t i = 0; i < c.a.kinematic.candidates.size(); ++i) {
+    const std::vector<CheckRow> rows = appendix_checks(c.a, i);
+    if (rows.empty()) continue;
+    const CandidateResult& cr = c.a.kinematic.candidates[i];
+    c.h.add_heading(c.loc(cr.label) + " (α0 = " + fixed(cr.result.alpha0, 4) + ", a0* = " + fixed(cr.result.a0_star, 3) +
+                        " m/s²)",
+                    3);
+    c.h.add_cell_table(check_head(c), check_rows(c, rows), "", "checks");
+  }
 }
 
 void add_records_compatibility(const Ctx& c) {
@@ -561,6 +607,51 @@ void add_histories(const Ctx& c) {
     panels.push_back({render_svg(p), a.records[ir].name + (overturned ? " — " + c.t("dyn.overturning") : "")});
   }
   if (!panels.empty()) c.h.add_svg_grid(panels, c.t("dyn.histories_fig"), "fig-histories");
+}
+
+// The dynamic analyses of the other candidates that govern a code or fail a
+// kinematic check (issue 24): one row per candidate and restitution value,
+// with the records each used (its own selection over its own periods).
+void add_other_dynamics(const Ctx& c) {
+  const FacadeAssessment& a = c.a;
+  if (a.other_dynamics.empty()) return;
+  c.h.add_heading(c.t("dyn.others"), 3);
+  c.h.add_paragraph(c.t("dyn.others_text"));
+  std::vector<std::vector<HtmlCell>> rows;
+  for (std::size_t k = 0; k < a.other_dynamics.size(); ++k) {
+    const FacadeAssessment& o = a.other_dynamics[k];
+    const CandidateResult& cr = a.kinematic.candidates[a.other_dynamics_candidate[k]];
+    if (!o.dynamic_applies) {
+      rows.push_back({c.loc(cr.label), "—", "—", HtmlCell("—", "num"), HtmlCell("—", "num"), HtmlCell("—", "num"),
+                      HtmlCell("—", "num"), HtmlCell("—", "num"), HtmlCell(c.t("dyn.na") + ": " + c.loc(o.dynamic_note))});
+      continue;
+    }
+    std::string recs;
+    for (const RecordUsed& r : o.records) recs += (recs.empty() ? "" : ", ") + r.name + " (" + fixed(r.scale, 2) + ")";
+    for (const RestitutionSummary& x : o.summaries) {
+      int collapses = 0;
+      for (const DynamicRun& r : o.runs) collapses += r.restitution == x.restitution && r.collapse ? 1 : 0;
+      const bool fails = !x.slv_satisfied || !std::isfinite(x.dc_slv);
+      std::string why;
+      if (fails && !x.no_verdict) {
+        if (x.failed > 0) why = msgf(c.L, "dyn.reason_failed", x.failed, x.analyses);
+        if (collapses > 0) why += (why.empty() ? "" : "; ") + msgf(c.L, "dyn.reason_collapse", collapses, x.analyses);
+        if (x.dc_slv > 1.0) why += (why.empty() ? "" : "; ") + c.t("dyn.reason_dc");
+      }
+      rows.push_back({c.loc(cr.label), recs, c.loc(describe(o.dynamic->restitutions[x.restitution])),
+                      HtmlCell(std::to_string(collapses) + " / " + std::to_string(x.analyses), "num"),
+                      num(x.d_demand, 4), num(o.kinematic.candidates.front().result.d_SLV, 4),
+                      x.no_verdict ? HtmlCell("—", "num") : dc_cell(x.dc_slv, !(x.dc_slv <= 1.0)),
+                      num(x.mean_dc, 3),
+                      x.no_verdict ? HtmlCell(c.t("verdict.no_verdict_short"), "fail")
+                                   : HtmlCell(c.t(fails ? "fail" : "ok"), fails ? "fail" : "ok", why)});
+    }
+  }
+  c.h.add_cell_table({c.t("dyn.candidate"), c.t("dyn.records_used"), c.t("dyn.restitution"),
+                      HtmlCell(c.t("dyn.collapses"), "num"), HtmlCell(c.t("dyn.d_demand"), "num"),
+                      HtmlCell("d_SLV (m)", "num"), HtmlCell(c.t("dyn.dc_slv"), "num"), HtmlCell(c.t("dyn.mean_dc"), "num"),
+                      c.t("checks.outcome")},
+                     rows, c.t("dyn.others_cap"));
 }
 
 void add_dynamic(const Ctx& c) {
@@ -675,6 +766,7 @@ void add_dynamic(const Ctx& c) {
                       HtmlCell(c.t("dyn.max_d"), "num"), c.t("dyn.rule"), HtmlCell(c.t("dyn.dc_slv"), "num"),
                       c.t("checks.outcome")},
                      srows, c.t("dyn.summary_cap"));
+  add_other_dynamics(c);
 }
 
 // Grouped D/C bars (Lipo & de Felice 2017, Fig. 8) of the summary by approach
@@ -864,6 +956,7 @@ std::string facade_html(const FacadeAssessment& a, const ReportOptions& options)
   add_warnings(c);
   add_conclusions(c);
   add_legend(c);
+  add_checks_appendix(c);
   add_appendix(c);
   return h.str();
 }

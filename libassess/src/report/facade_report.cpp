@@ -195,6 +195,37 @@ std::string facade_text(const FacadeAssessment& a, TextWidth width) {
       }
     }
   }
+  if (!a.other_dynamics.empty()) {
+    // The other candidates that govern a code or fail a kinematic check, each
+    // analysed as the case restricted to it (issue 24).
+    o += "\n" +
+         para("dynamic analysis of the other candidates that govern a code or fail a kinematic check (each as if it "
+              "were the only mechanism of the case: records selected over its own periods; the dynamic verdict is "
+              "the worst over every candidate):",
+              2) +
+         "\n";
+    o += format("  %-16s %9s %10s %10s %7s  %s\n", "restitution", "d0 exc.", "demand d*", "d_SLV (m)", "D/C",
+                "verdict (C8.7.1.2.1.9)");
+    for (std::size_t k = 0; k < a.other_dynamics.size(); ++k) {
+      const FacadeAssessment& s = a.other_dynamics[k];
+      const std::string label = a.kinematic.candidates[a.other_dynamics_candidate[k]].label;
+      if (!s.dynamic_applies) {
+        o += para("  " + label + ": not applicable: " + s.dynamic_note, 4) + "\n";
+        continue;
+      }
+      o += "  " + label + ":\n";
+      for (const RestitutionSummary& x : s.summaries) {
+        int collapses = 0;
+        for (const DynamicRun& r : s.runs) collapses += r.restitution == x.restitution && r.collapse ? 1 : 0;
+        o += format("    %-14s %9s %10.4f %10.4f %7.3f  %s\n", describe(s.dynamic->restitutions[x.restitution]).c_str(),
+                    format("%d of %d", collapses, x.analyses).c_str(), x.d_demand,
+                    s.kinematic.candidates.front().result.d_SLV, x.dc_slv, dyn_verdict(x));
+      }
+      std::string recs;
+      for (const RecordUsed& r : s.records) recs += (recs.empty() ? "" : ", ") + r.name + format(" (%.2f)", r.scale);
+      o += para("    records (scale): " + recs, 6) + "\n";
+    }
+  }
   if (!a.verdict.rows.empty()) o += "\n== Verdict by approach (seed Fig. 8) ==\n" + verdict_text(a.verdict, width);
   if (!a.warnings.empty()) {
     o += "\n== Warnings ==\n";
@@ -368,6 +399,16 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
                         {"slv_satisfied", s.no_verdict ? nlohmann::json(nullptr) : nlohmann::json(s.slv_satisfied)}});
       d["summary"] = sums;
     }
+    // The other candidates' dynamic analyses (issue 24): the "dynamic" object
+    // of each one's own assessment (the case restricted to that candidate).
+    nlohmann::json others = nlohmann::json::array();
+    for (std::size_t k = 0; k < a.other_dynamics.size(); ++k) {
+      const std::size_t ci = a.other_dynamics_candidate[k];
+      others.push_back({{"candidate", a.kinematic.candidates[ci].label},
+                        {"candidate_index", ci},
+                        {"dynamic", facade_json(a.other_dynamics[k])["dynamic"]}});
+    }
+    d["other_candidates"] = others;
     j["dynamic"] = d;
   }
   const nlohmann::json v = to_json(a.verdict);

@@ -399,6 +399,39 @@ const std::map<std::string, Entry>& catalogue() {
                      "D/C in red: > 1; in green: ≤ 1. A check can fail with D/C ≤ 1 (displacement d0 exceeded or "
                      "overturning in an analysis, a failed analysis): its outcome is in red with the reason in the "
                      "same row."}},
+      // Every candidate's checks and dynamic analysis (issue 24).
+      {"checks.body_note",
+       {"La tabella riporta, per ciascuna norma, le verifiche del meccanismo candidato che governa e tutte le "
+        "verifiche dinamiche; le verifiche degli altri candidati sono in appendice. I conteggi del riquadro degli "
+        "esiti sono la somma delle righe delle due tabelle.",
+        "The table lists, for each code, the checks of the governing candidate mechanism and every dynamic check; "
+        "the other candidates' checks are in the appendix. The counts of the verdict box are the rows of the two "
+        "tables together."}},
+      {"checks_all.heading", {"Appendice — verifiche degli altri meccanismi candidati",
+                              "Appendix — checks of the other candidate mechanisms"}},
+      {"checks_all.note",
+       {"Per ogni candidato, le verifiche non riportate nel corpo della relazione (quelle delle norme per cui il "
+        "candidato non governa); entrano tutte negli esiti per procedura.",
+        "For each candidate, the checks not listed in the body of the report (those of the codes it does not "
+        "govern); every one of them enters the verdict of its procedure."}},
+      {"dyn.others", {"Analisi dinamica degli altri meccanismi candidati", "Dynamic analysis of the other candidate mechanisms"}},
+      {"dyn.others_text",
+       {"Ogni altro candidato che governa per una norma o non soddisfa una verifica cinematica è analizzato "
+        "dinamicamente come se fosse l'unico meccanismo del caso: stesso modello, stessi coefficienti di "
+        "restituzione, accelerogrammi selezionati sull'intervallo dei suoi periodi. L'esito dinamico della facciata "
+        "è il peggiore di tutti i candidati analizzati.",
+        "Every other candidate that governs a code or fails a kinematic check is analysed dynamically as if it were "
+        "the only mechanism of the case: the same model, the same restitution coefficients, records selected over "
+        "its own periods. The dynamic verdict of the façade is the worst over every candidate analysed."}},
+      {"dyn.others_cap",
+       {"Per ogni candidato e coefficiente di restituzione: accelerogrammi usati (fattore di scala), analisi con d0 "
+        "superato, domanda di spostamento secondo NTC 2018 §7.3.5, capacità d_SLV, D/C ed esito (C8.7.1.2.1.9).",
+        "For each candidate and restitution coefficient: the records used (scale factor), analyses with d0 exceeded, "
+        "the displacement demand by NTC 2018 §7.3.5, the capacity d_SLV, D/C and outcome (C8.7.1.2.1.9)."}},
+      {"dyn.candidate", {"candidato", "candidate"}},
+      {"dyn.records_used", {"accelerogrammi (scala)", "records (scale)"}},
+      {"dyn.collapses", {"d0 superato", "d0 exceeded"}},
+      {"dyn.d_demand", {"domanda d* (m)", "demand d* (m)"}},
       {"appendix.heading", {"Appendice — file del caso", "Appendix — case file"}},
       {"appendix.note", {"Il file di ingresso, riportato integralmente.", "The input file, in full."}},
       {"appendix.missing", {"(testo del file non disponibile)", "(file text not available)"}},

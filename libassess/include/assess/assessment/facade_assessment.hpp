@@ -146,7 +146,24 @@ struct FacadeAssessment {
   /// spectrum of the floor motions (mean over the records, scaled, m/s^2) and
   /// the code's floor spectrum S_eZ(T) [C7.2.6] at 5 % for the SLV hazard, at `periods`.
   std::vector<double> floor_mean_psa, code_floor_Se;
+
+  /// The dynamic analyses of the other candidates (issue 24; docs/theory/facade.md §6.3):
+  /// every candidate besides the governing one that governs a code or fails one of
+  /// its kinematic checks, so that no mechanism that fails is left without its
+  /// dynamic check. Each is the assessment of the case restricted to that
+  /// candidate: the same code path, and the same numbers, as a run of that
+  /// candidate alone. Their dynamic rows are in `checks` and their energy rows
+  /// in `energy_rows`, so the dynamic verdict is the worst over all of them.
+  /// Histories are not kept for them.
+  std::vector<FacadeAssessment> other_dynamics;
+  /// The candidate index (in kinematic.candidates) of each of other_dynamics.
+  std::vector<std::size_t> other_dynamics_candidate;
 };
+
+/// The candidates whose dynamic analysis the assessment adds to the governing
+/// one's: those that govern a code or fail (or cannot give a verdict in) one of
+/// their kinematic checks, in candidate order, the governing one excluded.
+std::vector<std::size_t> dynamic_candidates(const KinematicCaseResult& k);
 
 /// Runs the whole assessment of a case. Throws InputError for bad input
 /// (naming the JSON path); physical outcomes are results.
