@@ -542,6 +542,7 @@ KinematicCaseResult run_kinematic_case(const CaseFile& c) {
                          to_string(ls) + " (ag_g, F0, Tc_star)");
   in.site = c.site->conditions;
   in.building = c.building;
+  out.check_input = in;
   bool warned_Z = false;
   for (CandidateResult& cr : out.candidates) {
     in.Z = cr.Z;

@@ -233,6 +233,25 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   a.periods.insert(a.periods.begin(), 0.0);
   for (const auto& [ls, s] : a.spectra)
     for (double T : a.periods) a.site_Se[ls].push_back(s.Se(T));
+  // ADRS demand curves of the governing candidate's displacement checks, each
+  // at its damping and location (the functions its checks use).
+  if (a.kinematic.check_input) {
+    CheckInput in = *a.kinematic.check_input;
+    a.adrs_periods = log_spaced_periods(0.02, 6.0, 120);
+    const CandidateResult& gc = a.kinematic.candidates[a.kinematic.governing];
+    for (const CheckRow& r : gc.checks) {
+      if (r.kind != "displacement") continue;
+      in.Z = r.location == "height" ? gc.Z : 0.0;
+      AdrsDemand d{r.code, r.limit_state, r.location, r.xi_pct, {}, {}};
+      const double w = 2.0 * units::pi;
+      for (double T : a.adrs_periods) {
+        const double sd = displacement_demand(in, parse_code_edition(r.code), parse_limit_state(r.limit_state), T);
+        d.Sd.push_back(sd);
+        d.Sa.push_back(sd * (w / T) * (w / T));
+      }
+      a.adrs.push_back(std::move(d));
+    }
+  }
   if (kase.dynamic.is_null()) return a;
 
   a.dynamic = parse_dynamic(kase.dynamic, kase.file, directory_of(kase.file));

@@ -65,6 +65,34 @@ double solve_ag(const std::function<double(double)>& demand, double capacity) {
   return detail::brent_root([&](double ag) { return demand(ag) - capacity; }, lo, hi, 1e-10);
 }
 
+// Beyond TE the displacement spectrum is no longer Se T^2/4pi^2 but
+// [3.2.11] of NTC 2018 §3.2.3.2.3: its inputs, so that the demand can be redone.
+void add_long_period_inputs(CheckRow& r, const ElasticSpectrum& e, double T) {
+  if (T <= e.TE()) return;
+  r.inputs.insert(r.inputs.end(), {{"TE (s)", e.TE()}, {"TF (s)", e.TF()}, {"F0 (-)", e.F0()}, {"S (-)", e.S()},
+                                   {"TC (s)", e.TC()}, {"TD (s)", e.TD()}});
+}
+
+void set_secant(CheckRow& r, double T, double d, double a, double xi) {
+  r.secant_T = T;
+  r.secant_d = d;
+  r.secant_a = a;
+  r.xi_pct = xi;
+}
+
+// NTC 2018 displacement demand (m) at the secant period T and the mechanism
+// damping xi: SDe(T, xi) [3.2.10] at ground; at height S_eZ(T, xi) T^2/4pi^2
+// [C8.7.1.12], not below the plateau's value Se(T1) (b T1)^2/4pi^2 beyond b T1.
+double displacement_2018(const CheckInput& in, const HazardParams& h, double T, double xi) {
+  if (!(in.Z > 0.0)) return ElasticSpectrum(h, in.site, xi).SDe(T);
+  const double two_pi = 2.0 * units::pi;
+  const FloorSpectrum fs(h, in.site, *in.building, in.Z, xi);
+  const double b = code_rules::floor_spectrum_b, T1 = in.building->T1;
+  double d = fs.SDe(T);  // [C8.7.1.12]
+  if (T > b * T1) d = std::max(d, fs.Se(T1) * b * b * T1 * T1 / (two_pi * two_pi));
+  return d;
+}
+
 void set_pga(CheckRow& r, double ag_cap, double ag_site) {
   r.has_pga = true;
   r.ag_capacity_g = ag_cap;
@@ -98,13 +126,23 @@ void CheckInput::validate() const {
   }
 }
 
+double displacement_demand(const CheckInput& in, CodeEdition code, LimitState ls, double T) {
+  const HazardParams& h = in.hazard.at(ls);
+  if (code == CodeEdition::NTC2018)
+    return displacement_2018(in, h, T, ls == LimitState::SLC ? in.damping_SLC_pct : in.damping_SLV_pct);
+  const ElasticSpectrum s(h, in.site);  // 5 % [C8A.4.11-12]
+  if (!(in.Z > 0.0)) return s.SDe(T);
+  const BuildingModel& b = *in.building;
+  return code_rules::demand_at_height_2008(s.SDe(b.T1), code_rules::psi_first_mode(in.Z, b.H),
+                                           code_rules::gamma_first_mode(b.storeys), T, b.T1);
+}
+
 std::vector<CheckRow> run_code_checks(const KinematicResult& r, const CheckInput& in) {
   in.validate();
   std::vector<CheckRow> rows;
   if (!r.activates) return rows;
   const bool at_height = in.Z > 0.0;
   const bool nonlinear = r.curve_complete();
-  const double two_pi = 2.0 * units::pi;
 
   for (CodeEdition code : in.codes) {
     const HazardParams& hSLD = in.hazard.at(LimitState::SLD);
@@ -139,17 +177,22 @@ std::vector<CheckRow> run_code_checks(const KinematicResult& r, const CheckInput
       if (nonlinear) {
         if (!at_height || code_rules::height_also_checks_ground_2008)
         {
+          CheckInput ground = in;
+          ground.Z = 0.0;
           rows.push_back(row(code, LimitState::SLV, "displacement", "ground", "C8A.4.11 [R]", "SDe(Ts)",
-                             sSLV.SDe(r.Ts), r.du_star, "m"));
-          rows.back().inputs = {{"Ts (s)", r.Ts}, {"xi (%)", 5.0}, {"eta (-)", sSLV.eta()}};
+                             displacement_demand(ground, code, LimitState::SLV, r.Ts), r.du_star, "m"));
+          rows.back().inputs = {{"ag (g)", hSLV.ag_g}, {"Ts (s)", r.Ts}, {"xi (%)", 5.0}, {"eta (-)", sSLV.eta()},
+                                {"Se(Ts) (m/s2)", sSLV.Se(r.Ts)}};
+          add_long_period_inputs(rows.back(), sSLV, r.Ts);
+          set_secant(rows.back(), r.Ts, r.ds_star, r.as_star, 5.0);
         }
         if (at_height) {
           const BuildingModel& b = *in.building;
           const double psi = code_rules::psi_first_mode(in.Z, b.H), gam = code_rules::gamma_first_mode(b.storeys);
           rows.push_back(row(code, LimitState::SLV, "displacement", "height", "C8A.4.12 [R]",
                              "SDe(T1) psi gamma (Ts/T1)^2 / sqrt((1 - Ts/T1)^2 + 0.02 Ts/T1)",
-                             code_rules::demand_at_height_2008(sSLV.SDe(b.T1), psi, gam, r.Ts, b.T1), r.du_star,
-                             "m"));
+                             displacement_demand(in, code, LimitState::SLV, r.Ts), r.du_star, "m"));
+          set_secant(rows.back(), r.Ts, r.ds_star, r.as_star, 5.0);
           rows.back().inputs = height_inputs(b, in.Z, psi, gam, sSLV.Se(b.T1));
           rows.back().inputs.push_back({"SDe(T1) (m)", sSLV.SDe(b.T1)});
           rows.back().inputs.push_back({"Ts (s)", r.Ts});
@@ -167,14 +210,7 @@ std::vector<CheckRow> run_code_checks(const KinematicResult& r, const CheckInput
       return FloorSpectrum(h, in.site, *in.building, in.Z, 5.0).a_Z();
     };
     // Displacement demand (m) at period T and mechanism damping xi.
-    auto disp = [&](const HazardParams& h, double T, double xi) {
-      if (!at_height) return ElasticSpectrum(h, in.site, xi).SDe(T);
-      const FloorSpectrum fs(h, in.site, *in.building, in.Z, xi);
-      const double b = code_rules::floor_spectrum_b, T1 = in.building->T1;
-      double d = fs.SDe(T);  // [C8.7.1.12]
-      if (T > b * T1) d = std::max(d, fs.Se(T1) * b * b * T1 * T1 / (two_pi * two_pi));
-      return d;
-    };
+    auto disp = [&](const HazardParams& h, double T, double xi) { return displacement_2018(in, h, T, xi); };
     auto ag_activation = [&](const HazardParams& h) {  // [C8.7.1.8] with ag S or [C7.2.8]
       return solve_ag([&](double ag) { return peak(with_ag(h, ag)); }, r.a0_star);
     };
@@ -216,9 +252,15 @@ std::vector<CheckRow> run_code_checks(const KinematicResult& r, const CheckInput
         double ag_cap = solve_ag([&](double ag) { return disp(with_ag(*x.h, ag), x.T, x.xi); }, x.d);
         ag_cap = std::max(ag_cap, ag_activation(*x.h));  // "if ag,SLV < ag,SLD use ag,SLD"
         set_pga(c, ag_cap, x.h->ag_g);
+        set_secant(c, x.T, x.d, x.ls == LimitState::SLV ? r.a_SLV : r.a_SLC, x.xi);
         // T = T_SLV or T_SLC: the secant period 2 pi sqrt(d / a(d)) at the capacity point [C8.7.1.10-11].
         c.inputs = {{"ag (g)", x.h->ag_g}, {"T (s)", x.T}, {"xi (%)", x.xi},
                     {"eta (-)", ElasticSpectrum(*x.h, in.site, x.xi).eta()}};
+        if (!at_height) {
+          const ElasticSpectrum e(*x.h, in.site, x.xi);
+          c.inputs.push_back({"Se(T) (m/s2)", e.Se(x.T)});
+          add_long_period_inputs(c, e, x.T);
+        }
         if (at_height) {
           const FloorSpectrum fs(*x.h, in.site, *in.building, in.Z, x.xi);
           const auto hi = height_inputs(*in.building, in.Z, fs.psi(), fs.gamma(),

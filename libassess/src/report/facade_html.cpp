@@ -372,18 +372,10 @@ void add_kinematic(const Ctx& c) {
   cap.color = "#000000";
   p.series.push_back(cap);
   double d_show = k.d0_star;
-  const std::map<LimitState, std::string> colours{{LimitState::SLV, "#1f5fbf"}, {LimitState::SLC, "#b3001b"}};
-  for (const auto& [ls, colour] : colours) {
-    const auto sp = c.a.spectra.find(ls);
-    if (sp == c.a.spectra.end()) continue;
-    PlotSeries s = series(msgf(c.L, "kin.adrs_spectrum", to_string(ls)),
-                          ls == LimitState::SLV ? PlotSeries::Style::Line : PlotSeries::Style::Dashed);
-    for (double T : c.a.periods) s.x.push_back(sp->second.SDe(T)), s.y.push_back(sp->second.Se(T));
-    s.color = colour;
-    p.series.push_back(s);
-  }
-  // Check points of the ground-level displacement checks: the demand on the
-  // line of its secant period (Sa = Sd (2 pi / T)^2), the capacity on the curve.
+  // Each displacement check of the governing candidate (issue 24): its demand
+  // curve at its own damping (floor spectrum at height), the secant line from
+  // the origin through the point that defines its period, the demand on that
+  // line and the capacity on the curve.
   const auto a_on_curve = [&](double d) {
     for (std::size_t i = 1; i < k.curve.size(); ++i)
       if (d <= k.curve[i].d_star) {
@@ -393,28 +385,53 @@ void add_kinematic(const Ctx& c) {
       }
     return k.curve.back().a_star;
   };
-  for (const CheckRow& row : c.a.checks) {
-    if (row.kind != "displacement" || row.location != "ground") continue;
-    const double T = row.code == "NTC2008" ? k.Ts : row.limit_state == "SLC" ? k.T_SLC : k.T_SLV;
-    const std::string colour = row.limit_state == "SLC" ? "#b3001b" : "#1f5fbf";
-    const std::string who = code_name(row.code) + " " + row.limit_state;
-    if (T > 0.0 && std::isfinite(row.demand)) {
-      const double w2 = std::pow(2.0 * pi / T, 2);
-      PlotSeries line = series("", PlotSeries::Style::Dashed, {0.0, row.demand * 1.15}, {0.0, row.demand * 1.15 * w2});
+  std::vector<const CheckRow*> disp_rows;
+  for (const CheckRow& row : c.gc().checks)
+    if (row.kind == "displacement") disp_rows.push_back(&row);
+  static const char* palette[] = {"#1f5fbf", "#b3001b", "#2b7a2b", "#d9730d", "#8a3ea8", "#17becf"};
+  for (std::size_t i = 0; i < disp_rows.size() && i < c.a.adrs.size(); ++i) {
+    const CheckRow& row = *disp_rows[i];
+    const AdrsDemand& dem = c.a.adrs[i];
+    const std::string colour = palette[i % 6];
+    const std::string who = code_name(row.code) + " " + row.limit_state +
+                            (row.location == "height" ? " (" + c.t("where.height") + ")" : "");
+    PlotSeries s = series(msgf(c.L, "kin.adrs_spectrum", code_name(row.code), row.limit_state +
+                              (row.location == "height" ? " (" + c.t("where.height") + ")" : std::string()),
+                              fixed(dem.xi_pct, 0)),
+                          row.code == "NTC2008" ? PlotSeries::Style::Dashed : PlotSeries::Style::Line, dem.Sd, dem.Sa);
+    s.color = colour;
+    p.series.push_back(s);
+    const double T = row.secant_T;
+    if (T > 0.0 && row.secant_d > 0.0 && std::isfinite(row.demand)) {
+      // The line of the period T at which the demand is read, Sa = (2 pi / T)^2 Sd; T is defined by the
+      // point (secant_d, secant_a): NTC 2008 Ts = 2 pi sqrt(ds*/as*) [C8A.4.7] passes through it, NTC 2018
+      // T_SLV = 1.68 pi sqrt(d/a(d)) [C8.7.1.10] (1.56 pi for SLC [C8.7.1.11]) is shorter than the secant
+      // through the capacity point, so that line is steeper (the caption says so).
+      const double slope = std::pow(2.0 * pi / T, 2);
+      const double x_end = 1.1 * std::max({row.demand, row.capacity, row.secant_d});
+      PlotSeries line = series(i == 0 ? msgf(c.L, "kin.adrs_secant", "") : "", PlotSeries::Style::Dashed,
+                               {0.0, x_end}, {0.0, slope * x_end});
       line.color = "#888888";
       p.series.push_back(line);
-      PlotSeries d = series(msgf(c.L, "kin.adrs_demand", who), PlotSeries::Style::Points,
-                            {row.demand}, {row.demand * w2});
+      PlotSeries d = series(msgf(c.L, "kin.adrs_demand", who), PlotSeries::Style::Points, {row.demand},
+                            {row.demand * slope});
       d.color = colour;
-      d.point_size = row.code == "NTC2008" ? 0.9 : 1.3;
-      d.point_type = row.code == "NTC2008" ? 6 : 7;
+      d.point_size = 1.3;
+      d.point_type = 7;
       p.series.push_back(d);
-      d_show = std::max(d_show, row.demand * 1.2);
+      if (row.code == "NTC2008") {  // the point that defines Ts (ds*, as*), not the capacity du* (NTC 2018: the capacity)
+        PlotSeries q = series("", PlotSeries::Style::Points, {row.secant_d}, {row.secant_a});
+        q.color = colour;
+        q.point_type = 9;
+        q.point_size = 1.1;
+        p.series.push_back(q);
+      }
+      d_show = std::max(d_show, x_end);
     }
-    PlotSeries q = series(msgf(c.L, "kin.adrs_capacity", who), PlotSeries::Style::Points,
-                          {row.capacity}, {a_on_curve(row.capacity)});
+    PlotSeries q = series(msgf(c.L, "kin.adrs_capacity", who), PlotSeries::Style::Points, {row.capacity},
+                          {a_on_curve(row.capacity)});
     q.color = colour;
-    q.point_type = row.code == "NTC2008" ? 4 : 5;
+    q.point_type = 5;
     q.point_size = 1.1;
     p.series.push_back(q);
   }
@@ -427,7 +444,8 @@ void add_kinematic(const Ctx& c) {
   for (const PlotSeries& s : p.series)
     if (s.style == PlotSeries::Style::Points) a_top = std::max(a_top, 1.3 * s.y[0]);
   p.y_max = a_top;
-  p.height = 460;
+  p.key = "below";  // the legend under the plot: it never hides a curve or a check point
+  p.height = 460 + 16 * int((p.series.size() + 1) / 2);
   c.h.add_svg(render_svg(p), c.t("kin.adrs_fig"), "fig-adrs");
 }
 

@@ -65,6 +65,15 @@ constexpr const char* kCss = R"(
   }
 )";
 
+// Page numbers "pag. x di y" (Italian) or "page x of y" in the printed
+// report's bottom margin (CSS paged-media margin boxes, printed by Chromium).
+std::string page_numbers(const std::string& lang) {
+  const bool it = lang == "it";
+  return std::string("\n  @page { @bottom-right { content: \"") + (it ? "pag. " : "page ") +
+         "\" counter(page) \"" + (it ? " di " : " of ") +
+         "\" counter(pages); font-family: sans-serif; font-size: 8pt; color: #555; } }\n";
+}
+
 }  // namespace
 
 HtmlReport::HtmlReport(std::string title) : title_(std::move(title)) {}
@@ -181,7 +190,7 @@ void HtmlReport::add_raw_html(const std::string& html) { body_ += html + "\n"; }
 std::string HtmlReport::str() const {
   return "<!DOCTYPE html>\n<html lang=\"" + xml_escape(lang_) + "\">\n<head>\n<meta charset=\"utf-8\">\n"
          "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
-         xml_escape(title_) + "</title>\n<style>" + kCss + "</style>\n</head>\n<body>\n<h1>" + xml_escape(title_) +
+         xml_escape(title_) + "</title>\n<style>" + kCss + page_numbers(lang_) + "</style>\n</head>\n<body>\n<h1>" + xml_escape(title_) +
          "</h1>\n" + (subtitle_.empty() ? "" : "<p class=\"meta\">" + xml_escape(subtitle_) + "</p>\n") + body_ + "</body>\n</html>\n";
 }
 

@@ -193,16 +193,29 @@ const std::map<std::string, Entry>& catalogue() {
       {"kin.adrs_x", {"spostamento spettrale d*, Sd (m)", "spectral displacement d*, Sd (m)"}},
       {"kin.adrs_y", {"accelerazione spettrale a*, Sa (m/s²)", "spectral acceleration a*, Sa (m/s²)"}},
       {"kin.adrs_curve", {"curva di capacità a*–d*", "capacity curve a*–d*"}},
-      {"kin.adrs_spectrum", {"spettro elastico {} (5 %)", "{} elastic spectrum (5 %)"}},
+      {"kin.adrs_spectrum", {"domanda {} {}, ξ = {} %", "{} {} demand, ξ = {} %"}},
       {"kin.adrs_demand", {"domanda {}", "{} demand"}},
       {"kin.adrs_capacity", {"capacità {}", "{} capacity"}},
+      {"kin.adrs_secant", {"periodo secante {}", "{} secant period"}},
       {"kin.adrs_fig",
-       {"Curva di capacità dell'oscillatore equivalente (C8A.4.5 / C8.7.1.4) nel piano Sa–Sd con gli spettri "
-        "elastici SLV e SLC del sito (5 %) e i punti delle verifiche in spostamento al piede: domanda (cerchi) "
-        "sulla retta del periodo secante, capacità (quadrati) sulla curva.",
-        "Capacity curve of the equivalent oscillator (C8A.4.5 / C8.7.1.4) in the Sa–Sd plane with the site's SLV "
-        "and SLC elastic spectra (5 %) and the points of the ground-level displacement checks: demand (circles) on "
-        "the secant-period line, capacity (squares) on the curve."}},
+       {"Curva di capacità dell'oscillatore equivalente (C8A.4.5 / C8.7.1.4) nel piano Sa–Sd e, per ogni verifica "
+        "in spostamento del meccanismo che governa, la curva di domanda con lo smorzamento usato dalla verifica "
+        "(NTC 2018: ξ del meccanismo allo SLV e allo SLC; NTC 2008: 5 %), in quota sullo spettro di piano "
+        "[C8.7.1.12] o con la [C8A.4.12]. Le rette tratteggiate per l'origine sono quelle del periodo a cui si "
+        "legge la domanda, Sa = (2π/T)² Sd: NTC 2008 Ts = 2π √(ds*/as*) con ds* = 0,4 du* [C8A.4.7], retta per "
+        "il punto (ds*, as*) (triangolo); NTC 2018 T_SLV = 1,68 π √(d_SLV / a(d_SLV)) [C8.7.1.10] e T_SLC = 1,56 π "
+        "√(d_SLC / a(d_SLC)) [C8.7.1.11]: la norma prende un periodo pari a 0,84 e 0,78 volte quello della secante "
+        "per il punto di capacità, quindi la retta è più ripida della secante per il quadrato. Domanda (cerchi) "
+        "all'incrocio tra la retta e la curva di domanda; capacità (quadrati) sulla curva di capacità.",
+        "Capacity curve of the equivalent oscillator (C8A.4.5 / C8.7.1.4) in the Sa–Sd plane and, for each "
+        "displacement check of the governing mechanism, its demand curve at the damping the check uses (NTC 2018: "
+        "the mechanism's ξ at SLV and SLC; NTC 2008: 5 %), at height on the floor spectrum [C8.7.1.12] or by "
+        "[C8A.4.12]. The dashed lines through the origin are those of the period at which the demand is read, "
+        "Sa = (2π/T)² Sd: NTC 2008 Ts = 2π √(ds*/as*) with ds* = 0.4 du* [C8A.4.7], the line through (ds*, as*) "
+        "(triangle); NTC 2018 T_SLV = 1.68 π √(d_SLV / a(d_SLV)) [C8.7.1.10] and T_SLC = 1.56 π √(d_SLC / "
+        "a(d_SLC)) [C8.7.1.11]: the code takes 0.84 and 0.78 times the period of the secant through the capacity "
+        "point, so the line is steeper than the secant through the square. Demand (circles) where the line meets "
+        "the demand curve; capacity (squares) on the capacity curve."}},
       {"kin.incomplete", {"Curva di capacità incompleta", "Capacity curve incomplete"}},
       // Checks.
       {"checks.heading", {"Verifiche (D/C = domanda / capacità; soddisfatta se D/C ≤ 1)",

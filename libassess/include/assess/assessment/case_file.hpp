@@ -70,6 +70,9 @@ struct KinematicCaseResult {
   /// The checks of each code's governing candidate (empty without a site).
   std::vector<CheckRow> checks;
   std::map<LimitState, SeismicAction> actions;  ///< the site's hazard per limit state
+  /// What the checks were given (hazard, site, building, q, damping, codes);
+  /// Z is each candidate's own (CandidateResult::Z). Empty without a site.
+  std::optional<CheckInput> check_input;
   /// Summary by approach over every candidate (kinematic rows only).
   Verdict verdict;
   /// The case's warnings, then those of the analysis (alpha0 > 1, Z > H).

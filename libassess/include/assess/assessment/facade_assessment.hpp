@@ -92,6 +92,17 @@ struct SpectrumCompatibility {
   std::string message;
 };
 
+/// The demand curve of one displacement check of the governing candidate in
+/// the ADRS plane (issue 24): the check's own demand function of the secant
+/// period (kinematic/code_checks.hpp displacement_demand, at its damping and,
+/// at height, on the floor spectrum), Sd = d(T), Sa = d(T) (2 pi / T)^2.
+struct AdrsDemand {
+  std::string code, limit_state, location;  ///< as in its CheckRow
+  double xi_pct = 5.0;                      ///< damping of the demand (%)
+  std::vector<double> Sd;                   ///< m, at FacadeAssessment::adrs_periods
+  std::vector<double> Sa;                   ///< m/s^2
+};
+
 struct FacadeAssessment {
   CaseFile kase;
   KinematicCaseResult kinematic;
@@ -146,6 +157,9 @@ struct FacadeAssessment {
   /// spectrum of the floor motions (mean over the records, scaled, m/s^2) and
   /// the code's floor spectrum S_eZ(T) [C7.2.6] at 5 % for the SLV hazard, at `periods`.
   std::vector<double> floor_mean_psa, code_floor_Se;
+  /// The ADRS demand curves of the governing candidate's displacement checks (issue 24), at adrs_periods (s).
+  std::vector<AdrsDemand> adrs;
+  std::vector<double> adrs_periods;
 
   /// The dynamic analyses of the other candidates (issue 24; docs/theory/facade.md §6.3):
   /// every candidate besides the governing one that governs a code or fails one of

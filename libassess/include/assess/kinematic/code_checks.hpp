@@ -51,6 +51,11 @@ struct CheckRow {
   /// name with its unit ("T1 (s)", "psi(Z) (-)", "gamma (-)", "N (storeys)",
   /// "Se(T1) (m/s2)", "a_Z (m/s2)", "q (-)", "xi (%)", "eta (-)", "T (s)", ...) and value.
   std::vector<std::pair<std::string, double>> inputs;
+  /// Displacement checks: the secant period T (s) of the demand and the point
+  /// (d*, a*) of the capacity curve that defines it (NTC 2008: ds* = 0.4 du*,
+  /// as* [C8A.4.7]; NTC 2018: d_SLV or d_SLC and a(d) [C8.7.1.10-11]), and
+  /// the damping of the demand spectrum xi (%). 0 for the other kinds.
+  double secant_T = 0.0, secant_d = 0.0, secant_a = 0.0, xi_pct = 0.0;
 };
 
 /// What the checks need besides the analysis.
@@ -81,5 +86,14 @@ struct CheckInput {
 /// (alpha0 > 0) and, for the displacement checks, a complete curve; otherwise
 /// only the strength checks are returned.
 std::vector<CheckRow> run_code_checks(const KinematicResult& r, const CheckInput& in);
+
+/// The displacement demand (m) of the non-linear check of `code` at limit
+/// state `ls` (SLV; SLC for NTC 2018) as a function of the secant period T
+/// (s), with the checks' own rule at in.Z: NTC 2008 SDe(T) at 5 % [C8A.4.11]
+/// or SDe(T1) psi gamma (T/T1)^2 / sqrt((1 - T/T1)^2 + 0.02 T/T1) at height
+/// [C8A.4.12]; NTC 2018 SDe(T, xi) [3.2.10] or S_eZ(T, xi) T^2/4pi^2 at
+/// height [C8.7.1.12], xi the mechanism damping of `ls`. The curve of the ADRS
+/// plot: each check's demand is this function at its own secant period.
+double displacement_demand(const CheckInput& in, CodeEdition code, LimitState ls, double T);
 
 }  // namespace assess
