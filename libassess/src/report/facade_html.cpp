@@ -129,6 +129,59 @@ void add_premessa(const Ctx& c) {
                    xml_escape(c.t("norm.dpcm2011")) + "</li>\n<li>" + xml_escape(c.t("norm.seed")) + "</li>\n</ul>");
 }
 
+// Dati (issue 24): the geometry and materials of the governing mechanism's
+// blocks and the analysis parameters, each with its unit and where it comes
+// from; the loads are in the virtual-work table (§ meccanismo).
+void add_data(const Ctx& c) {
+  const FacadeAssessment& a = c.a;
+  c.h.add_heading(c.t("data.heading"), 2, false);
+  std::vector<std::vector<HtmlCell>> rows;
+  auto row = [&](const std::string& what, const std::string& v, const std::string& unit, const std::string& src) {
+    rows.push_back({what, HtmlCell(v, "num"), unit, src});
+  };
+  const Chain& chain = a.kase.mechanism.candidates.at(a.kinematic.governing).chain;
+  row(c.t("data.mechanism"), mechanism_name(c.L, a.kase.mechanism.type), "", c.t("data.case"));
+  for (std::size_t i = 0; i < chain.blocks().size(); ++i) {
+    const Block& b = chain.blocks()[i];
+    double x0 = 1e300, x1 = -1e300, z0 = 1e300, z1 = -1e300;
+    for (const Eigen::Vector2d& v : b.polygon) {
+      x0 = std::min(x0, v.x()), x1 = std::max(x1, v.x());
+      z0 = std::min(z0, v.y()), z1 = std::max(z1, v.y());
+    }
+    // Blocks by number, bottom to top as in the chain (catalogue names are English phrases).
+    const std::string name = c.t("data.block") + " " + std::to_string(i + 1);
+    row(name + ": " + c.t("data.height"), fixed(z1 - z0, 3), "m", "z " + fixed(z0, 2) + "–" + fixed(z1, 2) + " m");
+    row(name + ": " + c.t("data.thickness"), fixed(x1 - x0, 3), "m", c.t("data.bbox"));
+    row(name + ": " + c.t("data.area"), fixed(chain.area(int(i)), 4), "m²", c.t("data.polygon"));
+    row(name + ": " + c.t("data.gamma"), fixed(b.unit_weight / units::kN, 2), "kN/m³", c.t("data.case"));
+    row(name + ": " + c.t("data.length"), fixed(b.length, 2), "m", c.t("data.case"));
+    row(name + ": " + c.t("data.weight"), fixed(b.unit_weight * chain.area(int(i)) * b.length / units::kN, 2), "kN",
+        "γ · A · L");
+  }
+  row(c.t("data.kl"), a.kase.knowledge_level, "", "C8.5.4");
+  row("FC", fixed(c.k().FC, 2), "-", "C8.5.4, Tab. C8.5.IV");
+  row("q", fixed(a.kase.checks.q, 2), "-", "C8.7.1.2.1.7");
+  row("ξ SLV / SLC", fixed(a.kase.checks.damping_SLV_pct, 0) + " / " + fixed(a.kase.checks.damping_SLC_pct, 0), "%",
+      "C8.7.1.2.1.8");
+  if (a.kase.building) {
+    const BuildingModel& b = *a.kase.building;
+    row(c.t("data.H"), fixed(b.H, 2), "m", c.t("data.case"));
+    row(c.t("data.N"), std::to_string(b.storeys), "-", c.t("data.case"));
+    row("T1", fixed(b.T1, 3), "s", "NTC 2018 §7.3.3.2");
+    row("ξ1", fixed(b.damping_pct, 0), "%", "C7.2.3");
+  }
+  if (a.dynamic) {
+    const DynamicSpec& d = *a.dynamic;
+    row(c.t("data.dyn_model"), c.t(d.smooth ? "data.smooth" : "data.rigid"), "", c.t("data.case"));
+    if (d.smooth) row("k (Winkler)", format("%.4g", d.k / units::kN), "kN/m³", c.t("data.case"));
+    std::string e;
+    for (const Restitution& r : d.restitutions) e += (e.empty() ? "" : "; ") + c.loc(describe(r));
+    if (!e.empty()) row(c.t("data.restitution"), e, "-", c.t("data.case"));
+  }
+  c.h.add_cell_table({c.t("kin.quantity"), HtmlCell(c.t("kin.value"), "num"), c.t("kin.unit"), c.t("data.source")},
+                     rows, c.t("data.caption"));
+}
+
 // Conclusioni and the place/date/signature block.
 void add_conclusions(const Ctx& c) {
   const Verdict& v = c.a.verdict;
@@ -198,8 +251,8 @@ void add_verdict_box(const Ctx& c) {
               "\">" + xml_escape(c.t("method." + m.method)) + (m.method == v.adopted ? " (" + xml_escape(c.t("verdict.adopted")) + ")" : "") +
               ": <span class=\"outcome\">" + xml_escape(c.t(ok ? "verdict.ok" : "verdict.fail")) + "</span> <span class=\"" +
               (m.max_dc <= 1.0 ? "dc-ok" : "dc-fail") + "\">D/C = " + xml_escape(fixed(m.max_dc, 3)) + "</span> — " +
-              std::to_string(m.checks) + " " + xml_escape(c.t("verdict.checks")) + ", " + std::to_string(m.failing) + " " +
-              xml_escape(c.t("verdict.failing"));
+              std::to_string(m.checks) + " " + xml_escape(c.t(m.checks == 1 ? "verdict.check1" : "verdict.checks")) +
+              ", " + std::to_string(m.failing) + " " + xml_escape(c.t(m.failing == 1 ? "verdict.failing1" : "verdict.failing"));
       if (m.no_verdict > 0) html += ", " + std::to_string(m.no_verdict) + " " + xml_escape(c.t("verdict.no_verdict"));
       if (m.governing >= 0) {
         const VerdictRow& r = v.rows[std::size_t(m.governing)];
@@ -964,6 +1017,7 @@ std::string facade_html(const FacadeAssessment& a, const ReportOptions& options)
   add_header(c);
   add_verdict_box(c);
   add_premessa(c);
+  add_data(c);
   add_site(c);
   add_mechanism(c);
   add_kinematic(c);

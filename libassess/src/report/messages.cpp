@@ -76,6 +76,8 @@ const std::map<std::string, Entry>& catalogue() {
       {"verdict.governing", {"Verifica che governa", "Governing check"}},
       {"verdict.checks", {"verifiche", "checks"}},
       {"verdict.failing", {"non soddisfatte", "not satisfied"}},
+      {"verdict.check1", {"verifica", "check"}},
+      {"verdict.failing1", {"non soddisfatta", "not satisfied"}},
       {"verdict.untrusted",
        {"D/C non calcolabile: la verifica è considerata non soddisfatta", "D/C not computable: the check counts as failed"}},
       {"verdict.note",
@@ -412,6 +414,32 @@ const std::map<std::string, Entry>& catalogue() {
                      "D/C in red: > 1; in green: ≤ 1. A check can fail with D/C ≤ 1 (displacement d0 exceeded or "
                      "overturning in an analysis, a failed analysis): its outcome is in red with the reason in the "
                      "same row."}},
+      // Dati: geometry, materials and parameters (issue 24).
+      {"data.heading", {"Dati: geometria, materiali e parametri", "Data: geometry, materials and parameters"}},
+      {"data.caption",
+       {"Geometria dei blocchi del meccanismo che governa (dal poligono della sezione), materiali e parametri "
+        "dell'analisi, con le unità; i carichi portati e le forze sono nella tabella dei lavori virtuali.",
+        "Geometry of the governing mechanism's blocks (from the polygon of the section), materials and analysis "
+        "parameters, with units; the carried loads and forces are in the virtual-work table."}},
+      {"data.mechanism", {"Meccanismo", "Mechanism"}},
+      {"data.block", {"blocco", "block"}},
+      {"data.height", {"altezza", "height"}},
+      {"data.thickness", {"spessore (ingombro orizzontale)", "thickness (horizontal extent)"}},
+      {"data.area", {"area della sezione", "section area"}},
+      {"data.gamma", {"peso specifico γ", "unit weight γ"}},
+      {"data.length", {"lunghezza fuori piano L", "out-of-plane length L"}},
+      {"data.weight", {"peso proprio", "self weight"}},
+      {"data.kl", {"Livello di conoscenza", "Knowledge level"}},
+      {"data.H", {"Altezza dell'edificio H", "Building height H"}},
+      {"data.N", {"Numero di piani N", "Number of storeys N"}},
+      {"data.dyn_model", {"Modello dinamico", "Dynamic model"}},
+      {"data.smooth", {"blocco su letto elastico (Winkler)", "block on an elastic (Winkler) bed"}},
+      {"data.rigid", {"blocco rigido (Housner)", "rigid block (Housner)"}},
+      {"data.restitution", {"Coefficienti di restituzione", "Restitution coefficients"}},
+      {"data.source", {"fonte", "source"}},
+      {"data.case", {"file del caso", "case file"}},
+      {"data.bbox", {"ingombro del poligono", "extent of the polygon"}},
+      {"data.polygon", {"poligono della sezione", "polygon of the section"}},
       // Every candidate's checks and dynamic analysis (issue 24).
       {"checks.body_note",
        {"La tabella riporta, per ciascuna norma, le verifiche del meccanismo candidato che governa e tutte le "
