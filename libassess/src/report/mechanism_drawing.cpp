@@ -132,8 +132,8 @@ struct Placed {
 // its anchor) whose box is free of every label already placed (2 px apart)
 // and of the drawing (lines, arrows, symbols, blocks); failing that, the first
 // one free of the labels and the lines; failing that, the first one free of
-// the labels. A label placed away from its preferred positions gets a leader
-// line to its anchor.
+// the labels. A label placed more than 12 px from its anchor gets a leader
+// line to it, which crosses no label placed before it.
 class Placer {
  public:
   void segment(double x1, double y1, double x2, double y2) { segs_.push_back({x1, y1, x2, y2}); }
@@ -175,6 +175,7 @@ class Placer {
         if (hits_labels(b)) continue;
         if (tier < 2 && hits_lines(b)) continue;
         if (tier < 1 && hits_shapes(b)) continue;
+        if (tier < 2 && leader_hits_labels(ax, ay, b)) continue;
         chosen = i;
         break;
       }
@@ -187,14 +188,27 @@ class Placer {
     const Cand c = prefs[chosen];
     const Box b = text_box(c.x, c.y, fs, c.a, text);
     labels_.push_back({text, c.x, c.y, fs, c.a, attrs, b});
-    const double px = std::clamp(ax, b.x0, b.x1), py = std::clamp(ay, b.y0, b.y1);
-    if (std::hypot(px - ax, py - ay) > 12.0) leaders_.push_back({ax, ay, px, py});
+    double px = 0.0, py = 0.0;
+    if (leader_to(ax, ay, b, px, py)) leaders_.push_back({ax, ay, px, py});
   }
 
   const std::vector<Placed>& labels() const { return labels_; }
   const std::vector<std::array<double, 4>>& leaders() const { return leaders_; }
 
  private:
+  // The leader from the anchor to the nearest point of the box, if the box is
+  // more than 12 px away.
+  static bool leader_to(double ax, double ay, const Box& b, double& px, double& py) {
+    px = std::clamp(ax, b.x0, b.x1), py = std::clamp(ay, b.y0, b.y1);
+    return std::hypot(px - ax, py - ay) > 12.0;
+  }
+  bool leader_hits_labels(double ax, double ay, const Box& b) const {
+    double px = 0.0, py = 0.0;
+    if (!leader_to(ax, ay, b, px, py)) return false;
+    for (const Placed& p : labels_)
+      if (segment_hits(ax, ay, px, py, {p.box.x0 - 1, p.box.y0 - 1, p.box.x1 + 1, p.box.y1 + 1})) return true;
+    return false;
+  }
   bool hits_labels(const Box& b) const {
     for (const Placed& p : labels_)
       if (overlap(b, p.box, 2.0)) return true;
@@ -352,6 +366,15 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
     grow(x - rad, y - rad), grow(x + rad, y + rad);
     placer.mark({x - rad, y - rad, x + rad, y + rad});
   };
+  // The head of an arrow drawn with a marker (7 stroke widths long and wide)
+  // ending at (x2, y2): an obstacle for the labels.
+  auto head = [&](double x1, double y1, double x2, double y2, double stroke_width) {
+    const double n = std::hypot(x2 - x1, y2 - y1), h = 3.5 * stroke_width;
+    if (!(n > 0.0)) return;
+    const double cx = x2 - (x2 - x1) / n * h, cy = y2 - (y2 - y1) / n * h;
+    placer.mark({cx - h, cy - h, cx + h, cy + h});
+    grow(cx - h, cy - h), grow(cx + h, cy + h);
+  };
   // Architectural ticks (45 degree strokes) at the ends of dimension lines.
   auto tick = [&](double x, double y) { line(x - 3.5, y + 3.5, x + 3.5, y - 3.5, "stroke=\"#333\" stroke-width=\"1\""); };
   const std::string dim_style = "stroke=\"#333\" stroke-width=\"0.7\"";
@@ -470,7 +493,12 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
 
   // Extent of the drawing's lines on each side of the wall.
   const double gx1 = X(xmin) - 175.0;
-  const double col0 = X(xmax) + 34.0, col_step = 46.0;
+  // Ties are drawn on the outer face: the dimension columns beyond them.
+  const double arrow = 34.0, tie_len = 36.0;
+  std::set<long> tie_mm;
+  for (const Load& l : chain.loads())
+    if (l.type == LoadType::Tie) tie_mm.insert(mm(l.point.y()));
+  const double col0 = X(xmax) + 34.0 + (tie_mm.empty() ? 0.0 : 86.0), col_step = 46.0;
 
   // --------------------------------------------------- vertical dimensions
   // Columns on the outer side: the chain of levels, the hinge level (when the
@@ -510,10 +538,14 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
                             "class=\"dim\" data-kind=\"" + col.kind + "\" fill=\"#222\"", cx, ym, p});
     }
   }
+  std::set<long> slider_mm;
+  for (const Constraint& c : chain.constraints())
+    if (c.type == ConstraintType::Slider) slider_mm.insert(mm(c.point.y()));
   for (const auto& e : ext_to) {
     const double z = e.first / 1000.0;
     double xr = geo.right_at(z);
-    const double x0 = std::isfinite(xr) ? X(xr) + 4 : X(xmax) + 4;
+    const double x0 = (std::isfinite(xr) ? X(xr) : X(xmax)) +
+                      (tie_mm.count(e.first) ? tie_len + 6 : slider_mm.count(e.first) ? 16 : 4);
     line(x0, Y(z), e.second, Y(z), ext_style);
   }
 
@@ -608,7 +640,7 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
 
   // ------------------------------------------------------------------ loads
   double self_total = 0.0, self_x = 0.0, self_z = 0.0;
-  const double arrow = 34.0;
+  std::set<char> symbols;  // of the loads drawn, explained in the legend
   for (std::size_t li = 0; li < chain.loads().size(); ++li) {
     const Load& l = chain.loads()[li];
     const double Xp = X(l.point.x()), Yp = Y(l.point.y());
@@ -617,7 +649,9 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
         self_total += l.weight, self_x += l.weight * l.point.x(), self_z += l.weight * l.point.y();
         if (!many) {
           line(Xp, Yp - 24, Xp, Yp, "stroke=\"#222\" stroke-width=\"1.2\" marker-end=\"url(#arrowk)\"");
+          head(Xp, Yp - 24, Xp, Yp, 1.2);
           const double xl = geo.left_at(l.point.y()), xr = geo.right_at(l.point.y());
+          symbols.insert('P');
           labels.push_back({"P = " + kn(l.weight), 10, "", Xp, Yp - 12,
                             {{Xp - 5, Yp - 12 + 3.5, Anchor::End}, {Xp + 5, Yp - 12 + 3.5, Anchor::Start},
                              {Xp - 5, Yp - 24, Anchor::End}, {Xp + 5, Yp - 24, Anchor::Start},
@@ -626,8 +660,10 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
         break;
       case LoadType::Weight: {
         line(Xp, Yp - arrow, Xp, Yp, "stroke=\"#0b4f9c\" stroke-width=\"2\" marker-end=\"url(#arrowb)\"");
+        head(Xp, Yp - arrow, Xp, Yp, 2.0);
         const double ay = Yp - arrow;
-        labels.push_back({msg(lang, "load.weight") + " " + kn(l.weight) + (l.vertical ? "" : " (m)"), 11,
+        symbols.insert('Q');
+        labels.push_back({"Q = " + kn(l.weight) + (l.vertical ? "" : " (m)"), 11,
                           "fill=\"#0b4f9c\"", Xp, ay,
                           {{Xp - 5, ay + 4, Anchor::End}, {Xp + 5, ay + 4, Anchor::Start}, {Xp, ay - 4, Anchor::Middle},
                            {Xp - 5, ay - 6, Anchor::End}, {Xp + 5, ay - 6, Anchor::Start}}});
@@ -639,25 +675,30 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
         const double n = l.force.norm();
         if (!(n > 0.0)) break;
         const double ux = l.force.x() / n, uz = l.force.y() / n;
-        // Arrow ending at the point of application (force pushing on it), or
-        // starting from it for a tie (pulling inward).
-        const bool pull = l.type == LoadType::Tie;
-        const double len = arrow * 1.4;
-        const double x1 = pull ? Xp : Xp - ux * len, y1 = pull ? Yp : Yp + uz * len;
-        const double x2 = pull ? Xp + ux * len : Xp, y2 = pull ? Yp - uz * len : Yp;
+        // Arrow ending at the point of application (force pushing on it); a
+        // tie (horizontal, inward) as the push of its anchor plate on the
+        // outer face of the wall, on the same line of action.
+        const bool tie_out = l.type == LoadType::Tie && std::abs(uz) < 1e-9 && ux < 0.0;
+        const double len = tie_out ? tie_len : arrow * 1.4;
+        const double xe = tie_out ? X(geo.right_at(l.point.y())) + 1.0 : Xp;
+        const double x1 = xe - ux * len, y1 = Yp + uz * len;
+        const double x2 = xe, y2 = Yp;
         const char* colour = l.type == LoadType::Tie ? "#2b7a2b" : "#8a3ea8";
         line(x1, y1, x2, y2,
              std::string("stroke=\"") + colour + "\" stroke-width=\"2.2\" marker-end=\"url(#arrowk)\"" +
                  (l.type == LoadType::Tie ? " stroke-dasharray=\"8 3\"" : ""));
-        const std::string kind =
-            l.type == LoadType::Tie ? "load.tie" : l.type == LoadType::Force ? "load.force" : "load.friction";
-        // Anchor: the free end of the arrow.
-        const double ax = pull ? x2 : x1, ay = pull ? y2 : y1;
+        head(x1, y1, x2, y2, 2.2);
+        // Anchor: the free end of the arrow (its tail).
+        const double ax = x1, ay = y1;
         const double xm = 0.5 * (x1 + x2), ym = std::min(y1, y2);
-        labels.push_back({msg(lang, kind) + " " + kn(n), 11, std::string("fill=\"") + colour + "\"", ax, ay,
-                          {{xm, ym - 5, Anchor::Middle}, {ax - 5, ay + 4, Anchor::End},
-                           {xm, std::max(y1, y2) + 14, Anchor::Middle}, {ax - 5, ay - 6, Anchor::End},
-                           {ax - 5, ay + 15, Anchor::End}}});
+        const Anchor side = x1 <= x2 ? Anchor::End : Anchor::Start;  // beyond the tail
+        const double sx = x1 <= x2 ? ax - 5 : ax + 5;
+        const char sym = l.type == LoadType::Tie ? 'T' : l.type == LoadType::Force ? 'S' : 'F';
+        symbols.insert(sym);
+        std::vector<Cand> p = {{xm, ym - 5, Anchor::Middle}, {sx, ay + 4, side},
+                               {xm, std::max(y1, y2) + 14, Anchor::Middle}, {sx, ay - 6, side}, {sx, ay + 15, side}};
+        if (tie_out) p.insert(p.begin(), {{x2 + 3, ym - 5, Anchor::Start}, {x2 + 3, ym + 14, Anchor::Start}});
+        labels.push_back({std::string(1, sym) + " = " + kn(n), 11, std::string("fill=\"") + colour + "\"", ax, ay, p});
         break;
       }
     }
@@ -672,10 +713,12 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
   if (many && self_total > 0.0) {
     const double Xp = X(self_x / self_total), Yp = Y(self_z / self_total);
     line(Xp, Yp - 30, Xp, Yp, "stroke=\"#222\" stroke-width=\"1.4\" marker-end=\"url(#arrowk)\"");
+    head(Xp, Yp - 30, Xp, Yp, 1.4);
     labels.push_back({msg(lang, "draw.self_weights") + " (" + std::to_string(blocks.size()) +
                           ") ΣP = " + kn(self_total),
                       10, "", Xp, Yp - 15,
-                      {{Xp - 5, Yp - 15 + 3.5, Anchor::End}, {Xp + 5, Yp - 15 + 3.5, Anchor::Start}}});
+                      {{Xp - 5, Yp - 15 + 3.5, Anchor::End}, {Xp + 5, Yp - 15 + 3.5, Anchor::Start},
+                       {X(geo.left_at(self_z / self_total)) - 8, Yp - 15 + 3.5, Anchor::End}}});
   }
 
   // ----------------------------------------------------------- constraints
@@ -725,23 +768,37 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
     const std::string st = msg(lang, "draw.seismic");
     const double sy = top - 40.0, sx1 = X(xmax) + 14.0, sx2 = sx1 + std::max(90.0, 0.6 * 11 * code_points(st) + 8);
     line(sx1, sy, sx2, sy, "stroke=\"#b3001b\" stroke-width=\"2.5\" marker-end=\"url(#arrowr)\"");
+    head(sx1, sy, sx2, sy, 2.5);
     labels.push_back({st, 11, "fill=\"#b3001b\"", sx1, sy,
                       {{sx1, sy - 8, Anchor::Start}, {sx1 - 6, sy + 4, Anchor::End}, {sx1, sy + 18, Anchor::Start}}});
     labels.push_back({"x", 11, "fill=\"#b3001b\"", sx2, sy, {{sx2 + 6, sy + 4, Anchor::Start}}});
   }
-  // The legend under everything drawn, no leader (its anchor is its position).
-  const double ly = ext.y1 + 24;
-  labels.push_back({tr(lang, "quote in m", "dimensions in m"), 10, "fill=\"#444\" font-style=\"italic\"", gx1, ly - 8,
-                    {{gx1, ly, Anchor::Start}, {gx1, ly + 14, Anchor::Start}}});
-  if (!offset_notes.empty())
-    labels.push_back({tr(lang, "d = distanza del carico dal filo interno del muro",
-                         "d = distance of the load from the inner face of the wall"),
-                      10, "fill=\"#444\" font-style=\"italic\"", gx1, ly + 6,
-                      {{gx1, ly + 14, Anchor::Start}, {gx1, ly + 28, Anchor::Start}}});
-
   // ------------------------------------------------------------ placement
   for (const LabelReq& q : dim_labels) placer.place(q.text, q.fs, q.attrs, q.ax, q.ay, q.prefs);
   for (const LabelReq& q : labels) placer.place(q.text, q.fs, q.attrs, q.ax, q.ay, q.prefs);
+  // The legend under everything (its anchor is its position: no leader).
+  double ly = ext.y1;
+  for (const Placed& p : placer.labels()) ly = std::max(ly, p.box.y1);
+  ly += 16;
+  std::vector<std::string> legend = {tr(lang, "quote in m", "dimensions in m")};
+  {
+    std::string sy;
+    const std::pair<char, std::string> names[] = {{'P', tr(lang, "peso proprio", "self weight")},
+                                                  {'Q', msg(lang, "load.weight")},
+                                                  {'S', msg(lang, "load.force")},
+                                                  {'T', msg(lang, "load.tie")},
+                                                  {'F', msg(lang, "load.friction")}};
+    for (const auto& nm : names)
+      if (symbols.count(nm.first)) sy += (sy.empty() ? "" : ", ") + std::string(1, nm.first) + " = " + nm.second;
+    if (!sy.empty()) legend.push_back(sy);
+  }
+  if (!offset_notes.empty())
+    legend.push_back(tr(lang, "d = distanza del carico dal filo interno del muro",
+                        "d = distance of the load from the inner face of the wall"));
+  for (const std::string& lt : legend) {
+    placer.place(lt, 10, "fill=\"#444\" font-style=\"italic\"", gx1, ly, {{gx1, ly, Anchor::Start}});
+    ly += 14;
+  }
   for (const auto& l : placer.leaders()) line(l[0], l[1], l[2], l[3], "stroke=\"#777\" stroke-width=\"0.6\"", false);
   std::string t;
   for (const Placed& p : placer.labels()) {
