@@ -758,7 +758,11 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
                       {{Xp + 10, Yp - 8, Anchor::Start}, {Xp - 10, Yp - 8, Anchor::End},
                        {Xp + 10, Yp + 16, Anchor::Start}, {Xp - 10, Yp + 16, Anchor::End},
                        {X(geo.left_at(r.control_point.y())) - 8, Yp + 3.5, Anchor::End},
-                       {X(geo.left_at(r.control_point.y())) - 8, Yp + 16, Anchor::End}}});
+                       {X(geo.left_at(r.control_point.y())) - 8, Yp + 16, Anchor::End},
+                       {X(geo.left_at(r.control_point.y())) - 8, Yp - 9, Anchor::End},
+                       {X(geo.left_at(r.control_point.y())) - 8, Yp + 28, Anchor::End},
+                       {X(geo.left_at(r.control_point.y())) - 8, Yp - 21, Anchor::End},
+                       {X(geo.left_at(r.control_point.y())) - 8, Yp + 40, Anchor::End}}});
   }
 
   // ------------------------------------------------------- seismic action
@@ -808,9 +812,12 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
   }
 
   // ------------------------------------------------------------- document
+  // At least 640 px wide (centred): the report scales the figure to the
+  // column's width (170 mm), so a narrow drawing would grow, text and all.
   const double m = 8.0;
-  const double vx = std::floor(ext.x0 - m), vy = std::floor(ext.y0 - m);
-  const double vw = std::ceil(ext.x1 + m) - vx, vh = std::ceil(ext.y1 + m) - vy;
+  double vx = std::floor(ext.x0 - m), vw = std::ceil(ext.x1 + m) - vx;
+  if (vw < 640.0) vx -= std::floor(0.5 * (640.0 - vw)), vw = 640.0;
+  const double vy = std::floor(ext.y0 - m), vh = std::ceil(ext.y1 + m) - vy;
   std::string svg;
   svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" + f1(vx) + " " + f1(vy) + " " + f1(vw) + " " +
          f1(vh) + "\" width=\"" + f1(vw) + "\" height=\"" + f1(vh) +
