@@ -5,6 +5,7 @@
 // loads, thrusts and ties on every storey), in Italian and English, the SVG's
 // text elements are parsed (x, y, font-size, text-anchor, text) and
 //  - no two label boxes overlap, every label box lies inside the viewBox;
+//  - no dimension or extension line crosses a block (0.5 px inside its outline);
 //  - the dimension values equal the geometry: the overall height is the top of
 //    the wall (to 0.005 m), the chain of level dimensions adds up to it and
 //    contains each storey height and the hinge level, every distinct thickness
@@ -17,6 +18,8 @@
 // or right-aligned (end). Measured in Chromium (DejaVu Sans) the drawing's
 // strings are 0.50-0.57 f per character, 0.90 f above and 0.27 f below the
 // baseline at most.
+//
+// ASSESS_DRAWING_DUMP=DIR writes every drawing checked to DIR (to look at them).
 #include <doctest/doctest.h>
 
 #include <assess/assessment/case_file.hpp>
@@ -26,11 +29,16 @@
 #include <assess/report/messages.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <map>
 #include <regex>
+#include <array>
+#include <cstdlib>
+#include <fstream>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -72,6 +80,8 @@ std::size_t code_points(const std::string& s) {
 struct Svg {
   double vx = 0, vy = 0, vw = 0, vh = 0;
   std::vector<Text> texts;
+  std::vector<std::vector<std::array<double, 2>>> polygons;  // the blocks (px)
+  std::vector<std::array<double, 4>> dim_lines;              // dimension and extension lines (px)
 };
 
 Svg parse(const std::string& svg) {
@@ -81,6 +91,24 @@ Svg parse(const std::string& svg) {
   REQUIRE_MESSAGE(!vb.empty(), "no viewBox");
   REQUIRE(std::sscanf(vb.c_str(), "%lf %lf %lf %lf", &out.vx, &out.vy, &out.vw, &out.vh) == 4);
   const std::string root_fs = attr(root, "font-size");
+  static const std::regex poly_re("<polygon points=\"([^\"]*)\"");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), poly_re); it != std::sregex_iterator(); ++it) {
+    std::vector<std::array<double, 2>> P;
+    std::string pts = (*it)[1];
+    std::replace(pts.begin(), pts.end(), ',', ' ');
+    std::istringstream in(pts);
+    double x = 0, y = 0;
+    while (in >> x >> y) P.push_back({x, y});
+    out.polygons.push_back(P);
+  }
+  static const std::regex line_re("<line ([^>]*)/>");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), line_re); it != std::sregex_iterator(); ++it) {
+    const std::string tag = " " + (*it)[1].str();
+    const std::string cls = attr(tag, "class");
+    if (cls != "dim-line" && cls != "ext-line") continue;
+    out.dim_lines.push_back({std::stod(attr(tag, "x1")), std::stod(attr(tag, "y1")), std::stod(attr(tag, "x2")),
+                             std::stod(attr(tag, "y2"))});
+  }
   static const std::regex text_re("<text([^>]*)>([^<]*)</text>");
   for (auto it = std::sregex_iterator(svg.begin(), svg.end(), text_re); it != std::sregex_iterator(); ++it) {
     Text t;
@@ -122,6 +150,20 @@ bool contains(const std::vector<double>& v, double x) {
   return false;
 }
 
+// True if (x, y) lies inside the polygon farther than 0.5 px from its outline.
+bool deep_inside(const std::vector<std::array<double, 2>>& P, double x, double y) {
+  bool in = false;
+  double d = 1e300;
+  for (std::size_t i = 0, j = P.size() - 1; i < P.size(); j = i++) {
+    const double ax = P[j][0], ay = P[j][1], bx = P[i][0], by = P[i][1];
+    if ((by > y) != (ay > y) && x < (ax - bx) * (y - by) / (ay - by) + bx) in = !in;
+    const double ex = bx - ax, ey = by - ay, L = ex * ex + ey * ey;
+    const double t = L > 0 ? std::clamp(((x - ax) * ex + (y - ay) * ey) / L, 0.0, 1.0) : 0.0;
+    d = std::min(d, std::hypot(ax + t * ex - x, ay + t * ey - y));
+  }
+  return in && d > 0.5;
+}
+
 // x intervals of a polygon on the horizontal line z (z not a vertex level).
 std::vector<std::pair<double, double>> cut(const std::vector<Eigen::Vector2d>& P, double z) {
   std::vector<double> xs;
@@ -140,6 +182,12 @@ std::vector<std::pair<double, double>> cut(const std::vector<Eigen::Vector2d>& P
 void check_drawing(const std::string& what, const std::string& svg, const assess::Chain& chain,
                    const std::vector<double>& storeys = {}) {
   INFO(what);
+  if (const char* dir = std::getenv("ASSESS_DRAWING_DUMP")) {  // for a look: one SVG per drawing
+    std::string name = what;
+    for (char& c : name)
+      if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    std::ofstream(std::string(dir) + "/" + name + ".svg") << svg;
+  }
   const Svg s = parse(svg);
   REQUIRE(!s.texts.empty());
 
@@ -155,6 +203,16 @@ void check_drawing(const std::string& what, const std::string& svg, const assess
   for (const Text& t : s.texts) {
     const bool inside = t.x0 >= s.vx && t.x1 <= s.vx + s.vw && t.y0 >= s.vy && t.y1 <= s.vy + s.vh;
     if (!inside) FAIL_CHECK("label outside the viewBox: '" << t.text << "'");
+  }
+
+  // Dimension and extension lines never cross a block.
+  REQUIRE(!s.dim_lines.empty());
+  for (const auto& l : s.dim_lines) {
+    bool crosses = false;
+    for (const auto& P : s.polygons)
+      for (int k = 1; k < 50 && !crosses; ++k)
+        crosses = deep_inside(P, l[0] + (l[2] - l[0]) * k / 50.0, l[1] + (l[3] - l[1]) * k / 50.0);
+    if (crosses) FAIL_CHECK("dimension line crosses a block: " << l[0] << "," << l[1] << " - " << l[2] << "," << l[3]);
   }
 
   // Geometry of the chain.

@@ -376,9 +376,11 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
     grow(cx - h, cy - h), grow(cx + h, cy + h);
   };
   // Architectural ticks (45 degree strokes) at the ends of dimension lines.
-  auto tick = [&](double x, double y) { line(x - 3.5, y + 3.5, x + 3.5, y - 3.5, "stroke=\"#333\" stroke-width=\"1\""); };
-  const std::string dim_style = "stroke=\"#333\" stroke-width=\"0.7\"";
-  const std::string ext_style = "stroke=\"#666\" stroke-width=\"0.5\"";
+  auto tick = [&](double x, double y) {
+    line(x - 3.5, y + 3.5, x + 3.5, y - 3.5, "class=\"dim-line\" stroke=\"#333\" stroke-width=\"1\"");
+  };
+  const std::string dim_style = "class=\"dim-line\" stroke=\"#333\" stroke-width=\"0.7\"";
+  const std::string ext_style = "class=\"ext-line\" stroke=\"#666\" stroke-width=\"0.5\"";
 
   // Labels, placed once everything is drawn (in this order: dimension values
   // first, so they stay by their lines).
