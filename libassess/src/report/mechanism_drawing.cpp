@@ -454,12 +454,12 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
         continue;
       }
       bands.push_back({a[0], {lo, hi}});
-      if (!many && k > 0 && !bands.empty() && bands.size() >= 2) {
-        const auto& prev = bands[bands.size() - 2].first;
-        if (std::abs(prev.first - a[0].first) > 1e-6 || std::abs(prev.second - a[0].second) > 1e-6)
-          level_mm.insert(mm(lo));
-      }
     }
+    if (rectangular && !many)  // a step of the thickness is a level
+      for (std::size_t k = 1; k < bands.size(); ++k)
+        if (std::abs(bands[k - 1].first.first - bands[k].first.first) > 1e-6 ||
+            std::abs(bands[k - 1].first.second - bands[k].first.second) > 1e-6)
+          level_mm.insert(mm(bands[k].second.first));
     if (rectangular) {
       for (const auto& band : bands) {
         const std::pair<long, long> key{mm(band.first.first), mm(band.first.second)};
