@@ -1,5 +1,8 @@
 // mechanism_drawing.cpp: SVG drawing of a chain of blocks, written directly
-// (no gnuplot: polygons, arrows and labels at exact positions).
+// (no gnuplot: polygons, arrows, dimension lines and labels at exact
+// positions). The labels are placed last by a small deterministic placer
+// (Placer below) so that no two labels overlap; the viewBox is the extent of
+// everything drawn.
 #include "assess/report/mechanism_drawing.hpp"
 
 #include "report/xml_escape.hpp"
@@ -7,9 +10,13 @@
 #include "assess/support/units.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <map>
 #include <set>
+#include <utility>
 #include <vector>
 
 namespace assess {
@@ -17,10 +24,19 @@ namespace assess {
 namespace {
 
 using detail::xml_escape;
+using V2 = Eigen::Vector2d;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
 
 std::string f1(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%.1f", v);
+  return b;
+}
+
+std::string d2(double v) {  // a dimension value: m, 2 decimals, no unit (the legend says "m")
+  char b[32];
+  std::snprintf(b, sizeof b, "%.2f", v);
   return b;
 }
 
@@ -36,165 +52,789 @@ std::string m2(double v) {
   return b;
 }
 
-// World (x, z) in metres to SVG pixels.
-struct View {
-  double xmin, zmax, s, ox, oy;
-  double X(double x) const { return ox + s * (x - xmin); }
-  double Y(double z) const { return oy + s * (zmax - z); }
+// Strings of the drawing only (kept here, both languages).
+std::string tr(Lang lang, const char* it, const char* en) { return lang == Lang::it ? it : en; }
+
+// ------------------------------------------------------------------ text boxes
+
+enum class Anchor { Start, Middle, End };
+
+const char* anchor_name(Anchor a) { return a == Anchor::Start ? "start" : a == Anchor::Middle ? "middle" : "end"; }
+
+struct Box {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
 };
+
+bool overlap(const Box& a, const Box& b, double pad) {
+  return a.x0 < b.x1 + pad && b.x0 < a.x1 + pad && a.y0 < b.y1 + pad && b.y0 < a.y1 + pad;
+}
+
+std::size_t code_points(const std::string& s) {
+  std::size_t n = 0;
+  for (unsigned char c : s)
+    if ((c & 0xC0) != 0x80) ++n;
+  return n;
+}
+
+// The estimate of a label's box (px) used by the placer and by the test
+// (tests/unit/mechanism_drawing.cpp): 0.6 em per character (UTF-8 code point;
+// DejaVu Sans, Chromium's sans-serif here, measures 0.50-0.57 em per
+// character on the drawing's strings), from 0.95 em above the baseline to
+// 0.25 em below, placed by text-anchor.
+Box text_box(double x, double y, double fs, Anchor a, const std::string& t) {
+  const double w = 0.6 * fs * double(code_points(t));
+  const double x0 = a == Anchor::Start ? x : a == Anchor::Middle ? x - 0.5 * w : x - w;
+  return {x0, y - 0.95 * fs, x0 + w, y + 0.25 * fs};
+}
+
+// Liang-Barsky: does the segment meet the box?
+bool segment_hits(double x1, double y1, double x2, double y2, const Box& b) {
+  double t0 = 0.0, t1 = 1.0;
+  const double dx = x2 - x1, dy = y2 - y1;
+  const double p[4] = {-dx, dx, -dy, dy};
+  const double q[4] = {x1 - b.x0, b.x1 - x1, y1 - b.y0, b.y1 - y1};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0.0) {
+      if (q[i] < 0.0) return false;
+      continue;
+    }
+    const double r = q[i] / p[i];
+    if (p[i] < 0.0) {
+      if (r > t1) return false;
+      t0 = std::max(t0, r);
+    } else {
+      if (r < t0) return false;
+      t1 = std::min(t1, r);
+    }
+  }
+  return true;
+}
+
+// --------------------------------------------------------------- label placer
+
+// A label: its text, size and style, the point it belongs to (anchor), and its
+// preferred positions in order.
+struct Cand {
+  double x, y;
+  Anchor a;
+};
+
+struct Placed {
+  std::string text;
+  double x, y, fs;
+  Anchor a;
+  std::string attrs;
+  Box box;
+};
+
+// Deterministic greedy placer. Each label takes the first of its candidate
+// positions (its preferred ones, then rings further and further out around
+// its anchor) whose box is free of every label already placed (2 px apart)
+// and of the drawing (lines, arrows, symbols, blocks); failing that, the first
+// one free of the labels and the lines; failing that, the first one free of
+// the labels. A label placed more than 12 px from its anchor gets a leader
+// line to it, which crosses no label placed before it.
+class Placer {
+ public:
+  void segment(double x1, double y1, double x2, double y2) { segs_.push_back({x1, y1, x2, y2}); }
+  void mark(const Box& b) { marks_.push_back(b); }
+  void polygon(std::vector<std::array<double, 2>> p) {
+    Box b{kInf, kInf, -kInf, -kInf};
+    for (const auto& v : p) b = {std::min(b.x0, v[0]), std::min(b.y0, v[1]), std::max(b.x1, v[0]), std::max(b.y1, v[1])};
+    polys_.push_back(std::move(p));
+    poly_boxes_.push_back(b);
+  }
+
+  void place(const std::string& text, double fs, const std::string& attrs, double ax, double ay,
+             std::vector<Cand> prefs) {
+    const std::size_t n_prefs = prefs.size();
+    // Rings around the anchor: 16 directions, 12 px apart, the box centred on the ring.
+    const double w = 0.6 * fs * double(code_points(text));
+    for (int ring = 1; ring <= 40; ++ring) {
+      const double d = 6.0 + 12.0 * ring;
+      for (int k = 0; k < 16; ++k) {
+        const double ang = k * 3.14159265358979323846 / 8.0;
+        const double cx = ax + std::cos(ang) * (d + 0.5 * w), cy = ay - std::sin(ang) * (d + 0.6 * fs);
+        prefs.push_back({cx, cy + 0.35 * fs, Anchor::Middle});
+      }
+    }
+    // Passes: free of everything (labels, lines, block outlines) among the
+    // preferred positions, then the first 4 rings; then free of labels and
+    // lines among those; then the far rings likewise; last, anything free of
+    // labels.
+    const std::size_t near_end = std::min(prefs.size(), n_prefs + 4 * 16);
+    const std::size_t ranges[3][2] = {{0, n_prefs}, {n_prefs, near_end}, {near_end, prefs.size()}};
+    std::size_t chosen = prefs.size();
+    static const int order[6][2] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {2, 0}, {2, 1}};  // (range, tier)
+    for (int pass = 0; pass < 7 && chosen == prefs.size(); ++pass) {
+      const int tier = pass == 6 ? 2 : order[pass][1];
+      const std::size_t lo = pass == 6 ? 0 : ranges[order[pass][0]][0];
+      const std::size_t hi = pass == 6 ? prefs.size() : ranges[order[pass][0]][1];
+      for (std::size_t i = lo; i < hi; ++i) {
+        const Box b = text_box(prefs[i].x, prefs[i].y, fs, prefs[i].a, text);
+        if (hits_labels(b)) continue;
+        if (tier < 2 && hits_lines(b)) continue;
+        if (tier < 1 && hits_shapes(b)) continue;
+        if (tier < 2 && leader_hits_labels(ax, ay, b)) continue;
+        chosen = i;
+        break;
+      }
+    }
+    if (chosen == prefs.size()) {  // never with 40 rings; below everything, to be safe
+      double y = 0.0;
+      for (const Placed& p : labels_) y = std::max(y, p.box.y1);
+      prefs.push_back({ax, y + 1.3 * fs, Anchor::Middle});
+    }
+    const Cand c = prefs[chosen];
+    const Box b = text_box(c.x, c.y, fs, c.a, text);
+    labels_.push_back({text, c.x, c.y, fs, c.a, attrs, b});
+    double px = 0.0, py = 0.0;
+    if (leader_to(ax, ay, b, px, py)) leaders_.push_back({ax, ay, px, py});
+  }
+
+  const std::vector<Placed>& labels() const { return labels_; }
+  const std::vector<std::array<double, 4>>& leaders() const { return leaders_; }
+
+ private:
+  // The leader from the anchor to the nearest point of the box, if the box is
+  // more than 12 px away.
+  static bool leader_to(double ax, double ay, const Box& b, double& px, double& py) {
+    px = std::clamp(ax, b.x0, b.x1), py = std::clamp(ay, b.y0, b.y1);
+    return std::hypot(px - ax, py - ay) > 12.0;
+  }
+  bool leader_hits_labels(double ax, double ay, const Box& b) const {
+    double px = 0.0, py = 0.0;
+    if (!leader_to(ax, ay, b, px, py)) return false;
+    for (const Placed& p : labels_)
+      if (segment_hits(ax, ay, px, py, {p.box.x0 - 1, p.box.y0 - 1, p.box.x1 + 1, p.box.y1 + 1})) return true;
+    return false;
+  }
+  bool hits_labels(const Box& b) const {
+    for (const Placed& p : labels_)
+      if (overlap(b, p.box, 2.0)) return true;
+    return false;
+  }
+  bool hits_lines(const Box& b) const {
+    const Box g{b.x0 - 1.0, b.y0 - 1.0, b.x1 + 1.0, b.y1 + 1.0};
+    for (const auto& s : segs_)
+      if (segment_hits(s[0], s[1], s[2], s[3], g)) return true;
+    for (const Box& m : marks_)
+      if (overlap(b, m, 1.0)) return true;
+    for (const auto& l : leaders_)
+      if (segment_hits(l[0], l[1], l[2], l[3], g)) return true;
+    return false;
+  }
+  bool hits_shapes(const Box& b) const {
+    for (std::size_t i = 0; i < polys_.size(); ++i) {
+      if (!overlap(b, poly_boxes_[i], 1.0)) continue;
+      const auto& P = polys_[i];  // text on a block is legible; text across its outline is not
+      for (std::size_t k = 0; k < P.size(); ++k) {
+        const auto& p = P[k];
+        const auto& q = P[(k + 1) % P.size()];
+        if (segment_hits(p[0], p[1], q[0], q[1], b)) return true;
+      }
+    }
+    return false;
+  }
+
+  std::vector<std::array<double, 4>> segs_;
+  std::vector<Box> marks_;
+  std::vector<std::vector<std::array<double, 2>>> polys_;
+  std::vector<Box> poly_boxes_;
+  std::vector<Placed> labels_;
+  std::vector<std::array<double, 4>> leaders_;
+};
+
+// ------------------------------------------------------------ block geometry
+
+// x intervals of the polygon on the horizontal line z (z not a vertex level).
+std::vector<std::pair<double, double>> cut_h(const std::vector<V2>& P, double z) {
+  std::vector<double> xs;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const V2& a = P[i];
+    const V2& b = P[(i + 1) % P.size()];
+    if ((a.y() > z) != (b.y() > z)) xs.push_back(a.x() + (z - a.y()) * (b.x() - a.x()) / (b.y() - a.y()));
+  }
+  std::sort(xs.begin(), xs.end());
+  std::vector<std::pair<double, double>> out;
+  for (std::size_t i = 0; i + 1 < xs.size(); i += 2) out.push_back({xs[i], xs[i + 1]});
+  return out;
+}
+
+// z intervals of the polygon on the vertical line x (x not a vertex abscissa).
+std::vector<std::pair<double, double>> cut_v(const std::vector<V2>& P, double x) {
+  std::vector<double> zs;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const V2& a = P[i];
+    const V2& b = P[(i + 1) % P.size()];
+    if ((a.x() > x) != (b.x() > x)) zs.push_back(a.y() + (x - a.x()) * (b.y() - a.y()) / (b.x() - a.x()));
+  }
+  std::sort(zs.begin(), zs.end());
+  std::vector<std::pair<double, double>> out;
+  for (std::size_t i = 0; i + 1 < zs.size(); i += 2) out.push_back({zs[i], zs[i + 1]});
+  return out;
+}
+
+struct Geometry {
+  const std::vector<Block>& blocks;
+  double eps;  // m, a small fraction of the chain's size
+
+  // Highest point of the blocks on the vertical through x (-inf if none).
+  double top_at(double x) const {
+    double t = -kInf;
+    for (const Block& b : blocks)
+      for (double xx : {x - eps, x + eps})
+        for (const auto& iv : cut_v(b.polygon, xx)) t = std::max(t, iv.second);
+    return t;
+  }
+  double bottom_at(double x) const {
+    double t = kInf;
+    for (const Block& b : blocks)
+      for (double xx : {x - eps, x + eps})
+        for (const auto& iv : cut_v(b.polygon, xx)) t = std::min(t, iv.first);
+    return t;
+  }
+  // Rightmost / leftmost point of the blocks on the horizontal z (+-inf if none).
+  double right_at(double z) const {
+    double r = -kInf;
+    for (const Block& b : blocks)
+      for (double zz : {z - eps, z + eps})
+        for (const auto& iv : cut_h(b.polygon, zz)) r = std::max(r, iv.second);
+    return r;
+  }
+  double left_at(double z) const {
+    double r = kInf;
+    for (const Block& b : blocks)
+      for (double zz : {z - eps, z + eps})
+        for (const auto& iv : cut_h(b.polygon, zz)) r = std::min(r, iv.first);
+    return r;
+  }
+  // True if (x, z) lies strictly inside a block (farther than eps from its boundary).
+  bool inside(double x, double z) const {
+    for (const Block& b : blocks) {
+      for (const auto& iv : cut_h(b.polygon, z))
+        if (x > iv.first + eps && x < iv.second - eps) {
+          for (const auto& jv : cut_v(b.polygon, x))
+            if (z > jv.first + eps && z < jv.second - eps) return true;
+        }
+    }
+    return false;
+  }
+  // The vertical from (x, z0) to (x, z1) passes through no block's interior.
+  bool vertical_free(double x, double z0, double z1) const {
+    for (int k = 1; k < 64; ++k)
+      if (inside(x, z0 + (z1 - z0) * k / 64.0)) return false;
+    return true;
+  }
+};
+
+long mm(double v) { return std::lround(v * 1000.0); }
 
 }  // namespace
 
 std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
+  const std::vector<Block>& blocks = chain.blocks();
   // Bounding box of the blocks and of the foundation level z = 0.
-  double xmin = 1e300, xmax = -1e300, zmin = 0.0, zmax = -1e300;
-  for (const Block& b : chain.blocks())
+  double xmin = kInf, xmax = -kInf, zmin = 0.0, zmax = -kInf;
+  for (const Block& b : blocks)
     for (const auto& p : b.polygon) {
       xmin = std::min(xmin, p.x()), xmax = std::max(xmax, p.x());
       zmin = std::min(zmin, p.y()), zmax = std::max(zmax, p.y());
     }
   const double wx = std::max(xmax - xmin, 1e-6), wz = std::max(zmax - zmin, 1e-6);
-  // Drawing area: 300 x 440 px for the wall, room on both sides for labels.
-  const double W = 640, H = 520, left = 230, top = 40, area_w = 180, area_h = H - 90;
-  const double s = std::min(area_w / wx, area_h / wz);
-  const View v{xmin, zmax, s, left + (area_w - s * wx) / 2.0, top};
+  const Geometry geo{blocks, 1e-7 * std::max(wx, wz)};
+  // The wall to scale in at most 240 x 440 px.
+  const double s = std::min(240.0 / wx, 440.0 / wz);
+  auto X = [&](double x) { return 300.0 + s * (x - xmin); };
+  auto Y = [&](double z) { return 80.0 + s * (zmax - z); };
+  const bool many = blocks.size() > 6;  // a sliced body (gable): joints and slice weights not labelled
 
-  std::string o;
-  o += "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " + f1(W) + " " + f1(H) + "\" width=\"" + f1(W) +
-       "\" height=\"" + f1(H) + "\" font-family=\"sans-serif\" font-size=\"11\">\n";
-  o += "<title>" + xml_escape(msg(lang, "mech.heading")) + "</title>\n";
-  o += "<defs><marker id=\"arrow\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" "
-       "orient=\"auto-start-reverse\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"context-stroke\"/></marker>"
-       "<marker id=\"arrowb\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" "
-       "orient=\"auto\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#0b4f9c\"/></marker>"
-       "<marker id=\"arrowr\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" "
-       "orient=\"auto\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#b3001b\"/></marker>"
-       "<marker id=\"arrowk\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" "
-       "orient=\"auto\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#222\"/></marker></defs>\n";
-  auto line = [&](double x1, double y1, double x2, double y2, const std::string& style) {
+  std::string o;   // graphics
+  Placer placer;
+  Box ext{kInf, kInf, -kInf, -kInf};  // extent of everything drawn (px)
+  auto grow = [&](double x, double y) {
+    ext = {std::min(ext.x0, x), std::min(ext.y0, y), std::max(ext.x1, x), std::max(ext.y1, y)};
+  };
+  auto line = [&](double x1, double y1, double x2, double y2, const std::string& style, bool obstacle = true) {
     o += "<line x1=\"" + f1(x1) + "\" y1=\"" + f1(y1) + "\" x2=\"" + f1(x2) + "\" y2=\"" + f1(y2) + "\" " + style +
          "/>\n";
+    grow(x1, y1), grow(x2, y2);
+    if (obstacle) placer.segment(x1, y1, x2, y2);
   };
-  auto text = [&](double x, double y, const std::string& t, const std::string& attrs = "") {
-    o += "<text x=\"" + f1(x) + "\" y=\"" + f1(y) + "\" " + attrs + ">" + xml_escape(t) + "</text>\n";
+  auto circle = [&](double x, double y, double rad, const std::string& style) {
+    o += "<circle cx=\"" + f1(x) + "\" cy=\"" + f1(y) + "\" r=\"" + f1(rad) + "\" " + style + "/>\n";
+    grow(x - rad, y - rad), grow(x + rad, y + rad);
+    placer.mark({x - rad, y - rad, x + rad, y + rad});
   };
+  // The head of an arrow drawn with a marker (7 stroke widths long and wide)
+  // ending at (x2, y2): an obstacle for the labels.
+  auto head = [&](double x1, double y1, double x2, double y2, double stroke_width) {
+    const double n = std::hypot(x2 - x1, y2 - y1), h = 3.5 * stroke_width;
+    if (!(n > 0.0)) return;
+    const double cx = x2 - (x2 - x1) / n * h, cy = y2 - (y2 - y1) / n * h;
+    placer.mark({cx - h, cy - h, cx + h, cy + h});
+    grow(cx - h, cy - h), grow(cx + h, cy + h);
+  };
+  // Architectural ticks (45 degree strokes) at the ends of dimension lines.
+  auto tick = [&](double x, double y) {
+    line(x - 3.5, y + 3.5, x + 3.5, y - 3.5, "class=\"dim-line\" stroke=\"#333\" stroke-width=\"1\"");
+  };
+  const std::string dim_style = "class=\"dim-line\" stroke=\"#333\" stroke-width=\"0.7\"";
+  const std::string ext_style = "class=\"ext-line\" stroke=\"#666\" stroke-width=\"0.5\"";
 
-  // Levels: the foundation, the floors (levels of carried weights) and the hinges.
-  const double gx1 = 10, gx2 = W - 10;
-  line(gx1, v.Y(0.0), gx2, v.Y(0.0), "stroke=\"#444\" stroke-width=\"2\"");
-  for (int i = 0; i < 12; ++i)
-    line(v.X(xmin) - 40 + 16 * i, v.Y(0.0) + 8, v.X(xmin) - 32 + 16 * i, v.Y(0.0), "stroke=\"#444\"");
-  text(gx1, v.Y(0.0) + 22, msg(lang, "draw.ground") + " z = 0", "fill=\"#444\"");
-  std::set<long> floor_levels;
-  for (const Load& l : chain.loads())
-    if (l.type == LoadType::Weight) floor_levels.insert(std::lround(l.point.y() * 1000.0));
-  for (long zmm : floor_levels) {
-    const double z = zmm / 1000.0;
-    if (std::abs(z) < 1e-9) continue;
-    line(gx1, v.Y(z), gx2, v.Y(z), "stroke=\"#888\" stroke-dasharray=\"6 4\"");
-    text(gx2, v.Y(z) - 4, msg(lang, "draw.storey") + " z = " + m2(z), "text-anchor=\"end\" fill=\"#555\"");
-  }
-  std::set<long> hinge_levels;
-  for (const Constraint& c : chain.constraints())
-    if (c.type == ConstraintType::GroundHinge) hinge_levels.insert(std::lround(c.point.y() * 1000.0));
-  for (long zmm : hinge_levels) {
-    const double z = zmm / 1000.0;
-    if (std::abs(z) < 1e-9) continue;
-    line(gx1, v.Y(z), gx2, v.Y(z), "stroke=\"#b3001b\" stroke-dasharray=\"10 3 2 3\"");
-    text(gx1, v.Y(z) - 4, msg(lang, "draw.hinge_level") + " z = " + m2(z), "fill=\"#b3001b\"");
-  }
+  // Labels, placed once everything is drawn (in this order: dimension values
+  // first, so they stay by their lines).
+  struct LabelReq {
+    std::string text;
+    double fs;
+    std::string attrs;
+    double ax, ay;
+    std::vector<Cand> prefs;
+  };
+  std::vector<LabelReq> dim_labels, labels;
 
-  // Blocks.
-  const bool many = chain.blocks().size() > 6;
-  for (std::size_t i = 0; i < chain.blocks().size(); ++i) {
-    const Block& b = chain.blocks()[i];
+  // ---------------------------------------------------------------- blocks
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    const Block& b = blocks[i];
     std::string pts;
-    for (const auto& p : b.polygon) pts += f1(v.X(p.x())) + "," + f1(v.Y(p.y())) + " ";
+    std::vector<std::array<double, 2>> px;
+    for (const auto& p : b.polygon) {
+      pts += f1(X(p.x())) + "," + f1(Y(p.y())) + " ";
+      px.push_back({X(p.x()), Y(p.y())});
+      grow(X(p.x()), Y(p.y()));
+    }
     o += "<polygon points=\"" + pts + "\" fill=\"" + (i % 2 ? "#d9cbb5" : "#e6dcc8") +
          "\" stroke=\"#5a4a32\" stroke-width=\"" + (many ? "0.6" : "1.2") + "\"/>\n";
+    placer.polygon(std::move(px));
   }
 
-  // Loads.
-  double self_total = 0.0;
-  const double arrow = 34.0;
+  // ---------------------------------------------------------------- levels
+  // The levels of the drawing: the foundation, the base and top of the wall,
+  // the ground hinges, the hinges between blocks, the carried loads, the steps
+  // of the wall's thickness.
+  std::set<long> level_mm = {0, mm(zmax)};
+  std::set<long> floor_mm, hinge_mm;
+  for (const Constraint& c : chain.constraints()) {
+    if (c.type == ConstraintType::GroundHinge) hinge_mm.insert(mm(c.point.y())), level_mm.insert(mm(c.point.y()));
+    if (c.type == ConstraintType::Hinge && !many) level_mm.insert(mm(c.point.y()));
+  }
   for (const Load& l : chain.loads()) {
-    const double X = v.X(l.point.x()), Y = v.Y(l.point.y());
+    if (l.type == LoadType::SelfWeight) continue;
+    level_mm.insert(mm(l.point.y()));
+    if (l.type == LoadType::Weight) floor_mm.insert(mm(l.point.y()));
+  }
+  level_mm.insert(mm(zmin));
+  double base = zmax;  // the lowest point of the blocks
+  for (const Block& b : blocks)
+    for (const auto& p : b.polygon) base = std::min(base, p.y());
+  level_mm.insert(mm(base));
+  // Steps of the thickness, and the bands of constant section (for the thickness dimensions).
+  struct HDim {
+    double x1, x2;      // m
+    double zt1, zt2;    // upper reference levels of the two ends (m)
+    double zb1, zb2;    // lower reference levels of the two ends (m)
+    std::string kind;   // thickness, width, offset
+    int load = -1;      // offset: index of the load
+  };
+  std::vector<HDim> hdims;
+  std::set<std::pair<long, long>> hdim_keys;
+  for (const Block& b : blocks) {
+    std::set<long> zs;
+    for (const auto& p : b.polygon) zs.insert(mm(p.y()));
+    std::vector<double> zv;
+    for (long z : zs) zv.push_back(z / 1000.0);
+    bool rectangular = true;
+    std::vector<std::pair<std::pair<double, double>, std::pair<double, double>>> bands;  // (x1, x2), (bottom, top)
+    for (std::size_t k = 0; k + 1 < zv.size(); ++k) {
+      const double lo = zv[k], hi = zv[k + 1], d = 1e-3 * (hi - lo);
+      const auto a = cut_h(b.polygon, lo + d), c = cut_h(b.polygon, hi - d);
+      if (a.size() != 1 || c.size() != 1 || std::abs(a[0].first - c[0].first) > 1e-6 ||
+          std::abs(a[0].second - c[0].second) > 1e-6) {
+        rectangular = false;
+        continue;
+      }
+      bands.push_back({a[0], {lo, hi}});
+    }
+    if (rectangular && !many)  // a step of the thickness is a level
+      for (std::size_t k = 1; k < bands.size(); ++k)
+        if (std::abs(bands[k - 1].first.first - bands[k].first.first) > 1e-6 ||
+            std::abs(bands[k - 1].first.second - bands[k].first.second) > 1e-6)
+          level_mm.insert(mm(bands[k].second.first));
+    if (rectangular) {
+      for (const auto& band : bands) {
+        const std::pair<long, long> key{mm(band.first.first), mm(band.first.second)};
+        if (!hdim_keys.insert(key).second) continue;
+        hdims.push_back({band.first.first, band.first.second, band.second.second, band.second.second,
+                         band.second.first, band.second.first, "thickness"});
+      }
+    } else {
+      double bx0 = kInf, bx1 = -kInf, t0 = -kInf, t1 = -kInf, u0 = kInf, u1 = kInf;
+      for (const auto& p : b.polygon) bx0 = std::min(bx0, p.x()), bx1 = std::max(bx1, p.x());
+      for (const auto& p : b.polygon) {
+        if (std::abs(p.x() - bx0) < 1e-9) t0 = std::max(t0, p.y()), u0 = std::min(u0, p.y());
+        if (std::abs(p.x() - bx1) < 1e-9) t1 = std::max(t1, p.y()), u1 = std::min(u1, p.y());
+      }
+      const std::pair<long, long> key{mm(bx0), mm(bx1)};
+      if (hdim_keys.insert(key).second) hdims.push_back({bx0, bx1, t0, t1, u0, u1, "width"});
+    }
+  }
+  // Offsets of the carried weights from the inner face of the wall under them.
+  for (std::size_t i = 0; i < chain.loads().size(); ++i) {
+    const Load& l = chain.loads()[i];
+    if (l.type != LoadType::Weight || l.block < 0) continue;
+    const double z = l.point.y(), x = l.point.x();
+    double face = kInf, outer = kInf;
+    for (const auto& iv : cut_h(blocks[l.block].polygon, z - 1e-4 * wz))
+      if (x >= iv.first - 1e-9 && x <= iv.second + 1e-9) face = iv.first, outer = iv.second;
+    if (!std::isfinite(face) || x - face < 5e-4 || outer - x < 5e-4) continue;
+    hdims.push_back({face, x, z, z, z, z, "offset", int(i)});
+  }
+
+  std::vector<double> levels;
+  for (long v : level_mm) levels.push_back(v / 1000.0);
+
+  // Extent of the drawing's lines on each side of the wall.
+  const double gx1 = X(xmin) - 175.0;
+  // Ties are drawn on the outer face: the dimension columns beyond them.
+  const double arrow = 34.0, tie_len = 36.0;
+  std::set<long> tie_mm;
+  for (const Load& l : chain.loads())
+    if (l.type == LoadType::Tie) tie_mm.insert(mm(l.point.y()));
+  const double col0 = X(xmax) + 34.0 + (tie_mm.empty() ? 0.0 : 86.0), col_step = 46.0;
+
+  // --------------------------------------------------- vertical dimensions
+  // Columns on the outer side: the chain of levels, the hinge level (when the
+  // chain does not show it as one dimension), the overall height.
+  struct Column {
+    std::vector<double> z;  // levels, bottom to top
+    std::string kind;
+  };
+  std::vector<Column> cols;
+  if (levels.size() > 2) cols.push_back({levels, "level"});
+  for (long h : hinge_mm) {
+    const double zh = h / 1000.0;
+    if (zh <= 1e-3) continue;
+    bool shown = false;  // one segment of the chain from 0 to zh
+    if (cols.empty()) shown = true;
+    for (std::size_t k = 0; k + 1 < levels.size(); ++k)
+      if (mm(levels[k]) == 0 && mm(levels[k + 1]) == h) shown = true;
+    if (!shown) cols.push_back({{0.0, zh}, "hinge"});
+  }
+  cols.push_back({{std::min(0.0, zmin), zmax}, "total"});
+  std::map<long, double> ext_to;  // level (mm) -> x (px) its extension line reaches
+  for (std::size_t c = 0; c < cols.size(); ++c) {
+    const double cx = col0 + col_step * double(c);
+    const Column& col = cols[c];
+    line(cx, Y(col.z.back()) - 5, cx, Y(col.z.front()) + 5, dim_style);
+    for (double z : col.z) {
+      tick(cx, Y(z));
+      double& e = ext_to[mm(z)];
+      e = std::max(e, cx + 5);
+    }
+    for (std::size_t k = 0; k + 1 < col.z.size(); ++k) {
+      const double y1 = Y(col.z[k + 1]), y2 = Y(col.z[k]), ym = 0.5 * (y1 + y2), fs = 10;
+      std::vector<Cand> p = {{cx + 5, ym + 0.35 * fs, Anchor::Start}, {cx - 5, ym + 0.35 * fs, Anchor::End}};
+      for (double dy : {-10.0, 10.0, -20.0, 20.0})
+        if (ym + dy > y1 + 4 && ym + dy < y2 - 4) p.push_back({cx + 5, ym + dy + 0.35 * fs, Anchor::Start});
+      dim_labels.push_back({d2(col.z[k + 1] - col.z[k]), fs,
+                            "class=\"dim\" data-kind=\"" + col.kind + "\" fill=\"#222\"", cx, ym, p});
+    }
+  }
+  std::set<long> slider_mm;
+  for (const Constraint& c : chain.constraints())
+    if (c.type == ConstraintType::Slider) slider_mm.insert(mm(c.point.y()));
+  for (const auto& e : ext_to) {
+    const double z = e.first / 1000.0;
+    double xr = geo.right_at(z);
+    const double x0 = (std::isfinite(xr) ? X(xr) : X(xmax)) +
+                      (tie_mm.count(e.first) ? tie_len + 6 : slider_mm.count(e.first) ? 16 : 4);
+    line(x0, Y(z), e.second, Y(z), ext_style);
+  }
+
+  // ------------------------------------------------- horizontal dimensions
+  // In rows above the wall (or below it when an extension line upward would
+  // cross a block), the narrower ones nearer; an offset that cannot be
+  // dimensioned outside the wall is written by its load ("d = ...").
+  std::stable_sort(hdims.begin(), hdims.end(), [](const HDim& a, const HDim& b) {
+    const int ra = a.kind == "offset" ? 0 : 1, rb = b.kind == "offset" ? 0 : 1;
+    if (ra != rb) return ra < rb;
+    return (a.x2 - a.x1) < (b.x2 - b.x1);
+  });
+  struct Row {
+    double y, X1, X2;
+  };
+  std::vector<Row> rows;
+  std::map<int, double> offset_notes;  // load index -> offset (m) not dimensioned
+  for (const HDim& d : hdims) {
+    // Above the wall or below it, where the extension lines cross no block;
+    // of the two, the side with the shorter extension lines.
+    const double t1 = geo.top_at(d.x1), t2 = geo.top_at(d.x2), b1 = geo.bottom_at(d.x1), b2 = geo.bottom_at(d.x2);
+    const bool up_ok = geo.vertical_free(d.x1, d.zt1, std::max(d.zt1, t1)) &&
+                       geo.vertical_free(d.x2, d.zt2, std::max(d.zt2, t2));
+    const bool down_ok = geo.vertical_free(d.x1, d.zb1, std::min(d.zb1, b1)) &&
+                         geo.vertical_free(d.x2, d.zb2, std::min(d.zb2, b2));
+    if (!up_ok && !down_ok) {
+      if (d.kind == "offset") offset_notes[d.load] = d.x2 - d.x1;
+      continue;
+    }
+    // The silhouette over the dimension's span, on each side.
+    double sil_t = std::max(d.zt1, d.zt2), sil_b = std::min(d.zb1, d.zb2);
+    for (int k = 0; k <= 32; ++k) {
+      const double x = d.x1 + (d.x2 - d.x1) * k / 32.0;
+      sil_t = std::max(sil_t, geo.top_at(x));
+      sil_b = std::min(sil_b, geo.bottom_at(x));
+    }
+    const double cost_up = 2 * sil_t - d.zt1 - d.zt2, cost_down = d.zb1 + d.zb2 - 2 * sil_b;
+    const bool up = up_ok && (!down_ok || cost_up <= cost_down + 1e-9);
+    const double sil = up ? sil_t : sil_b;
+    const double X1 = X(d.x1), X2 = X(d.x2);
+    double y = 0.0;
+    for (int k = 0;; ++k) {
+      y = up ? Y(sil) - 18.0 - 16.0 * k : Y(sil) + (sil <= 1e-3 ? 30.0 : 18.0) + 16.0 * k;
+      bool clash = false;
+      for (const Row& rw : rows)
+        if (std::abs(rw.y - y) < 8.0 && X1 < rw.X2 + 34.0 && rw.X1 < X2 + 34.0) clash = true;
+      if (!clash) break;
+    }
+    rows.push_back({y, X1, X2});
+    const double e1 = up ? std::max(d.zt1, t1) : std::min(d.zb1, b1), e2 = up ? std::max(d.zt2, t2) : std::min(d.zb2, b2);
+    const double sgn = up ? -1.0 : 1.0;
+    line(X1, Y(e1) + sgn * 3, X1, y + sgn * 5, ext_style);
+    line(X2, Y(e2) + sgn * 3, X2, y + sgn * 5, ext_style);
+    line(X1 - 5, y, X2 + 5, y, dim_style);
+    tick(X1, y), tick(X2, y);
+    const double fs = 10, xm = 0.5 * (X1 + X2);
+    std::vector<Cand> p = {{xm, y - 3, Anchor::Middle}, {xm, y + 3 + 0.95 * fs, Anchor::Middle},
+                           {X1 - 7, y + 0.35 * fs, Anchor::End}, {X2 + 7, y + 0.35 * fs, Anchor::Start},
+                           {X1 - 3, y - 3, Anchor::End}, {X2 + 3, y - 3, Anchor::Start}};
+    dim_labels.push_back({d2(d.x2 - d.x1), fs, "class=\"dim\" data-kind=\"" + d.kind + "\" fill=\"#222\"", xm, y, p});
+  }
+
+  // ---------------------------------------------------- level lines, ground
+  double right_edge = col0 + col_step * double(cols.size() - 1) + 16.0;
+  for (long zmm_ : floor_mm) {
+    const double z = zmm_ / 1000.0;
+    if (std::abs(z) < 1e-9) continue;
+    const double xl = geo.left_at(z);
+    const double x2 = std::isfinite(xl) ? X(xl) - 4 : X(xmin) - 4;
+    line(gx1, Y(z), x2, Y(z), "stroke=\"#888\" stroke-dasharray=\"6 4\"");
+    const std::string t = tr(lang, "piano", "floor") + std::string(" z = ") + m2(z);
+    labels.push_back({t, 11, "fill=\"#555\"", gx1, Y(z),
+                      {{gx1 + 2, Y(z) - 5, Anchor::Start}, {gx1 + 2, Y(z) + 14, Anchor::Start},
+                       {gx1 + 62, Y(z) - 5, Anchor::Start}, {gx1 + 62, Y(z) + 14, Anchor::Start}}});
+  }
+  for (long zmm_ : hinge_mm) {
+    const double z = zmm_ / 1000.0;
+    if (std::abs(z) < 1e-9) continue;
+    const double xl = geo.left_at(z);
+    const double x2 = std::isfinite(xl) ? X(xl) - 4 : X(xmin) - 4;
+    line(gx1, Y(z), x2, Y(z), "stroke=\"#b3001b\" stroke-dasharray=\"10 3 2 3\"");
+    labels.push_back({msg(lang, "draw.hinge_level") + " z = " + m2(z), 11, "fill=\"#b3001b\"", gx1, Y(z),
+                      {{gx1 + 2, Y(z) - 5, Anchor::Start}, {gx1 + 2, Y(z) + 14, Anchor::Start},
+                       {gx1 + 62, Y(z) - 5, Anchor::Start}, {gx1 + 62, Y(z) + 14, Anchor::Start}}});
+  }
+  const double Y0 = Y(0.0);
+  line(gx1, Y0, right_edge, Y0, "stroke=\"#444\" stroke-width=\"2\"");
+  for (double hx = X(xmin) - 24; hx < X(xmax) + 20; hx += 14)
+    line(hx, Y0 + 8, hx + 8, Y0, "stroke=\"#444\"");
+  labels.push_back({msg(lang, "draw.ground") + " z = 0", 11, "fill=\"#444\"", gx1, Y0,
+                    {{gx1, Y0 + 22, Anchor::Start}, {gx1, Y0 - 5, Anchor::Start}, {gx1 + 60, Y0 + 22, Anchor::Start}}});
+
+  // ------------------------------------------------------------------ loads
+  double self_total = 0.0, self_x = 0.0, self_z = 0.0;
+  std::set<char> symbols;  // of the loads drawn, explained in the legend
+  for (std::size_t li = 0; li < chain.loads().size(); ++li) {
+    const Load& l = chain.loads()[li];
+    const double Xp = X(l.point.x()), Yp = Y(l.point.y());
     switch (l.type) {
       case LoadType::SelfWeight:
-        self_total += l.weight;
-        line(X, Y - (many ? 14 : 24), X, Y, "stroke=\"#222\" stroke-width=\"1.2\" marker-end=\"url(#arrowk)\"");
-        if (!many) text(X - 6, Y - 12, "P = " + kn(l.weight), "font-size=\"10\" text-anchor=\"end\"");
+        self_total += l.weight, self_x += l.weight * l.point.x(), self_z += l.weight * l.point.y();
+        if (!many) {
+          line(Xp, Yp - 24, Xp, Yp, "stroke=\"#222\" stroke-width=\"1.2\" marker-end=\"url(#arrowk)\"");
+          head(Xp, Yp - 24, Xp, Yp, 1.2);
+          const double xl = geo.left_at(l.point.y()), xr = geo.right_at(l.point.y());
+          symbols.insert('P');
+          labels.push_back({"P = " + kn(l.weight), 10, "", Xp, Yp - 12,
+                            {{Xp - 5, Yp - 12 + 3.5, Anchor::End}, {Xp + 5, Yp - 12 + 3.5, Anchor::Start},
+                             {Xp - 5, Yp - 24, Anchor::End}, {Xp + 5, Yp - 24, Anchor::Start},
+                             {X(xl) - 8, Yp - 12 + 3.5, Anchor::End}, {X(xr) + 8, Yp - 12 + 3.5, Anchor::Start}}});
+        }
         break;
-      case LoadType::Weight:
-        line(X, Y - arrow, X, Y, "stroke=\"#0b4f9c\" stroke-width=\"2\" marker-end=\"url(#arrowb)\"");
-        text(X + 5, Y - arrow + 4,
-             msg(lang, "load.weight") + " " + kn(l.weight) + (l.vertical ? "" : " (m)"), "fill=\"#0b4f9c\"");
+      case LoadType::Weight: {
+        line(Xp, Yp - arrow, Xp, Yp, "stroke=\"#0b4f9c\" stroke-width=\"2\" marker-end=\"url(#arrowb)\"");
+        head(Xp, Yp - arrow, Xp, Yp, 2.0);
+        const double ay = Yp - arrow;
+        symbols.insert('Q');
+        labels.push_back({"Q = " + kn(l.weight) + (l.vertical ? "" : " (m)"), 11,
+                          "fill=\"#0b4f9c\"", Xp, ay,
+                          {{Xp - 5, ay + 4, Anchor::End}, {Xp + 5, ay + 4, Anchor::Start}, {Xp, ay - 4, Anchor::Middle},
+                           {Xp - 5, ay - 6, Anchor::End}, {Xp + 5, ay - 6, Anchor::Start}}});
         break;
+      }
       case LoadType::Force:
       case LoadType::Tie:
       case LoadType::Friction: {
         const double n = l.force.norm();
         if (!(n > 0.0)) break;
         const double ux = l.force.x() / n, uz = l.force.y() / n;
-        // Arrow ending at the point of application (force pushing on it), or
-        // starting from it for a tie (pulling inward).
-        const bool pull = l.type == LoadType::Tie;
-        const double x1 = pull ? X : X - ux * arrow * 1.4, y1 = pull ? Y : Y + uz * arrow * 1.4;
-        const double x2 = pull ? X + ux * arrow * 1.4 : X, y2 = pull ? Y - uz * arrow * 1.4 : Y;
+        // Arrow ending at the point of application (force pushing on it); a
+        // tie (horizontal, inward) as the push of its anchor plate on the
+        // outer face of the wall, on the same line of action.
+        const bool tie_out = l.type == LoadType::Tie && std::abs(uz) < 1e-9 && ux < 0.0;
+        const double len = tie_out ? tie_len : arrow * 1.4;
+        const double xe = tie_out ? X(geo.right_at(l.point.y())) + 1.0 : Xp;
+        const double x1 = xe - ux * len, y1 = Yp + uz * len;
+        const double x2 = xe, y2 = Yp;
         const char* colour = l.type == LoadType::Tie ? "#2b7a2b" : "#8a3ea8";
         line(x1, y1, x2, y2,
              std::string("stroke=\"") + colour + "\" stroke-width=\"2.2\" marker-end=\"url(#arrowk)\"" +
                  (l.type == LoadType::Tie ? " stroke-dasharray=\"8 3\"" : ""));
-        const std::string kind = l.type == LoadType::Tie ? "load.tie" : l.type == LoadType::Force ? "load.force" : "load.friction";
-        text(std::min(x1, x2) - 4, std::min(y1, y2) - 6, msg(lang, kind) + " " + kn(n),
-             std::string("text-anchor=\"end\" fill=\"") + colour + "\"");
+        head(x1, y1, x2, y2, 2.2);
+        // Anchor: the free end of the arrow (its tail).
+        const double ax = x1, ay = y1;
+        const double xm = 0.5 * (x1 + x2), ym = std::min(y1, y2);
+        const Anchor side = x1 <= x2 ? Anchor::End : Anchor::Start;  // beyond the tail
+        const double sx = x1 <= x2 ? ax - 5 : ax + 5;
+        const char sym = l.type == LoadType::Tie ? 'T' : l.type == LoadType::Force ? 'S' : 'F';
+        symbols.insert(sym);
+        std::vector<Cand> p = {{xm, ym - 5, Anchor::Middle}, {sx, ay + 4, side},
+                               {xm, std::max(y1, y2) + 14, Anchor::Middle}, {sx, ay - 6, side}, {sx, ay + 15, side}};
+        if (tie_out) p.insert(p.begin(), {{x2 + 3, ym - 5, Anchor::Start}, {x2 + 3, ym + 14, Anchor::Start}});
+        labels.push_back({std::string(1, sym) + " = " + kn(n), 11, std::string("fill=\"") + colour + "\"", ax, ay, p});
         break;
       }
     }
   }
-  double zc = 0.0;
-  for (std::size_t i = 0; i < chain.blocks().size(); ++i) zc += chain.centroid(int(i)).y() / chain.blocks().size();
-  if (many && self_total > 0.0)
-    text(v.X(xmax) + 12, v.Y(zc) + 16,
-         msg(lang, "draw.self_weights") + " (" + std::to_string(chain.blocks().size()) + ") ΣP = " + kn(self_total),
-         "font-size=\"10\"");
+  for (const auto& on : offset_notes) {
+    const Load& l = chain.loads()[on.first];
+    const double Xp = X(l.point.x()), Yp = Y(l.point.y());
+    labels.push_back({"d = " + d2(on.second) + " m", 10, "class=\"dim\" data-kind=\"offset-note\" fill=\"#0b4f9c\"",
+                      Xp, Yp,
+                      {{Xp - 5, Yp + 13, Anchor::End}, {Xp - 5, Yp - 6, Anchor::End}, {Xp + 5, Yp + 13, Anchor::Start}}});
+  }
+  if (many && self_total > 0.0) {
+    const double Xp = X(self_x / self_total), Yp = Y(self_z / self_total);
+    line(Xp, Yp - 30, Xp, Yp, "stroke=\"#222\" stroke-width=\"1.4\" marker-end=\"url(#arrowk)\"");
+    head(Xp, Yp - 30, Xp, Yp, 1.4);
+    labels.push_back({msg(lang, "draw.self_weights") + " (" + std::to_string(blocks.size()) +
+                          ") ΣP = " + kn(self_total),
+                      10, "", Xp, Yp - 15,
+                      {{Xp - 5, Yp - 15 + 3.5, Anchor::End}, {Xp + 5, Yp - 15 + 3.5, Anchor::Start},
+                       {X(geo.left_at(self_z / self_total)) - 8, Yp - 15 + 3.5, Anchor::End}}});
+  }
 
-  // Constraints: hinges (circles) and sliders (rollers).
+  // ----------------------------------------------------------- constraints
   std::set<std::pair<long, long>> drawn;
   for (const Constraint& c : chain.constraints()) {
-    const double X = v.X(c.point.x()), Y = v.Y(c.point.y());
-    if (!drawn.insert({std::lround(X), std::lround(Y)}).second) continue;
+    const double Xp = X(c.point.x()), Yp = Y(c.point.y());
+    if (c.type == ConstraintType::Hinge && many) continue;  // joints of a sliced body are not drawn
+    if (!drawn.insert({std::lround(Xp), std::lround(Yp)}).second) continue;
     if (c.type == ConstraintType::Slider) {
-      o += "<circle cx=\"" + f1(X + 6) + "\" cy=\"" + f1(Y) + "\" r=\"4\" fill=\"#fff\" stroke=\"#222\"/>\n";
-      line(X + 11, Y - 12, X + 11, Y + 12, "stroke=\"#222\" stroke-width=\"2\"");
-      text(X + 16, Y + 4, msg(lang, "draw.slider"), "font-size=\"10\"");
+      circle(Xp + 6, Yp, 4, "fill=\"#fff\" stroke=\"#222\"");
+      line(Xp + 11, Yp - 12, Xp + 11, Yp + 12, "stroke=\"#222\" stroke-width=\"2\"");
+      labels.push_back({msg(lang, "draw.slider"), 10, "", Xp + 11, Yp,
+                        {{Xp + 15, Yp - 8, Anchor::Start}, {Xp + 15, Yp + 16, Anchor::Start},
+                         {Xp + 15, Yp + 3.5, Anchor::Start}}});
     } else if (c.type == ConstraintType::GroundHinge) {
-      o += "<circle cx=\"" + f1(X) + "\" cy=\"" + f1(Y) + "\" r=\"5\" fill=\"#fff\" stroke=\"#b3001b\" "
-           "stroke-width=\"2\"/>\n";
-      text(X + 8, Y + 14, msg(lang, "draw.hinge") + " z = " + m2(c.point.y()), "fill=\"#b3001b\" font-size=\"10\"");
-    } else if (!many) {  // a hinge between two blocks (joints of a sliced body are not drawn)
-      o += "<circle cx=\"" + f1(X) + "\" cy=\"" + f1(Y) + "\" r=\"4\" fill=\"#fff\" stroke=\"#b3001b\" "
-           "stroke-width=\"1.5\"/>\n";
-      text(X + 7, Y + 4, msg(lang, "draw.hinge"), "fill=\"#b3001b\" font-size=\"10\"");
+      circle(Xp, Yp, 5, "fill=\"#fff\" stroke=\"#b3001b\" stroke-width=\"2\"");
+      labels.push_back({msg(lang, "draw.hinge") + " z = " + m2(c.point.y()), 10, "fill=\"#b3001b\"", Xp, Yp,
+                        {{Xp + 8, Yp + 14, Anchor::Start}, {Xp - 8, Yp + 14, Anchor::End},
+                         {Xp + 8, Yp - 7, Anchor::Start}, {Xp - 8, Yp - 7, Anchor::End},
+                         {Xp, Yp + 17, Anchor::Middle}}});
+    } else {
+      circle(Xp, Yp, 4, "fill=\"#fff\" stroke=\"#b3001b\" stroke-width=\"1.5\"");
+      labels.push_back({msg(lang, "draw.hinge"), 10, "fill=\"#b3001b\"", Xp, Yp,
+                        {{Xp + 7, Yp + 3.5, Anchor::Start}, {Xp - 7, Yp + 3.5, Anchor::End},
+                         {Xp + 6, Yp + 14, Anchor::Start}, {Xp - 6, Yp + 14, Anchor::End},
+                         {Xp + 6, Yp - 6, Anchor::Start}, {Xp - 6, Yp - 6, Anchor::End}}});
     }
   }
 
-  // Control point.
+  // --------------------------------------------------------- control point
   if (r.control_block >= 0) {
-    const double X = v.X(r.control_point.x()), Y = v.Y(r.control_point.y());
-    o += "<circle cx=\"" + f1(X) + "\" cy=\"" + f1(Y) + "\" r=\"6\" fill=\"none\" stroke=\"#000\" stroke-width=\"1.5\"/>\n";
-    line(X - 8, Y, X + 8, Y, "stroke=\"#000\"");
-    line(X, Y - 8, X, Y + 8, "stroke=\"#000\"");
-    text(X + 10, Y - 8, msg(lang, "draw.control") + " (z = " + m2(r.control_point.y()) + ")", "font-size=\"10\"");
+    const double Xp = X(r.control_point.x()), Yp = Y(r.control_point.y());
+    circle(Xp, Yp, 6, "fill=\"none\" stroke=\"#000\" stroke-width=\"1.5\"");
+    line(Xp - 8, Yp, Xp + 8, Yp, "stroke=\"#000\"");
+    line(Xp, Yp - 8, Xp, Yp + 8, "stroke=\"#000\"");
+    labels.push_back({msg(lang, "draw.control") + " (z = " + m2(r.control_point.y()) + ")", 10, "", Xp, Yp,
+                      {{Xp + 10, Yp - 8, Anchor::Start}, {Xp - 10, Yp - 8, Anchor::End},
+                       {Xp + 10, Yp + 16, Anchor::Start}, {Xp - 10, Yp + 16, Anchor::End},
+                       {X(geo.left_at(r.control_point.y())) - 8, Yp + 3.5, Anchor::End},
+                       {X(geo.left_at(r.control_point.y())) - 8, Yp + 16, Anchor::End},
+                       {X(geo.left_at(r.control_point.y())) - 8, Yp - 9, Anchor::End},
+                       {X(geo.left_at(r.control_point.y())) - 8, Yp + 28, Anchor::End},
+                       {X(geo.left_at(r.control_point.y())) - 8, Yp - 21, Anchor::End},
+                       {X(geo.left_at(r.control_point.y())) - 8, Yp + 40, Anchor::End}}});
   }
 
-  // Seismic action: outward (+x).
-  const double sy = 18;
-  line(W - 150, sy, W - 60, sy, "stroke=\"#b3001b\" stroke-width=\"2.5\" marker-end=\"url(#arrowr)\"");
-  text(W - 155, sy + 4, msg(lang, "draw.seismic"), "text-anchor=\"end\" fill=\"#b3001b\"");
-  text(W - 50, sy + 4, "x", "fill=\"#b3001b\"");
-  o += "</svg>\n";
-  return o;
+  // ------------------------------------------------------- seismic action
+  {
+    double top = Y(zmax);
+    for (const Row& rw : rows) top = std::min(top, rw.y);
+    const std::string st = msg(lang, "draw.seismic");
+    const double sy = top - 40.0, sx1 = X(xmax) + 14.0, sx2 = sx1 + std::max(90.0, 0.6 * 11 * code_points(st) + 8);
+    line(sx1, sy, sx2, sy, "stroke=\"#b3001b\" stroke-width=\"2.5\" marker-end=\"url(#arrowr)\"");
+    head(sx1, sy, sx2, sy, 2.5);
+    labels.push_back({st, 11, "fill=\"#b3001b\"", sx1, sy,
+                      {{sx1, sy - 8, Anchor::Start}, {sx1 - 6, sy + 4, Anchor::End}, {sx1, sy + 18, Anchor::Start}}});
+    labels.push_back({"x", 11, "fill=\"#b3001b\"", sx2, sy, {{sx2 + 6, sy + 4, Anchor::Start}}});
+  }
+  // ------------------------------------------------------------ placement
+  for (const LabelReq& q : dim_labels) placer.place(q.text, q.fs, q.attrs, q.ax, q.ay, q.prefs);
+  for (const LabelReq& q : labels) placer.place(q.text, q.fs, q.attrs, q.ax, q.ay, q.prefs);
+  // The legend under everything (its anchor is its position: no leader).
+  double ly = ext.y1;
+  for (const Placed& p : placer.labels()) ly = std::max(ly, p.box.y1);
+  ly += 16;
+  std::vector<std::string> legend = {tr(lang, "quote in m", "dimensions in m")};
+  {
+    std::string sy;
+    const std::pair<char, std::string> names[] = {{'P', tr(lang, "peso proprio", "self weight")},
+                                                  {'Q', msg(lang, "load.weight")},
+                                                  {'S', msg(lang, "load.force")},
+                                                  {'T', msg(lang, "load.tie")},
+                                                  {'F', msg(lang, "load.friction")}};
+    for (const auto& nm : names)
+      if (symbols.count(nm.first)) sy += (sy.empty() ? "" : ", ") + std::string(1, nm.first) + " = " + nm.second;
+    if (!sy.empty()) legend.push_back(sy);
+  }
+  if (!offset_notes.empty())
+    legend.push_back(tr(lang, "d = distanza del carico dal filo interno del muro",
+                        "d = distance of the load from the inner face of the wall"));
+  for (const std::string& lt : legend) {
+    placer.place(lt, 10, "fill=\"#444\" font-style=\"italic\"", gx1, ly, {{gx1, ly, Anchor::Start}});
+    ly += 14;
+  }
+  for (const auto& l : placer.leaders()) line(l[0], l[1], l[2], l[3], "stroke=\"#777\" stroke-width=\"0.6\"", false);
+  std::string t;
+  for (const Placed& p : placer.labels()) {
+    grow(p.box.x0, p.box.y0), grow(p.box.x1, p.box.y1);
+    t += "<text x=\"" + f1(p.x) + "\" y=\"" + f1(p.y) + "\" font-size=\"" + f1(p.fs) + "\" text-anchor=\"" +
+         anchor_name(p.a) + "\"" + (p.attrs.empty() ? "" : " " + p.attrs) + ">" + xml_escape(p.text) + "</text>\n";
+  }
+
+  // ------------------------------------------------------------- document
+  // At least 640 px wide (centred): the report scales the figure to the
+  // column's width (170 mm), so a narrow drawing would grow, text and all.
+  const double m = 8.0;
+  double vx = std::floor(ext.x0 - m), vw = std::ceil(ext.x1 + m) - vx;
+  if (vw < 640.0) vx -= std::floor(0.5 * (640.0 - vw)), vw = 640.0;
+  const double vy = std::floor(ext.y0 - m), vh = std::ceil(ext.y1 + m) - vy;
+  std::string svg;
+  svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" + f1(vx) + " " + f1(vy) + " " + f1(vw) + " " +
+         f1(vh) + "\" width=\"" + f1(vw) + "\" height=\"" + f1(vh) +
+         "\" font-family=\"sans-serif\" font-size=\"11\">\n";
+  svg += "<title>" + xml_escape(msg(lang, "mech.heading")) + "</title>\n";
+  svg += "<defs><marker id=\"arrow\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" "
+         "orient=\"auto-start-reverse\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"context-stroke\"/></marker>"
+         "<marker id=\"arrowb\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" "
+         "orient=\"auto\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#0b4f9c\"/></marker>"
+         "<marker id=\"arrowr\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" "
+         "orient=\"auto\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#b3001b\"/></marker>"
+         "<marker id=\"arrowk\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" "
+         "orient=\"auto\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#222\"/></marker></defs>\n";
+  svg += o + t + "</svg>\n";
+  return svg;
 }
 
 }  // namespace assess
