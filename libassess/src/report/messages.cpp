@@ -138,10 +138,13 @@ const std::map<std::string, Entry>& catalogue() {
       {"mech.heading", {"Meccanismo di collasso", "Collapse mechanism"}},
       {"mech.type", {"Meccanismo", "Mechanism"}},
       {"mech.governing", {"candidato che governa (disegnato)", "governing candidate (drawn)"}},
-      {"mech.fig", {"Schema del meccanismo generato dalla catena cinematica: blocchi, cerniere, carichi e spinte con "
-                    "i loro valori, tiranti, punto di controllo, piani e quota della cerniera. x verso l'esterno.",
-                    "The mechanism drawn from the kinematic chain: blocks, hinges, loads and thrusts with their values, "
-                    "ties, control point, storeys and hinge level. x outward."}},
+      {"mech.fig", {"Schema del meccanismo generato dalla catena cinematica, in scala: blocchi, cerniere, carichi e "
+                    "spinte con i loro valori (simboli in legenda), tiranti, punto di controllo, piani e quota della "
+                    "cerniera; quote in m (altezze dei livelli, altezza totale, spessori, distanze dei carichi dal filo "
+                    "interno). x verso l'esterno.",
+                    "The mechanism drawn from the kinematic chain, to scale: blocks, hinges, loads and thrusts with their "
+                    "values (symbols in the legend), ties, control point, storeys and hinge level; dimensions in m "
+                    "(level heights, total height, thicknesses, distances of the loads from the inner face). x outward."}},
       {"mech.candidates", {"Meccanismi candidati", "Candidate mechanisms"}},
       {"mech.candidates_cap", {"Candidati esaminati (parametro: {}); per ciascuna norma governa il candidato con il D/C "
                                "massimo sulle sue verifiche (Circ. 2019 C8.7.1; C8A.4: il meccanismo più sfavorevole).",
