@@ -41,3 +41,16 @@ std::vector<double> tie_elongations_at(const Chain& chain, const KinematicResult
                                        const std::vector<TieRestraint>& ties, double d_star);
 
 }  // namespace assess
+
+namespace assess {
+
+/// What the design of ties searches (case file "design": {"ties": ...}):
+/// tie levels given without rod and anchor (point, direction, free length,
+/// masonry, spacing, pretension), the steel grades allowed and the lists of
+/// kinematic/tie_catalogue.hpp. Every level gets the same rod and plate [I].
+struct TieDesignSpec {
+  std::vector<Tie> levels;                  ///< rod and anchor are filled by the design
+  std::vector<std::string> grades{"S275"};  ///< rod and plate grades tried, in order
+};
+
+}  // namespace assess

@@ -1,0 +1,176 @@
+// tie_intervention.cpp: before/after of the ties and the design of the
+// smallest commercial rod and plate (docs/theory/ties.md §5).
+#include "assess/assessment/tie_intervention.hpp"
+
+#include "assess/kinematic/tie_catalogue.hpp"
+#include "assess/support/error.hpp"
+#include "assess/support/units.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace assess {
+namespace {
+
+bool all_pass(const KinematicCaseResult& r) {
+  for (const CandidateResult& cr : r.candidates)
+    for (const CheckRow& row : cr.checks)
+      if (!row.satisfied || row.no_verdict) return false;
+  return true;
+}
+
+// The checks' inputs of one candidate (as run_kinematic_case builds them).
+CheckInput check_input(const CaseFile& c, const KinematicCaseResult& r, const CandidateResult& cr) {
+  CheckInput in = c.checks;
+  for (const auto& a : r.actions) in.hazard[a.first] = a.second.hazard;
+  in.site = c.site->conditions;
+  in.building = c.building;
+  in.Z = cr.Z;
+  return in;
+}
+
+// Levels' results on the governing candidate of `after`.
+std::vector<TieLevelResult> level_results(const CaseFile& c, const KinematicCaseResult& after,
+                                          const std::vector<Tie>& levels, std::size_t first_level) {
+  std::vector<TieLevelResult> out;
+  const CandidateResult& cr = after.candidates[after.governing];
+  const Chain& chain = c.mechanism.candidates[after.governing].chain;
+  const std::vector<TieRestraint> ties = case_tie_restraints(c, chain);
+  const CheckInput in = check_input(c, after, cr);
+  // The largest displacement demand d* among the displacement checks (m).
+  double d_demand = -1.0;
+  for (const CheckRow& row : cr.checks)
+    if (row.kind == "displacement") d_demand = std::max(d_demand, row.demand);
+  std::vector<double> elong;
+  if (d_demand >= 0.0 && cr.result.curve_complete()) elong = tie_elongations_at(chain, cr.result, ties, d_demand);
+  for (std::size_t i = 0; i < levels.size(); ++i) {
+    TieLevelResult L;
+    L.tie = levels[i];
+    L.resistance = tie_resistance(L.tie);
+    // Index of this level among the candidate's restraints (levels not on it are skipped).
+    std::size_t k = 0, found = ties.size();
+    for (std::size_t j = 0; j < c.ties.size(); ++j) {
+      const int b = tie_block(chain, c.ties[j].block, c.ties[j].point);
+      if (b < 0) continue;
+      if (j == first_level + i) found = k;
+      ++k;
+    }
+    if (found < ties.size()) {
+      L.count = ties[found].count;
+      L.required = required_tie_forces(chain, c.options, in, ties, found, L.tie.spacing);
+      for (const RequiredTieForce& f : L.required) L.N_Ed = std::max(L.N_Ed, f.per_tie);
+      if (found < elong.size() && std::isfinite(elong[found])) L.elongation_demand = std::max(0.0, elong[found]);
+    }
+    L.checks = tie_checks(L.tie, L.N_Ed, L.elongation_demand);
+    L.satisfied = std::all_of(L.checks.begin(), L.checks.end(), [](const TieCheckRow& r) { return r.satisfied; });
+    out.push_back(L);
+  }
+  return out;
+}
+
+}  // namespace
+
+bool has_ties(const CaseFile& c) { return !c.ties.empty() || c.tie_design.has_value(); }
+
+double zeta_E(const KinematicCaseResult& r, const std::string& method) {
+  const std::string kind = method == "linear" ? "strength" : "displacement";
+  double z = std::numeric_limits<double>::infinity();
+  bool any = false;
+  for (const CandidateResult& cr : r.candidates)
+    for (const CheckRow& row : cr.checks)
+      if (row.code == "NTC2018" && row.has_pga && row.kind == kind && row.limit_state != "SLD") {
+        any = true;
+        z = std::min(z, row.ag_capacity_g / row.ag_demand_g);
+      }
+  return any ? z : std::numeric_limits<double>::quiet_NaN();
+}
+
+TieInterventionResult run_tie_intervention(const CaseFile& c) {
+  if (!c.site) throw InputError(c.file + ": /site: missing: the ties are designed and checked against the site's hazard");
+  TieInterventionResult R;
+  R.designed = c.tie_design.has_value();
+  R.case_before = c;
+  R.case_before.tie_design.reset();
+  if (!R.designed) R.case_before.ties.clear();
+  R.before = run_kinematic_case(R.case_before);
+  R.passes_before = all_pass(R.before);
+  R.zetaE_before = zeta_E(R.before, c.method);
+
+  if (!R.designed) {
+    R.case_after = R.case_before;
+    R.case_after.ties = c.ties;
+    R.after = run_kinematic_case(R.case_after);
+    R.levels = level_results(R.case_after, R.after, c.ties, 0);
+  } else {
+    // Smallest rod first (then grade, then plate); the first combination with
+    // every check of the mechanism and of the ties satisfied.
+    const std::size_t first = c.ties.size();
+    bool done = false;
+    for (double d : tie_catalogue::rod_diameters) {
+      for (const std::string& grade : c.tie_design->grades) {
+        for (const tie_catalogue::Plate& p : tie_catalogue::plates) {
+          CaseFile trial = R.case_before;
+          std::vector<Tie> levels = c.tie_design->levels;
+          for (Tie& t : levels) {
+            t.rod.diameter = d;
+            t.rod.area = units::pi * d * d / 4.0;
+            t.rod.grade = grade;
+            t.rod.fyk = tie_catalogue::find_grade(grade)->fyk;
+            t.rod.gamma_M0 = tie_catalogue::gamma_M0;
+            t.rod.E = tie_catalogue::steel_E;
+            t.anchor.type = AnchorType::Plate;
+            t.anchor.a = t.anchor.b = p.a;
+            t.anchor.t = p.t;
+            t.anchor.grade = grade == "B450C" ? "S275" : grade;
+            t.anchor.fyk = tie_catalogue::find_grade(t.anchor.grade)->fyk;
+            trial.ties.push_back(t);
+          }
+          ++R.tried;
+          KinematicCaseResult after = run_kinematic_case(trial);
+          if (!all_pass(after)) continue;
+          std::vector<TieLevelResult> lv = level_results(trial, after, levels, first);
+          if (!std::all_of(lv.begin(), lv.end(), [](const TieLevelResult& l) { return l.satisfied; })) continue;
+          R.case_after = trial;
+          R.after = std::move(after);
+          R.levels = std::move(lv);
+          done = true;
+          break;
+        }
+        if (done) break;
+      }
+      if (done) break;
+    }
+    R.found = done;
+    if (!done) {
+      R.message = "no rod of 12-40 mm with a plate of the list (150-700 mm) makes every check pass: the masonry "
+                  "behind the anchor or the rod's elongation governs; add tie levels, reduce the spacing or "
+                  "consider another intervention";
+      // Report the largest combination, so that the reader sees how far it is.
+      CaseFile trial = R.case_before;
+      std::vector<Tie> levels = c.tie_design->levels;
+      for (Tie& t : levels) {
+        const double d = tie_catalogue::rod_diameters.back();
+        const std::string& grade = c.tie_design->grades.back();
+        t.rod.diameter = d;
+        t.rod.area = units::pi * d * d / 4.0;
+        t.rod.grade = grade;
+        t.rod.fyk = tie_catalogue::find_grade(grade)->fyk;
+        t.anchor.a = t.anchor.b = tie_catalogue::plates.back().a;
+        t.anchor.t = tie_catalogue::plates.back().t;
+        t.anchor.grade = grade == "B450C" ? "S275" : grade;
+        t.anchor.fyk = tie_catalogue::find_grade(t.anchor.grade)->fyk;
+        trial.ties.push_back(t);
+      }
+      R.case_after = trial;
+      R.after = run_kinematic_case(trial);
+      R.levels = level_results(trial, R.after, levels, first);
+    }
+  }
+  R.passes_after = all_pass(R.after) &&
+                   std::all_of(R.levels.begin(), R.levels.end(), [](const TieLevelResult& l) { return l.satisfied; });
+  R.zetaE_after = zeta_E(R.after, c.method);
+  return R;
+}
+
+}  // namespace assess
