@@ -77,6 +77,14 @@ const std::string& tr(Lang lang, const std::string& key) {
       {"height", {"in quota", "height"}},
       {"bearing", {"compressione locale", "local compression"}},
       {"rodg", {"barra", "rod"}},
+      // The clauses of the tie checks (tie_checks.cpp), in the relazione's language.
+      {"clause.rod yield", {"NTC 2018 §4.2.4.1.2 [4.2.6] [R]", "NTC 2018 §4.2.4.1.2 [4.2.6] [R]"}},
+      {"clause.local compression",
+       {"muratura sotto il capochiave, prassi [R]", "masonry under the anchor, practice [R]"}},
+      {"clause.punching", {"cuneo murario a 45°, prassi [R]", "45-degree masonry wedge, practice [R]"}},
+      {"clause.anchor bending.plate", {"piastra a mensole [I]", "plate as cantilever strips [I]"}},
+      {"clause.anchor bending.bar", {"paletto appoggiato [I]", "bar, simply supported [I]"}},
+      {"clause.rod elongation", {"eps_ud = 0,9 eps_uk, eps_uk = 7,5 % [I]", "eps_ud = 0.9 eps_uk, eps_uk = 7.5 % [I]"}},
       {"drawing",
        {"Le catene sul meccanismo (frecce: la resistenza di progetto del livello sulla striscia analizzata).",
         "The ties on the mechanism (arrows: the level's design strength on the strip analysed)."}},
@@ -152,7 +160,11 @@ std::string tie_html_section(const TieInterventionResult& t, Lang lang) {
          th(tr(lang, "capacity")) + th(tr(lang, "unit")) + th("D/C") + th(tr(lang, "outcome")) + "</tr>\n";
     for (const TieCheckRow& c : L.checks) {
       const double s = c.unit == "mm" ? 1e3 : 1.0 / kN;
-      h += "<tr>" + td(tr(lang, c.check)) + td(xml_escape(c.clause)) + td(fnum(c.demand * s, "%.2f")) +
+      const std::string ck = c.check == "anchor bending"
+                                 ? std::string("clause.anchor bending.") +
+                                       (L.tie.anchor.type == AnchorType::Plate ? "plate" : "bar")
+                                 : "clause." + c.check;
+      h += "<tr>" + td(tr(lang, c.check)) + td(xml_escape(tr(lang, ck))) + td(fnum(c.demand * s, "%.2f")) +
            td(fnum(c.capacity * s, "%.2f")) + td(c.unit) + td(fnum(c.dc, "%.3f")) + verdict_cell(lang, c.satisfied) +
            "</tr>\n";
     }

@@ -65,9 +65,10 @@ std::string tie_text(const TieInterventionResult& t) {
                  : "  design: NOT FOUND: " + t.message + "; the largest combination is shown\n";
   for (const TieLevelResult& L : t.levels) {
     const Tie& tie = L.tie;
-    s += format("  level \"%s\": %s (A = %.0f mm2), %s, anchor at (%.2f, %.2f) m, spacing %.2f m, free length %.2f m, "
+    s += format("  level \"%s\": %s%s, %s, anchor at (%.2f, %.2f) m, spacing %.2f m, free length %.2f m, "
                 "pretension %.1f kN\n",
-                tie.name.c_str(), rod_label(tie).c_str(), tie.rod.area * 1e6, anchor_label(tie).c_str(), tie.point.x(),
+                tie.name.c_str(), rod_label(tie).c_str(),
+                tie.rod.diameter > 0.0 ? format(" (A = %.0f mm2)", tie.rod.area * 1e6).c_str() : "", anchor_label(tie).c_str(), tie.point.x(),
                 tie.point.y(), tie.spacing, tie.free_length, tie.pretension / kN);
     const TieResistance& r = L.resistance;
     s += format("    design strengths (kN): rod %.1f, local compression %.1f, punching %.1f, anchor bending %.1f -> "
