@@ -58,7 +58,10 @@ void run(const RunArgs& a) {
   print_warnings(res.warnings);
   // Issue 23: the tie rods ("ties" or "design"): before/after and their checks.
   std::optional<TieInterventionResult> ties;
-  if (has_ties(c)) ties = run_tie_intervention(c);
+  if (has_ties(c)) {
+    ties = run_tie_intervention(c);
+    ties->dynamics = run_tie_dynamics(res, *ties);
+  }
   // A fragility result of this case: --fragility DIR, or the default output
   // directory of `assess fragility` (CASE.fragility) when it holds this case's.
   std::optional<nlohmann::json> frag;

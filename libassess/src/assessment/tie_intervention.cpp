@@ -2,13 +2,16 @@
 // smallest commercial rod and plate (docs/theory/ties.md §5).
 #include "assess/assessment/tie_intervention.hpp"
 
+#include "assess/dynamics/tied_rocking.hpp"
 #include "assess/kinematic/tie_catalogue.hpp"
 #include "assess/support/error.hpp"
 #include "assess/support/units.hpp"
+#include "support/parallel_for.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace assess {
 namespace {
@@ -170,6 +173,115 @@ TieInterventionResult run_tie_intervention(const CaseFile& c) {
   R.passes_after = all_pass(R.after) &&
                    std::all_of(R.levels.begin(), R.levels.end(), [](const TieLevelResult& l) { return l.satisfied; });
   R.zetaE_after = zeta_E(R.after, c.method);
+  return R;
+}
+
+}  // namespace assess
+
+// ---- dynamics with the ties (docs/theory/ties.md §6) ------------------------
+
+namespace assess {
+
+TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventionResult& t) {
+  TieDynamicResult R;
+  if (!a.dynamic || !a.mechanism_dynamics || a.runs.empty()) {
+    R.note = "no dynamic analysis in the case";
+    return R;
+  }
+  const MechanismDynamics& md = *a.mechanism_dynamics;
+  const CandidateResult& after = t.after.candidates[t.after.governing];
+  if (!md.single_body() || md.sidedness != Sidedness::one_sided) {
+    R.note = "the tied dynamic analysis covers one rocking body, one-sided (a chain of several blocks is not yet "
+             "modelled with ties)";
+    return R;
+  }
+  if (after.result.ties.size() != 1 || t.after.governing != a.kinematic.governing) {
+    R.note = "the tied dynamic analysis covers one tie level on the mechanism analysed dynamically";
+    return R;
+  }
+  if (a.base_motions.size() != a.records.size()) {
+    R.note = "the base motions of the records are not available";
+    return R;
+  }
+  const ChainRockingBody& body = *md.body;
+  const TieRestraint& r = after.result.ties.front().tie;
+  RockingTie tie;
+  tie.point = r.point - body.hinge;
+  tie.direction = r.direction;
+  tie.stiffness = r.stiffness / body.length;
+  tie.capacity = r.capacity / body.length;
+  tie.pretension = std::min(r.pretension, r.capacity) / body.length;
+  const double per_tie = r.count > 0.0 ? body.length / r.count : 0.0;  // per unit depth -> per tie
+  // The rod's ultimate elongation eps_ud L (the level's tie, tie_checks).
+  double e_u = std::numeric_limits<double>::infinity();
+  for (const TieLevelResult& L : t.levels)
+    if (L.tie.name == r.name) e_u = L.resistance.ultimate_elongation;
+  const KinematicResult& kin = after.result;
+  R.runs.resize(a.runs.size());
+  detail::parallel_for(a.runs.size(), [&](std::size_t i) {
+    const DynamicRun& run = a.runs[i];
+    const Record& rec = a.base_motions[run.record];
+    const double f = a.records[run.record].scale * (run.reversed ? -1.0 : 1.0);
+    std::vector<double> ug;
+    ug.reserve(rec.acc.size() + static_cast<std::size_t>(a.free_tail_s / rec.dt) + 1);
+    for (double v : rec.acc) ug.push_back(f * v);
+    for (double s = 0.0; s < a.free_tail_s; s += rec.dt) ug.push_back(0.0);
+    HybridOdeOptions o;
+    o.rel_tol = a.dynamic->options.rel_tol;
+    o.abs_tol = a.dynamic->options.abs_tol;
+    const TiedRockingResult tr = analyse_tied_rocking(md.rocking[run.restitution], tie, ug, rec.dt, 1e300, false, o);
+    TieDynamicRun& d = R.runs[i];
+    d.run = i;
+    d.theta_max = tr.theta_max;
+    d.theta_collapse = tr.theta_collapse;
+    d.overturned = tr.overturned;
+    d.yielded = tr.yielded;
+    d.max_force = tr.max_force * per_tie;
+    d.plastic_elongation = tr.plastic_elongation;
+    d.plastic_energy = tr.plastic_energy * per_tie;
+    d.max_elongation = tr.max_elongation;
+    d.ruptured = tr.max_elongation > e_u;
+    d.failed = !(tr.termination == HybridTermination::completed || tr.termination == HybridTermination::finished ||
+                 tr.termination == HybridTermination::stopped_by_event);
+    const double dc = md.control_displacement(kin, tr.theta_max);
+    d.d_star = dc * kin.d_star_per_dk;
+    d.collapse = d.overturned || d.ruptured || dc >= kin.dk0 || d.failed;
+  });
+  // Per restitution value: the rule of NTC 2018 §7.3.5 on the envelope of the polarities.
+  const KinematicResult& kin_before = a.kinematic.candidates[a.kinematic.governing].result;
+  for (const RestitutionSummary& s0 : a.summaries) {
+    TieDynamicSummary s;
+    s.e = s0.e;
+    s.records = s0.records;
+    s.rule = s0.rule;
+    s.overturned_before = s0.overturned;
+    s.d_demand_before = s0.d_demand;
+    s.d_SLV_before = kin_before.d_SLV;
+    s.collapse_before = s0.any_collapse;
+    s.satisfied_before = s0.slv_satisfied;
+    s.d_SLV_after = kin.d_SLV;
+    std::map<std::size_t, double> env;
+    for (const TieDynamicRun& d : R.runs) {
+      const DynamicRun& run = a.runs[d.run];
+      if (run.restitution != s0.restitution) continue;
+      s.overturned_after += d.overturned ? 1 : 0;
+      s.collapse_after = s.collapse_after || d.collapse;
+      s.yielded += d.yielded ? 1 : 0;
+      s.ruptured += d.ruptured ? 1 : 0;
+      s.max_plastic_elongation = std::max(s.max_plastic_elongation, d.plastic_elongation);
+      env[run.record] = std::max(env[run.record], d.d_star);
+    }
+    double mean = 0.0, mx = 0.0;
+    for (const auto& kv : env) {
+      mean += kv.second / double(env.size());
+      mx = std::max(mx, kv.second);
+    }
+    s.d_demand_after = s.rule == "mean" ? mean : mx;
+    s.satisfied_after = s.rule != "none" && !s.collapse_after && s.d_demand_after <= s.d_SLV_after;
+    R.summaries.push_back(s);
+  }
+  R.applies = true;
+  R.note = "the façade's analyses repeated with the tie as a one-sided elastic-perfectly-plastic restraint";
   return R;
 }
 

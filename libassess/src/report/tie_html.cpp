@@ -85,6 +85,24 @@ const std::string& tr(Lang lang, const std::string& key) {
       {"clause.anchor bending.plate", {"piastra a mensole [I]", "plate as cantilever strips [I]"}},
       {"clause.anchor bending.bar", {"paletto appoggiato [I]", "bar, simply supported [I]"}},
       {"clause.rod elongation", {"eps_ud = 0,9 eps_uk, eps_uk = 7,5 % [I]", "eps_ud = 0.9 eps_uk, eps_uk = 7.5 % [I]"}},
+      {"dyn_title",
+       {"Verifica dinamica prima e dopo la catena (Circ. 2019 C8.7.1.2.1.9)",
+        "Dynamic check before and after the tie (Circ. 2019 C8.7.1.2.1.9)"}},
+      {"dyn_intro",
+       {"Le analisi dinamiche della facciata (sopra, senza catene) ripetute con la catena come vincolo monolatero (solo trazione) "
+        "elastico-perfettamente plastico nel suo punto.",
+        "The façade's dynamic analyses (above, without ties) repeated with the tie as a one-sided (tension-only) elastic-perfectly-plastic "
+        "restraint at its point."}},
+      {"dyn_not",
+       {"Analisi dinamica con la catena non eseguita (un solo corpo, monolatero, un solo livello di catene).",
+        "Dynamic analysis with the tie not done (one body, one-sided, one tie level only)."}},
+      {"dyn_e", {"e (restituzione)", "e (restitution)"}},
+      {"dyn_N", {"N accelerogrammi", "N records"}},
+      {"dyn_over", {"ribaltamenti prima / dopo", "overturned before / after"}},
+      {"dyn_d", {"d* domanda prima / dopo (m)", "d* demand before / after (m)"}},
+      {"dyn_dslv", {"d_SLV prima / dopo (m)", "d_SLV before / after (m)"}},
+      {"dyn_yield", {"catena snervata / rotta", "rod yielded / broken"}},
+      {"dyn_verdict", {"esito prima → dopo", "outcome before → after"}},
       {"drawing",
        {"Le catene sul meccanismo (frecce: la resistenza di progetto del livello sulla striscia analizzata).",
         "The ties on the mechanism (arrows: the level's design strength on the strip analysed)."}},
@@ -198,7 +216,25 @@ std::string tie_html_section(const TieInterventionResult& t, Lang lang) {
     h += "<tr>" + td(row.code + " " + row.limit_state + " " + tr(lang, row.kind) + " " + tr(lang, row.location) + " D/C") +
          td(fnum(row.dc, "%.3f")) + td(r2 ? fnum(r2->dc, "%.3f") : "–") + "</tr>\n";
   }
-  h += "</table>\n</div>\n";
+  h += "</table>\n";
+  // Dynamics before / after.
+  h += "<h3>" + tr(lang, "dyn_title") + "</h3>\n";
+  if (!t.dynamics.applies) {
+    h += "<p>" + tr(lang, "dyn_not") + "</p>\n";
+  } else {
+    h += "<p>" + tr(lang, "dyn_intro") + "</p>\n<table class=\"data\"><tr>" + th(tr(lang, "dyn_e")) +
+         th(tr(lang, "dyn_N")) + th(tr(lang, "dyn_over")) + th(tr(lang, "dyn_d")) + th(tr(lang, "dyn_dslv")) +
+         th(tr(lang, "dyn_yield")) + th(tr(lang, "dyn_verdict")) + "</tr>\n";
+    for (const TieDynamicSummary& x : t.dynamics.summaries)
+      h += "<tr>" + td(format("%.3f", x.e)) + td(format("%d", x.records)) +
+           td(format("%d / %d", x.overturned_before, x.overturned_after)) +
+           td(format("%.4f / %.4f", x.d_demand_before, x.d_demand_after)) +
+           td(format("%.4f / %.4f", x.d_SLV_before, x.d_SLV_after)) + td(format("%d / %d", x.yielded, x.ruptured)) +
+           "<td>" + tr(lang, x.satisfied_before ? "ok" : "ko") + " → " + tr(lang, x.satisfied_after ? "ok" : "ko") +
+           "</td></tr>\n";
+    h += "</table>\n";
+  }
+  h += "</div>\n";
   return h;
 }
 

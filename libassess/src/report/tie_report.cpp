@@ -6,6 +6,7 @@
 #include "report/text_format.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <limits>
 
 namespace assess {
@@ -52,6 +53,29 @@ nlohmann::json side_json(const KinematicCaseResult& r, double zeta, bool passes)
   j["checks"] = nlohmann::json::array();
   for (const CheckRow& row : cr.checks) j["checks"].push_back(to_json(row));
   return j;
+}
+
+std::string dynamics_text(const TieDynamicResult& d) {
+  if (!d.applies) return d.note.empty() ? "" : "  dynamic analysis with the tie: not done: " + d.note + "\n";
+  std::string s = "  dynamic check before and after the tie (Circ. 2019 C8.7.1.2.1.9; the analyses above, without ties, repeated with the tie as a one-sided "
+                  "elastic-perfectly-plastic restraint):\n";
+  s += format("      %7s %4s %-18s %13s %13s %11s %11s %9s %9s %14s %s\n", "e", "N", "rule", "overturned bef",
+              "overturned aft", "d* bef (m)", "d* aft (m)", "d_SLV bef", "d_SLV aft", "yielded/broke", "verdict before -> after");
+  for (const TieDynamicSummary& x : d.summaries)
+    s += format("      %7.3f %4d %-18s %13d %13d %11.4f %11.4f %9.4f %9.4f %14s %s -> %s\n", x.e, x.records,
+                x.rule.c_str(), x.overturned_before, x.overturned_after, x.d_demand_before, x.d_demand_after,
+                x.d_SLV_before, x.d_SLV_after, format("%d/%d", x.yielded, x.ruptured).c_str(), x.satisfied_before ? "satisfied" : "NOT satisfied",
+                x.satisfied_after ? "satisfied" : "NOT satisfied");
+  double ep = 0.0, E = 0.0, F = 0.0;
+  for (const TieDynamicRun& r : d.runs) {
+    ep = std::max(ep, r.plastic_elongation);
+    E = std::max(E, r.plastic_energy);
+    F = std::max(F, r.max_force);
+  }
+  s += format("      largest tie force %.2f kN per tie, permanent elongation %.1f mm, energy dissipated by the rod %.3f kJ "
+              "per tie\n",
+              F / kN, ep * 1e3, E / 1e3);
+  return s;
 }
 
 }  // namespace
@@ -111,6 +135,7 @@ std::string tie_text(const TieInterventionResult& t) {
     s += format("      %-8s %-4s %-13s %-8s %12.3f %12s\n", row.code.c_str(), row.limit_state.c_str(), row.kind.c_str(),
                 row.location.c_str(), row.dc, r2 ? format("%.3f", r2->dc).c_str() : "-");
   }
+  s += dynamics_text(t.dynamics);
   return s;
 }
 
@@ -174,6 +199,43 @@ nlohmann::json tie_json(const TieInterventionResult& t) {
   j["before"] = side_json(t.before, t.zetaE_before, t.passes_before);
   j["after"] = side_json(t.after, t.zetaE_after, t.passes_after);
   j["zeta_E_improvement"] = num(t.zetaE_after - t.zetaE_before);
+  nlohmann::json dj;
+  dj["applies"] = t.dynamics.applies;
+  dj["note"] = t.dynamics.note;
+  dj["summaries"] = nlohmann::json::array();
+  for (const TieDynamicSummary& x : t.dynamics.summaries)
+    dj["summaries"].push_back({{"e", x.e},
+                               {"records", x.records},
+                               {"rule", x.rule},
+                               {"overturned_before", x.overturned_before},
+                               {"overturned_after", x.overturned_after},
+                               {"d_demand_before_m", x.d_demand_before},
+                               {"d_demand_after_m", x.d_demand_after},
+                               {"d_SLV_before_m", x.d_SLV_before},
+                               {"d_SLV_after_m", x.d_SLV_after},
+                               {"collapse_before", x.collapse_before},
+                               {"collapse_after", x.collapse_after},
+                               {"satisfied_before", x.satisfied_before},
+                               {"satisfied_after", x.satisfied_after},
+                               {"analyses_rod_yielded", x.yielded},
+                               {"analyses_rod_broken", x.ruptured},
+                               {"max_plastic_elongation_m", x.max_plastic_elongation}});
+  dj["runs"] = nlohmann::json::array();
+  for (const TieDynamicRun& r : t.dynamics.runs)
+    dj["runs"].push_back({{"run", r.run},
+                          {"theta_max", r.theta_max},
+                          {"theta_collapse", r.theta_collapse},
+                          {"overturned", r.overturned},
+                          {"yielded", r.yielded},
+                          {"max_force_kN", r.max_force / kN},
+                          {"plastic_elongation_m", r.plastic_elongation},
+                          {"max_elongation_m", r.max_elongation},
+                          {"ruptured", r.ruptured},
+                          {"plastic_energy_kJ", r.plastic_energy / 1e3},
+                          {"d_star_m", r.d_star},
+                          {"collapse", r.collapse},
+                          {"failed", r.failed}});
+  j["dynamic"] = dj;
   return j;
 }
 
