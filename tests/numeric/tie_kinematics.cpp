@@ -19,6 +19,7 @@
 #include <assess/kinematic/chain.hpp>
 #include <assess/kinematic/code_checks.hpp>
 #include <assess/kinematic/kinematic_analysis.hpp>
+#include <assess/kinematic/mechanism_catalogue.hpp>
 #include <assess/kinematic/tie.hpp>
 #include <assess/kinematic/tie_catalogue.hpp>
 #include <assess/kinematic/tie_checks.hpp>
@@ -41,15 +42,15 @@ constexpr double tol_strength = 1e-12;     // relative: design strengths, arithm
 constexpr double tol_required_linear = 1e-6;     // relative: bisection to 1e-7 of the force
 constexpr double tol_required_nonlinear = 1e-5;  // relative: bisection here and in the library (1e-7), Brent on d0
 
-constexpr double b = 0.6, h = 8.0, gamma = 18e3, L = 1.0;  // m, m, N/m^3, m
-constexpr double W = gamma * b * h * L;                      // N
+constexpr double b = 0.6, h = 8.0, gamma_w = 18e3, L = 1.0;  // m, m, N/m^3, m
+constexpr double W = gamma_w * b * h * L;                      // N
 constexpr double g = assess::units::g;
 
 assess::Chain block() {
   assess::Block blk;
   blk.name = "wall";
   blk.polygon = {{-b, 0.0}, {0.0, 0.0}, {0.0, h}, {-b, h}};
-  blk.unit_weight = gamma;
+  blk.unit_weight = gamma_w;
   blk.length = L;
   assess::Constraint hinge;
   hinge.type = assess::ConstraintType::GroundHinge;
@@ -306,4 +307,88 @@ TEST_CASE("tie: required force of the NTC 2018 SLV displacement check at ground,
       CHECK_CLOSE(f.level_force, hi, rel_tol(tol_required_nonlinear));
     }
   CHECK(found);
+}
+
+TEST_CASE("two-storey façade with a floor and two tie levels (one inclined): alpha0 and the e-p capacity curve by hand") {
+  // One rigid body about the outer toe (0, 0): storey 1 t1 x h1, storey 2 t2 x h2 (outer faces aligned at
+  // x = 0), a floor weight N at the top of storey 1 at distance dN from the inner face. Virtual work with
+  // delta p = (z(theta), -x(theta)):
+  //   alpha(theta) = -(sum W_i x_i(theta) + sum T_j (d_jx z_j(theta) - d_jz x_j(theta))) / sum W_i z_i(theta)
+  const double t1 = 0.6, h1 = 4.0, t2 = 0.45, h2 = 3.5, Lw = 5.0, N = 60e3, dN = 0.2;
+  assess::SimpleOverturningParams p;
+  assess::Storey s1;
+  s1.height = h1;
+  s1.thickness = t1;
+  s1.floor_weight = N;
+  s1.floor_distance_from_inner_face = dN;
+  assess::Storey s2;
+  s2.height = h2;
+  s2.thickness = t2;
+  p.storeys = {s1, s2};
+  p.unit_weight = gamma_w;
+  p.length = Lw;
+  p.hinge_level = 0;
+  const auto set = assess::simple_overturning(p);
+  REQUIRE(set.candidates.size() == 1);
+  const auto& chain = set.candidates[0].chain;
+  // Weights (N) and their undeformed points (m).
+  struct Wt {
+    double W, x, z;
+  };
+  const std::vector<Wt> w{{gamma_w * t1 * h1 * Lw, -t1 / 2, h1 / 2},
+                          {gamma_w * t2 * h2 * Lw, -t2 / 2, h1 + h2 / 2},
+                          {N, -t1 + dN, h1}};
+  // Tie A: horizontal on the outer face; tie B: on the inner face near the top, pulling inward and down.
+  auto tA = restraint(0.0, h1 - 0.3, 40e3, 4e6, 5e3);
+  auto tB = restraint(-t2, h1 + h2 - 0.2, 25e3, 1.5e6, 0.0);
+  tB.direction = Eigen::Vector2d(-1.0, -0.25).normalized();
+  for (auto* t : {&tA, &tB}) t->block = assess::tie_block(chain, -1, t->point);
+  REQUIRE(tA.block >= 0);
+  REQUIRE(tB.block >= 0);
+  const std::vector<assess::TieRestraint> ties{tA, tB};
+  auto elong = [](const assess::TieRestraint& t, double th) {
+    return -(t.direction.x() * (xr(t.point.x(), t.point.y(), th) - t.point.x()) +
+             t.direction.y() * (zr(t.point.x(), t.point.y(), th) - t.point.y()));
+  };
+  auto alpha_hand = [&](double th, bool rigid_plastic) {
+    double num = 0.0, den = 0.0;
+    for (const Wt& x : w) {
+      num += x.W * xr(x.x, x.z, th);
+      den += x.W * zr(x.x, x.z, th);
+    }
+    for (const auto& t : ties) {
+      const double T = rigid_plastic ? t.capacity : law(elong(t, th), t.capacity, t.stiffness, t.pretension);
+      num += T * (t.direction.x() * zr(t.point.x(), t.point.y(), th) - t.direction.y() * xr(t.point.x(), t.point.y(), th));
+    }
+    return -num / den;
+  };
+  assess::KinematicOptions opt;
+  opt.curve_points = 121;
+  const auto r = assess::analyse_kinematic(chain, opt, ties);
+  CHECK_CLOSE(r.alpha0, alpha_hand(0.0, true), abs_tol(tol_alpha));
+  REQUIRE(r.curve_complete());
+  // Control point: the centroid of the weights; theta from its horizontal displacement.
+  double Wt_ = 0.0, xg = 0.0, zg = 0.0;
+  for (const Wt& x : w) Wt_ += x.W, xg += x.W * x.x, zg += x.W * x.z;
+  xg /= Wt_;
+  zg /= Wt_;
+  auto theta_of = [&](double dk) {
+    double lo = 0.0, hi = 1.5;
+    for (int i = 0; i < 200; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (xr(xg, zg, mid) - xg < dk ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+  };
+  for (const auto& pt : r.curve) {
+    CAPTURE(pt.dk);
+    CHECK_CLOSE(pt.alpha, alpha_hand(theta_of(pt.dk), false), abs_tol(tol_alpha_curve));
+  }
+  // d_k0: alpha = 0 with both ties yielded.
+  double lo = 0.05, hi = 1.2;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (alpha_hand(mid, true) > 0.0 ? lo : hi) = mid;
+  }
+  CHECK_CLOSE(r.dk0, xr(xg, zg, lo) - xg, abs_tol(1e-9));
 }

@@ -42,8 +42,17 @@ struct Ref {
 };
 
 // The independent integration.
-Ref reference(const assess::RockingBody& b, const assess::RockingTie& tie, double th_collapse) {
-  const double W = b.W, R = b.R, al = b.alpha, I0 = b.I0, m = W / assess::units::g;
+// kw: Winkler modulus (N/m^3) of the smooth block (seed Eq. 1), 0 for the rigid block.
+Ref reference(const assess::RockingBody& b, const assess::RockingTie& tie, double th_collapse, double kw = 0.0) {
+  const double W = b.W, R = b.R, al = b.alpha, I0 = b.I0, m = W / assess::units::g, hb = b.b;
+  const double th_cr = kw > 0.0 ? W / (2.0 * hb * hb * kw) : 0.0;
+  // Restoring moment about the outer toe (N m/m): gravity, plus the Winkler bed's
+  // -W b + (2/3) k b^3 theta (full contact) or -(W/3) sqrt(2 W / (k theta)) (partial).
+  auto restoring = [&](double th) {
+    double M = W * R * std::sin(al - th);
+    if (kw > 0.0) M += th <= th_cr ? -W * hb + 2.0 / 3.0 * kw * hb * hb * hb * th : -W / 3.0 * std::sqrt(2.0 * W / (kw * th));
+    return M;
+  };
   const double x0 = tie.point.x(), z0 = tie.point.y(), dx = tie.direction.x(), dz = tie.direction.y();
   auto pos = [&](double th, double& x, double& z) {
     x = x0 * std::cos(th) + z0 * std::sin(th);
@@ -66,7 +75,7 @@ Ref reference(const assess::RockingBody& b, const assess::RockingTie& tie, doubl
     double x, z;
     pos(th, x, z);
     const double Q = force(th, ep) * (dx * z - dz * x);
-    return (-W * R * std::sin(al - th) - m * ug(t) * R * std::cos(al - th) + Q) / I0;
+    return (-restoring(th) - m * ug(t) * R * std::cos(al - th) + Q) / I0;
   };
   auto rk4 = [&](double t, double h, double& th, double& om, double ep) {
     const double k1t = om, k1o = acc(t, th, ep);
@@ -183,4 +192,31 @@ TEST_CASE("tied rocking: collapse rotation = where W R sin(alpha - theta) = T_y 
   }
   CHECK_CLOSE(r.theta_collapse, lo, abs_tol(1e-12));
   CHECK(r.theta_collapse > body.alpha);
+}
+
+TEST_CASE("tied rocking: smooth block on a Winkler bed (both contact branches), independent RK4") {
+  const auto body = assess::RockingBody::rectangle(t_wall, h_wall, gamma_w);
+  const double kw = 2e8;  // N/m^3: theta_cr = W / (2 b^2 k) = 1.8e-3 rad
+  const assess::RockingModel model(body, assess::Foundation::winkler(kw), assess::Sidedness::one_sided,
+                                   assess::Restitution::given(e_rest));
+  std::vector<double> ug;
+  for (double t = 0.0; t <= t_end + 1e-9; t += dt) ug.push_back(pulse(t));
+  assess::RockingTie tie;
+  tie.point = {-t_wall, 3.6};  // on the inner face
+  tie.stiffness = 3e5;
+  tie.capacity = 1.5e3;
+  tie.pretension = 0.0;
+  assess::HybridOdeOptions opt;
+  opt.rel_tol = 1e-11;
+  opt.abs_tol = 1e-13;
+  const auto r = assess::analyse_tied_rocking(model, tie, ug, dt, t_end, false, opt);
+  const Ref ref = reference(body, tie, r.theta_collapse, kw);
+  CHECK(r.yielded == ref.yielded);
+  CHECK(r.overturned == ref.overturned);
+  CHECK(r.impacts == ref.impacts);
+  CHECK(r.theta_max > model.theta_cr());
+  CHECK_CLOSE(r.theta_max, ref.theta_max, rel_tol(tol_theta));
+  CHECK_CLOSE(r.plastic_elongation, ref.ep, abs_tol(tol_ep));
+  MESSAGE("smooth: theta_max " << r.theta_max << " rad (ref " << ref.theta_max << "), e_p " << r.plastic_elongation
+                               << " m (ref " << ref.ep << "), impacts " << r.impacts << ", yielded " << r.yielded);
 }
