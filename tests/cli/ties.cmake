@@ -29,3 +29,12 @@ add_test(NAME cli.ties_exit2
           -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/ties_exit2.cmake
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.ties_exit2 PROPERTIES LABELS cli)
+# The dynamic check before and after: the church (one rocking body), the upper
+# storey at height (floor motions, a designed roof tie) and vertical flexure (a
+# chain of two blocks, the tied chain model).
+assess_cli_test(ties_dynamic_church ARGS run mechanisms/church-facade-ties.json
+  PASS "dynamic check before and after the tie.*-0\\.480 +7 mean +4 +0 .*NOT satisfied -> satisfied")
+assess_cli_test(ties_dynamic_at_height ARGS run tests/cli/ties/upper_storey_tie.json --json
+  PASS "\"ties\": {.*\"dynamic\": {[^}]*\"applies\": true")
+assess_cli_test(ties_dynamic_chain ARGS run tests/cli/ties/vertical_flexure_tie.json
+  PASS "dynamic check before and after the tie.*yielded/broke")

@@ -220,3 +220,58 @@ TEST_CASE("tied rocking: smooth block on a Winkler bed (both contact branches), 
   MESSAGE("smooth: theta_max " << r.theta_max << " rad (ref " << ref.theta_max << "), e_p " << r.plastic_elongation
                                << " m (ref " << ref.ep << "), impacts " << r.impacts << ", yielded " << r.yielded);
 }
+
+#include <assess/dynamics/chain_dynamics.hpp>
+#include <assess/kinematic/chain.hpp>
+
+TEST_CASE("tied chain: a one-block chain with the tie agrees with the tied rocking body (rigid base)") {
+  // The chain model's equation reduces to the rocking body's for one block
+  // about its toe (tests/numeric/chain_dynamics.cpp); with the tie, the only
+  // new term is T d . dp/dq, tabulated on the chain's grid (2000 nodes).
+  constexpr double tol_chain = 1e-5;  // relative, theta_max: tabulated de/dq (linear) and interpolated chain tables
+  assess::Block blk;
+  blk.name = "wall";
+  blk.polygon = {{-t_wall, 0.0}, {0.0, 0.0}, {0.0, h_wall}, {-t_wall, h_wall}};
+  blk.unit_weight = gamma_w;
+  blk.length = 1.0;
+  assess::Constraint hinge;
+  hinge.type = assess::ConstraintType::GroundHinge;
+  hinge.block = 0;
+  hinge.point = {0.0, 0.0};
+  const assess::Chain chain({blk}, {hinge}, {});
+  const assess::ChainDynamics cd(chain, assess::Foundation::rigid());
+  const auto body = assess::RockingBody::rectangle(t_wall, h_wall, gamma_w);
+  const assess::RockingModel model(body, assess::Foundation::rigid(), assess::Sidedness::one_sided,
+                                   assess::Restitution::given(e_rest));
+  std::vector<double> ug;
+  for (double t = 0.0; t <= t_end + 1e-9; t += dt) ug.push_back(pulse(t));
+  assess::RockingTie tie;
+  tie.point = {0.0, 2.5};
+  tie.stiffness = 2e5;
+  tie.capacity = 1.2e3;
+  tie.pretension = 200.0;
+  assess::TieRestraint level;
+  level.block = 0;
+  level.point = tie.point;
+  level.direction = tie.direction;
+  level.stiffness = tie.stiffness;
+  level.capacity = tie.capacity;
+  level.pretension = tie.pretension;
+  assess::HybridOdeOptions opt;
+  opt.rel_tol = 1e-11;
+  opt.abs_tol = 1e-13;
+  const auto rb = assess::analyse_tied_rocking(model, tie, ug, dt, t_end, false, opt);
+  const auto rc = assess::analyse_tied_chain(cd, level, e_rest, ug, dt, t_end, false, opt);
+  CHECK(rc.yielded == rb.yielded);
+  CHECK(rc.impacts == rb.impacts);
+  CHECK(rc.overturned == rb.overturned);
+  // The chain's tables end a little beyond its bare q_u: a tied chain that
+  // would need rotations beyond them is stopped there (conservative, ties.md §6).
+  const double q_end = cd.grid_step() * double(cd.grid_intervals());
+  CHECK(rb.theta_collapse > q_end);
+  CHECK_CLOSE(rc.theta_collapse, q_end, rel_tol(1e-12));
+  CHECK_CLOSE(rc.theta_max, rb.theta_max, rel_tol(tol_chain));
+  CHECK_CLOSE(rc.plastic_elongation, rb.plastic_elongation, abs_tol(1e-6));
+  MESSAGE("chain: theta_max " << rc.theta_max << " (body " << rb.theta_max << "), e_p " << rc.plastic_elongation
+                              << " (body " << rb.plastic_elongation << ")");
+}

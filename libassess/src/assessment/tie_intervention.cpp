@@ -190,9 +190,8 @@ TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventi
   }
   const MechanismDynamics& md = *a.mechanism_dynamics;
   const CandidateResult& after = t.after.candidates[t.after.governing];
-  if (!md.single_body() || md.sidedness != Sidedness::one_sided) {
-    R.note = "the tied dynamic analysis covers one rocking body, one-sided (a chain of several blocks is not yet "
-             "modelled with ties)";
+  if (md.sidedness != Sidedness::one_sided || (!md.single_body() && !md.chain)) {
+    R.note = "the tied dynamic analysis covers one-sided rocking (a body or a chain)";
     return R;
   }
   if (after.result.ties.size() != 1 || t.after.governing != a.kinematic.governing) {
@@ -203,15 +202,20 @@ TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventi
     R.note = "the base motions of the records are not available";
     return R;
   }
-  const ChainRockingBody& body = *md.body;
   const TieRestraint& r = after.result.ties.front().tie;
+  // One body: per unit depth of wall; a chain: the whole level. `per_tie`
+  // turns the analysis' forces and energies into those of one tie.
   RockingTie tie;
-  tie.point = r.point - body.hinge;
-  tie.direction = r.direction;
-  tie.stiffness = r.stiffness / body.length;
-  tie.capacity = r.capacity / body.length;
-  tie.pretension = std::min(r.pretension, r.capacity) / body.length;
-  const double per_tie = r.count > 0.0 ? body.length / r.count : 0.0;  // per unit depth -> per tie
+  double per_tie = r.count > 0.0 ? 1.0 / r.count : 0.0;
+  if (md.single_body()) {
+    const ChainRockingBody& body = *md.body;
+    tie.point = r.point - body.hinge;
+    tie.direction = r.direction;
+    tie.stiffness = r.stiffness / body.length;
+    tie.capacity = r.capacity / body.length;
+    tie.pretension = std::min(r.pretension, r.capacity) / body.length;
+    per_tie *= body.length;
+  }
   // The rod's ultimate elongation eps_ud L (the level's tie, tie_checks).
   double e_u = std::numeric_limits<double>::infinity();
   for (const TieLevelResult& L : t.levels)
@@ -229,7 +233,9 @@ TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventi
     HybridOdeOptions o;
     o.rel_tol = a.dynamic->options.rel_tol;
     o.abs_tol = a.dynamic->options.abs_tol;
-    const TiedRockingResult tr = analyse_tied_rocking(md.rocking[run.restitution], tie, ug, rec.dt, 1e300, false, o);
+    const TiedRockingResult tr =
+        md.single_body() ? analyse_tied_rocking(md.rocking[run.restitution], tie, ug, rec.dt, 1e300, false, o)
+                         : analyse_tied_chain(*md.chain, r, md.e[run.restitution], ug, rec.dt, 1e300, false, o);
     TieDynamicRun& d = R.runs[i];
     d.run = i;
     d.theta_max = tr.theta_max;
@@ -248,17 +254,33 @@ TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventi
     d.collapse = d.overturned || d.ruptured || dc >= kin.dk0 || d.failed;
   });
   // Per restitution value: the rule of NTC 2018 §7.3.5 on the envelope of the polarities.
-  const KinematicResult& kin_before = a.kinematic.candidates[a.kinematic.governing].result;
+  // Before: the façade's runs (never with ties) against the mechanism without
+  // the ties of `t` (the façade's kinematic part has the case's given ties).
+  const KinematicResult& kin_before = t.before.candidates[t.before.governing].result;
   for (const RestitutionSummary& s0 : a.summaries) {
     TieDynamicSummary s;
     s.e = s0.e;
     s.records = s0.records;
     s.rule = s0.rule;
     s.overturned_before = s0.overturned;
-    s.d_demand_before = s0.d_demand;
     s.d_SLV_before = kin_before.d_SLV;
-    s.collapse_before = s0.any_collapse;
-    s.satisfied_before = s0.slv_satisfied;
+    std::map<std::size_t, double> env0;
+    bool failed0 = false;
+    for (const DynamicRun& run : a.runs) {
+      if (run.restitution != s0.restitution) continue;
+      failed0 = failed0 || !(run.result.termination == RockingTermination::completed ||
+                             run.result.termination == RockingTermination::overturned);
+      s.collapse_before = s.collapse_before || run.result.overturned || run.d_control >= kin_before.dk0;
+      env0[run.record] = std::max(env0[run.record], run.d_star);
+    }
+    double mean0 = 0.0, mx0 = 0.0;
+    for (const auto& kv : env0) {
+      mean0 += kv.second / double(env0.size());
+      mx0 = std::max(mx0, kv.second);
+    }
+    s.d_demand_before = s.rule == "mean" ? mean0 : mx0;
+    s.collapse_before = s.collapse_before || failed0;
+    s.satisfied_before = s.rule != "none" && !s.collapse_before && s.d_demand_before <= s.d_SLV_before;
     s.d_SLV_after = kin.d_SLV;
     std::map<std::size_t, double> env;
     for (const TieDynamicRun& d : R.runs) {

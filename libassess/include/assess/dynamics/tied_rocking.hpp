@@ -17,8 +17,10 @@
 // docs/theory/ties.md §6.
 #pragma once
 
+#include "assess/dynamics/chain_dynamics.hpp"
 #include "assess/dynamics/hybrid_ode.hpp"
 #include "assess/dynamics/rocking_model.hpp"
+#include "assess/kinematic/tie.hpp"
 
 #include <Eigen/Core>
 
@@ -69,5 +71,16 @@ struct TiedRockingResult {
 TiedRockingResult analyse_tied_rocking(const RockingModel& model, const RockingTie& tie, const std::vector<double>& ug,
                                        double dt, double t_end, bool history = false,
                                        const HybridOdeOptions& options = {});
+
+/// The same for a one-sided chain (dynamics/chain_dynamics.hpp) held by the
+/// tie level `tie` (chain coordinates, the whole level on the chain: N, N/m):
+///   M(q) q'' = [the chain's equation] + T d . dp/dq,
+/// with the anchor's e(q) and dp/dq from the chain's exact configuration
+/// tabulated at 2000 nodes over the chain's grid (cubic Hermite for e, linear
+/// for de/dq); `e` is the coefficient of restitution at q = 0 (in [-1, 0]).
+/// Forces and energies of the result are those of the level (N, J).
+TiedRockingResult analyse_tied_chain(const ChainDynamics& chain, const TieRestraint& tie, double e,
+                                     const std::vector<double>& ug, double dt, double t_end, bool history = false,
+                                     const HybridOdeOptions& options = {});
 
 }  // namespace assess
