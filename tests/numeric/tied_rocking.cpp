@@ -43,7 +43,9 @@ struct Ref {
 
 // The independent integration.
 // kw: Winkler modulus (N/m^3) of the smooth block (seed Eq. 1), 0 for the rigid block.
-Ref reference(const assess::RockingBody& b, const assess::RockingTie& tie, double th_collapse, double kw = 0.0) {
+// Several tie levels, each with its own plastic elongation (return mapping).
+Ref reference(const assess::RockingBody& b, const std::vector<assess::RockingTie>& ties, double th_collapse,
+              double kw = 0.0, std::vector<double>* eps = nullptr) {
   const double W = b.W, R = b.R, al = b.alpha, I0 = b.I0, m = W / assess::units::g, hb = b.b;
   const double th_cr = kw > 0.0 ? W / (2.0 * hb * hb * kw) : 0.0;
   // Restoring moment about the outer toe (N m/m): gravity, plus the Winkler bed's
@@ -53,31 +55,34 @@ Ref reference(const assess::RockingBody& b, const assess::RockingTie& tie, doubl
     if (kw > 0.0) M += th <= th_cr ? -W * hb + 2.0 / 3.0 * kw * hb * hb * hb * th : -W / 3.0 * std::sqrt(2.0 * W / (kw * th));
     return M;
   };
-  const double x0 = tie.point.x(), z0 = tie.point.y(), dx = tie.direction.x(), dz = tie.direction.y();
-  auto pos = [&](double th, double& x, double& z) {
-    x = x0 * std::cos(th) + z0 * std::sin(th);
-    z = -x0 * std::sin(th) + z0 * std::cos(th);
+  const std::size_t n = ties.size();
+  auto pos = [&](const assess::RockingTie& tie, double th, double& x, double& z) {
+    x = tie.point.x() * std::cos(th) + tie.point.y() * std::sin(th);
+    z = -tie.point.x() * std::sin(th) + tie.point.y() * std::cos(th);
   };
-  auto elong = [&](double th) {
+  auto elong = [&](const assess::RockingTie& tie, double th) {
     double x, z;
-    pos(th, x, z);
-    return -(dx * (x - x0) + dz * (z - z0));
+    pos(tie, th, x, z);
+    return -(tie.direction.x() * (x - tie.point.x()) + tie.direction.y() * (z - tie.point.y()));
   };
-  auto force = [&](double th, double ep) {
-    return std::min(std::max(tie.pretension + tie.stiffness * (elong(th) - ep), 0.0), tie.capacity);
+  auto force = [&](const assess::RockingTie& tie, double th, double ep) {
+    return std::min(std::max(tie.pretension + tie.stiffness * (elong(tie, th) - ep), 0.0), tie.capacity);
   };
   auto ug = [&](double t) {  // the library samples the pulse every dt and interpolates linearly
     const double x = t / dt;
     const double i = std::floor(x);
     return pulse(i * dt) + (x - i) * (pulse((i + 1) * dt) - pulse(i * dt));
   };
-  auto acc = [&](double t, double th, double ep) {
-    double x, z;
-    pos(th, x, z);
-    const double Q = force(th, ep) * (dx * z - dz * x);
+  auto acc = [&](double t, double th, const std::vector<double>& ep) {
+    double Q = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      double x, z;
+      pos(ties[i], th, x, z);
+      Q += force(ties[i], th, ep[i]) * (ties[i].direction.x() * z - ties[i].direction.y() * x);
+    }
     return (-restoring(th) - m * ug(t) * R * std::cos(al - th) + Q) / I0;
   };
-  auto rk4 = [&](double t, double h, double& th, double& om, double ep) {
+  auto rk4 = [&](double t, double h, double& th, double& om, const std::vector<double>& ep) {
     const double k1t = om, k1o = acc(t, th, ep);
     const double k2t = om + 0.5 * h * k1o, k2o = acc(t + 0.5 * h, th + 0.5 * h * k1t, ep);
     const double k3t = om + 0.5 * h * k2o, k3o = acc(t + 0.5 * h, th + 0.5 * h * k2t, ep);
@@ -86,12 +91,13 @@ Ref reference(const assess::RockingBody& b, const assess::RockingTie& tie, doubl
     om += h / 6 * (k1o + 2 * k2o + 2 * k3o + k4o);
   };
   Ref r;
-  double t = 0.0, th = 0.0, om = 0.0, ep = 0.0;
+  double t = 0.0, th = 0.0, om = 0.0;
+  std::vector<double> ep(n, 0.0);
   bool rest = true;
   const double h = 2e-6;
   while (t < t_end - 1e-12) {
     if (rest) {
-      // Lift-off: theta''(0) > 0 with the pretension.
+      // Lift-off: theta''(0) > 0 with the pretensions.
       if (acc(t, 0.0, ep) <= 0.0) {
         t += h;
         continue;
@@ -123,20 +129,28 @@ Ref reference(const assess::RockingBody& b, const assess::RockingTie& tie, doubl
     th = th1;
     om = om1;
     t += h;
-    // Return mapping of the rod.
-    if (tie.pretension + tie.stiffness * (elong(th) - ep) > tie.capacity) {
-      ep = elong(th) - (tie.capacity - tie.pretension) / tie.stiffness;
-      r.yielded = true;
+    // Return mapping of each rod.
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto& tie = ties[i];
+      if (tie.pretension + tie.stiffness * (elong(tie, th) - ep[i]) > tie.capacity) {
+        ep[i] = elong(tie, th) - (tie.capacity - tie.pretension) / tie.stiffness;
+        r.yielded = true;
+      }
     }
-    r.max_force = std::max(r.max_force, force(th, ep));
+    r.max_force = std::max(r.max_force, force(ties[0], th, ep[0]));
     r.theta_max = std::max(r.theta_max, th);
     if (th >= th_collapse) {
       r.overturned = true;
       break;
     }
   }
-  r.ep = ep;
+  r.ep = ep[0];
+  if (eps) *eps = ep;
   return r;
+}
+
+Ref reference(const assess::RockingBody& b, const assess::RockingTie& tie, double th_collapse, double kw = 0.0) {
+  return reference(b, std::vector<assess::RockingTie>{tie}, th_collapse, kw);
 }
 
 }  // namespace
@@ -274,4 +288,37 @@ TEST_CASE("tied chain: a one-block chain with the tie agrees with the tied rocki
   CHECK_CLOSE(rc.plastic_elongation, rb.plastic_elongation, abs_tol(1e-6));
   MESSAGE("chain: theta_max " << rc.theta_max << " (body " << rb.theta_max << "), e_p " << rc.plastic_elongation
                               << " (body " << rb.plastic_elongation << ")");
+}
+
+TEST_CASE("tied rocking: two tie levels (one inclined, one with pretension) on the rigid block, independent RK4") {
+  const auto body = assess::RockingBody::rectangle(t_wall, h_wall, gamma_w);
+  const assess::RockingModel model(body, assess::Foundation::rigid(), assess::Sidedness::one_sided,
+                                   assess::Restitution::given(e_rest));
+  std::vector<double> ug;
+  for (double t = 0.0; t <= t_end + 1e-9; t += dt) ug.push_back(pulse(t));
+  assess::RockingTie a, c;
+  a.point = {0.0, 3.8};
+  a.stiffness = 1.5e5;
+  a.capacity = 0.8e3;
+  a.pretension = 100.0;
+  c.point = {-t_wall, 2.0};
+  c.direction = Eigen::Vector2d(-1.0, -0.3).normalized();
+  c.stiffness = 4e5;
+  c.capacity = 0.6e3;
+  assess::HybridOdeOptions opt;
+  opt.rel_tol = 1e-11;
+  opt.abs_tol = 1e-13;
+  const auto r = assess::analyse_tied_rocking(model, std::vector<assess::RockingTie>{a, c}, ug, dt, t_end, false, opt);
+  std::vector<double> eps;
+  const Ref ref = reference(body, {a, c}, r.theta_collapse, 0.0, &eps);
+  REQUIRE(r.levels.size() == 2);
+  CHECK(r.overturned == ref.overturned);
+  CHECK(r.impacts == ref.impacts);
+  CHECK(r.levels[0].yielded);
+  CHECK(r.levels[1].yielded);
+  CHECK_CLOSE(r.theta_max, ref.theta_max, rel_tol(tol_theta));
+  CHECK_CLOSE(r.levels[0].plastic_elongation, eps[0], abs_tol(tol_ep));
+  CHECK_CLOSE(r.levels[1].plastic_elongation, eps[1], abs_tol(tol_ep));
+  MESSAGE("two levels: theta_max " << r.theta_max << " (ref " << ref.theta_max << "), e_p " << eps[0] << ", " << eps[1]
+                                   << " m, impacts " << r.impacts);
 }

@@ -194,32 +194,41 @@ TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventi
     R.note = "the tied dynamic analysis covers one-sided rocking (a body or a chain)";
     return R;
   }
-  if (after.result.ties.size() != 1 || t.after.governing != a.kinematic.governing) {
-    R.note = "the tied dynamic analysis covers one tie level on the mechanism analysed dynamically";
+  if (after.result.ties.empty() || t.after.governing != a.kinematic.governing) {
+    R.note = "the tied dynamic analysis needs the ties on the mechanism analysed dynamically";
     return R;
   }
   if (a.base_motions.size() != a.records.size()) {
     R.note = "the base motions of the records are not available";
     return R;
   }
-  const TieRestraint& r = after.result.ties.front().tie;
-  // One body: per unit depth of wall; a chain: the whole level. `per_tie`
-  // turns the analysis' forces and energies into those of one tie.
-  RockingTie tie;
-  double per_tie = r.count > 0.0 ? 1.0 / r.count : 0.0;
-  if (md.single_body()) {
-    const ChainRockingBody& body = *md.body;
-    tie.point = r.point - body.hinge;
-    tie.direction = r.direction;
-    tie.stiffness = r.stiffness / body.length;
-    tie.capacity = r.capacity / body.length;
-    tie.pretension = std::min(r.pretension, r.capacity) / body.length;
-    per_tie *= body.length;
+  // Every level: one body per unit depth of wall, a chain the whole level;
+  // per_tie[i] turns the analysis' forces and energies into those of one tie;
+  // e_u[i] is the rod's ultimate elongation eps_ud L (tie_checks).
+  std::vector<TieRestraint> levels;
+  std::vector<RockingTie> body_ties;
+  std::vector<double> per_tie, e_u;
+  for (const TieWork& w : after.result.ties) {
+    const TieRestraint& r = w.tie;
+    levels.push_back(r);
+    double f = r.count > 0.0 ? 1.0 / r.count : 0.0;
+    if (md.single_body()) {
+      const ChainRockingBody& body = *md.body;
+      RockingTie tie;
+      tie.point = r.point - body.hinge;
+      tie.direction = r.direction;
+      tie.stiffness = r.stiffness / body.length;
+      tie.capacity = r.capacity / body.length;
+      tie.pretension = std::min(r.pretension, r.capacity) / body.length;
+      body_ties.push_back(tie);
+      f *= body.length;
+    }
+    per_tie.push_back(f);
+    double eu = std::numeric_limits<double>::infinity();
+    for (const TieLevelResult& L : t.levels)
+      if (L.tie.name == r.name) eu = L.resistance.ultimate_elongation;
+    e_u.push_back(eu);
   }
-  // The rod's ultimate elongation eps_ud L (the level's tie, tie_checks).
-  double e_u = std::numeric_limits<double>::infinity();
-  for (const TieLevelResult& L : t.levels)
-    if (L.tie.name == r.name) e_u = L.resistance.ultimate_elongation;
   const KinematicResult& kin = after.result;
   R.runs.resize(a.runs.size());
   detail::parallel_for(a.runs.size(), [&](std::size_t i) {
@@ -234,19 +243,24 @@ TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventi
     o.rel_tol = a.dynamic->options.rel_tol;
     o.abs_tol = a.dynamic->options.abs_tol;
     const TiedRockingResult tr =
-        md.single_body() ? analyse_tied_rocking(md.rocking[run.restitution], tie, ug, rec.dt, 1e300, false, o)
-                         : analyse_tied_chain(*md.chain, r, md.e[run.restitution], ug, rec.dt, 1e300, false, o);
+        md.single_body() ? analyse_tied_rocking(md.rocking[run.restitution], body_ties, ug, rec.dt, 1e300, false, o)
+                         : analyse_tied_chain(*md.chain, levels, md.e[run.restitution], ug, rec.dt, 1e300, false, o);
     TieDynamicRun& d = R.runs[i];
     d.run = i;
     d.theta_max = tr.theta_max;
     d.theta_collapse = tr.theta_collapse;
     d.overturned = tr.overturned;
     d.yielded = tr.yielded;
-    d.max_force = tr.max_force * per_tie;
-    d.plastic_elongation = tr.plastic_elongation;
-    d.plastic_energy = tr.plastic_energy * per_tie;
-    d.max_elongation = tr.max_elongation;
-    d.ruptured = tr.max_elongation > e_u;
+    // Over the levels: the largest force per tie, elongation and permanent
+    // set; the energy dissipated by one tie of each level, summed.
+    for (std::size_t l = 0; l < tr.levels.size(); ++l) {
+      const TiedLevelResult& x = tr.levels[l];
+      d.max_force = std::max(d.max_force, x.max_force * per_tie[l]);
+      d.plastic_elongation = std::max(d.plastic_elongation, x.plastic_elongation);
+      d.plastic_energy += x.plastic_energy * per_tie[l];
+      d.max_elongation = std::max(d.max_elongation, x.max_elongation);
+      d.ruptured = d.ruptured || x.max_elongation > e_u[l];
+    }
     d.failed = !(tr.termination == HybridTermination::completed || tr.termination == HybridTermination::finished ||
                  tr.termination == HybridTermination::stopped_by_event);
     const double dc = md.control_displacement(kin, tr.theta_max);

@@ -72,8 +72,8 @@ std::string dynamics_text(const TieDynamicResult& d) {
     E = std::max(E, r.plastic_energy);
     F = std::max(F, r.max_force);
   }
-  s += format("      largest tie force %.2f kN per tie, permanent elongation %.1f mm, energy dissipated by the rod %.3f kJ "
-              "per tie\n",
+  s += format("      largest tie force %.2f kN per tie, permanent elongation %.1f mm, energy dissipated by the rods %.3f kJ "
+              "per tie (one tie of each level, summed)\n",
               F / kN, ep * 1e3, E / 1e3);
   return s;
 }

@@ -47,7 +47,17 @@ struct RockingTie {
   void validate() const;  ///< InputError naming the field
 };
 
-/// Outcome of one tied analysis.
+/// One tie level's outcome.
+struct TiedLevelResult {
+  double max_force = 0.0;           ///< largest force (N/m for a body, N for a chain)
+  double max_elongation = 0.0;      ///< largest elongation e (m)
+  bool yielded = false;
+  double plastic_elongation = 0.0;  ///< e_p at the end (m)
+  double plastic_energy = 0.0;      ///< T_y e_p (J/m for a body, J for a chain)
+};
+
+/// Outcome of one tied analysis. The scalars about the tie are those of the
+/// first level; `levels` holds every level's.
 struct TiedRockingResult {
   HybridTermination termination = HybridTermination::completed;
   double theta_max = 0.0;         ///< largest rotation (rad)
@@ -60,7 +70,8 @@ struct TiedRockingResult {
   bool yielded = false;
   double plastic_elongation = 0.0;  ///< e_p at the end (m): the permanent set of the rod
   double plastic_energy = 0.0;      ///< T_y e_p (J/m): energy dissipated by the rod
-  /// Samples at the record's steps (when asked): t (s), theta (rad), T (N/m).
+  std::vector<TiedLevelResult> levels;
+  /// Samples at the record's steps (when asked): t (s), theta (rad), T of the first level (N/m).
   std::vector<double> t, theta, force;
 };
 
@@ -71,6 +82,11 @@ struct TiedRockingResult {
 TiedRockingResult analyse_tied_rocking(const RockingModel& model, const RockingTie& tie, const std::vector<double>& ug,
                                        double dt, double t_end, bool history = false,
                                        const HybridOdeOptions& options = {});
+/// Several tie levels (each with its own plastic elongation and yield state;
+/// modes: rest, or rocking with the set of yielding levels).
+TiedRockingResult analyse_tied_rocking(const RockingModel& model, const std::vector<RockingTie>& ties,
+                                       const std::vector<double>& ug, double dt, double t_end, bool history = false,
+                                       const HybridOdeOptions& options = {});
 
 /// The same for a one-sided chain (dynamics/chain_dynamics.hpp) held by the
 /// tie level `tie` (chain coordinates, the whole level on the chain: N, N/m):
@@ -80,6 +96,9 @@ TiedRockingResult analyse_tied_rocking(const RockingModel& model, const RockingT
 /// for de/dq); `e` is the coefficient of restitution at q = 0 (in [-1, 0]).
 /// Forces and energies of the result are those of the level (N, J).
 TiedRockingResult analyse_tied_chain(const ChainDynamics& chain, const TieRestraint& tie, double e,
+                                     const std::vector<double>& ug, double dt, double t_end, bool history = false,
+                                     const HybridOdeOptions& options = {});
+TiedRockingResult analyse_tied_chain(const ChainDynamics& chain, const std::vector<TieRestraint>& ties, double e,
                                      const std::vector<double>& ug, double dt, double t_end, bool history = false,
                                      const HybridOdeOptions& options = {});
 
