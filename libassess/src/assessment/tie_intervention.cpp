@@ -107,38 +107,80 @@ TieInterventionResult run_tie_intervention(const CaseFile& c) {
     R.levels = level_results(R.case_after, R.after, c.ties, 0);
   } else {
     // Smallest rod first (then grade, then plate); the first combination with
-    // every check of the mechanism and of the ties satisfied.
+    // every check of the mechanism and of the ties satisfied. For one rod and
+    // grade the design strength grows with the plate (bearing, punching and
+    // bending all grow with its side and thickness): the largest plate is tried
+    // first (if it fails, so do the others), then the smallest passing plate is
+    // found by bisection on the cheap criterion (every check of the mechanism
+    // and the rods' elongation), and confirmed with the full checks of the ties
+    // (required forces), scanning upwards if needed.
     const std::size_t first = c.ties.size();
+    auto trial_of = [&](double d, const std::string& grade, const tie_catalogue::Plate& p, std::vector<Tie>& levels) {
+      CaseFile trial = R.case_before;
+      levels = c.tie_design->levels;
+      for (Tie& t : levels) {
+        t.rod.diameter = d;
+        t.rod.area = units::pi * d * d / 4.0;
+        t.rod.grade = grade;
+        t.rod.fyk = tie_catalogue::find_grade(grade)->fyk;
+        t.rod.gamma_M0 = tie_catalogue::gamma_M0;
+        t.rod.E = tie_catalogue::steel_E;
+        t.anchor.type = AnchorType::Plate;
+        t.anchor.a = t.anchor.b = p.a;
+        t.anchor.t = p.t;
+        t.anchor.grade = grade == "B450C" ? "S275" : grade;
+        t.anchor.fyk = tie_catalogue::find_grade(t.anchor.grade)->fyk;
+        trial.ties.push_back(t);
+      }
+      return trial;
+    };
+    // Every check of the mechanism, and each designed rod's elongation at the
+    // largest displacement demand of the governing candidate within eps_ud L.
+    auto cheap_pass = [&](const CaseFile& trial, const KinematicCaseResult& after) {
+      if (!all_pass(after)) return false;
+      const CandidateResult& cr = after.candidates[after.governing];
+      const Chain& chain = trial.mechanism.candidates[after.governing].chain;
+      double d_demand = -1.0;
+      for (const CheckRow& row : cr.checks)
+        if (row.kind == "displacement") d_demand = std::max(d_demand, row.demand);
+      if (d_demand < 0.0 || !cr.result.curve_complete()) return true;
+      const std::vector<TieRestraint> ties = case_tie_restraints(trial, chain);
+      const std::vector<double> e = tie_elongations_at(chain, cr.result, ties, d_demand);
+      for (std::size_t j = 0; j < ties.size() && j < e.size(); ++j)
+        for (std::size_t i = first; i < trial.ties.size(); ++i)
+          if (trial.ties[i].name == ties[j].name && !(e[j] <= tie_resistance(trial.ties[i]).ultimate_elongation))
+            return false;
+      return true;
+    };
     bool done = false;
+    const std::size_t np = tie_catalogue::plates.size();
     for (double d : tie_catalogue::rod_diameters) {
       for (const std::string& grade : c.tie_design->grades) {
-        for (const tie_catalogue::Plate& p : tie_catalogue::plates) {
-          CaseFile trial = R.case_before;
-          std::vector<Tie> levels = c.tie_design->levels;
-          for (Tie& t : levels) {
-            t.rod.diameter = d;
-            t.rod.area = units::pi * d * d / 4.0;
-            t.rod.grade = grade;
-            t.rod.fyk = tie_catalogue::find_grade(grade)->fyk;
-            t.rod.gamma_M0 = tie_catalogue::gamma_M0;
-            t.rod.E = tie_catalogue::steel_E;
-            t.anchor.type = AnchorType::Plate;
-            t.anchor.a = t.anchor.b = p.a;
-            t.anchor.t = p.t;
-            t.anchor.grade = grade == "B450C" ? "S275" : grade;
-            t.anchor.fyk = tie_catalogue::find_grade(t.anchor.grade)->fyk;
-            trial.ties.push_back(t);
-          }
+        auto passes = [&](std::size_t ip) {
+          std::vector<Tie> levels;
+          const CaseFile trial = trial_of(d, grade, tie_catalogue::plates[ip], levels);
+          ++R.tried;
+          return cheap_pass(trial, run_kinematic_case(trial));
+        };
+        if (!passes(np - 1)) continue;
+        std::size_t lo = 0, hi = np - 1;  // hi passes
+        if (passes(0)) hi = 0;
+        while (hi > lo + 1 && hi > 0) {
+          const std::size_t mid = (lo + hi) / 2;
+          (passes(mid) ? hi : lo) = mid;
+        }
+        for (std::size_t ip = hi; ip < np && !done; ++ip) {
+          std::vector<Tie> levels;
+          const CaseFile trial = trial_of(d, grade, tie_catalogue::plates[ip], levels);
           ++R.tried;
           KinematicCaseResult after = run_kinematic_case(trial);
-          if (!all_pass(after)) continue;
+          if (!cheap_pass(trial, after)) continue;
           std::vector<TieLevelResult> lv = level_results(trial, after, levels, first);
           if (!std::all_of(lv.begin(), lv.end(), [](const TieLevelResult& l) { return l.satisfied; })) continue;
           R.case_after = trial;
           R.after = std::move(after);
           R.levels = std::move(lv);
           done = true;
-          break;
         }
         if (done) break;
       }

@@ -87,6 +87,9 @@ std::string tie_text(const TieInterventionResult& t) {
                           "analysed)\n",
                           t.tried)
                  : "  design: NOT FOUND: " + t.message + "; the largest combination is shown\n";
+  if (t.designed && t.passes_before)
+    s += "  note: the mechanism already satisfies every check without the ties designed here; the smallest tie of the "
+         "lists is shown\n";
   for (const TieLevelResult& L : t.levels) {
     const Tie& tie = L.tie;
     s += format("  level \"%s\": %s%s, %s, anchor at (%.2f, %.2f) m, spacing %.2f m, free length %.2f m, "
