@@ -63,7 +63,10 @@ struct ChainTieTable {
   double h = 0.0;
   std::vector<double> e, de;  // at q_k = k h
   std::size_t locate(double q, double& f) const {
-    const double x = std::min(std::max(q / h, 0.0), double(e.size() - 1) - 1e-9);
+    // A trial stage may stray (even to NaN): held on the table, no conversion of NaN to an index.
+    double x = q / h;
+    if (!(x > 0.0)) x = 0.0;
+    x = std::min(x, double(e.size() - 1) - 1e-9);
     const std::size_t i = static_cast<std::size_t>(x);
     f = x - double(i);
     return i;
