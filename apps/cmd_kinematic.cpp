@@ -33,6 +33,8 @@ void run(const KinematicArgs& a) {
   // Issue 23: ties before/after and their checks (they need the site's hazard).
   std::optional<TieInterventionResult> ties;
   if (has_ties(c) && c.site) ties = run_tie_intervention(c);
+  if (c.tie_design && !c.site)
+    print_warnings({c.file + ": /design: the design of ties needs the site's hazard (\"site\"): not done"});
   if (a.json) {
     nlohmann::json j = kinematic_json(c, out);
     if (ties) j["ties"] = tie_json(*ties);

@@ -50,6 +50,40 @@ nlohmann::json side_json(const KinematicCaseResult& r, double zeta, bool passes)
   j["d0_star"] = cr.result.curve_complete() ? num(cr.result.d0_star) : nlohmann::json(nullptr);
   j["zeta_E"] = num(zeta);
   j["every_check_satisfied"] = passes;
+  j["e_star"] = cr.result.e_star;
+  j["dk0"] = cr.result.curve_complete() ? num(cr.result.dk0) : nlohmann::json(nullptr);
+  j["d_star_per_dk"] = cr.result.d_star_per_dk;
+  j["d_SLV"] = cr.result.d_SLV;
+  j["d_SLC"] = cr.result.d_SLC;
+  j["T_SLV"] = cr.result.T_SLV;
+  j["T_SLC"] = cr.result.T_SLC;
+  j["du_star"] = cr.result.du_star;
+  j["Ts"] = cr.result.Ts;
+  // The capacity curve with each tie level's force (kN) and elongation (m) at each point.
+  nlohmann::json curve = nlohmann::json::array();
+  for (const CapacityPoint& p : cr.result.curve) {
+    nlohmann::json pt{{"dk", p.dk}, {"d_star", p.d_star}, {"alpha", p.alpha}, {"a_star", p.a_star}};
+    if (!p.tie_force.empty()) {
+      nlohmann::json f = nlohmann::json::array(), e = nlohmann::json::array();
+      for (double v : p.tie_force) f.push_back(v / kN);
+      for (double v : p.tie_elongation) e.push_back(v);
+      pt["tie_force_kN"] = f;
+      pt["tie_elongation_m"] = e;
+    }
+    curve.push_back(pt);
+  }
+  j["capacity_curve"] = curve;
+  nlohmann::json tl = nlohmann::json::array();
+  for (const TieWork& w : cr.result.ties)
+    tl.push_back({{"name", w.tie.name},
+                  {"ties_on_mechanism", w.tie.count},
+                  {"strength_kN", w.tie.capacity / kN},
+                  {"stiffness_kN_m", w.tie.stiffness / kN},
+                  {"pretension_kN", w.tie.pretension / kN},
+                  {"yield_elongation_m", w.tie.yield_elongation()},
+                  {"virtual_elongation_m_per_rad", w.d_along},
+                  {"work_in_alpha0_kNm", w.work / kN}});
+  j["tie_levels_on_mechanism"] = tl;
   j["checks"] = nlohmann::json::array();
   for (const CheckRow& row : cr.checks) j["checks"].push_back(to_json(row));
   return j;

@@ -17,8 +17,10 @@ namespace assess {
 std::string tie_text(const TieInterventionResult& t);
 /// JSON: "designed", "found", "levels" (rod, anchor, strengths in kN,
 /// required forces in kN and kN/m, checks), "before"/"after" (alpha0, a0*,
-/// d0*, zeta_E, every check's D/C), SI except forces in kN and lengths of
-/// the rod and anchor in mm (named in the keys).
+/// d0*, d_SLV ..., zeta_E, every check's D/C, the capacity curve with each
+/// level's force and elongation at each point, the levels on the mechanism),
+/// "dynamic" (summaries and runs); SI except forces in kN and lengths of the
+/// rod and anchor in mm (named in the keys).
 nlohmann::json tie_json(const TieInterventionResult& t);
 /// The HTML section of the relazione (tie_html.cpp), below its heading
 /// tie_section_title(): drawing of the ties on the mechanism, each level's
