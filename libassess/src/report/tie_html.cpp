@@ -94,8 +94,10 @@ const std::string& tr(Lang lang, const std::string& key) {
         "The façade's dynamic analyses (above, without ties) repeated with the tie as a one-sided (tension-only) elastic-perfectly-plastic "
         "restraint at its point."}},
       {"dyn_not",
-       {"Analisi dinamica con la catena non eseguita (un solo corpo, monolatero, un solo livello di catene).",
-        "Dynamic analysis with the tie not done (one body, one-sided, one tie level only)."}},
+       {"Analisi dinamica con la catena non eseguita: richiede la sezione dinamica e un moto monolatero "
+        "(corpo o catena cinematica).",
+        "Dynamic analysis with the tie not done: it needs the dynamic section and one-sided rocking (a body or a "
+        "chain)."}},
       {"dyn_e", {"e (restituzione)", "e (restitution)"}},
       {"dyn_N", {"N accelerogrammi", "N records"}},
       {"dyn_over", {"ribaltamenti prima / dopo", "overturned before / after"}},

@@ -95,9 +95,9 @@ bool has_ties(const CaseFile& c);
 /// the checks; throws InputError otherwise.
 TieInterventionResult run_tie_intervention(const CaseFile& c);
 
-/// The façade's dynamic analyses repeated with the ties of `t` (after): one
-/// rocking body, one-sided, one tie level; otherwise applies = false and `note`
-/// says why. Before = the façade's own runs (which never include ties).
+/// The façade's dynamic analyses repeated with the ties of `t` (after):
+/// one-sided rocking of a body or a chain, every tie level of the mechanism
+/// analysed dynamically; otherwise applies = false and `note` says why. Before = the façade's own runs (which never include ties).
 TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventionResult& t);
 
 /// zeta_E of a kinematic result for the adopted `method` (see above).
