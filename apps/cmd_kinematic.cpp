@@ -5,6 +5,8 @@
 
 #include <assess/assessment/case_file.hpp>
 #include <assess/report/kinematic_report.hpp>
+#include <assess/assessment/tie_intervention.hpp>
+#include <assess/report/tie_report.hpp>
 #include <assess/support/error.hpp>
 #include <assess/support/units.hpp>
 
@@ -13,6 +15,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace assess::cli {
@@ -27,11 +30,18 @@ void run(const KinematicArgs& a) {
   const CaseFile c = read_case_file(a.file);
   const KinematicCaseResult out = run_kinematic_case(c);  // alpha0 <= 0: InputError "statically unstable"
   print_warnings(out.warnings);
+  // Issue 23: ties before/after and their checks (they need the site's hazard).
+  std::optional<TieInterventionResult> ties;
+  if (has_ties(c) && c.site) ties = run_tie_intervention(c);
+  if (c.tie_design && !c.site)
+    print_warnings({c.file + ": /design: the design of ties needs the site's hazard (\"site\"): not done"});
   if (a.json) {
     nlohmann::json j = kinematic_json(c, out);
+    if (ties) j["ties"] = tie_json(*ties);
     std::cout << stamp_version(j).dump(2) << "\n";
   } else {
     std::cout << kinematic_text(c, out, a.wide ? TextWidth::wide : TextWidth::columns120);
+    if (ties) std::cout << tie_text(*ties);
     if (!out.warnings.empty()) {
       std::cout << "\nwarnings:\n";
       for (const std::string& w : out.warnings)

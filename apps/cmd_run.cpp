@@ -7,6 +7,8 @@
 #include <assess/support/error.hpp>
 #include <assess/assessment/facade_assessment.hpp>
 #include <assess/report/facade_report.hpp>
+#include <assess/assessment/tie_intervention.hpp>
+#include <assess/report/tie_report.hpp>
 #include <assess/risk/fragility_report.hpp>
 
 #include <filesystem>
@@ -54,6 +56,12 @@ void run(const RunArgs& a) {
   opt.histories = !a.html.empty() || !a.pdf.empty();
   const FacadeAssessment res = assess_facade(c, opt);
   print_warnings(res.warnings);
+  // Issue 23: the tie rods ("ties" or "design"): before/after and their checks.
+  std::optional<TieInterventionResult> ties;
+  if (has_ties(c)) {
+    ties = run_tie_intervention(c);
+    ties->dynamics = run_tie_dynamics(res, *ties);
+  }
   // A fragility result of this case: --fragility DIR, or the default output
   // directory of `assess fragility` (CASE.fragility) when it holds this case's.
   std::optional<nlohmann::json> frag;
@@ -77,6 +85,7 @@ void run(const RunArgs& a) {
     ReportOptions ro;
     ro.lang = lang;
     ro.fragility = prob;
+    if (ties) ro.ties = &*ties;
     {
       std::ifstream in(a.file, std::ios::binary);
       ro.case_text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
@@ -96,10 +105,12 @@ void run(const RunArgs& a) {
       f["governing"] = (*frag)["governing"];
       j["fragility"] = f;
     }
+    if (ties) j["ties"] = tie_json(*ties);
     std::cout << stamp_version(j).dump(2) << "\n";
   } else {
     std::cout << facade_text(res, a.wide ? TextWidth::wide : TextWidth::columns120)
               << (frag ? (a.wide ? fragility_line(*frag) + "\n" : wrap(fragility_line(*frag), 120)) : "")
+              << (ties ? tie_text(*ties) : "")
               << (a.html.empty() ? "" : "\nHTML report written to " + a.html + "\n")
               << (a.pdf.empty() ? "" : "PDF report written to " + a.pdf + "\n");
   }

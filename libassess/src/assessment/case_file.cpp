@@ -5,6 +5,8 @@
 #include "assess/hazard/comuni.hpp"
 #include "assess/dynamics/analysis_limits.hpp"
 #include "assess/kinematic/code_rules.hpp"
+#include "assess/kinematic/tie_catalogue.hpp"
+#include "assess/kinematic/tie_checks.hpp"
 #include "assessment/plausibility.hpp"
 #include "assess/support/error.hpp"
 #include "assess/support/json_input.hpp"
@@ -372,12 +374,129 @@ std::vector<std::string> input_warnings(const nlohmann::json& mech, const std::s
   return w;
 }
 
+
+// ---- Issue 23: tie rods ("ties", "design") ---------------------------------
+// File units: mm (rod, anchor), mm^2, MPa, kN, m (point, lengths, spacing);
+// SI inside. docs/user/case-file.md §Ties.
+
+double grade_fyk(const JsonNode& n, const std::string& key, std::string& grade) {
+  grade = n.find(key) ? n.choice(key, {"S235", "S275", "S355", "B450C"}) : "S275";
+  return tie_catalogue::find_grade(grade)->fyk;
+}
+
+// The fields a tie level shares with a level to design (no rod, no anchor).
+void parse_tie_common(const JsonNode& t, Tie& tie, double FC, std::size_t index) {
+  tie.name = t.find("name") ? t.string("name") : "tie " + std::to_string(index + 1);
+  tie.point = t.point("point");
+  if (t.find("block")) tie.block = t.integer("block", 0, 1000000);
+  if (t.find("direction")) {
+    tie.direction = t.at("direction").as_point("-");
+    if (!(tie.direction.norm() > 0.0)) t.at("direction").fail("expected a non-zero direction [dx, dz] (-), e.g. [-1, 0] inward");
+    tie.direction.normalize();
+  }
+  tie.free_length = t.positive("free_length_m", "m");
+  const JsonNode m = t.at("masonry");
+  m.allow_only({"fm_MPa", "tau_MPa", "thickness_m", "FC", "gamma_M"});
+  tie.masonry.fm = m.positive("fm_MPa", "MPa") * 1e6;
+  tie.masonry.tau = m.positive("tau_MPa", "MPa") * 1e6;
+  tie.masonry.thickness = m.positive("thickness_m", "m");
+  tie.masonry.FC = m.number_or("FC", FC, "-", 1.0, 10.0);
+  tie.masonry.gamma_M = m.number_or("gamma_M", tie_catalogue::masonry_gamma_M, "-", 1.0, 10.0);
+  tie.spacing = t.positive("spacing_m", "m");
+  tie.pretension = t.number_or("pretension_kN", 0.0, "kN", 0.0) * kN;
+}
+
+Tie parse_tie(const JsonNode& t, double FC, std::size_t index) {
+  t.allow_only({"name", "point", "block", "direction", "rod", "free_length_m", "anchor", "masonry", "spacing_m",
+                "pretension_kN"});
+  Tie tie;
+  parse_tie_common(t, tie, FC, index);
+  const JsonNode r = t.at("rod");
+  r.allow_only({"diameter_mm", "area_mm2", "grade", "fyk_MPa", "gamma_M0"});
+  if (r.has("diameter_mm") == r.has("area_mm2")) r.fail("give exactly one of \"diameter_mm\" (mm) or \"area_mm2\" (mm^2)");
+  if (r.has("diameter_mm")) {
+    tie.rod.diameter = r.positive("diameter_mm", "mm") * 1e-3;
+    tie.rod.area = units::pi * tie.rod.diameter * tie.rod.diameter / 4.0;
+  } else {
+    tie.rod.area = r.positive("area_mm2", "mm^2") * 1e-6;
+  }
+  tie.rod.fyk = grade_fyk(r, "grade", tie.rod.grade);
+  if (r.find("fyk_MPa")) tie.rod.fyk = r.positive("fyk_MPa", "MPa") * 1e6;
+  tie.rod.gamma_M0 = r.number_or("gamma_M0", tie_catalogue::gamma_M0, "-", 1.0, 10.0);
+  tie.rod.E = tie_catalogue::steel_E;
+  const JsonNode a = t.at("anchor");
+  const std::string type = a.choice("type", {"plate", "bar"});
+  if (type == "plate") {
+    a.allow_only({"type", "a_mm", "b_mm", "t_mm", "grade"});
+    tie.anchor.type = AnchorType::Plate;
+    tie.anchor.a = a.positive("a_mm", "mm") * 1e-3;
+    tie.anchor.b = a.find("b_mm") ? a.positive("b_mm", "mm") * 1e-3 : tie.anchor.a;
+    tie.anchor.t = a.positive("t_mm", "mm") * 1e-3;
+  } else {
+    a.allow_only({"type", "length_mm", "diameter_mm", "grade"});
+    tie.anchor.type = AnchorType::Bar;
+    tie.anchor.a = a.positive("length_mm", "mm") * 1e-3;
+    tie.anchor.b = a.positive("diameter_mm", "mm") * 1e-3;
+  }
+  tie.anchor.fyk = grade_fyk(a, "grade", tie.anchor.grade);
+  try {
+    tie.validate();
+  } catch (const InputError& e) {
+    t.fail(e.what());
+  }
+  return tie;
+}
+
+TieDesignSpec parse_tie_design(const JsonNode& d, double FC) {
+  d.allow_only({"ties"});
+  const JsonNode t = d.at("ties");
+  t.allow_only({"levels", "grades"});
+  TieDesignSpec spec;
+  std::size_t i = 0;
+  for (const JsonNode& l : t.array("levels", 1)) {
+    l.allow_only({"name", "point", "block", "direction", "free_length_m", "masonry", "spacing_m", "pretension_kN"});
+    Tie tie;
+    parse_tie_common(l, tie, FC, i++);
+    spec.levels.push_back(tie);
+  }
+  if (t.find("grades")) {
+    spec.grades.clear();
+    for (const JsonNode& g : t.array("grades", 1)) {
+      const std::string s = g.as_string();
+      if (!tie_catalogue::find_grade(s)) g.fail("\"" + s + "\": expected \"S235\", \"S275\", \"S355\" or \"B450C\"");
+      spec.grades.push_back(s);
+    }
+  }
+  return spec;
+}
+
+// Every level must hold a moving block of at least one candidate.
+void check_ties_hold(const JsonNode& arr, const std::vector<Tie>& ties, const MechanismSet& set) {
+  for (std::size_t i = 0; i < ties.size(); ++i) {
+    bool holds = false;
+    for (const MechanismCandidate& m : set.candidates) {
+      try {
+        if (tie_block(m.chain, ties[i].block, ties[i].point) >= 0) holds = true;
+      } catch (const InputError& e) {
+        arr.at(i).fail(e.what());
+      }
+    }
+    if (!holds)
+      arr.at(i).at("point").fail("the anchor point (" + std::to_string(ties[i].point.x()) + ", " +
+                                 std::to_string(ties[i].point.y()) +
+                                 ") m is on no moving block of the mechanism (the wall's outer face is x = 0, "
+                                 "the wall at x < 0, z up from the foundation)");
+  }
+}
+// ---- end issue 23 -------------------------------------------------------------
+
 }  // namespace
 
 CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
   const JsonNode root(doc, file);
   root.allow_only({"schema_version", "project", "site", "mechanism", "knowledge_level", "FC", "codes",
-                   "building", "analysis", "dynamic", "method", "check_SLD"});
+                   "building", "analysis", "dynamic", "method", "check_SLD",
+                   "ties", "design"});
   CaseFile c;
   c.file = file;
   if (root.find("schema_version")) root.integer("schema_version", 1, 1);
@@ -451,6 +570,16 @@ CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
     c.checks.damping_SLV_pct = a->number_or("damping_SLV_pct", code_rules::mechanism_damping_SLV_pct, "%", 0.0);
     c.checks.damping_SLC_pct = a->number_or("damping_SLC_pct", code_rules::mechanism_damping_SLC_pct, "%", 0.0);
   }
+  // Issue 23: tie levels and the design of ties (after FC, their masonry's default).
+  if (root.find("ties")) {
+    std::size_t i = 0;
+    for (const JsonNode& t : root.array("ties")) c.ties.push_back(parse_tie(t, c.options.FC, i++));
+    check_ties_hold(root.at("ties"), c.ties, c.mechanism);
+  }
+  if (const auto d = root.find("design")) {
+    c.tie_design = parse_tie_design(*d, c.options.FC);
+    check_ties_hold(d->at("ties").at("levels"), c.tie_design->levels, c.mechanism);
+  }
   c.warnings = input_warnings(doc.at("mechanism"), file);
   // Hook for the façade issue (dynamic rocking): kept raw, parsed there.
   if (root.has("dynamic")) c.dynamic = doc.at("dynamic");
@@ -503,11 +632,21 @@ std::string fmt(const char* f, double v) {
 
 }  // namespace
 
+std::vector<TieRestraint> case_tie_restraints(const CaseFile& c, const Chain& chain) {
+  std::vector<TieRestraint> out;
+  for (const Tie& t : c.ties) {
+    const int b = tie_block(chain, t.block, t.point);
+    if (b >= 0) out.push_back(tie_restraint(t, b, chain.blocks()[static_cast<std::size_t>(b)].length));
+  }
+  return out;
+}
+
 KinematicCaseResult run_kinematic_case(const CaseFile& c) {
   KinematicCaseResult out;
   out.warnings = c.warnings;
   for (const MechanismCandidate& m : c.mechanism.candidates)
-    out.candidates.push_back({m.label, m.parameter, c.Z.value_or(m.Z), analyse_kinematic(m.chain, c.options), {}, {}, 0.0});
+    out.candidates.push_back(
+        {m.label, m.parameter, c.Z.value_or(m.Z), analyse_kinematic(m.chain, c.options, case_tie_restraints(c, m.chain)), {}, {}, 0.0});
   for (const CandidateResult& cr : out.candidates)
     if (!cr.result.activates) statically_unstable(c, cr);
   // alpha0 > 1 of the governing candidate(s) (searched candidates far from

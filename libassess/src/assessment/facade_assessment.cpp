@@ -330,6 +330,7 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   // end rule is the one of every dynamic command (dynamics/analysis_end.hpp).
   a.free_tail_s = d.options.tail_s;
   const std::vector<Record>& run_recs = inputs;
+  a.base_motions = inputs;  // issue 23: the ties' dynamic analysis
   for (std::size_t ir = 0; ir < recs.size(); ++ir) {
     a.records[ir].duration_s = recs[ir].duration();
     a.records[ir].integrated_s = run_recs[ir].duration();

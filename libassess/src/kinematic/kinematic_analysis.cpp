@@ -34,6 +34,7 @@ bool is_seismic_weight(const Load& l) {
 // Equilibrium path of the chain, parametrised by the control displacement d_k.
 struct Path {
   const Chain& chain;
+  const std::vector<TieRestraint>& ties;
   int block;
   Eigen::Vector2d point;
   std::vector<double> dk;            // marched samples
@@ -48,7 +49,7 @@ struct Path {
   double alpha(double d) const {
     Eigen::VectorXd qd;
     if (!configuration(d, qd)) return std::nan("");
-    return load_multiplier(chain, qd);
+    return load_multiplier(chain, qd, ties);
   }
 };
 
@@ -114,8 +115,43 @@ double load_multiplier(const Chain& chain, const Eigen::VectorXd& q) {
   return -work / sum_W_dx;
 }
 
+// Tie levels (issue 23): the work of each level in configuration q with
+// virtual displacements v (docs/theory/ties.md §2).
+TieWork tie_work(const Chain& chain, const TieRestraint& t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                 bool rigid_plastic) {
+  TieWork w;
+  w.tie = t;
+  const Eigen::Vector2d dp = chain.position_jacobian(t.block, t.point, q) * v;
+  w.d_along = -t.direction.dot(dp);
+  w.force = rigid_plastic ? (w.d_along > 0.0 ? t.capacity : std::min(t.pretension, t.capacity))
+                          : tie_force(t, tie_elongation(chain, t, q));
+  w.work = w.force * t.direction.dot(dp);
+  return w;
+}
+
+double load_multiplier(const Chain& chain, const Eigen::VectorXd& q, const std::vector<TieRestraint>& ties,
+                       bool rigid_plastic) {
+  if (ties.empty()) return load_multiplier(chain, q);
+  double sum_W_dx = 0.0, work = 0.0;
+  for (const LoadWork& w : load_works(chain, q)) {
+    sum_W_dx += w.W_dx;
+    work += w.work;
+  }
+  const Eigen::VectorXd v = chain.virtual_displacement(q);
+  for (const TieRestraint& t : ties) work += tie_work(chain, t, q, v, rigid_plastic).work;
+  return -work / sum_W_dx;
+}
+
 KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& opt) {
+  return analyse_kinematic(chain, opt, {});
+}
+
+KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& opt,
+                                  const std::vector<TieRestraint>& ties) {
   opt.validate();
+  for (const TieRestraint& t : ties)
+    if (t.block < 0 || t.block >= static_cast<int>(chain.blocks().size()))
+      throw InputError("tie \"" + t.name + "\": it holds no block of the mechanism");
   KinematicResult R;
   R.FC = opt.FC;
   R.curve_model = opt.curve_model;
@@ -133,6 +169,10 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
       R.sum_W += w.load.weight;
       Wp += w.load.weight * w.load.point;
     }
+  }
+  for (const TieRestraint& t : ties) {
+    R.ties.push_back(tie_work(chain, t, q0, v0, true));
+    R.work_other += R.ties.back().work;
   }
   R.alpha0 = -R.work_other / R.sum_W_dx;                        // [C8A.4.1]
   R.M_star = R.sum_W_dx * R.sum_W_dx / (units::g * R.sum_W_dx2); // [C8A.4.2]
@@ -186,7 +226,7 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
   }
 
   // Non-linear analysis: march d_k until alpha changes sign, then Brent.
-  Path path{chain, R.control_block, R.control_point, {0.0}, {q0}};
+  Path path{chain, ties, R.control_block, R.control_point, {0.0}, {q0}};
   const double h = chain.size() / 1000.0;
   const int max_steps = 3000;
   R.termination = CurveTermination::NoZeroCrossing;
@@ -203,7 +243,7 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
       R.message = "no finite-displacement configuration found at d_k = " + std::to_string(dk) + " m";
       break;
     }
-    const double a = load_multiplier(chain, qn);
+    const double a = load_multiplier(chain, qn, ties);
     path.dk.push_back(dk);
     path.q.push_back(qn);
     if (!(a > 0.0)) {
@@ -236,8 +276,17 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
     CapacityPoint p;
     p.d_star = R.d0_star * j / (opt.curve_points - 1);
     p.dk = p.d_star / R.d_star_per_dk;
-    p.a_star = j == 0 ? R.a0_star : j == opt.curve_points - 1 ? 0.0 : a_star_at(p.d_star);
+    p.a_star = j == 0 && ties.empty() ? R.a0_star : j == opt.curve_points - 1 ? 0.0 : a_star_at(p.d_star);
     p.alpha = p.a_star / a_scale;
+    if (!ties.empty()) {
+      Eigen::VectorXd qj;
+      if (path.configuration(p.dk, qj))
+        for (const TieRestraint& t : ties) {
+          const double e = tie_elongation(chain, t, qj);
+          p.tie_elongation.push_back(e);
+          p.tie_force.push_back(tie_force(t, e));
+        }
+    }
     R.curve.push_back(p);
   }
 

@@ -2,6 +2,7 @@
 // steps (one function per section). Formatting only: every number comes from
 // FacadeAssessment; every sentence from the message catalogue (messages.cpp).
 #include "assess/report/facade_report.hpp"
+#include "assess/report/tie_report.hpp"
 
 #include "report/text_format.hpp"
 
@@ -1024,6 +1025,12 @@ std::string facade_html(const FacadeAssessment& a, const ReportOptions& options)
   add_checks(c);
   add_dynamic(c);
   add_comparison(c);
+  // ---- issue 23: tie rods, a section of its own (tie_html.cpp) ----
+  if (options.ties) {
+    h.add_heading(tie_section_title(L));
+    h.add_raw_html(tie_html_section(*options.ties, L));
+  }
+  // ---- end issue 23 ----
   add_probabilistic(c);
   add_warnings(c);
   add_conclusions(c);

@@ -10,6 +10,8 @@
 #include "assess/kinematic/floor_spectrum.hpp"
 #include "assess/kinematic/kinematic_analysis.hpp"
 #include "assess/kinematic/mechanism_catalogue.hpp"
+#include "assess/kinematic/tie.hpp"
+#include "assess/kinematic/tie_design.hpp"
 #include "assess/hazard/site.hpp"
 
 #include <nlohmann/json.hpp>
@@ -35,6 +37,12 @@ struct CaseFile {
   /// "linear", "nonlinear" (default) or "dynamic"; its verdict is the
   /// conclusion (assessment/verdict.hpp, docs/theory/facade.md §6).
   std::string method = "nonlinear";
+  /// Issue 23: tie levels of the mechanism ("ties"), SI inside (the file
+  /// uses mm, MPa, kN, m: docs/user/case-file.md §Ties); every candidate is
+  /// analysed with the levels whose anchor lies on one of its moving blocks.
+  std::vector<Tie> ties;
+  /// Issue 23: "design": {"ties": ...}: the ties to design (assessment/tie_intervention.hpp).
+  std::optional<TieDesignSpec> tie_design;
   /// Reserved for the façade issue: the raw "dynamic" section, not parsed here.
   nlohmann::json dynamic;
   /// Plausibility warnings of the input (field, value, unit, why); the run goes on.
@@ -78,6 +86,10 @@ struct KinematicCaseResult {
   /// The case's warnings, then those of the analysis (alpha0 > 1, Z > H).
   std::vector<std::string> warnings;
 };
+
+/// Issue 23: the restraints of the case's tie levels on one candidate's chain
+/// (levels whose anchor is on none of its moving blocks are left out).
+std::vector<TieRestraint> case_tie_restraints(const CaseFile& c, const Chain& chain);
 
 /// Analyses and checks every candidate and picks the governing one per code.
 /// @throws InputError when a candidate is statically unstable (alpha0 <= 0:

@@ -132,6 +132,9 @@ struct FacadeAssessment {
   double free_tail_s = 0.0;   ///< cap on the free motion after each record (s; dynamics/analysis_end.hpp)
   std::vector<std::string> record_failures;  ///< "<path>: <message>" of records skipped (--keep-going)
   std::vector<DynamicRun> runs;
+  /// Issue 23: the motion at the mechanism's base of each record (unscaled),
+  /// kept so that the tie rods' dynamic analysis uses the same inputs.
+  std::vector<Record> base_motions;
   std::vector<RestitutionSummary> summaries;
   /// Every check: the kinematic rows of both editions, then "dynamic" rows.
   std::vector<CheckRow> checks;

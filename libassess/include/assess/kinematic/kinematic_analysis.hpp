@@ -5,6 +5,7 @@
 #pragma once
 
 #include "assess/kinematic/chain.hpp"
+#include "assess/kinematic/tie.hpp"
 
 #include <Eigen/Dense>
 
@@ -67,6 +68,20 @@ struct CapacityPoint {
   double alpha = 0.0;    ///< load multiplier (-)
   double d_star = 0.0;   ///< equivalent SDOF displacement d* (m) [C8A.4.5]/[C8.7.1.4]
   double a_star = 0.0;   ///< spectral acceleration a* (m/s^2) [C8A.4.4]/[C8.7.1.3]
+  /// Tie levels (issue 23), in the order given: force (N) and elongation (m)
+  /// of each level at this point (elastic-perfectly-plastic law); empty without ties.
+  std::vector<double> tie_force;
+  std::vector<double> tie_elongation;
+};
+
+/// The virtual work of one tie level at alpha0 (issue 23): the level at its
+/// design strength (rigid-plastic) when the mechanism elongates it
+/// (docs/theory/ties.md §2).
+struct TieWork {
+  TieRestraint tie;
+  double d_along = 0.0;  ///< virtual elongation rate -e . delta p (m/rad)
+  double force = 0.0;    ///< force counted in alpha0 (N)
+  double work = 0.0;     ///< its virtual work (N m/rad), negative when it restrains
 };
 
 enum class CurveTermination {
@@ -84,7 +99,8 @@ struct KinematicResult {
   double sum_W = 0.0;       ///< sum of the seismic weights P + Q (N)
   double sum_W_dx = 0.0;    ///< sum W dx (N m/rad)
   double sum_W_dx2 = 0.0;   ///< sum W dx^2 (N m^2/rad^2)
-  double work_other = 0.0;  ///< virtual work of the non-seismic forces (N m/rad)
+  double work_other = 0.0;  ///< virtual work of the non-seismic forces (N m/rad), ties included
+  std::vector<TieWork> ties;  ///< tie levels (issue 23); their work is in work_other
   double alpha0 = 0.0;      ///< activation multiplier (-) [C8A.4.1]/[C8.7.1.1]
   bool activates = false;   ///< alpha0 > 0
   double M_star = 0.0;      ///< participating mass M* (kg) [C8A.4.2]
@@ -120,6 +136,12 @@ struct KinematicResult {
 /// alpha = -(work of the non-seismic forces) / (sum W dx).
 double load_multiplier(const Chain& chain, const Eigen::VectorXd& q);
 
+/// Same with tie levels (issue 23): `rigid_plastic` counts each level at its
+/// design strength when the virtual motion elongates it (alpha0), otherwise
+/// the elastic-perfectly-plastic force at the elongation of q (capacity curve).
+double load_multiplier(const Chain& chain, const Eigen::VectorXd& q, const std::vector<TieRestraint>& ties,
+                       bool rigid_plastic = false);
+
 /// Virtual-work table of the loads in configuration q.
 std::vector<LoadWork> load_works(const Chain& chain, const Eigen::VectorXd& q);
 
@@ -127,5 +149,12 @@ std::vector<LoadWork> load_works(const Chain& chain, const Eigen::VectorXd& q);
 /// does not activate (termination NotActivated); throws InputError for bad
 /// options or a control point not on its block.
 KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& options = {});
+/// Same with tie levels (issue 23; docs/theory/ties.md §2): alpha0 (and a0*)
+/// with each level at its design strength (rigid-plastic, the practice of
+/// C8A.4), the capacity curve with the elastic-perfectly-plastic law in the
+/// rod's elongation (its first point is then alpha(0) of that law, not alpha0).
+/// Throws InputError for a level on a missing block.
+KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& options,
+                                  const std::vector<TieRestraint>& ties);
 
 }  // namespace assess

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "assess/assessment/facade_assessment.hpp"
+#include "assess/assessment/tie_intervention.hpp"
 #include "assess/report/kinematic_report.hpp"
 #include "assess/report/messages.hpp"
 #include "assess/report/probabilistic_result.hpp"
@@ -35,6 +36,9 @@ struct ReportOptions {
   /// An additional probabilistic result (`assess run --fragility DIR`): shown
   /// in its own box after the verdicts by approach, labelled as not a code check.
   std::optional<ProbabilisticResult> fragility;
+  /// Issue 23: the tie rods of the case (assess run with "ties" or "design"):
+  /// their section (tie_html.cpp) after the comparison; null: none.
+  const TieInterventionResult* ties = nullptr;
 };
 
 /// The summary row (index in v.rows) that the verdict box of `code` names as

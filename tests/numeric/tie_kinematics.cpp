@@ -1,0 +1,492 @@
+// Tie rods in the kinematic analysis (issue 23), against closed forms derived
+// here for a rigid block b x h (x in [-b, 0], z in [0, h], hinge at the outer
+// toe (0, 0)) held by a horizontal tie at (x_t, z_t) pulling inward:
+//
+//   a point p0 = (x0, z0) after an outward rotation theta:
+//     x(theta) = x0 cos(theta) + z0 sin(theta),  z(theta) = -x0 sin(theta) + z0 cos(theta)
+//   virtual displacements per d(theta): dx = z(theta), dz = -x(theta)
+//   virtual work: alpha W z_c + W x_c - T z_t = 0
+//     => alpha(theta) = (T z_t(theta) - W x_c(theta)) / (W z_c(theta))
+//   at theta = 0: alpha0 = (W b/2 + T z_t) / (W h/2)
+//   elongation of the rod: e(theta) = x_t(theta) - x_t0
+//   elastic-perfectly-plastic, tension-only: T = min(max(P0 + k e, 0), T_Rd)
+//   e* = 3/4 and d*/d_k = 4/3 (distributed mass, control point = centroid).
+#include <doctest/doctest.h>
+
+#include "check_close.hpp"
+
+#include <assess/hazard/spectrum.hpp>
+#include <assess/kinematic/floor_spectrum.hpp>
+#include <assess/kinematic/chain.hpp>
+#include <assess/kinematic/code_checks.hpp>
+#include <assess/kinematic/kinematic_analysis.hpp>
+#include <assess/kinematic/mechanism_catalogue.hpp>
+#include <assess/kinematic/tie.hpp>
+#include <assess/kinematic/tie_catalogue.hpp>
+#include <assess/kinematic/tie_checks.hpp>
+#include <assess/kinematic/tie_design.hpp>
+#include <assess/support/units.hpp>
+
+#include <cmath>
+#include <vector>
+
+using assess::test::abs_tol;
+using assess::test::rel_tol;
+
+namespace {
+
+constexpr double tol_alpha = 1e-12;        // alpha0 (-): SVD and sums round-off
+constexpr double tol_alpha_curve = 1e-9;   // alpha(theta) (-): Newton to 1e-13 m, d_k -> theta inversion
+constexpr double tol_force = 1e-6;         // N: forces of the law, round-off of e ~ 1e-13 m times k <= 1e7 N/m
+constexpr double tol_elong = 1e-10;        // m: elongations (Newton 1e-13 * size)
+constexpr double tol_strength = 1e-12;     // relative: design strengths, arithmetic only
+constexpr double tol_required_linear = 1e-6;     // relative: bisection to 1e-7 of the force
+constexpr double tol_required_nonlinear = 1e-5;  // relative: bisection here and in the library (1e-7), Brent on d0
+
+constexpr double b = 0.6, h = 8.0, gamma_w = 18e3, L = 1.0;  // m, m, N/m^3, m
+constexpr double W = gamma_w * b * h * L;                      // N
+constexpr double g = assess::units::g;
+
+assess::Chain block() {
+  assess::Block blk;
+  blk.name = "wall";
+  blk.polygon = {{-b, 0.0}, {0.0, 0.0}, {0.0, h}, {-b, h}};
+  blk.unit_weight = gamma_w;
+  blk.length = L;
+  assess::Constraint hinge;
+  hinge.type = assess::ConstraintType::GroundHinge;
+  hinge.block = 0;
+  hinge.point = {0.0, 0.0};
+  return assess::Chain({blk}, {hinge}, {});
+}
+
+assess::TieRestraint restraint(double xt, double zt, double T, double k, double P0) {
+  assess::TieRestraint r;
+  r.name = "tie";
+  r.block = 0;
+  r.point = {xt, zt};
+  r.direction = {-1.0, 0.0};
+  r.capacity = T;
+  r.stiffness = k;
+  r.pretension = P0;
+  return r;
+}
+
+double xr(double x0, double z0, double th) { return x0 * std::cos(th) + z0 * std::sin(th); }
+double zr(double x0, double z0, double th) { return -x0 * std::sin(th) + z0 * std::cos(th); }
+
+double law(double e, double T, double k, double P0) {
+  if (k <= 0.0) return e > 0.0 ? T : std::min(P0, T);
+  return std::min(std::max(P0 + k * e, 0.0), T);
+}
+
+// Closed-form alpha(theta) with the e-p tie.
+double alpha_exact(double th, double xt, double zt, double T, double k, double P0) {
+  const double e = xr(xt, zt, th) - xt;
+  const double F = law(e, T, k, P0);
+  return (F * zr(xt, zt, th) - W * xr(-b / 2, h / 2, th)) / (W * zr(-b / 2, h / 2, th));
+}
+
+// theta at which the centroid has moved horizontally by dk (x_c increases on [0, pi/2)).
+double theta_of_dk(double dk) {
+  double lo = 0.0, hi = 1.5;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (xr(-b / 2, h / 2, mid) - xr(-b / 2, h / 2, 0.0) < dk ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+// Chain coordinates of the block rotated outward by theta (phi = -theta).
+Eigen::VectorXd config(double th) {
+  Eigen::VectorXd q(3);
+  q << xr(-b / 2, h / 2, th) + b / 2, zr(-b / 2, h / 2, th) - h / 2, -th;
+  return q;
+}
+
+}  // namespace
+
+TEST_CASE("tie: alpha0 = (W b/2 + T z_t)/(W h/2) with the tie at its design strength (rigid-plastic)") {
+  const auto chain = block();
+  for (double zt : {2.0, 5.5, 8.0})
+    for (double xt : {0.0, -b / 2, -b})
+      for (double T : {0.0, 3e3, 25e3}) {
+        const auto r = assess::analyse_kinematic(chain, {}, {restraint(xt, zt, T, 1e6, 0.0)});
+        CAPTURE(zt);
+        CAPTURE(xt);
+        CAPTURE(T);
+        CHECK_CLOSE(r.alpha0, (W * b / 2 + T * zt) / (W * h / 2), abs_tol(tol_alpha));
+        REQUIRE(r.ties.size() == 1);
+        CHECK_CLOSE(r.ties[0].force, T, abs_tol(tol_force));
+        // The bare mechanism's e* is unchanged by a massless tie.
+        CHECK_CLOSE(r.e_star, 0.75, rel_tol(1e-12));
+      }
+}
+
+TEST_CASE("tie: a tie the mechanism shortens goes slack (tension only): only its pretension counts") {
+  const auto chain = block();
+  // Pulling outward (+x): the outward rotation shortens it.
+  auto t = restraint(0.0, 6.0, 20e3, 1e6, 4e3);
+  t.direction = {1.0, 0.0};
+  const auto r = assess::analyse_kinematic(chain, {}, {t});
+  // Its pretension pushes the wall outward: alpha0 = (W b/2 - P0 z_t)/(W h/2).
+  CHECK_CLOSE(r.alpha0, (W * b / 2 - 4e3 * 6.0) / (W * h / 2), abs_tol(tol_alpha));
+}
+
+TEST_CASE("tie: alpha(theta) of the elastic-perfectly-plastic tie, point by point against the closed form") {
+  const auto chain = block();
+  const double xt = 0.0, zt = 7.5, T = 10e3, k = 2e5, P0 = 2e3;
+  const std::vector<assess::TieRestraint> ties{restraint(xt, zt, T, k, P0)};
+  // Directly at rotations spanning the elastic branch (e < (T - P0)/k = 40 mm) and beyond.
+  for (double th = 0.0; th < 0.3; th += 0.0025) {
+    CAPTURE(th);
+    CHECK_CLOSE(assess::load_multiplier(chain, config(th), ties), alpha_exact(th, xt, zt, T, k, P0),
+                abs_tol(tol_alpha_curve));
+  }
+  // The capacity curve of the analysis.
+  assess::KinematicOptions opt;
+  opt.curve_points = 401;
+  const auto r = assess::analyse_kinematic(chain, opt, ties);
+  REQUIRE(r.curve_complete());
+  CHECK_CLOSE(r.alpha0, (W * b / 2 + T * zt) / (W * h / 2), abs_tol(tol_alpha));
+  CHECK_CLOSE(r.d_star_per_dk, 4.0 / 3.0, rel_tol(1e-12));
+  int elastic = 0;
+  for (const auto& p : r.curve) {
+    const double th = theta_of_dk(p.dk);
+    CAPTURE(p.dk);
+    CHECK_CLOSE(p.alpha, alpha_exact(th, xt, zt, T, k, P0), abs_tol(tol_alpha_curve));
+    REQUIRE(p.tie_force.size() == 1);
+    const double e = xr(xt, zt, th) - xt;
+    CHECK_CLOSE(p.tie_elongation[0], e, abs_tol(tol_elong));
+    CHECK_CLOSE(p.tie_force[0], law(e, T, k, P0), abs_tol(tol_force + k * 1e-9));
+    if (P0 + k * e < T) ++elastic;
+  }
+  CHECK(elastic >= 3);  // the elastic branch is sampled
+  // d_k0: alpha = 0 with the tie yielded: T z_t cos(th) = W x_c(th), tan(th0) = alpha0 for x_t = 0.
+  const double th0 = std::atan((W * b / 2 + T * zt) / (W * h / 2));
+  CHECK_CLOSE(r.dk0, xr(-b / 2, h / 2, th0) + b / 2, abs_tol(1e-9));
+  // Elongation at a displacement demand.
+  const auto e = assess::tie_elongations_at(chain, r, ties, 0.3);
+  CHECK_CLOSE(e[0], xr(xt, zt, theta_of_dk(0.3 * 0.75)) - xt, abs_tol(1e-9));
+}
+
+TEST_CASE("tie design strengths: rod, local compression, punching, plate and bar bending by hand") {
+  assess::Tie t;
+  t.name = "t";
+  t.point = {0.0, 7.5};
+  t.rod.diameter = 0.020;
+  t.rod.area = assess::units::pi * 0.020 * 0.020 / 4;  // 314.159e-6 m^2
+  t.rod.fyk = 275e6;
+  t.free_length = 10.0;
+  t.anchor.a = 0.30;
+  t.anchor.b = 0.30;
+  t.anchor.t = 0.020;
+  t.anchor.fyk = 275e6;
+  t.masonry.fm = 2.0e6;
+  t.masonry.tau = 0.05e6;
+  t.masonry.thickness = 0.65;
+  t.masonry.FC = 1.35;
+  t.masonry.gamma_M = 2.0;
+  t.spacing = 3.0;
+  const auto r = assess::tie_resistance(t);
+  // 314.159e-6 m^2 x 275 MPa = 86 393.8 N; / 1.05 = 82 279.8 N.
+  CHECK_CLOSE(r.rod, 82279.8076, rel_tol(1e-8));
+  // fd = 2 / 2.7 = 0.740741 MPa; x 0.09 m^2 = 66 666.7 N.
+  CHECK_CLOSE(r.bearing, 66666.6667, rel_tol(1e-8));
+  // fvd = 0.05 / 2.7 MPa = 18 518.5 Pa; 0.65 (1.2 + 2.6) = 2.47 m^2; 45 740.7 N.
+  CHECK_CLOSE(r.punching, 45740.7407, rel_tol(1e-8));
+  // c = (0.30 - 0.04)/2 = 0.13 m; 2 x 0.09 x 4e-4 x 275e6 / (4 x 1.05 x 0.0169) = 19 800 / 0.07098 = 278 951.8 N.
+  CHECK_CLOSE(r.anchor_bending, 2 * 0.09 * 4e-4 * 275e6 / (4 * 1.05 * 0.0169), rel_tol(tol_strength));
+  CHECK_CLOSE(r.anchor_bending, 278951.817, rel_tol(1e-8));
+  CHECK(r.governing == "punching");
+  CHECK_CLOSE(r.design, r.punching, rel_tol(tol_strength));
+  // E A / L = 210e9 x 314.159e-6 / 10 = 6.5973e6 N/m; eps_ud L = 0.9 x 0.075 x 10 = 0.675 m.
+  CHECK_CLOSE(r.stiffness, 6597344.57, rel_tol(1e-8));
+  CHECK_CLOSE(r.ultimate_elongation, 0.675, rel_tol(tol_strength));
+  // The level on a 1 m strip with ties every 3 m: a third of each.
+  const auto lv = assess::tie_restraint(t, 0, 1.0);
+  CHECK_CLOSE(lv.count, 1.0 / 3.0, rel_tol(tol_strength));
+  CHECK_CLOSE(lv.capacity, r.design / 3.0, rel_tol(tol_strength));
+  CHECK_CLOSE(lv.stiffness, r.stiffness / 3.0, rel_tol(tol_strength));
+  // Bar anchor 0.6 m x 40 mm: bearing 0.024 m^2, bending 8 x 0.04^3 x 275e6 / (6 x 1.05 x 0.6) = 37 248.7 N.
+  t.anchor.type = assess::AnchorType::Bar;
+  t.anchor.a = 0.6;
+  t.anchor.b = 0.04;
+  const auto rb = assess::tie_resistance(t);
+  CHECK_CLOSE(rb.bearing, 0.740740740740e6 * 0.024, rel_tol(1e-9));
+  CHECK_CLOSE(rb.anchor_bending, 37248.677, rel_tol(1e-7));
+  // The checks table: demand 30 kN, elongation 0.2 m.
+  const auto rows = assess::tie_checks(t, 30e3, 0.2);
+  REQUIRE(rows.size() == 5);
+  CHECK(rows[0].check == "rod yield");
+  CHECK_CLOSE(rows[0].dc, 30e3 / 82279.8076, rel_tol(1e-8));
+  CHECK(rows[4].check == "rod elongation");
+  CHECK_CLOSE(rows[4].dc, 0.2 / 0.675, rel_tol(tol_strength));
+  CHECK(rows[3].satisfied == (30e3 <= rb.anchor_bending));
+}
+
+TEST_CASE("tie: required force of each linear check = (alpha_req W h/2 - W b/2) / z_t, ground and height") {
+  const auto chain = block();
+  assess::CheckInput in;
+  in.hazard[assess::LimitState::SLD] = {0.0, 0.07, 2.5, 0.28};
+  in.hazard[assess::LimitState::SLV] = {0.0, 0.24, 2.4, 0.31};
+  in.hazard[assess::LimitState::SLC] = {0.0, 0.31, 2.45, 0.33};
+  in.site.soil = assess::SoilClass::C;
+  assess::KinematicOptions opt;
+  opt.FC = 1.35;
+  const double zt = 7.8;
+  for (double Z : {0.0, 6.0}) {
+    in.Z = Z;
+    if (Z > 0.0) in.building = assess::BuildingModel{12.0, 3, 0.3, 5.0};
+    const std::vector<assess::TieRestraint> ties{restraint(0.0, zt, 0.0, 5e6, 0.0)};
+    const auto req = assess::required_tie_forces(chain, opt, in, ties, 0, 1.0);
+    const auto rows = assess::run_code_checks(assess::analyse_kinematic(chain, opt), in);
+    int linear = 0;
+    for (const auto& f : req) {
+      if (f.kind != "strength") continue;
+      for (const auto& row : rows)
+        if (row.code == f.code && row.limit_state == f.limit_state && row.location == f.location &&
+            row.kind == f.kind) {
+          // a0* = alpha0 g / (e* FC) >= demand.
+          const double alpha_req = row.demand * 0.75 * opt.FC / g;
+          const double T_req = std::max(0.0, (alpha_req * W * h / 2 - W * b / 2) / zt);
+          CAPTURE(f.code);
+          CAPTURE(f.limit_state);
+          CAPTURE(f.location);
+          CHECK_CLOSE(f.level_force, T_req, rel_tol(tol_required_linear));
+          ++linear;
+        }
+    }
+    CHECK(linear >= 3);
+  }
+}
+
+TEST_CASE("tie: required force of the NTC 2018 SLV displacement check at ground, independent derivation") {
+  const auto chain = block();
+  assess::CheckInput in;
+  in.hazard[assess::LimitState::SLD] = {0.0, 0.07, 2.5, 0.28};
+  in.hazard[assess::LimitState::SLV] = {0.0, 0.24, 2.4, 0.31};
+  in.hazard[assess::LimitState::SLC] = {0.0, 0.31, 2.45, 0.33};
+  in.site.soil = assess::SoilClass::C;
+  in.codes = {assess::CodeEdition::NTC2018};
+  assess::KinematicOptions opt;
+  opt.FC = 1.35;
+  const double zt = 7.8, k = 3e6;
+  // D/C of the check for a tie of strength T, from the closed forms above.
+  auto dc = [&](double T) {
+    // First zero of alpha(theta): scan, then bisect.
+    double lo = 0.0, hi = 0.0;
+    for (double th = 0.001; th < 1.5; th += 0.001)
+      if (alpha_exact(th, 0.0, zt, T, k, 0.0) <= 0.0) {
+        hi = th;
+        lo = th - 0.001;
+        break;
+      }
+    for (int i = 0; i < 200; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (alpha_exact(mid, 0.0, zt, T, k, 0.0) > 0.0 ? lo : hi) = mid;
+    }
+    const double dk0 = xr(-b / 2, h / 2, lo) + b / 2;
+    const double d0 = 4.0 / 3.0 * dk0, d = 0.4 * d0;
+    const double a = alpha_exact(theta_of_dk(d * 0.75), 0.0, zt, T, k, 0.0) * g / (0.75 * opt.FC);
+    const double Tp = 1.68 * assess::units::pi * std::sqrt(d / a);
+    return assess::ElasticSpectrum(in.hazard.at(assess::LimitState::SLV), in.site, 8.0).SDe(Tp) / d;
+  };
+  double lo = 0.0, hi = 2e3;
+  while (dc(hi) > 1.0) lo = hi, hi *= 2.0;
+  for (int i = 0; i < 100; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (dc(mid) > 1.0 ? lo : hi) = mid;
+  }
+  const std::vector<assess::TieRestraint> ties{restraint(0.0, zt, 0.0, k, 0.0)};
+  const auto req = assess::required_tie_forces(chain, opt, in, ties, 0, 1.0);
+  bool found = false;
+  for (const auto& f : req)
+    if (f.kind == "displacement" && f.limit_state == "SLV") {
+      found = true;
+      CHECK(f.dc_without > 1.0);
+      CHECK_CLOSE(f.level_force, hi, rel_tol(tol_required_nonlinear));
+    }
+  CHECK(found);
+}
+
+TEST_CASE("two-storey façade with a floor and two tie levels (one inclined): alpha0 and the e-p capacity curve by hand") {
+  // One rigid body about the outer toe (0, 0): storey 1 t1 x h1, storey 2 t2 x h2 (outer faces aligned at
+  // x = 0), a floor weight N at the top of storey 1 at distance dN from the inner face. Virtual work with
+  // delta p = (z(theta), -x(theta)):
+  //   alpha(theta) = -(sum W_i x_i(theta) + sum T_j (d_jx z_j(theta) - d_jz x_j(theta))) / sum W_i z_i(theta)
+  const double t1 = 0.6, h1 = 4.0, t2 = 0.45, h2 = 3.5, Lw = 5.0, N = 60e3, dN = 0.2;
+  assess::SimpleOverturningParams p;
+  assess::Storey s1;
+  s1.height = h1;
+  s1.thickness = t1;
+  s1.floor_weight = N;
+  s1.floor_distance_from_inner_face = dN;
+  assess::Storey s2;
+  s2.height = h2;
+  s2.thickness = t2;
+  p.storeys = {s1, s2};
+  p.unit_weight = gamma_w;
+  p.length = Lw;
+  p.hinge_level = 0;
+  const auto set = assess::simple_overturning(p);
+  REQUIRE(set.candidates.size() == 1);
+  const auto& chain = set.candidates[0].chain;
+  // Weights (N) and their undeformed points (m).
+  struct Wt {
+    double W, x, z;
+  };
+  const std::vector<Wt> w{{gamma_w * t1 * h1 * Lw, -t1 / 2, h1 / 2},
+                          {gamma_w * t2 * h2 * Lw, -t2 / 2, h1 + h2 / 2},
+                          {N, -t1 + dN, h1}};
+  // Tie A: horizontal on the outer face; tie B: on the inner face near the top, pulling inward and down.
+  auto tA = restraint(0.0, h1 - 0.3, 40e3, 4e6, 5e3);
+  auto tB = restraint(-t2, h1 + h2 - 0.2, 25e3, 1.5e6, 0.0);
+  tB.direction = Eigen::Vector2d(-1.0, -0.25).normalized();
+  for (auto* t : {&tA, &tB}) t->block = assess::tie_block(chain, -1, t->point);
+  REQUIRE(tA.block >= 0);
+  REQUIRE(tB.block >= 0);
+  const std::vector<assess::TieRestraint> ties{tA, tB};
+  auto elong = [](const assess::TieRestraint& t, double th) {
+    return -(t.direction.x() * (xr(t.point.x(), t.point.y(), th) - t.point.x()) +
+             t.direction.y() * (zr(t.point.x(), t.point.y(), th) - t.point.y()));
+  };
+  auto alpha_hand = [&](double th, bool rigid_plastic) {
+    double num = 0.0, den = 0.0;
+    for (const Wt& x : w) {
+      num += x.W * xr(x.x, x.z, th);
+      den += x.W * zr(x.x, x.z, th);
+    }
+    for (const auto& t : ties) {
+      const double T = rigid_plastic ? t.capacity : law(elong(t, th), t.capacity, t.stiffness, t.pretension);
+      num += T * (t.direction.x() * zr(t.point.x(), t.point.y(), th) - t.direction.y() * xr(t.point.x(), t.point.y(), th));
+    }
+    return -num / den;
+  };
+  assess::KinematicOptions opt;
+  opt.curve_points = 121;
+  const auto r = assess::analyse_kinematic(chain, opt, ties);
+  CHECK_CLOSE(r.alpha0, alpha_hand(0.0, true), abs_tol(tol_alpha));
+  REQUIRE(r.curve_complete());
+  // Control point: the centroid of the weights; theta from its horizontal displacement.
+  double Wt_ = 0.0, xg = 0.0, zg = 0.0;
+  for (const Wt& x : w) Wt_ += x.W, xg += x.W * x.x, zg += x.W * x.z;
+  xg /= Wt_;
+  zg /= Wt_;
+  auto theta_of = [&](double dk) {
+    double lo = 0.0, hi = 1.5;
+    for (int i = 0; i < 200; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (xr(xg, zg, mid) - xg < dk ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+  };
+  for (const auto& pt : r.curve) {
+    CAPTURE(pt.dk);
+    CHECK_CLOSE(pt.alpha, alpha_hand(theta_of(pt.dk), false), abs_tol(tol_alpha_curve));
+  }
+  // d_k0: alpha = 0 with both ties yielded.
+  double lo = 0.05, hi = 1.2;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (alpha_hand(mid, true) > 0.0 ? lo : hi) = mid;
+  }
+  CHECK_CLOSE(r.dk0, xr(xg, zg, lo) - xg, abs_tol(1e-9));
+}
+
+TEST_CASE("tie: required force of every displacement check (both editions, SLV/SLC, ground and height), independent derivation") {
+  // For a tie strength T: theta0 where alpha = 0 (closed form alpha(theta) above), d0* = 4/3 d_k0, then
+  //   NTC 2008: du* = 0.4 d0*, ds* = 0.4 du*, Ts = 2 pi sqrt(ds*/a*(ds*)), demand SDe(Ts) at 5 %, capacity du*;
+  //   NTC 2018: d = 0.4 d0* (SLV) / 0.6 d0* (SLC), T = 1.68 pi / 1.56 pi sqrt(d/a(d)), demand SDe(T, 8 % / 10 %)
+  //   at ground; at height S_eZ(T) T^2/4pi^2, not below S_eZ(T1) b^2 T1^2/4pi^2 for T > b T1 [C8.7.1.12].
+  // a*(d*) = alpha(theta(d*)) g / (e* FC), e* = 3/4. Bisection on T here, compared with the library.
+  const auto chain = block();
+  assess::CheckInput in;
+  in.hazard[assess::LimitState::SLD] = {0.0, 0.07, 2.5, 0.28};
+  in.hazard[assess::LimitState::SLV] = {0.0, 0.26, 2.4, 0.31};
+  in.hazard[assess::LimitState::SLC] = {0.0, 0.34, 2.45, 0.33};
+  in.site.soil = assess::SoilClass::C;
+  assess::KinematicOptions opt;
+  opt.FC = 1.35;
+  const double zt = 7.2, k = 3e6, FC = opt.FC;
+  const double two_pi = 2.0 * assess::units::pi;
+  auto theta0 = [&](double T) {
+    double lo = 0.0, hi = 0.0;
+    for (double th = 0.001; th < 1.5; th += 0.001)
+      if (alpha_exact(th, 0.0, zt, T, k, 0.0) <= 0.0) {
+        hi = th;
+        lo = th - 0.001;
+        break;
+      }
+    for (int i = 0; i < 200; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (alpha_exact(mid, 0.0, zt, T, k, 0.0) > 0.0 ? lo : hi) = mid;
+    }
+    return lo;
+  };
+  auto a_star = [&](double T, double d_star) {
+    return alpha_exact(theta_of_dk(d_star * 0.75), 0.0, zt, T, k, 0.0) * g / (0.75 * FC);
+  };
+  for (double Z : {0.0, 5.0}) {
+    in.Z = Z;
+    assess::BuildingModel bm{10.0, 3, 1.6, 5.0};  // a flexible building: T1 near the mechanism's periods
+    if (Z > 0.0) in.building = bm;
+    auto demand = [&](assess::LimitState ls, double T, double xi) {
+      const auto& hz = in.hazard.at(ls);
+      if (Z == 0.0) return assess::ElasticSpectrum(hz, in.site, xi).SDe(T);
+      const assess::FloorSpectrum fs(hz, in.site, bm, Z, xi);
+      double d = fs.SDe(T);
+      if (T > 1.1 * bm.T1) d = std::max(d, fs.Se(bm.T1) * 1.21 * bm.T1 * bm.T1 / (two_pi * two_pi));
+      return d;
+    };
+    struct Case {
+      const char* code;
+      const char* ls;
+    };
+    const std::vector<assess::TieRestraint> ties{restraint(0.0, zt, 0.0, k, 0.0)};
+    const auto req = assess::required_tie_forces(chain, opt, in, ties, 0, 1.0);
+    int checked = 0;
+    for (const auto& f : req) {
+      if (f.kind != "displacement") continue;
+      const bool y2008 = f.code == "NTC2008";
+      if (y2008 && f.location == "height") {
+        // C8A.4.12's demand at height: the formula of code_rules, checked in kinematic_checks.cpp; skip here.
+        continue;
+      }
+      const bool slc = f.limit_state == "SLC";
+      auto dc = [&](double T) {
+        const double d0 = 4.0 / 3.0 * (xr(-b / 2, h / 2, theta0(T)) + b / 2);
+        if (y2008) {
+          const double du = 0.4 * d0, ds = 0.4 * du;
+          const double Ts = two_pi * std::sqrt(ds / a_star(T, ds));
+          return assess::ElasticSpectrum(in.hazard.at(assess::LimitState::SLV), in.site, 5.0).SDe(Ts) / du;
+        }
+        const double d = (slc ? 0.6 : 0.4) * d0;
+        const double Tp = (slc ? 1.56 : 1.68) * assess::units::pi * std::sqrt(d / a_star(T, d));
+        return demand(slc ? assess::LimitState::SLC : assess::LimitState::SLV, Tp, slc ? 10.0 : 8.0) / d;
+      };
+      double expected = 0.0;
+      if (dc(0.0) > 1.0) {
+        double lo = 0.0, hi = 2e3;
+        while (dc(hi) > 1.0) lo = hi, hi *= 2.0;
+        for (int i = 0; i < 100; ++i) {
+          const double mid = 0.5 * (lo + hi);
+          (dc(mid) > 1.0 ? lo : hi) = mid;
+        }
+        expected = hi;
+      }
+      CAPTURE(f.code);
+      CAPTURE(f.limit_state);
+      CAPTURE(f.location);
+      CAPTURE(f.dc_without);
+      MESSAGE(f.code << " " << f.limit_state << " " << f.location << ": required " << f.level_force << " N (derived "
+                      << expected << " N), D/C without " << f.dc_without);
+      if (expected == 0.0)
+        CHECK(f.level_force == 0.0);
+      else
+        CHECK_CLOSE(f.level_force, expected, rel_tol(tol_required_nonlinear));
+      ++checked;
+    }
+    CHECK(checked >= 3);
+  }
+}
