@@ -37,10 +37,12 @@ CheckInput check_input(const FacadeAssessment& a, const CandidateResult& cr) {
   return in;
 }
 
-// NTC 2008 rows carry no PGA capacity: the ag (g) on rock of the SLV hazard at
-// which the row's D/C reaches 1, F0 and TC* held fixed (the reading of the NTC
-// 2018 rows, docs/theory/kinematic.md §PGA), found by re-running the checks
-// of code_checks.cpp (no formula is repeated here). inf if never reached below 20 g.
+// NTC 2008 rows carry no PGA capacity: it is found with the reading of the NTC
+// 2018 rows (docs/theory/kinematic.md §PGA), F0 and TC* of SLV held fixed, by
+// re-running the checks of code_checks.cpp (no formula is repeated here):
+// strength, q x the ag (g) on rock at which the demand without q reaches a0*
+// (the row's D/C reaches 1/q); displacement, the ag at which the row's D/C
+// reaches 1. inf if never reached below 20 g.
 double ag_capacity_2008(const FacadeAssessment& a, const CandidateResult& cr, const CheckRow& row) {
   CheckInput in = check_input(a, cr);
   in.codes = {CodeEdition::NTC2008};
@@ -52,13 +54,15 @@ double ag_capacity_2008(const FacadeAssessment& a, const CandidateResult& cr, co
         return r.dc;
     return nan;
   };
+  const bool strength = row.kind == "strength";
+  const double target = strength ? 1.0 / in.q : 1.0, factor = strength ? in.q : 1.0;
   double lo = 1e-6, hi = 1e-3;
-  while (dc(hi) < 1.0) {
+  while (dc(hi) < target) {
     lo = hi;
     hi *= 2.0;
     if (hi > 20.0) return inf;
   }
-  return detail::brent_root([&](double ag) { return dc(ag) - 1.0; }, lo, hi, 1e-12);
+  return factor * detail::brent_root([&](double ag) { return dc(ag) - target; }, lo, hi, 1e-12);
 }
 
 }  // namespace

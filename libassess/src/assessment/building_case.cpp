@@ -126,7 +126,9 @@ BuildingCase parse_building(const nlohmann::json& doc, const std::string& file) 
                    "check_SLD", "analysis", "dynamic", "walls", "record_selection"});
   if (root.find("schema_version")) root.integer("schema_version", 1, 1);
   b.project = root.find("project") ? root.string("project") : "";
-  root.at("site");  // required: every mechanism is checked against the site's action
+  if (!root.has("site"))
+    root.fail("missing required key \"site\": the building's site, checked against by every mechanism "
+              "(\"comune\", \"lat\"/\"lon\" in deg, \"island\" or \"hazard\"; docs/user/building.md)");
   if (root.find("record_selection")) b.record_selection = root.choice("record_selection", {"shared", "per_mechanism"});
   if (root.find("FC") && root.find("knowledge_level")) root.fail("give \"knowledge_level\" or \"FC\", not both");
 
