@@ -60,17 +60,18 @@ const std::string& bt(Lang L, const std::string& key) {
       {"table_cap",
        {"Tabella di sintesi (NTC 2018). α0 e a0* del cinematismo che governa ciascun meccanismo; per ogni approccio il "
         "D/C massimo delle sue verifiche e ζE = PGA_C/PGA_D (ag su roccia, verifica SLV o SLC che governa); ★ = "
-        "meccanismo che governa l'approccio; in rosso D/C > 1 e ζE < 1. Il codice del meccanismo porta alla sua sezione.",
+        "meccanismo che governa l'approccio; in rosso D/C > 1 e ζE < 1. Esito: la conclusione del metodo adottato (non lineare, se non indicato); Acc.: insieme di accelerogrammi. Il codice del meccanismo porta alla sua sezione.",
         "Summary table (NTC 2018). α0 and a0* of the governing candidate of each mechanism; for each approach the "
         "largest D/C of its checks and ζE = PGA_C/PGA_D (ag on rock, the governing SLV or SLC check); ★ = the "
-        "approach's governing mechanism; red: D/C > 1 and ζE < 1. The mechanism's code links to its section."}},
+        "approach's governing mechanism; red: D/C > 1 and ζE < 1. Outcome: the adopted method's conclusion (non-linear unless noted); Rec.: the record set. The mechanism's code links to its section."}},
       {"table08_cap",
        {"NTC 2008 (Circ. 617/2009 C8A.4), a titolo di confronto: PGA_C è l'ag dello SLV per cui il D/C della verifica vale 1.",
         "NTC 2008 (Circ. 617/2009 C8A.4), for comparison: PGA_C is the SLV ag at which the check's D/C equals 1."}},
       {"id", {"Cod.", "Id"}},
       {"wall_mech", {"Parete: meccanismo", "Wall: mechanism"}},
       {"records", {"Accelerogrammi", "Records"}},
-      {"outcome", {"Esito (metodo adottato)", "Outcome (adopted method)"}},
+      {"outcome", {"Esito", "Outcome"}},
+      {"records_short", {"Acc.", "Rec."}},
       {"ok", {"soddisfatta", "satisfied"}},
       {"fail", {"non soddisfatta", "not satisfied"}},
       {"chart_title", {"ζE per meccanismo (NTC 2018)", "ζE per mechanism (NTC 2018)"}},
@@ -96,6 +97,8 @@ const std::string& bt(Lang L, const std::string& key) {
       {"set_none", {"nessuna analisi dinamica", "no dynamic analysis"}},
       {"set_listed", {"accelerogrammi elencati nel caso", "records listed in the case"}},
       {"set_own", {"selezione propria", "own selection"}},
+      {"own_short", {"propria", "own"}},
+      {"listed_short", {"elencati", "listed"}},
       {"set_shared", {"selezione condivisa", "shared selection"}},
       {"premessa", {"Premessa", "Introduction"}},
       {"premessa_text",
@@ -198,6 +201,20 @@ std::string record_set_text(Lang L, const BuildingAssessment& b, std::size_t i) 
   return s;
 }
 
+// The record set in a table cell: "S1", "propria", "elencati", "—".
+std::string record_set_short(Lang L, const BuildingAssessment& b, std::size_t i) {
+  const BuildingMechanism& m = b.building.mechanisms[i];
+  const FacadeAssessment& a = b.results[i].a;
+  if (!a.dynamic || !a.dynamic_applies) return "—";
+  switch (m.record_set) {
+    case RecordSetKind::none: return "—";
+    case RecordSetKind::listed: return bt(L, "listed_short");
+    case RecordSetKind::own: return bt(L, "own_short");
+    case RecordSetKind::shared: return m.record_group;
+  }
+  return "—";
+}
+
 // The bar chart of zetaE per mechanism against 1 (inline SVG).
 std::string zeta_chart(Lang L, const BuildingAssessment& b) {
   const std::size_t n = b.building.mechanisms.size();
@@ -247,8 +264,8 @@ std::string zeta_chart(Lang L, const BuildingAssessment& b) {
   }
   const double y1 = y_of(1.0);
   svg += format("<line x1=\"%.1f\" x2=\"%.1f\" y1=\"%.1f\" y2=\"%.1f\" stroke=\"#b3001b\" stroke-width=\"2\" "
-                "stroke-dasharray=\"6 3\"/>\n<text x=\"%.1f\" y=\"%.1f\" fill=\"#b3001b\" text-anchor=\"end\">ζE = 1</text>\n",
-                left, W - right, y1, y1, W - right - 2, y1 - 4);
+                "stroke-dasharray=\"6 3\"/>\n<text x=\"%.1f\" y=\"%.1f\" fill=\"#b3001b\" text-anchor=\"start\">ζE = 1</text>\n",
+                left, W - right, y1, y1, left + 2, y1 - 4);
   svg += format("<line x1=\"%.1f\" x2=\"%.1f\" y1=\"%.1f\" y2=\"%.1f\" stroke=\"#333\"/>\n", left, W - right,
                 top + plot_h, top + plot_h);
   // Legend.
@@ -301,25 +318,25 @@ void add_summary(Lang L, const BuildingAssessment& b, HtmlReport& h) {
     const BuildingGoverning* g = b.governing_of(code, ap);
     return g && g->mechanism == int(i);
   };
-  std::string t = "<table class=\"building-summary\"><caption>" + esc(bt(L, "table_cap")) + "</caption>\n<thead><tr>";
+  std::string t = "<style>table.building-summary { font-size: 8pt; } table.building-summary div.note, "
+                  "td div.note { font-size: 7pt; color: #555; }</style>\n<table class=\"building-summary\"><caption>" + esc(bt(L, "table_cap")) + "</caption>\n<thead><tr>";
   t += "<th rowspan=\"2\">" + esc(bt(L, "id")) + "</th><th rowspan=\"2\">" + esc(bt(L, "wall_mech")) +
-       "</th><th rowspan=\"2\" class=\"num\">α0</th><th rowspan=\"2\" class=\"num\">a0* (m/s²)</th><th colspan=\"3\">" +
-       esc(bt(L, "strength")) + "</th><th colspan=\"3\">" + esc(bt(L, "displacement")) + "</th><th colspan=\"2\">" +
+       "</th><th rowspan=\"2\" class=\"num\">α0</th><th rowspan=\"2\" class=\"num\">a0* (m/s²)</th><th colspan=\"2\">" +
+       esc(bt(L, "strength")) + "</th><th colspan=\"2\">" + esc(bt(L, "displacement")) + "</th><th colspan=\"2\">" +
        esc(bt(L, "dynamic")) + "</th><th rowspan=\"2\">" + esc(bt(L, "outcome")) + "</th></tr>\n<tr>";
-  for (int k = 0; k < 2; ++k) t += "<th class=\"num\">D/C</th><th class=\"num\">ζE</th><th class=\"num\">TR_C/TR_D</th>";
-  t += "<th class=\"num\">D/C</th><th>" + esc(bt(L, "records")) + "</th></tr></thead>\n<tbody>\n";
+  for (int k = 0; k < 2; ++k) t += "<th class=\"num\">D/C</th><th class=\"num\">ζE</th>";
+  t += "<th class=\"num\">D/C</th><th>" + esc(bt(L, "records_short")) + "</th></tr></thead>\n<tbody>\n";
   for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
     const BuildingMechanism& m = bc.mechanisms[i];
     const BuildingMechanismResult& r = b.results[i];
     const CandidateResult& gc = r.a.kinematic.candidates[r.a.kinematic.governing];
     t += "<tr id=\"row-" + esc(m.id) + "\"><td><a href=\"#" + esc(m.id) + "\">" + esc(m.id) + "</a></td><td>" +
-         esc(m.wall + ": " + m.name) + "</td><td class=\"num\">" + esc(fx(gc.result.alpha0, 4)) +
+         esc(m.name) + "<div class=\"note\">" + esc(m.wall) + "</div></td><td class=\"num\">" + esc(fx(gc.result.alpha0, 4)) +
          "</td><td class=\"num\">" + esc(fx(gc.result.a0_star, 3)) + "</td>";
     for (const char* ap : {"strength", "displacement"}) {
       const SafetyIndex* s = r.index("NTC2018", ap);
       t += s && s->has_checks ? dc_td(s->dc) : "<td class=\"num\">—</td>";
       t += zeta_td(s, gov_of("NTC2018", ap, i));
-      t += "<td class=\"num\">" + esc(s && s->defined ? fx(s->TR_ratio, 2) : "—") + "</td>";
     }
     const SafetyIndex* d = r.index("NTC2018", "dynamic");
     if (d && d->has_checks) {
@@ -329,14 +346,15 @@ void add_summary(Lang L, const BuildingAssessment& b, HtmlReport& h) {
     } else {
       t += "<td class=\"num\">—</td>";
     }
-    t += "<td>" + esc(record_set_text(L, b, i)) + "</td>";
+    t += "<td>" + esc(record_set_short(L, b, i)) + "</td>";
     if (const MethodVerdict* c = r.a.verdict.conclusion()) {
       const bool ok = c->satisfied && std::isfinite(c->max_dc);
-      t += std::string("<td class=\"") + (ok ? "ok" : "fail") + "\">" + esc(bt(L, ok ? "ok" : "fail")) + " (" +
-           esc(localise(L, r.a.verdict.adopted == "linear" ? bt(L, "strength") : r.a.verdict.adopted == "nonlinear"
-                                                                                    ? bt(L, "displacement")
-                                                                                    : bt(L, "dynamic"))) +
-           ")</td>";
+      t += std::string("<td class=\"") + (ok ? "ok" : "fail") + "\">" + esc(bt(L, ok ? "ok" : "fail")) +
+           (r.a.verdict.adopted == "nonlinear" ? std::string()
+                                               : "<div class=\"note\">" +
+                                                     esc(bt(L, r.a.verdict.adopted == "linear" ? "strength" : "dynamic")) +
+                                                     "</div>") +
+           "</td>";
     } else {
       t += "<td>—</td>";
     }
@@ -427,7 +445,7 @@ std::string building_html(const BuildingAssessment& b, const ReportOptions& opti
            HtmlCell(s.defined ? fx(s.TR_demand, 0) : "—", "num"), HtmlCell(s.defined ? fx(s.TR_ratio, 2) : "—", "num"),
            HtmlCell(s.defined ? s.limit_state + ", " + bt(L, s.location == "height" ? "height_m" : "ground") +
                                     (s.candidate.empty() ? "" : ", " + localise(L, s.candidate))
-                              : localise(L, s.note))});
+                              : (s.approach == "dynamic" ? bt(L, "no_zeta") : localise(L, s.note)))});
     }
     h.add_cell_table({bt(L, "code"), bt(L, "approach"), HtmlCell("D/C", "num"), HtmlCell("PGA_C (g)", "num"),
                       HtmlCell("PGA_D (g)", "num"), HtmlCell("ζE", "num"), HtmlCell("TR_C", "num"),
