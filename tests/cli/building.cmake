@@ -48,3 +48,34 @@ assess_cli_error_test(building_unknown_mechanism "no mechanism \"M9\" in the bui
   run tests/cli/building/chiesa_piccola.json --mechanism M9)
 assess_cli_error_test(building_expand_single "--mechanism and --expand apply to a building case"
   run mechanisms/gable.json --expand /tmp/never)
+
+# The relazione of the example building in headless Chromium: loads without a
+# console message, 54 figures (the zetaE chart, the site spectra, and each
+# mechanism's figures with ids prefixed by its id), the summary with a link to
+# every mechanism's section and the sections themselves (Italian and English).
+foreach(lang it en)
+  add_test(NAME cli.building_report_browser_${lang}
+    COMMAND sh -c "\"$1\" run mechanisms/building-house.json --lang $3 --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 54 'id=\"summary\"' 'href=\"#M1\"' 'href=\"#M8\"' '<h2 id=\"M1\"' '<h2 id=\"M8\"' 'id=\"fig-zeta\"' 'id=\"M8-fig-adrs\"' 'data-governing=\"true\"' 'class=\"verdict (ok|fail)\"'"
+            sh $<TARGET_FILE:assess_cli> ${CMAKE_CURRENT_BINARY_DIR}/building-house.${lang}.html ${lang}
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+  set_tests_properties(cli.building_report_browser_${lang} PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77 TIMEOUT 300
+    ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+endforeach()
+
+# `assess fragility BUILDING --mechanism M4` = `assess fragility` of M4's expanded case (identical results.csv);
+# without --mechanism, the governing mechanism (lowest NTC 2018 zetaE of the adopted method's approach).
+set(_bfrag ${PROJECT_BINARY_DIR}/tests/building_fragility)
+add_test(NAME cli.building_fragility_mechanism
+  COMMAND ${CMAKE_COMMAND} -E env ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}
+          sh -c "rm -rf '${_bfrag}' && A='$<TARGET_FILE:assess_cli>' && F='--stripes 100,475,2475 --records 3 --bootstrap 0 --no-plots --quiet' && \"$A\" run mechanisms/building-house.json --expand '${_bfrag}/cases' > /dev/null && \"$A\" fragility mechanisms/building-house.json --mechanism M4 $F --out '${_bfrag}/b' && \"$A\" fragility '${_bfrag}/cases/M4.json' $F --out '${_bfrag}/s' > /dev/null && cmp '${_bfrag}/b/results.csv' '${_bfrag}/s/results.csv' && echo 'identical results.csv'"
+  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.building_fragility_mechanism PROPERTIES LABELS cli TIMEOUT 300
+  PASS_REGULAR_EXPRESSION "fragility of 'gable about its base'.*identical results.csv")
+add_test(NAME cli.building_fragility_governing
+  COMMAND ${CMAKE_COMMAND} -E env ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}
+          sh -c "rm -rf '${_bfrag}-gov' && '$<TARGET_FILE:assess_cli>' fragility mechanisms/building-house.json --stripes 100,2475 --records 3 --bootstrap 0 --no-plots --out '${_bfrag}-gov'"
+  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.building_fragility_governing PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "M2 \"Ribaltamento del secondo piano, cerniera al primo solaio\", the building's governing mechanism")
+assess_cli_error_test(building_fragility_single "--mechanism applies to a building case"
+  fragility mechanisms/gable.json --mechanism M1)

@@ -161,6 +161,25 @@ std::vector<SafetyIndex> safety_indices(const FacadeAssessment& a) {
   return out;
 }
 
+std::size_t governing_mechanism_kinematic(const BuildingCase& b, const std::string& approach) {
+  std::vector<double> zeta(b.mechanisms.size(), inf);
+  detail::parallel_for(b.mechanisms.size(), [&](std::size_t i) {
+    CaseFile k = b.mechanisms[i].kase;
+    k.dynamic = nlohmann::json();  // kinematic checks only
+    if (k.method == "dynamic") k.method = "nonlinear";
+    const std::vector<SafetyIndex> idx = safety_indices(assess_facade(k));
+    for (const char* code : {"NTC2018", "NTC2008"}) {
+      for (const SafetyIndex& s : idx)
+        if (s.code == code && s.approach == approach && s.defined) zeta[i] = s.zeta;
+      if (zeta[i] < inf) break;
+    }
+  });
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < zeta.size(); ++i)
+    if (zeta[i] < zeta[best]) best = i;
+  return best;
+}
+
 BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& options) {
   BuildingAssessment out;
   out.building = std::move(building);

@@ -178,7 +178,7 @@ std::string zeta_td(const SafetyIndex* s, bool governing) {
   if (!s || !s->has_checks) return "<td class=\"num\">—</td>";
   if (!s->defined) return "<td class=\"num\">n/a</td>";
   const bool fail = !(s->zeta >= 1.0);
-  return std::string("<td class=\"num ") + (fail ? "dc-fail" : "dc-ok") + "\"" +
+  return std::string("<td class=\"num ") + (fail ? "zeta-fail" : "zeta-ok") + "\"" +
          (governing ? " data-governing=\"true\"" : "") + ">" + (governing ? "<strong>★ " : "") + esc(fx(s->zeta, 3)) +
          (governing ? "</strong>" : "") + "</td>";
 }
@@ -319,7 +319,8 @@ void add_summary(Lang L, const BuildingAssessment& b, HtmlReport& h) {
     return g && g->mechanism == int(i);
   };
   std::string t = "<style>table.building-summary { font-size: 8pt; } table.building-summary div.note, "
-                  "td div.note { font-size: 7pt; color: #555; }</style>\n<table class=\"building-summary\"><caption>" + esc(bt(L, "table_cap")) + "</caption>\n<thead><tr>";
+                  "td div.note { font-size: 7pt; color: #555; } td.zeta-fail { color: #b3001b; font-weight: bold; } "
+                  "td.zeta-ok { color: #1a6e1a; font-weight: bold; }</style>\n<table class=\"building-summary\"><caption>" + esc(bt(L, "table_cap")) + "</caption>\n<thead><tr>";
   t += "<th rowspan=\"2\">" + esc(bt(L, "id")) + "</th><th rowspan=\"2\">" + esc(bt(L, "wall_mech")) +
        "</th><th rowspan=\"2\" class=\"num\">α0</th><th rowspan=\"2\" class=\"num\">a0* (m/s²)</th><th colspan=\"2\">" +
        esc(bt(L, "strength")) + "</th><th colspan=\"2\">" + esc(bt(L, "displacement")) + "</th><th colspan=\"2\">" +
@@ -373,7 +374,7 @@ void add_summary(Lang L, const BuildingAssessment& b, HtmlReport& h) {
         const bool g = gov_of("NTC2008", ap, i);
         row.push_back(s && s->has_checks ? HtmlCell(fx(s->dc, 3), s->dc <= 1.0 ? "num dc-ok" : "num dc-fail")
                                          : HtmlCell("—", "num"));
-        row.push_back(s && s->defined ? HtmlCell((g ? "★ " : "") + fx(s->zeta, 3), s->zeta >= 1.0 ? "num dc-ok" : "num dc-fail")
+        row.push_back(s && s->defined ? HtmlCell((g ? "★ " : "") + fx(s->zeta, 3), s->zeta >= 1.0 ? "num zeta-ok" : "num zeta-fail")
                                       : HtmlCell("—", "num"));
         row.push_back(s && s->defined ? HtmlCell(fx(s->ag_capacity_g, 3), "num") : HtmlCell("—", "num"));
       }
@@ -440,7 +441,7 @@ std::string building_html(const BuildingAssessment& b, const ReportOptions& opti
           {HtmlCell(code_name(s.code)), HtmlCell(bt(L, s.approach) + (g ? " ★" : "")),
            HtmlCell(fx(s.dc, 3), s.dc <= 1.0 ? "num dc-ok" : "num dc-fail"),
            HtmlCell(s.defined ? fx(s.ag_capacity_g, 4) : "—", "num"), HtmlCell(s.defined ? fx(s.ag_demand_g, 4) : "—", "num"),
-           s.defined ? HtmlCell(fx(s.zeta, 3), s.zeta >= 1.0 ? "num dc-ok" : "num dc-fail") : HtmlCell("n/a", "num"),
+           s.defined ? HtmlCell(fx(s.zeta, 3), s.zeta >= 1.0 ? "num zeta-ok" : "num zeta-fail") : HtmlCell("n/a", "num"),
            HtmlCell(s.defined ? fx(s.TR_capacity, 0) + (s.TR_extrapolated ? " *" : "") : "—", "num"),
            HtmlCell(s.defined ? fx(s.TR_demand, 0) : "—", "num"), HtmlCell(s.defined ? fx(s.TR_ratio, 2) : "—", "num"),
            HtmlCell(s.defined ? s.limit_state + ", " + bt(L, s.location == "height" ? "height_m" : "ground") +

@@ -19,14 +19,6 @@ std::string fx(double v, int prec) {
   return format("%.*f", prec, v);
 }
 
-std::string clip(const std::string& s, std::size_t n) {
-  // Cuts at a character boundary (UTF-8) within n bytes, marking the cut.
-  if (s.size() <= n) return s;
-  std::size_t k = n - 1;
-  while (k > 0 && (static_cast<unsigned char>(s[k]) & 0xC0) == 0x80) --k;
-  return s.substr(0, k) + "~";
-}
-
 // Display width of a UTF-8 string (code points).
 std::size_t width_of(const std::string& s) {
   std::size_t w = 0;
@@ -201,24 +193,44 @@ std::string building_text(const BuildingAssessment& b, TextWidth width) {
   o += "site: " + b.site_description + "\n";
   o += "VR = " + fx(b.VR, 0) + " years; SLV: TR = " + fx(b.TR_SLV, 0) + " years, ag = " + fx(b.ag_SLV_g, 4) + " g\n";
   if (!bc.selections.empty() || bc.record_selection != "shared") {
-    o += "record sets (" + bc.record_selection + "):";
-    for (const SharedSelection& s : bc.selections) {
-      o += " " + s.id + " = one selection over " + fx(s.T_min, 3) + "-" + fx(s.T_max, 3) + " s for";
-      for (std::size_t i : s.members) o += " " + bc.mechanisms[i].id;
-      if (s.fell_back) o += " (fell back: " + s.note + ")";
-      o += ";";
+    std::string rs = "record sets (" + bc.record_selection + "):";
+    for (std::size_t k = 0; k < bc.selections.size(); ++k) {
+      const SharedSelection& s = bc.selections[k];
+      rs += std::string(k ? "; " : " ") + s.id + " = one selection over " + fx(s.T_min, 3) + "-" + fx(s.T_max, 3) +
+            " s for";
+      for (std::size_t i : s.members) rs += " " + bc.mechanisms[i].id;
+      if (s.fell_back) rs += " (fell back: " + s.note + ")";
     }
-    o += "\n";
+    if (bc.selections.empty()) rs += " none shared; each mechanism selects over its own period range";
+    o += wide ? rs + "\n" : wrap(rs, 120);
   }
   const std::string legend =
       "zetaE = PGA_C / PGA_D (ag on rock; the approach's governing check at SLV or SLC), TR_C / TR_D on the site's "
       "hazard curve; * governing mechanism of the approach (docs/theory/building.md)";
   o += "\n" + (wide ? legend + "\n" : wrap(legend, 120));
-  const std::size_t name_w = wide ? 48 : 34;
+  // The mechanisms by id (the tables below name them by id only).
+  o += "\nmechanisms\n";
+  for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
+    const BuildingMechanism& m = bc.mechanisms[i];
+    const BuildingMechanismResult& r = b.results[i];
+    std::string line = format("  %-4s ", m.id) + m.wall + ": " + m.name + " (" + m.kase.mechanism.type +
+                       (m.json_path.empty() ? "" : ", " + m.json_path);
+    if (r.a.dynamic && r.a.dynamic_applies)
+      line += "; records " + record_set_text(b, m) + ": " + std::to_string(r.a.records.size()) + " over " +
+              fx(r.a.selection_range.T_min, 3) + "-" + fx(r.a.selection_range.T_max, 3) + " s";
+    else if (r.a.dynamic)
+      line += "; dynamic analysis not applicable";
+    line += ")";
+    if (const MethodVerdict* c = r.a.verdict.conclusion())
+      line += ": " + std::string(c->satisfied && std::isfinite(c->max_dc) ? "satisfied" : "NOT SATISFIED") + " (" +
+              r.a.verdict.adopted + ", D/C " + fx(c->max_dc, 3) + ")";
+    o += wide ? line + "\n" : wrap(line, 120);
+  }
+  const std::size_t name_w = 0;
   for (const std::string& code : b.codes) {
     const bool y18 = code == "NTC2018";
     o += "\n" + code_name(code) + (y18 ? "" : " (for comparison)") + "\n";
-    std::string head = format("%-4s ", "id") + pad("wall: mechanism", name_w) +
+    std::string head = format("%-4s ", "id") + pad("", name_w) +
                        format(" %7s %7s | %6s %6s %6s | %6s %6s %6s", "alpha0", "a0*", "D/C", "zetaE", "TRC/TRD", "D/C",
                               "zetaE", "TRC/TRD");
     if (y18) head += format(" | %6s %4s", "D/C", "rec");
@@ -239,7 +251,7 @@ std::string building_text(const BuildingAssessment& b, TextWidth width) {
         return format(" %6s %6s%s%7s", fx(s->dc, 3), s->defined ? fx(s->zeta, 3) : "n/a", star,
                       s->defined ? fx(s->TR_ratio, 2) : "n/a");
       };
-      std::string line = format("%-4s ", m.id) + pad(clip(m.wall + ": " + m.name, name_w), name_w) +
+      std::string line = format("%-4s ", m.id) + pad("", name_w) +
                          format(" %7.4f %7.4f |", gc.result.alpha0, gc.result.a0_star) + cell("strength") + " |" +
                          cell("displacement");
       if (y18) {

@@ -77,6 +77,12 @@ struct BuildingAssessment {
 /// file and the path in it. @throws InputError
 BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& options = {});
 
+/// The governing mechanism of the building for `approach` ("strength" or
+/// "displacement") by the kinematic checks alone (no dynamic analysis): the
+/// lowest NTC 2018 zetaE (else NTC 2008); ties: the first. The index in
+/// b.mechanisms. Used by `assess fragility BUILDING.json` without --mechanism.
+std::size_t governing_mechanism_kinematic(const BuildingCase& b, const std::string& approach);
+
 /// The safety indices of one mechanism's assessment (docs/theory/building.md §4).
 std::vector<SafetyIndex> safety_indices(const FacadeAssessment& a);
 
