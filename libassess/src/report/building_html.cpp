@@ -128,6 +128,9 @@ const std::string& bt(Lang L, const std::string& key) {
       {"concl_gov", {"Il meccanismo che governa l'edificio", "The building's governing mechanism"}},
       {"concl_counts", {"meccanismi soddisfano la verifica con il metodo adottato", "mechanisms satisfy the check by the adopted method"}},
       {"place_date", {"Luogo e data", "Place and date"}},
+      {"concl_failing", {"non soddisfano la verifica", "not satisfied"}},
+      {"site_records_note", {"Gli accelerogrammi nel grafico degli spettri sono quelli di M1; ogni meccanismo riporta i propri nella sua sezione.",
+                             "The records in the spectra plot are M1's; each mechanism shows its own in its section."}},
       {"engineer", {"Il tecnico", "The engineer"}},
       {"appendix", {"Appendice: file del caso dell'edificio", "Appendix: the building case file"}},
       {"warnings", {"Avvertenze", "Warnings"}},
@@ -419,7 +422,21 @@ std::string building_html(const BuildingAssessment& b, const ReportOptions& opti
   h.add_raw_html("<ul class=\"normativa\">\n<li>" + esc(msg(L, "norm.ntc2018")) + "</li>\n<li>" +
                  esc(msg(L, "norm.circ2019")) + "</li>\n<li>" + esc(msg(L, "norm.ntc2008")) + "</li>\n<li>" +
                  esc(msg(L, "norm.dpcm2011")) + "</li>\n<li>" + esc(msg(L, "norm.seed")) + "</li>\n</ul>");
-  if (!b.results.empty()) facade_html_site_section(b.results.front().a, options, h);
+  if (!b.results.empty()) {
+    // The site section plots the first mechanism's records over the spectra:
+    // right for the building when every mechanism with records uses that set.
+    bool one_set = true;
+    const BuildingMechanism& m0 = bc.mechanisms.front();
+    for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
+      const FacadeAssessment& a = b.results[i].a;
+      if (!a.dynamic || !a.dynamic_applies) continue;
+      const BuildingMechanism& m = bc.mechanisms[i];
+      if (!(m.record_set == RecordSetKind::shared && m.record_group == m0.record_group)) one_set = false;
+    }
+    const FacadeAssessment& a0 = b.results.front().a;
+    facade_html_site_section(a0, options, h);
+    if (!one_set && !a0.record_psa.empty()) h.add_paragraph(bt(L, "site_records_note"));
+  }
 
   ReportOptions mo = options;
   mo.case_text.clear();
@@ -480,12 +497,20 @@ std::string building_html(const BuildingAssessment& b, const ReportOptions& opti
                     bt(L, "satisfied_of") + ".");
   }
   int ok = 0, with = 0;
-  for (const BuildingMechanismResult& r : b.results)
+  std::string failing, methods;
+  for (std::size_t i = 0; i < b.results.size(); ++i) {
+    const BuildingMechanismResult& r = b.results[i];
     if (const MethodVerdict* c = r.a.verdict.conclusion()) {
       ++with;
-      ok += c->satisfied && std::isfinite(c->max_dc);
+      const bool pass = c->satisfied && std::isfinite(c->max_dc);
+      ok += pass;
+      if (!pass) failing += (failing.empty() ? "" : ", ") + bc.mechanisms[i].id;
+      const std::string m = msg(L, "method." + r.a.verdict.adopted);
+      if (methods.find(m) == std::string::npos) methods += (methods.empty() ? "" : "; ") + m;
     }
-  h.add_paragraph(std::to_string(ok) + " " + bt(L, "of") + " " + std::to_string(with) + " " + bt(L, "concl_counts") + ".");
+  }
+  h.add_paragraph(std::to_string(ok) + " " + bt(L, "of") + " " + std::to_string(with) + " " + bt(L, "concl_counts") +
+                  " (" + methods + ")" + (failing.empty() ? "" : "; " + bt(L, "concl_failing") + ": " + failing) + ".");
   h.add_raw_html("<div class=\"signature\"><p>" + esc(bt(L, "place_date")) + ": ______________________</p><p>" +
                  esc(bt(L, "engineer")) + ": ______________________</p></div>");
   h.add_heading(bt(L, "appendix"));
