@@ -192,3 +192,16 @@ TEST_CASE("NTC 2008 PGA capacity: the ag at which the check reaches its limit, b
     }
   }
 }
+
+TEST_CASE("a building of more than 1000 mechanisms is refused before any analysis") {
+  json d = building_doc();
+  json entry = d["walls"][0]["mechanisms"][0];
+  json many = json::array();
+  for (int i = 0; i < 1001; ++i) {
+    entry["name"] = "m" + std::to_string(i);
+    many.push_back(entry);
+  }
+  d["walls"][0]["mechanisms"] = many;
+  CHECK_THROWS_WITH_AS(parse_building(d, "house.json"),
+                       doctest::Contains("house.json: /walls/0/mechanisms/1000: more than 1000 mechanisms"), InputError);
+}

@@ -149,6 +149,9 @@ BuildingCase parse_building(const nlohmann::json& doc, const std::string& file) 
     const std::vector<JsonNode> ms = w.array("mechanisms", 1);
     for (std::size_t mi = 0; mi < ms.size(); ++mi) {
       const JsonNode& e = ms[mi];
+      if (b.mechanisms.size() >= building_max_mechanisms)
+        e.fail("more than " + std::to_string(building_max_mechanisms) +
+               " mechanisms in the building: split it into several building cases");
       if (!e.is_object()) e.fail("expected an object {\"name\", \"mechanism\": {...}}");
       e.allow_only({"name", "mechanism", "knowledge_level", "FC", "codes", "method", "check_SLD", "building",
                     "analysis", "dynamic"});

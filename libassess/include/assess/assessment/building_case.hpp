@@ -17,6 +17,10 @@
 
 namespace assess {
 
+/// The most mechanisms a building case may list (a palazzo has a few dozen;
+/// each is a full assessment): bounds the run time of a hostile file.
+inline constexpr std::size_t building_max_mechanisms = 1000;
+
 /// A building document is recognised by its top-level key "walls"; a
 /// single-mechanism case (key "mechanism") is not one.
 bool is_building_document(const nlohmann::json& doc);
