@@ -3,7 +3,8 @@
 # overrides, another site and soil) gives the numbers of its expanded
 # single-mechanism case run alone; the governing mechanisms are recomputed
 # from the single runs.
-foreach(b building-house:mechanisms/building-house.json chiesa_piccola:tests/cli/building/chiesa_piccola.json)
+foreach(b building-house:mechanisms/building-house.json chiesa_piccola:tests/cli/building/chiesa_piccola.json
+          palazzo_sulmona:tests/cli/building/palazzo_sulmona.json)
   string(REPLACE ":" ";" parts ${b})
   list(GET parts 0 name)
   list(GET parts 1 file)

@@ -233,7 +233,7 @@ std::string building_text(const BuildingAssessment& b, TextWidth width) {
     std::string head = format("%-4s ", "id") + pad("", name_w) +
                        format(" %7s %7s | %6s %6s %6s | %6s %6s %6s", "alpha0", "a0*", "D/C", "zetaE", "TRC/TRD", "D/C",
                               "zetaE", "TRC/TRD");
-    if (y18) head += format(" | %6s %4s", "D/C", "rec");
+    if (y18) head += format(" | %6s %-6s", "D/C", "rec");
     o += head + "\n";
     o += format("%-4s ", "") + pad("", name_w) + format(" %7s %7s | %-20s | %-20s", "-", "m/s2", "linear (strength)",
                                                         "non-linear (displ.)");
@@ -259,7 +259,7 @@ std::string building_text(const BuildingAssessment& b, TextWidth width) {
         const BuildingGoverning* g = b.governing_of(code, "dynamic");
         const std::string star = g && g->mechanism == int(i) ? "*" : " ";
         line += " |" + (s ? format(" %6s%s", fx(s->dc, 3), star) : format(" %6s ", "-")) +
-                format("%4s", record_set_text(b, m));
+                format("%-6s", record_set_text(b, m));
       }
       o += line + "\n";
     }

@@ -63,7 +63,58 @@ def same(x, y, path, single_file):
         failures.append(f"{path}: {x!r} != {y!r}")
 
 
+OVERRIDES = ("knowledge_level", "FC", "codes", "method", "check_SLD", "building", "analysis", "dynamic")
+
+
+def merge_patch(target, patch):  # RFC 7386
+    if not isinstance(patch, dict):
+        return patch
+    target = dict(target) if isinstance(target, dict) else {}
+    for k, v in patch.items():
+        if v is None:
+            target.pop(k, None)
+        else:
+            target[k] = merge_patch(target.get(k), v)
+    return target
+
+
+def compose(doc, wall, entry):
+    """The single case an engineer would write for `entry`, by the documented rule (docs/user/building.md)."""
+    case = {k: v for k, v in doc.items() if k not in ("walls", "record_selection", "project")}
+    for over in (wall, entry):
+        for k in OVERRIDES:
+            if k in over:
+                if k == "FC":
+                    case.pop("knowledge_level", None)
+                if k == "knowledge_level":
+                    case.pop("FC", None)
+                case = merge_patch(case, {k: over[k]})
+    case["mechanism"] = entry["mechanism"]
+    case["project"] = (doc["project"] + " — " if doc.get("project") else "") + wall["name"] + ": " + entry["name"]
+    return case
+
+
+doc = json.load(open(os.path.join(src, building), encoding="utf-8"))
 b = run(["run", building, "--json", "--expand", work])
+# The expanded cases are the documented composition (plus the shared range when shared).
+k = 0
+for wall in doc["walls"]:
+    for entry in wall["mechanisms"]:
+        m = b["mechanisms"][k]
+        k += 1
+        expected = compose(doc, wall, entry)
+        got = json.loads(json.dumps(m["case"]))
+        sel = got.get("dynamic", {}).get("select", {})
+        if m["record_set"]["kind"] == "shared":
+            if "period_range_s" not in sel:
+                failures.append(f"{m['id']}: shared record set but no period_range_s in the expanded case")
+            sel.pop("period_range_s", None)
+        elif "period_range_s" in sel and "period_range_s" not in expected.get("dynamic", {}).get("select", {}):
+            failures.append(f"{m['id']}: a period range written for a mechanism that does not share its records")
+        if got != expected:
+            failures.append(f"{m['id']}: expanded case != the documented composition:\n{json.dumps(got, sort_keys=True)}\n"
+                            f"{json.dumps(expected, sort_keys=True)}")
+print(f"{'ok  ' if not failures else 'FAIL'} {k} expanded cases = the documented composition of the building file")
 singles = []
 for m in b["mechanisms"]:
     f = os.path.join(work, m["id"] + ".json")
