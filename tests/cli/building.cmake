@@ -80,3 +80,13 @@ set_tests_properties(cli.building_fragility_governing PROPERTIES LABELS cli
   PASS_REGULAR_EXPRESSION "M2 \"Ribaltamento del secondo piano, cerniera al primo solaio\", the building's governing mechanism")
 assess_cli_error_test(building_fragility_single "--mechanism applies to a building case"
   fragility mechanisms/gable.json --mechanism M1)
+assess_cli_error_test(building_kinematic "a building case \\(key \"walls\"\\): `assess run mechanisms/building-house.json` analyses"
+  kinematic mechanisms/building-house.json)
+
+# The relazione printed to PDF (A4): summary and one section per mechanism.
+add_test(NAME cli.building_report_pdf
+  COMMAND sh -c "command -v chromium >/dev/null && command -v pdfinfo >/dev/null || exit 77; \"$1\" run mechanisms/building-house.json --pdf \"$2\" > /dev/null || exit 1; p=$(pdfinfo \"$2\" | sed -n 's/^Pages: *//p'); echo pages=$p; [ \"$p\" -ge 30 ] && [ \"$p\" -le 90 ] && pdfinfo \"$2\" | grep -q 'Page size:.*(A4)' "
+          sh $<TARGET_FILE:assess_cli> ${CMAKE_CURRENT_BINARY_DIR}/building-house.pdf
+  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.building_report_pdf PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77 TIMEOUT 300
+  ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
