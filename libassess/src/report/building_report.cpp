@@ -19,6 +19,11 @@ std::string fx(double v, int prec) {
   return format("%.*f", prec, v);
 }
 
+std::string rstrip(std::string s) {
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
+}
+
 // Display width of a UTF-8 string (code points).
 std::size_t width_of(const std::string& s) {
   std::size_t w = 0;
@@ -233,12 +238,12 @@ std::string building_text(const BuildingAssessment& b, TextWidth width) {
     std::string head = format("%-4s ", "id") + pad("", name_w) +
                        format(" %7s %7s | %6s %6s %6s | %6s %6s %6s", "alpha0", "a0*", "D/C", "zetaE", "TRC/TRD", "D/C",
                               "zetaE", "TRC/TRD");
-    if (y18) head += format(" | %6s %-6s", "D/C", "rec");
-    o += head + "\n";
-    o += format("%-4s ", "") + pad("", name_w) + format(" %7s %7s | %-20s | %-20s", "-", "m/s2", "linear (strength)",
-                                                        "non-linear (displ.)");
-    if (y18) o += format(" | %-11s", "dynamic");
-    o += "\n";
+    if (y18) head += format(" | %6s  %-6s", "D/C", "rec");
+    o += rstrip(head) + "\n";
+    std::string units = format("%-4s ", "") + pad("", name_w) +
+                        format(" %7s %7s | %-20s | %-20s", "-", "m/s2", "linear (strength)", "non-linear (displ.)");
+    if (y18) units += format(" | %-11s", "dynamic");
+    o += rstrip(units) + "\n";
     for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
       const BuildingMechanism& m = bc.mechanisms[i];
       const BuildingMechanismResult& r = b.results[i];
@@ -259,9 +264,9 @@ std::string building_text(const BuildingAssessment& b, TextWidth width) {
         const BuildingGoverning* g = b.governing_of(code, "dynamic");
         const std::string star = g && g->mechanism == int(i) ? "*" : " ";
         line += " |" + (s ? format(" %6s%s", fx(s->dc, 3), star) : format(" %6s ", "-")) +
-                format("%-6s", record_set_text(b, m));
+                format(" %-6s", record_set_text(b, m));
       }
-      o += line + "\n";
+      o += rstrip(line) + "\n";
     }
   }
   o += "\ngoverning mechanisms\n";
