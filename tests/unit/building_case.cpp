@@ -205,3 +205,44 @@ TEST_CASE("a building of more than 1000 mechanisms is refused before any analysi
   CHECK_THROWS_WITH_AS(parse_building(d, "house.json"),
                        doctest::Contains("house.json: /walls/0/mechanisms/1000: more than 1000 mechanisms"), InputError);
 }
+
+// Hostile values at every place of a building file: each parse either
+// succeeds or throws InputError naming the file (never another exception).
+namespace {
+void leaf_paths(const json& j, const std::string& path, std::vector<std::string>& out) {
+  if (j.is_object()) {
+    for (auto it = j.begin(); it != j.end(); ++it) leaf_paths(it.value(), path + "/" + it.key(), out);
+  } else if (j.is_array()) {
+    for (std::size_t i = 0; i < j.size(); ++i) leaf_paths(j[i], path + "/" + std::to_string(i), out);
+  }
+  out.push_back(path);
+}
+}  // namespace
+
+TEST_CASE("hostile values anywhere in a building file give an InputError naming the file, or a valid case") {
+  const json base = building_doc();
+  std::vector<std::string> paths;
+  leaf_paths(base, "", paths);
+  const std::vector<json> hostile = {json(nullptr), json(-1.0), json(1e308), json("x"), json::array(), json::object()};
+  int parsed = 0, refused = 0;
+  for (const std::string& p : paths) {
+    if (p.empty()) continue;
+    for (const json& v : hostile) {
+      json d = base;
+      d[json::json_pointer(p)] = v;
+      try {
+        const BuildingCase b = parse_building(d, "hostile.json");
+        ++parsed;
+        CHECK(!b.mechanisms.empty());
+      } catch (const InputError& e) {
+        ++refused;
+        const std::string what = e.what();
+        CAPTURE(p);
+        CAPTURE(what);
+        CHECK(what.rfind("hostile.json", 0) == 0);
+      }
+    }
+  }
+  MESSAGE(parsed << " hostile variants parsed, " << refused << " refused");
+  CHECK(refused > 100);
+}
