@@ -65,8 +65,12 @@ const std::string& bt(Lang L, const std::string& key) {
         "largest D/C of its checks and ζE = PGA_C/PGA_D (ag on rock, the governing SLV or SLC check); ★ = the "
         "approach's governing mechanism; red: D/C > 1 and ζE < 1. Outcome: the adopted method's conclusion (non-linear unless noted); Rec.: the record set. The mechanism's code links to its section."}},
       {"table08_cap",
-       {"NTC 2008 (Circ. 617/2009 C8A.4), a titolo di confronto: PGA_C è l'ag dello SLV per cui il D/C della verifica vale 1.",
-        "NTC 2008 (Circ. 617/2009 C8A.4), for comparison: PGA_C is the SLV ag at which the check's D/C equals 1."}},
+       {"NTC 2008 (Circ. 617/2009 C8A.4), a titolo di confronto. PGA_C con la lettura delle verifiche NTC 2018: "
+        "resistenza, q per l'ag dello SLV a cui la domanda senza q eguaglia a0*; spostamento, l'ag dello SLV a cui il "
+        "D/C della verifica vale 1.",
+        "NTC 2008 (Circ. 617/2009 C8A.4), for comparison. PGA_C with the reading of the NTC 2018 checks: strength, q "
+        "times the SLV ag at which the demand without q equals a0*; displacement, the SLV ag at which the check's D/C "
+        "equals 1."}},
       {"id", {"Cod.", "Id"}},
       {"wall_mech", {"Parete: meccanismo", "Wall: mechanism"}},
       {"records", {"Accelerogrammi", "Records"}},
