@@ -473,11 +473,24 @@ std::string building_html(const BuildingAssessment& b, const ReportOptions& opti
                       HtmlCell("PGA_D (g)", "num"), HtmlCell("ζE", "num"), HtmlCell("TR_C", "num"),
                       HtmlCell("TR_D", "num"), HtmlCell("TR_C/TR_D", "num"), bt(L, "check")},
                      rows, bt(L, "indices") + " (* " + bt(L, "extrapolated") + ")");
-    h.set_id_prefix(m.id + "-");
-    h.set_heading_shift(1);
-    facade_html_mechanism_sections(r.a, mo, h);
-    h.set_heading_shift(0);
-    h.set_id_prefix("");
+    // The façade report's sections, nested one level down (h2 -> h3) with
+    // figure ids prefixed by the mechanism's id; its verdict box's own
+    // heading goes down a level too.
+    HtmlReport part(bt(L, "title"));
+    part.set_id_prefix(m.id + "-");
+    part.set_heading_shift(1);
+    facade_html_mechanism_sections(r.a, mo, part);
+    std::string body = part.body();
+    const std::string vh = "<h2 class=\"verdicts-heading\"";
+    for (std::size_t at = body.find(vh); at != std::string::npos; at = body.find(vh, at)) {
+      body.replace(at, 3, "<h3");
+      // Not counted among the numbered subsections (1.1 is the mechanism's drawing).
+      const std::size_t tag_end = body.find('>', at), style = body.find("style=\"", at);
+      if (style != std::string::npos && style < tag_end) body.insert(style + 7, "counter-increment:none;");
+      const std::size_t close = body.find("</h2>", at);
+      if (close != std::string::npos) body.replace(close, 5, "</h3>");
+    }
+    h.add_raw_html(body);
     h.add_raw_html("<p class=\"back\"><a href=\"#summary\">" + esc(bt(L, "back")) + "</a></p>");
   }
 

@@ -65,6 +65,10 @@ class HtmlReport {
   /// nests a whole report under a level-2 heading: 2 -> h3, 3 -> h4, 4 -> h5).
   void set_heading_shift(int shift) { heading_shift_ = shift; }
 
+  /// The body built so far (no title, subtitle or styles): a report nested
+  /// in another one is built apart and inserted with add_raw_html.
+  const std::string& body() const { return body_; }
+
   std::size_t figure_count() const { return figure_ids_.size(); }
   /// The complete HTML5 document.
   std::string str() const;
