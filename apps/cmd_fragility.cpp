@@ -5,7 +5,9 @@
 // annual risk of overturning on the site's hazard curve (docs/user/fragility.md).
 #include "commands.hpp"
 
+#include <assess/assessment/building_assessment.hpp>
 #include <assess/assessment/case_file.hpp>
+#include <assess/support/json_input.hpp>
 #include <assess/campaign/campaign_runner.hpp>
 #include <assess/report/plot.hpp>
 #include <assess/risk/fragility_job.hpp>
@@ -32,7 +34,7 @@ namespace assess::cli {
 namespace {
 
 struct FragilityArgs {
-  std::string file, out, stripes, ida_levels;
+  std::string file, out, stripes, ida_levels, mechanism;
   bool ida = false, json = false, resume = false, quiet = false, no_plots = false;
   unsigned threads = 0;
   int records = 0, bootstrap = 500;
@@ -98,10 +100,32 @@ void run(const FragilityArgs& a) {
   fo.records = a.records;
   fo.bootstrap = a.bootstrap;
   fo.seed = a.seed;
-  const CaseFile kase = read_case_file(a.file);
+  const nlohmann::json doc = read_json_file(a.file);
+  CaseFile kase;
+  std::string out_default = default_out(a.file);
+  if (is_building_document(doc)) {
+    // A building case (issue 22): the mechanism named by --mechanism, else the
+    // governing one (docs/user/building.md, "Fragility").
+    const BuildingCase bc = parse_building(doc, a.file);
+    const BuildingMechanism* m = a.mechanism.empty() ? nullptr : &find_mechanism(bc, a.mechanism);
+    if (!m) {
+      const std::string approach = bc.mechanisms.front().kase.method == "linear" ? "strength" : "displacement";
+      m = &bc.mechanisms[governing_mechanism_kinematic(bc, approach)];
+      if (!a.quiet && rank == 0)
+        std::cerr << "assess fragility: " << m->id << " \"" << m->name << "\", the building's governing mechanism ("
+                  << "lowest NTC 2018 zetaE, " << approach << "); --mechanism ID for another\n";
+    }
+    kase = m->kase;
+    out_default = std::filesystem::path(a.file).stem().string() + "." + m->id + ".fragility";
+  } else {
+    if (!a.mechanism.empty())
+      throw InputError(a.file + ": --mechanism applies to a building case (a file with \"walls\"), not to a "
+                       "single-mechanism case");
+    kase = parse_case(doc, a.file);
+  }
   const FragilityStudy study = prepare_fragility(kase, fo);
   const FragilityJob job(study);
-  const std::string out = a.out.empty() ? default_out(a.file) : a.out;
+  const std::string out = a.out.empty() ? out_default : a.out;
 
   CampaignRunOptions o;
   o.threads = a.threads ? a.threads : (ranks > 1 ? 1u : 0u);
@@ -168,7 +192,9 @@ void add_fragility_command(CLI::App& app) {
       "fragility",
       "Fragility curves of the case's mechanism (multiple-stripe analysis or IDA with the record catalogue) and the "
       "annual risk of overturning at the site; all cores, resumable, MPI-aware");
-  cmd->add_option("case", a->file, "case file (JSON) with a site and a dynamic section")->required();
+  cmd->add_option("case", a->file, "case file (JSON) with a site and a dynamic section, or a building case")->required();
+  cmd->add_option("--mechanism", a->mechanism,
+                  "building case: the mechanism (id M1, M2, ... or its name; default: the governing one)");
   cmd->add_option("--stripes", a->stripes,
                   "return periods of the stripes, comma-separated (years, in [30, 2475]; default the nine of the "
                   "hazard grid)");

@@ -3,7 +3,9 @@
 // NTC 2008 / NTC 2018. Parses, calls the library, prints.
 #include "commands.hpp"
 
+#include <assess/assessment/building_case.hpp>
 #include <assess/assessment/case_file.hpp>
+#include <assess/support/json_input.hpp>
 #include <assess/report/kinematic_report.hpp>
 #include <assess/assessment/tie_intervention.hpp>
 #include <assess/report/tie_report.hpp>
@@ -27,7 +29,12 @@ struct KinematicArgs {
 };
 
 void run(const KinematicArgs& a) {
-  const CaseFile c = read_case_file(a.file);
+  const nlohmann::json doc = read_json_file(a.file);
+  if (is_building_document(doc))
+    throw InputError(a.file + ": a building case (key \"walls\"): `assess run " + a.file +
+                     "` analyses and checks its mechanisms; `assess kinematic` takes a single-mechanism case "
+                     "(`assess run " + a.file + " --expand DIR` writes each mechanism's; docs/user/building.md)");
+  const CaseFile c = parse_case(doc, a.file);
   const KinematicCaseResult out = run_kinematic_case(c);  // alpha0 <= 0: InputError "statically unstable"
   print_warnings(out.warnings);
   // Issue 23: ties before/after and their checks (they need the site's hazard).

@@ -3,7 +3,10 @@
 // dynamic rocking analysis — side by side. Parses, calls, prints.
 #include "commands.hpp"
 
+#include <assess/assessment/building_assessment.hpp>
 #include <assess/assessment/case_file.hpp>
+#include <assess/report/building_report.hpp>
+#include <assess/support/json_input.hpp>
 #include <assess/support/error.hpp>
 #include <assess/assessment/facade_assessment.hpp>
 #include <assess/report/facade_report.hpp>
@@ -44,13 +47,74 @@ std::string wrap(const std::string& line, std::size_t width) {
 }
 
 struct RunArgs {
-  std::string file, html, pdf, lang = "it", fragility;
+  std::string file, html, pdf, lang = "it", fragility, mechanism, expand;
   bool json = false, keep_going = false, wide = false;
 };
 
-void run(const RunArgs& a) {
+void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_text);
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// A building case (issue 22; docs/user/building.md): every mechanism, the
+// summary and the relazione; --mechanism ID runs one mechanism as a single case.
+void run_building(const RunArgs& a, const nlohmann::json& doc) {
   const Lang lang = parse_lang(a.lang);
-  const CaseFile c = read_case_file(a.file);
+  BuildingCase bc = parse_building(doc, a.file);
+  if (!a.mechanism.empty()) {
+    const BuildingMechanism& m = find_mechanism(bc, a.mechanism);
+    run_single(a, m.kase, standalone_case(bc, m).dump(2) + "\n");
+    return;
+  }
+  FacadeOptions opt;
+  opt.keep_going = a.keep_going;
+  opt.histories = !a.html.empty() || !a.pdf.empty();
+  const BuildingAssessment res = assess_building(std::move(bc), opt);
+  print_warnings(res.warnings);
+  if (!a.expand.empty()) {
+    std::filesystem::create_directories(a.expand);
+    for (const BuildingMechanism& m : res.building.mechanisms) {
+      const std::string path = a.expand + "/" + m.id + ".json";
+      std::ofstream out(path, std::ios::binary);
+      if (!out || !(out << standalone_case(res.building, m).dump(2) << "\n"))
+        throw InputError("--expand " + a.expand + ": cannot write " + path);
+    }
+  }
+  if (!a.html.empty() || !a.pdf.empty()) {
+    ReportOptions ro;
+    ro.lang = lang;
+    ro.case_text = read_text(a.file);
+    const std::string page = building_html(res, ro);
+    if (!a.html.empty()) {
+      std::ofstream out(a.html, std::ios::binary);
+      if (!out || !(out << page)) throw InputError("--html " + a.html + ": cannot write the file");
+    }
+    if (!a.pdf.empty()) html_to_pdf(page, a.pdf);
+  }
+  if (a.json) {
+    nlohmann::json j = building_json(res);
+    std::cout << stamp_version(j).dump(2) << "\n";
+  } else {
+    std::cout << building_text(res, a.wide ? TextWidth::wide : TextWidth::columns120)
+              << (a.expand.empty() ? "" : "\nexpanded single-mechanism cases written to " + a.expand + "/M*.json\n")
+              << (a.html.empty() ? "" : "\nHTML report written to " + a.html + "\n")
+              << (a.pdf.empty() ? "" : "PDF report written to " + a.pdf + "\n");
+  }
+}
+
+void run(const RunArgs& a) {
+  const nlohmann::json doc = read_json_file(a.file);
+  if (is_building_document(doc)) return run_building(a, doc);
+  if (!a.mechanism.empty() || !a.expand.empty())
+    throw InputError(a.file + ": --mechanism and --expand apply to a building case (a file with \"walls\"), "
+                     "not to a single-mechanism case");
+  run_single(a, parse_case(doc, a.file), read_text(a.file));
+}
+
+void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_text) {
+  const Lang lang = parse_lang(a.lang);
   FacadeOptions opt;
   opt.keep_going = a.keep_going;
   opt.histories = !a.html.empty() || !a.pdf.empty();
@@ -86,10 +150,7 @@ void run(const RunArgs& a) {
     ro.lang = lang;
     ro.fragility = prob;
     if (ties) ro.ties = &*ties;
-    {
-      std::ifstream in(a.file, std::ios::binary);
-      ro.case_text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    }
+    ro.case_text = case_text;
     const std::string page = facade_html(res, ro);
     if (!a.html.empty()) {
       std::ofstream out(a.html, std::ios::binary);
@@ -99,6 +160,8 @@ void run(const RunArgs& a) {
   }
   if (a.json) {
     nlohmann::json j = facade_json(res);
+    // zetaE = PGA_C/PGA_D and TR_C/TR_D per approach (docs/theory/building.md §4), as the building report gives them.
+    j["safety_indices"] = safety_indices_json(safety_indices(res));
     if (frag) {
       nlohmann::json f = probabilistic_result_json(*prob);
       f["line"] = fragility_line(*frag);
@@ -120,7 +183,8 @@ void run(const RunArgs& a) {
 
 void add_run_command(CLI::App& app) {
   auto args = std::make_shared<RunArgs>();
-  auto* cmd = app.add_subcommand("run", "façade assessment: strength, displacement and dynamic verdicts side by side");
+  auto* cmd = app.add_subcommand("run", "façade assessment: strength, displacement and dynamic verdicts side by side; "
+                                       "a building case (key \"walls\"): every mechanism, safety indices, one relazione");
   cmd->add_option("case", args->file, "case file (JSON, see docs/user/case-file.md)")->required()->check(CLI::ExistingFile);
   cmd->add_flag("--json", args->json, "print the report as JSON");
   cmd->add_option("--html", args->html, "also write a self-contained HTML report with plots to this file");
@@ -129,6 +193,10 @@ void add_run_command(CLI::App& app) {
                   "language of the HTML/PDF report: it (default: the relazione is filed in Italy) or en");
   cmd->add_flag("--wide", args->wide, "one line per table row however long (default: tables within 120 columns)");
   cmd->add_flag("--keep-going", args->keep_going, "continue with the readable records when some cannot be read");
+  cmd->add_option("--mechanism", args->mechanism,
+                  "building case: run one mechanism (id M1, M2, ... or its name) as its single-mechanism case");
+  cmd->add_option("--expand", args->expand,
+                  "building case: write each mechanism's expanded single-mechanism case to DIR/M<n>.json");
   cmd->add_option("--fragility", args->fragility,
                   "add the fragility result in this directory (of `assess fragility`; default CASE.fragility if present)");
   cmd->callback([args] { run(*args); });

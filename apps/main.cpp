@@ -38,7 +38,8 @@ int main(int argc, char** argv) {
       {"kinematic", "assess kinematic mechanisms/two_storey_facade.json"},
       {"rocking", "assess rocking --model rigid --thickness 0.5 --height 4 --unit-weight 18 --record "
                    "spectra/records/RSN285_ITALY_A-BAG000.AT2"},
-      {"run", "assess run mechanisms/church-facade.json --lang it --html relazione.html --pdf relazione.pdf"},
+      {"run", "assess run mechanisms/church-facade.json --lang it --html relazione.html --pdf relazione.pdf\n"
+              "  assess run mechanisms/building-house.json --html casa.html   (a whole building)"},
       {"campaign", "assess campaign mechanisms/campaign-seed-3.2.json --out results --threads 2"},
       {"records", "assess records select --lat 43.44 --lon 12.64 --soil C --count 7"},
       {"fragility", "assess fragility mechanisms/church-facade.json --out church.fragility"},

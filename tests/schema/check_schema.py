@@ -52,8 +52,51 @@ for f in bad:
     else:
         print(f"ok   {rel}: rejected by the schema and by the tool ({run.stderr.strip()[:140]})")
 
+# Issue 22: the building case schema (docs/schema/building.schema.json) refers
+# to the case schema for the site, the building and each mechanism.
+bschema = json.load(open(os.path.join(src, "docs/schema/building.schema.json"), encoding="utf-8"))
+jsonschema.Draft202012Validator.check_schema(bschema)
+try:
+    from referencing import Registry, Resource
+    registry = Registry().with_resource(schema["$id"], Resource.from_contents(schema))
+    bvalidator = jsonschema.Draft202012Validator(bschema, registry=registry)
+except ImportError:  # jsonschema < 4.18 (Debian 12: 4.10)
+    resolver = jsonschema.RefResolver.from_schema(bschema, store={schema["$id"]: schema})
+    bvalidator = jsonschema.Draft202012Validator(bschema, resolver=resolver)
+bgood = sorted(glob.glob(os.path.join(src, "mechanisms/building-*.json"))) + sorted(
+    glob.glob(os.path.join(src, "tests/cli/building/*.json")))
+for f in bgood:
+    doc = json.load(open(f, encoding="utf-8"))
+    errors = list(bvalidator.iter_errors(doc))
+    if errors:
+        failures += 1
+        print(f"FAIL {os.path.relpath(f, src)}: shipped building rejected by the schema: {errors[0].message}")
+    else:
+        print(f"ok   {os.path.relpath(f, src)}: building valid")
+# Bad buildings the schema can judge (duplicate names and partial dynamic
+# overrides are the tool's alone).
+bbad = [os.path.join(src, "tests/cli/building_bad", n + ".json") for n in
+        ("unknown_key", "no_walls", "no_site", "fc_and_level", "mechanisms_not_array", "unknown_entry_key",
+         "site_override", "bad_thickness", "bad_Z_override")]
+for f in bbad:
+    rel = os.path.relpath(f, src)
+    doc = json.load(open(f, encoding="utf-8"))
+    if bvalidator.is_valid(doc):
+        failures += 1
+        print(f"FAIL {rel}: bad building accepted by the schema")
+    run = subprocess.run([exe, "run", f], capture_output=True, text=True, cwd=src)
+    if run.returncode != 2 or "error:" not in run.stderr or os.path.basename(f) not in run.stderr:
+        failures += 1
+        print(f"FAIL {rel}: the tool gave exit {run.returncode}, stderr: {run.stderr.strip()[:300]}")
+    else:
+        print(f"ok   {rel}: rejected by the schema and by the tool ({run.stderr.strip()[:140]})")
+if len(bgood) < 2:
+    failures += 1
+    print(f"FAIL expected at least 2 shipped buildings, found {len(bgood)}")
+
 if n_good < 8 or len(bad) < 10:
     failures += 1
     print(f"FAIL expected at least 8 shipped cases and 10 bad cases, found {n_good} and {len(bad)}")
-print(f"check_schema: {n_good} shipped cases valid, {len(bad)} bad cases rejected by schema and tool; {failures} failure(s)")
+print(f"check_schema: {n_good} shipped cases valid, {len(bad)} bad cases rejected by schema and tool; "
+      f"{len(bgood)} buildings valid, {len(bbad)} bad buildings rejected; {failures} failure(s)")
 sys.exit(1 if failures else 0)

@@ -1040,4 +1040,21 @@ std::string facade_html(const FacadeAssessment& a, const ReportOptions& options)
   return h.str();
 }
 
+// The building relazione (issue 22, building_html.cpp) reuses these sections.
+void facade_html_site_section(const FacadeAssessment& a, const ReportOptions& options, HtmlReport& h) {
+  const Ctx c{a, options, options.lang, h};
+  add_site(c);
+}
+
+void facade_html_mechanism_sections(const FacadeAssessment& a, const ReportOptions& options, HtmlReport& h) {
+  const Ctx c{a, options, options.lang, h};
+  add_verdict_box(c);
+  add_mechanism(c);
+  add_kinematic(c);
+  add_checks(c);
+  add_dynamic(c);
+  add_comparison(c);
+  add_warnings(c);
+}
+
 }  // namespace assess

@@ -80,6 +80,7 @@ HtmlReport::HtmlReport(std::string title) : title_(std::move(title)) {}
 
 void HtmlReport::add_heading(const std::string& text, int level, bool new_page) {
   if (level < 2 || level > 4) throw InputError("HtmlReport: heading level must be 2..4");
+  level += heading_shift_;  // a report nested in another (the building's mechanisms)
   const std::string tag = "h" + std::to_string(level);
   std::string cls;
   if (level == 2) {
@@ -135,7 +136,8 @@ void check_figure_id(const std::vector<std::string>& ids, const std::string& id)
 }
 }  // namespace
 
-void HtmlReport::add_svg(const std::string& svg, const std::string& caption, const std::string& id) {
+void HtmlReport::add_svg(const std::string& svg, const std::string& caption, const std::string& id_in) {
+  const std::string id = id_prefix_ + id_in;
   check_figure_id(figure_ids_, id);
   const std::string body = svg_body(svg, id);
   body_ += "<figure id=\"" + id + "\">\n" + body + "\n";
@@ -145,7 +147,8 @@ void HtmlReport::add_svg(const std::string& svg, const std::string& caption, con
 }
 
 void HtmlReport::add_svg_grid(const std::vector<std::pair<std::string, std::string>>& svgs,
-                              const std::string& caption, const std::string& id) {
+                              const std::string& caption, const std::string& id_in) {
+  const std::string id = id_prefix_ + id_in;
   check_figure_id(figure_ids_, id);
   body_ += "<figure id=\"" + id + "\">\n<div class=\"grid\">\n";
   for (std::size_t i = 0; i < svgs.size(); ++i)

@@ -16,6 +16,8 @@
 
 namespace assess {
 
+class HtmlReport;
+
 /// Readable report: site block per limit state, kinematic block with every
 /// intermediate quantity, the checks table (kinematic and dynamic rows, verdicts
 /// in Italian and English), the dynamic table and the D/C of all approaches.
@@ -56,5 +58,15 @@ int governing_verdict_row(const Verdict& v, const std::string& code);
 /// and the case file. Plots are drawn by gnuplot.
 /// @throws InputError if gnuplot is missing (names the package gnuplot-nox)
 std::string facade_html(const FacadeAssessment& a, const ReportOptions& options = {});
+
+/// The site section of the relazione (site, limit states, spectra), appended
+/// to `h`: the building relazione shows it once (issue 22).
+void facade_html_site_section(const FacadeAssessment& a, const ReportOptions& options, HtmlReport& h);
+
+/// One mechanism's sections of the relazione appended to `h` (verdict box,
+/// mechanism, kinematic analysis, checks, dynamic analysis, D/C by approach,
+/// warnings): the building relazione nests them under each mechanism's heading
+/// (with HtmlReport::set_id_prefix and set_heading_shift).
+void facade_html_mechanism_sections(const FacadeAssessment& a, const ReportOptions& options, HtmlReport& h);
 
 }  // namespace assess

@@ -58,6 +58,17 @@ class HtmlReport {
   /// A line under the title (escaped).
   void set_subtitle(const std::string& text) { subtitle_ = text; }
 
+  /// A prefix put before every figure id from now on (several reports on one
+  /// page, e.g. "M3-": the building's mechanisms); "" by default.
+  void set_id_prefix(const std::string& prefix) { id_prefix_ = prefix; }
+  /// Headings added from now on go `shift` levels deeper (0 by default; 1
+  /// nests a whole report under a level-2 heading: 2 -> h3, 3 -> h4, 4 -> h5).
+  void set_heading_shift(int shift) { heading_shift_ = shift; }
+
+  /// The body built so far (no title, subtitle or styles): a report nested
+  /// in another one is built apart and inserted with add_raw_html.
+  const std::string& body() const { return body_; }
+
   std::size_t figure_count() const { return figure_ids_.size(); }
   /// The complete HTML5 document.
   std::string str() const;
@@ -70,6 +81,8 @@ class HtmlReport {
   std::string body_;
   std::vector<std::string> figure_ids_;
   bool has_section_ = false;
+  std::string id_prefix_;
+  int heading_shift_ = 0;
 };
 
 }  // namespace assess

@@ -1,0 +1,89 @@
+// building_assessment.hpp: the assessment of a building (issue 22): every
+// mechanism of the building case run through assess_facade (the code path of
+// a single run), in parallel across mechanisms, then per mechanism and
+// approach the PGA capacity, its return period and the safety index
+// zetaE = PGA_C / PGA_D (and TR_C / TR_D) of both code editions, the governing
+// mechanism of the building per approach and the mechanisms that pass and
+// fail (docs/theory/building.md).
+#pragma once
+
+#include "assess/assessment/building_case.hpp"
+#include "assess/assessment/facade_assessment.hpp"
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace assess {
+
+/// The safety index of one mechanism for one (code, approach)
+/// (docs/theory/building.md §4). PGA means ag on rock (g), the quantity of the
+/// hazard grid and of the checks' PGA capacity (CheckRow::ag_capacity_g).
+struct SafetyIndex {
+  std::string code;      ///< "NTC2018" | "NTC2008"
+  std::string approach;  ///< "strength" | "displacement" | "dynamic"
+  bool has_checks = false;  ///< the approach has checks for this mechanism
+  double dc = std::numeric_limits<double>::quiet_NaN();  ///< the approach's largest D/C (verdict), -
+  bool satisfied = false;   ///< the approach's verdict
+  int checks = 0, failing = 0, no_verdict = 0;
+  /// zetaE defined: a PGA capacity exists (strength and displacement; the
+  /// dynamic approach has none: `note` says why).
+  bool defined = false;
+  std::string note;
+  std::string limit_state, location, candidate;  ///< the check that governs zetaE
+  double ag_capacity_g = std::numeric_limits<double>::quiet_NaN();  ///< PGA_C (g); inf if never reached
+  double ag_demand_g = std::numeric_limits<double>::quiet_NaN();    ///< PGA_D (g)
+  double zeta = std::numeric_limits<double>::quiet_NaN();           ///< PGA_C / PGA_D (-)
+  double TR_capacity = std::numeric_limits<double>::quiet_NaN();    ///< TR of PGA_C on the site's ag curve (years)
+  double TR_demand = std::numeric_limits<double>::quiet_NaN();      ///< TR of the limit state (years)
+  double TR_ratio = std::numeric_limits<double>::quiet_NaN();       ///< TR_C / TR_D (-)
+  bool TR_extrapolated = false;  ///< TR_C outside the grid's 30-2475 years (power-law extrapolation)
+};
+
+struct BuildingMechanismResult {
+  FacadeAssessment a;
+  std::vector<SafetyIndex> indices;  ///< per code (as the case lists them), then strength, displacement, dynamic
+  /// The index of (code, approach), or nullptr.
+  const SafetyIndex* index(const std::string& code, const std::string& approach) const;
+};
+
+/// The governing mechanism of the building for one (code, approach): the lowest
+/// zetaE (strength, displacement), the largest D/C (dynamic: no zetaE).
+struct BuildingGoverning {
+  std::string code, approach;
+  int mechanism = -1;  ///< index in BuildingCase::mechanisms; -1 if no mechanism has the approach
+  double zeta = std::numeric_limits<double>::quiet_NaN();
+  double dc = std::numeric_limits<double>::quiet_NaN();
+  int satisfied = 0, failing = 0, no_verdict = 0;  ///< mechanisms passing, failing, without a verdict
+  int assessed = 0;                                ///< mechanisms with checks of the approach
+};
+
+struct BuildingAssessment {
+  BuildingCase building;  ///< as run (a shared selection that fell back is marked)
+  std::vector<BuildingMechanismResult> results;  ///< one per mechanism, in the file's order
+  std::vector<BuildingGoverning> governing;      ///< per code, then approach
+  std::vector<std::string> codes;                ///< the codes present, NTC2018 first
+  std::string site_description;
+  double VR = 0.0;
+  double TR_SLV = 0.0;  ///< years
+  double ag_SLV_g = 0.0;
+  /// Warnings of the building (paths in the building file), mechanism by mechanism.
+  std::vector<std::string> warnings;
+  const BuildingGoverning* governing_of(const std::string& code, const std::string& approach) const;
+};
+
+/// Runs every mechanism (assess_facade on its expanded case, in parallel
+/// across mechanisms, results in the file's order). Errors name the building
+/// file and the path in it. @throws InputError
+BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& options = {});
+
+/// The governing mechanism of the building for `approach` ("strength" or
+/// "displacement") by the kinematic checks alone (no dynamic analysis): the
+/// lowest NTC 2018 zetaE (else NTC 2008); ties: the first. The index in
+/// b.mechanisms. Used by `assess fragility BUILDING.json` without --mechanism.
+std::size_t governing_mechanism_kinematic(const BuildingCase& b, const std::string& approach);
+
+/// The safety indices of one mechanism's assessment (docs/theory/building.md §4).
+std::vector<SafetyIndex> safety_indices(const FacadeAssessment& a);
+
+}  // namespace assess

@@ -1,0 +1,289 @@
+// building_case.cpp: the building case file and its expansion into
+// single-mechanism cases (docs/user/building.md; docs/theory/building.md §2-3).
+#include "assess/assessment/building_case.hpp"
+
+#include "assess/assessment/dynamic_case.hpp"
+#include "assess/assessment/mechanism_dynamics.hpp"
+#include "assess/hazard/hazard.hpp"
+#include "assess/records/record_selection.hpp"
+#include "assess/support/error.hpp"
+#include "assess/support/json_input.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <set>
+
+namespace assess {
+
+namespace {
+
+// The keys a wall or a mechanism entry may override (the case keys but the site:
+// one building stands on one site).
+constexpr std::initializer_list<const char*> override_keys = {"knowledge_level", "FC", "codes", "method",
+                                                               "check_SLD", "building", "analysis", "dynamic"};
+
+std::string directory_of(const std::string& path) {
+  const auto p = path.find_last_of('/');
+  return p == std::string::npos ? "." : path.substr(0, p);
+}
+
+// Merges the overrides of `over` (a wall or a mechanism entry) into `into`:
+// JSON merge patch per key (RFC 7386), and "FC" and "knowledge_level"
+// replace each other (a case gives one of them).
+void apply_overrides(nlohmann::json& into, const nlohmann::json& over) {
+  for (const char* k : override_keys) {
+    if (!over.contains(k)) continue;
+    if (std::string(k) == "FC") into.erase("knowledge_level");
+    if (std::string(k) == "knowledge_level") into.erase("FC");
+    nlohmann::json patch = nlohmann::json::object();
+    patch[k] = over.at(k);
+    into.merge_patch(patch);
+  }
+}
+
+bool contains_pointer(const nlohmann::json& j, const std::string& path) {
+  try {
+    return j.contains(nlohmann::json::json_pointer(path));
+  } catch (const nlohmann::json::exception&) {
+    return false;
+  }
+}
+
+std::string first_token(const std::string& path) {
+  const auto e = path.find('/', 1);
+  return path.substr(1, e == std::string::npos ? std::string::npos : e - 1);
+}
+
+// The building-file path of a path of the expanded case.
+std::string origin(const BuildingCase& b, const BuildingMechanism& m, const std::string& path) {
+  const nlohmann::json& wall = b.doc.at("walls").at(m.wall_index);
+  const nlohmann::json& entry = wall.at("mechanisms").at(m.index);
+  const std::string wall_path = "/walls/" + std::to_string(m.wall_index);
+  if (path == "/project") return m.json_path + "/name";
+  if (contains_pointer(entry, path)) return m.json_path + path;
+  if (contains_pointer(wall, path) && first_token(path) != "mechanisms" && first_token(path) != "name")
+    return wall_path + path;
+  if (contains_pointer(b.doc, path)) return path;
+  const std::string t = first_token(path);
+  if (entry.contains(t)) return m.json_path + path;
+  if (wall.contains(t) && t != "mechanisms" && t != "name") return wall_path + path;
+  return path;
+}
+
+// Parses an expanded case; its errors name the building file's paths.
+CaseFile parse_expanded(const BuildingCase& b, const BuildingMechanism& m) {
+  try {
+    return parse_case(m.expanded, b.file);
+  } catch (const InputError& e) {
+    throw InputError(building_path_message(b, m, e.what()));
+  }
+}
+
+}  // namespace
+
+bool is_building_document(const nlohmann::json& doc) { return doc.is_object() && doc.contains("walls"); }
+
+std::string to_string(RecordSetKind k) {
+  switch (k) {
+    case RecordSetKind::none: return "none";
+    case RecordSetKind::listed: return "listed";
+    case RecordSetKind::shared: return "shared";
+    case RecordSetKind::own: return "own";
+  }
+  return "none";
+}
+
+std::string building_path_message(const BuildingCase& b, const BuildingMechanism& m, const std::string& message) {
+  const std::string prefix = b.file + ": /";
+  std::string out;
+  std::size_t pos = 0;
+  // Every "<file>: /path" in the message (a warning may name several).
+  while (true) {
+    const std::size_t at = message.find(prefix, pos);
+    if (at == std::string::npos) break;
+    std::size_t end = at + prefix.size() - 1;
+    while (end < message.size() && (std::isalnum(static_cast<unsigned char>(message[end])) || message[end] == '/' ||
+                                    message[end] == '_'))
+      ++end;
+    const std::string path = message.substr(at + b.file.size() + 2, end - (at + b.file.size() + 2));
+    out += message.substr(pos, at - pos) + b.file + ": " + origin(b, m, path);
+    pos = end;
+  }
+  out += message.substr(pos);
+  // Name the mechanism for the reader.
+  return out + " [" + m.id + " \"" + m.name + "\"]";
+}
+
+BuildingCase parse_building(const nlohmann::json& doc, const std::string& file) {
+  BuildingCase b;
+  b.file = file;
+  b.doc = doc;
+  const JsonNode root(b.doc, file);
+  if (!root.is_object()) root.fail("expected an object (a building case file)");
+  root.allow_only({"schema_version", "project", "site", "building", "knowledge_level", "FC", "codes", "method",
+                   "check_SLD", "analysis", "dynamic", "walls", "record_selection"});
+  if (root.find("schema_version")) root.integer("schema_version", 1, 1);
+  b.project = root.find("project") ? root.string("project") : "";
+  if (!root.has("site"))
+    root.fail("missing required key \"site\": the building's site, checked against by every mechanism "
+              "(\"comune\", \"lat\"/\"lon\" in deg, \"island\" or \"hazard\"; docs/user/building.md)");
+  if (root.find("record_selection")) b.record_selection = root.choice("record_selection", {"shared", "per_mechanism"});
+  if (root.find("FC") && root.find("knowledge_level")) root.fail("give \"knowledge_level\" or \"FC\", not both");
+
+  nlohmann::json base = b.doc;
+  base.erase("walls");
+  base.erase("record_selection");
+  base.erase("project");
+
+  std::set<std::string> names;
+  const std::vector<JsonNode> walls = root.array("walls", 1);
+  for (std::size_t wi = 0; wi < walls.size(); ++wi) {
+    const JsonNode& w = walls[wi];
+    if (!w.is_object()) w.fail("expected an object {\"name\", \"mechanisms\": [...]}");
+    w.allow_only({"name", "mechanisms", "knowledge_level", "FC", "codes", "method", "check_SLD", "building",
+                  "analysis", "dynamic"});
+    const std::string wall_name = w.string("name");
+    if (w.find("FC") && w.find("knowledge_level")) w.fail("give \"knowledge_level\" or \"FC\", not both");
+    const std::vector<JsonNode> ms = w.array("mechanisms", 1);
+    for (std::size_t mi = 0; mi < ms.size(); ++mi) {
+      const JsonNode& e = ms[mi];
+      if (b.mechanisms.size() >= building_max_mechanisms)
+        e.fail("more than " + std::to_string(building_max_mechanisms) +
+               " mechanisms in the building: split it into several building cases");
+      if (!e.is_object()) e.fail("expected an object {\"name\", \"mechanism\": {...}}");
+      e.allow_only({"name", "mechanism", "knowledge_level", "FC", "codes", "method", "check_SLD", "building",
+                    "analysis", "dynamic"});
+      BuildingMechanism m;
+      m.name = e.string("name");
+      if (m.name.empty()) e.at("name").fail("expected a non-empty name");
+      if (!names.insert(m.name).second)
+        e.at("name").fail("\"" + m.name + "\": another mechanism of the building has this name (names must be unique)");
+      if (!e.at("mechanism").is_object()) e.at("mechanism").fail("expected an object (a mechanism, docs/catalogue.md)");
+      if (e.find("FC") && e.find("knowledge_level")) e.fail("give \"knowledge_level\" or \"FC\", not both");
+      m.wall = wall_name;
+      m.wall_index = wi;
+      m.index = mi;
+      m.id = "M" + std::to_string(b.mechanisms.size() + 1);
+      m.json_path = e.path();
+      nlohmann::json x = base;
+      apply_overrides(x, w.value());
+      apply_overrides(x, e.value());
+      x["mechanism"] = e.value().at("mechanism");
+      x["project"] = (b.project.empty() ? std::string() : b.project + " — ") + wall_name + ": " + m.name;
+      // The expanded case in the order of a case file (nlohmann sorts keys; kept for diffing).
+      m.expanded = std::move(x);
+      b.mechanisms.push_back(std::move(m));
+    }
+  }
+  for (BuildingMechanism& m : b.mechanisms) m.kase = parse_expanded(b, m);
+
+  // Record sets (docs/theory/building.md §3): mechanisms selecting with the
+  // same settings and no range of their own share one selection over the
+  // union of their ranges (ground records; floor records are listed).
+  std::map<std::string, std::vector<std::size_t>> groups;
+  std::vector<std::string> group_order;
+  for (std::size_t i = 0; i < b.mechanisms.size(); ++i) {
+    BuildingMechanism& m = b.mechanisms[i];
+    const nlohmann::json& dyn = m.expanded.contains("dynamic") ? m.expanded.at("dynamic") : nlohmann::json();
+    if (!dyn.is_object()) continue;
+    if (!dyn.contains("select")) {
+      m.record_set = RecordSetKind::listed;
+      continue;
+    }
+    const DynamicSpec d = [&] {
+      try {
+        return parse_dynamic(m.kase.dynamic, b.file, directory_of(b.file));
+      } catch (const InputError& err) {
+        throw InputError(building_path_message(b, m, err.what()));
+      }
+    }();
+    KinematicCaseResult kr;
+    try {
+      kr = run_kinematic_case(m.kase);
+    } catch (const InputError& err) {
+      throw InputError(building_path_message(b, m, err.what()));
+    }
+    const CandidateResult& gov = kr.candidates[kr.governing];
+    const MechanismDynamics md =
+        build_mechanism_dynamics(m.kase, gov, m.kase.mechanism.candidates[kr.governing].chain, d);
+    if (!md.applies) continue;  // reported by the run ("not applicable")
+    const double T1 = std::min(gov.result.Ts, gov.result.T_SLV), T2 = std::max(gov.result.Ts, gov.result.T_SLV);
+    const PeriodRange r = rocking_period_range(T1, T2);
+    m.own_T_min = r.T_min;
+    m.own_T_max = r.T_max;
+    m.record_set = RecordSetKind::own;
+    if (b.record_selection != "shared" || dyn.at("select").contains("period_range_s")) continue;
+    const std::string key = dyn.at("select").dump();
+    if (!groups.count(key)) group_order.push_back(key);
+    groups[key].push_back(i);
+  }
+  for (const std::string& key : group_order) {
+    const std::vector<std::size_t>& members = groups[key];
+    if (members.size() < 2) continue;  // a group of one selects its own
+    SharedSelection s;
+    s.id = "S" + std::to_string(b.selections.size() + 1);
+    s.members = members;
+    s.T_min = b.mechanisms[members[0]].own_T_min;
+    s.T_max = b.mechanisms[members[0]].own_T_max;
+    for (std::size_t i : members) {
+      s.T_min = std::min(s.T_min, b.mechanisms[i].own_T_min);
+      s.T_max = std::max(s.T_max, b.mechanisms[i].own_T_max);
+    }
+    for (std::size_t i : members) {
+      BuildingMechanism& m = b.mechanisms[i];
+      m.expanded["dynamic"]["select"]["period_range_s"] = nlohmann::json::array({s.T_min, s.T_max});
+      m.kase = parse_expanded(b, m);
+      m.record_set = RecordSetKind::shared;
+      m.record_group = s.id;
+    }
+    b.selections.push_back(std::move(s));
+  }
+  return b;
+}
+
+BuildingCase read_building_file(const std::string& path) { return parse_building(read_json_file(path), path); }
+
+void fall_back_to_own_selection(BuildingCase& b, std::size_t selection) {
+  SharedSelection& s = b.selections.at(selection);
+  s.fell_back = true;
+  for (std::size_t i : s.members) {
+    BuildingMechanism& m = b.mechanisms[i];
+    m.expanded["dynamic"]["select"].erase("period_range_s");
+    m.kase = parse_expanded(b, m);
+    m.record_set = RecordSetKind::own;
+  }
+}
+
+nlohmann::json standalone_case(const BuildingCase& b, const BuildingMechanism& m) {
+  nlohmann::json x = m.expanded;
+  const std::string dir = directory_of(b.file);
+  auto absolute = [&](nlohmann::json& f) {
+    if (!f.is_string()) return;
+    const std::string s = f.get<std::string>();
+    if (s.empty() || s[0] == '/') return;
+    const std::filesystem::path p = std::filesystem::path(dir) / s;
+    if (std::filesystem::exists(p)) f = std::filesystem::absolute(p).lexically_normal().string();
+  };
+  if (x.contains("dynamic") && x["dynamic"].is_object()) {
+    nlohmann::json& d = x["dynamic"];
+    if (d.contains("records") && d["records"].is_array())
+      for (nlohmann::json& r : d["records"])
+        if (r.is_object() && r.contains("file")) absolute(r["file"]);
+    if (d.contains("select") && d["select"].is_object() && d["select"].contains("catalogue"))
+      absolute(d["select"]["catalogue"]);
+  }
+  x["schema_version"] = 1;
+  return x;
+}
+
+const BuildingMechanism& find_mechanism(const BuildingCase& b, const std::string& id_or_name) {
+  for (const BuildingMechanism& m : b.mechanisms)
+    if (m.id == id_or_name || m.name == id_or_name) return m;
+  std::string names;
+  for (const BuildingMechanism& m : b.mechanisms) names += (names.empty() ? "" : ", ") + m.id + " \"" + m.name + "\"";
+  throw InputError(b.file + ": no mechanism \"" + id_or_name + "\" in the building (its mechanisms: " + names + ")");
+}
+
+}  // namespace assess

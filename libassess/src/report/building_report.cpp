@@ -1,0 +1,294 @@
+// building_report.cpp: the building report as terminal text and JSON
+// (issue 22). Formatting only: every number comes from BuildingAssessment.
+#include "assess/report/building_report.hpp"
+
+#include "report/text_format.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace assess {
+
+namespace {
+
+nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+std::string fx(double v, int prec) {
+  if (std::isnan(v)) return "-";
+  if (!std::isfinite(v)) return v > 0 ? "inf" : "-inf";
+  return format("%.*f", prec, v);
+}
+
+std::string rstrip(std::string s) {
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
+}
+
+// Display width of a UTF-8 string (code points).
+std::size_t width_of(const std::string& s) {
+  std::size_t w = 0;
+  for (unsigned char ch : s) w += (ch & 0xC0) != 0x80;
+  return w;
+}
+
+std::string pad(const std::string& s, std::size_t n) {
+  const std::size_t w = width_of(s);
+  return w >= n ? s : s + std::string(n - w, ' ');
+}
+
+// Word-wraps one line within `width` columns, continuation lines indented.
+std::string wrap(const std::string& line, std::size_t width) {
+  std::string out, cur;
+  std::size_t start = 0;
+  while (start < line.size()) {
+    std::size_t end = line.find(' ', start);
+    if (end == std::string::npos) end = line.size();
+    const std::string word = line.substr(start, end - start);
+    if (!cur.empty() && width_of(cur) + 1 + width_of(word) > width) {
+      out += cur + "\n";
+      cur = "    " + word;
+    } else {
+      cur += (cur.empty() ? "" : " ") + word;
+    }
+    start = end + 1;
+  }
+  return out + cur + "\n";
+}
+
+std::string code_name(const std::string& c) { return c == "NTC2008" ? "NTC 2008" : c == "NTC2018" ? "NTC 2018" : c; }
+
+std::string approach_name(const std::string& a) {
+  return a == "strength" ? "linear (strength)" : a == "displacement" ? "non-linear (displacement)" : "dynamic";
+}
+
+std::string record_set_text(const BuildingAssessment& b, const BuildingMechanism& m) {
+  switch (m.record_set) {
+    case RecordSetKind::none: return "-";
+    case RecordSetKind::listed: return "listed";
+    case RecordSetKind::shared: return m.record_group;
+    case RecordSetKind::own: return "own";
+  }
+  (void)b;
+  return "-";
+}
+
+}  // namespace
+
+nlohmann::json safety_indices_json(const std::vector<SafetyIndex>& indices) {
+  nlohmann::json arr = nlohmann::json::array();
+  for (const SafetyIndex& s : indices) {
+    nlohmann::json j;
+    j["code"] = s.code;
+    j["approach"] = s.approach;
+    j["dc"] = num(s.dc);
+    j["satisfied"] = s.satisfied;
+    j["checks"] = s.checks;
+    j["failing"] = s.failing;
+    j["no_verdict"] = s.no_verdict;
+    j["defined"] = s.defined;
+    if (s.defined) {
+      j["limit_state"] = s.limit_state;
+      j["location"] = s.location;
+      j["candidate"] = s.candidate;
+      j["ag_capacity_g"] = num(s.ag_capacity_g);
+      j["ag_capacity_reached"] = std::isfinite(s.ag_capacity_g);
+      j["ag_demand_g"] = num(s.ag_demand_g);
+      j["zeta_E"] = num(s.zeta);
+      j["TR_capacity_years"] = num(s.TR_capacity);
+      j["TR_demand_years"] = num(s.TR_demand);
+      j["TR_ratio"] = num(s.TR_ratio);
+      j["TR_extrapolated"] = s.TR_extrapolated;
+    }
+    if (!s.note.empty()) j["note"] = s.note;
+    arr.push_back(j);
+  }
+  return arr;
+}
+
+nlohmann::json building_json(const BuildingAssessment& b) {
+  nlohmann::json j;
+  const BuildingCase& bc = b.building;
+  nlohmann::json bj;
+  bj["project"] = bc.project;
+  bj["file"] = bc.file;
+  bj["site"] = b.site_description;
+  bj["VR_years"] = b.VR;
+  bj["TR_SLV_years"] = b.TR_SLV;
+  bj["ag_SLV_g"] = b.ag_SLV_g;
+  bj["record_selection"] = bc.record_selection;
+  nlohmann::json sets = nlohmann::json::array();
+  for (const SharedSelection& s : bc.selections) {
+    nlohmann::json sj;
+    sj["id"] = s.id;
+    sj["period_range_s"] = {s.T_min, s.T_max};
+    nlohmann::json members = nlohmann::json::array();
+    for (std::size_t i : s.members) members.push_back(bc.mechanisms[i].id);
+    sj["members"] = members;
+    sj["fell_back"] = s.fell_back;
+    if (!s.note.empty()) sj["note"] = s.note;
+    sets.push_back(sj);
+  }
+  bj["record_sets"] = sets;
+  j["building"] = bj;
+  nlohmann::json ms = nlohmann::json::array();
+  for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
+    const BuildingMechanism& m = bc.mechanisms[i];
+    const BuildingMechanismResult& r = b.results[i];
+    const CandidateResult& gc = r.a.kinematic.candidates[r.a.kinematic.governing];
+    nlohmann::json mj;
+    mj["id"] = m.id;
+    mj["wall"] = m.wall;
+    mj["name"] = m.name;
+    mj["json_path"] = m.json_path;
+    mj["type"] = m.kase.mechanism.type;
+    mj["alpha0"] = num(gc.result.alpha0);
+    mj["a0_star_m_s2"] = num(gc.result.a0_star);
+    mj["candidate"] = gc.label;
+    nlohmann::json rs;
+    rs["kind"] = to_string(m.record_set);
+    if (!m.record_group.empty()) rs["set"] = m.record_group;
+    if (r.a.dynamic && r.a.dynamic_applies) {
+      rs["records"] = r.a.records.size();
+      rs["period_range_s"] = {r.a.selection_range.T_min, r.a.selection_range.T_max};
+    }
+    mj["record_set"] = rs;
+    mj["safety_indices"] = safety_indices_json(r.indices);
+    if (const MethodVerdict* c = r.a.verdict.conclusion()) {
+      nlohmann::json v;
+      v["adopted"] = r.a.verdict.adopted;
+      v["code"] = c->code;
+      v["satisfied"] = c->satisfied && std::isfinite(c->max_dc);
+      v["dc"] = num(c->max_dc);
+      mj["conclusion"] = v;
+    }
+    mj["case"] = m.expanded;
+    mj["assessment"] = facade_json(r.a);
+    ms.push_back(mj);
+  }
+  j["mechanisms"] = ms;
+  nlohmann::json gv = nlohmann::json::array();
+  for (const BuildingGoverning& g : b.governing) {
+    nlohmann::json x;
+    x["code"] = g.code;
+    x["approach"] = g.approach;
+    if (g.mechanism >= 0) {
+      x["mechanism"] = bc.mechanisms[std::size_t(g.mechanism)].id;
+      x["name"] = bc.mechanisms[std::size_t(g.mechanism)].name;
+    }
+    x["zeta_E"] = num(g.zeta);
+    x["dc"] = num(g.dc);
+    x["assessed"] = g.assessed;
+    x["satisfied"] = g.satisfied;
+    x["failing"] = g.failing;
+    x["no_verdict"] = g.no_verdict;
+    gv.push_back(x);
+  }
+  j["governing"] = gv;
+  j["warnings"] = b.warnings;
+  return j;
+}
+
+std::string building_text(const BuildingAssessment& b, TextWidth width) {
+  const BuildingCase& bc = b.building;
+  const bool wide = width == TextWidth::wide;
+  std::string o;
+  o += "BUILDING ASSESSMENT (local mechanisms, " + std::to_string(bc.mechanisms.size()) + " mechanisms)\n";
+  if (!bc.project.empty()) o += "project: " + bc.project + "\n";
+  o += "case file: " + bc.file + "\n";
+  o += "site: " + b.site_description + "\n";
+  o += "VR = " + fx(b.VR, 0) + " years; SLV: TR = " + fx(b.TR_SLV, 0) + " years, ag = " + fx(b.ag_SLV_g, 4) + " g\n";
+  if (!bc.selections.empty() || bc.record_selection != "shared") {
+    std::string rs = "record sets (" + bc.record_selection + "):";
+    for (std::size_t k = 0; k < bc.selections.size(); ++k) {
+      const SharedSelection& s = bc.selections[k];
+      rs += std::string(k ? "; " : " ") + s.id + " = one selection over " + fx(s.T_min, 3) + "-" + fx(s.T_max, 3) +
+            " s for";
+      for (std::size_t i : s.members) rs += " " + bc.mechanisms[i].id;
+      if (s.fell_back) rs += " (fell back: " + s.note + ")";
+    }
+    if (bc.selections.empty()) rs += " none shared; each mechanism selects over its own period range";
+    o += wide ? rs + "\n" : wrap(rs, 120);
+  }
+  const std::string legend =
+      "zetaE = PGA_C / PGA_D (ag on rock; the approach's governing check at SLV or SLC), TR_C / TR_D on the site's "
+      "hazard curve; * governing mechanism of the approach (docs/theory/building.md)";
+  o += "\n" + (wide ? legend + "\n" : wrap(legend, 120));
+  // The mechanisms by id (the tables below name them by id only).
+  o += "\nmechanisms\n";
+  for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
+    const BuildingMechanism& m = bc.mechanisms[i];
+    const BuildingMechanismResult& r = b.results[i];
+    std::string line = format("  %-4s ", m.id) + m.wall + ": " + m.name + " (" + m.kase.mechanism.type +
+                       (m.json_path.empty() ? "" : ", " + m.json_path);
+    if (r.a.dynamic && r.a.dynamic_applies)
+      line += "; records " + record_set_text(b, m) + ": " + std::to_string(r.a.records.size()) + " over " +
+              fx(r.a.selection_range.T_min, 3) + "-" + fx(r.a.selection_range.T_max, 3) + " s";
+    else if (r.a.dynamic)
+      line += "; dynamic analysis not applicable";
+    line += ")";
+    if (const MethodVerdict* c = r.a.verdict.conclusion())
+      line += ": " + std::string(c->satisfied && std::isfinite(c->max_dc) ? "satisfied" : "NOT SATISFIED") + " (" +
+              r.a.verdict.adopted + ", D/C " + fx(c->max_dc, 3) + ")";
+    o += wide ? line + "\n" : wrap(line, 120);
+  }
+  const std::size_t name_w = 0;
+  for (const std::string& code : b.codes) {
+    const bool y18 = code == "NTC2018";
+    o += "\n" + code_name(code) + (y18 ? "" : " (for comparison)") + "\n";
+    std::string head = format("%-4s ", "id") + pad("", name_w) +
+                       format(" %7s %7s | %6s %6s %6s | %6s %6s %6s", "alpha0", "a0*", "D/C", "zetaE", "TRC/TRD", "D/C",
+                              "zetaE", "TRC/TRD");
+    if (y18) head += format(" | %6s  %-6s", "D/C", "rec");
+    o += rstrip(head) + "\n";
+    std::string units = format("%-4s ", "") + pad("", name_w) +
+                        format(" %7s %7s | %-20s | %-20s", "-", "m/s2", "linear (strength)", "non-linear (displ.)");
+    if (y18) units += format(" | %-11s", "dynamic");
+    o += rstrip(units) + "\n";
+    for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
+      const BuildingMechanism& m = bc.mechanisms[i];
+      const BuildingMechanismResult& r = b.results[i];
+      const CandidateResult& gc = r.a.kinematic.candidates[r.a.kinematic.governing];
+      auto cell = [&](const char* approach) {
+        const SafetyIndex* s = r.index(code, approach);
+        const BuildingGoverning* g = b.governing_of(code, approach);
+        const std::string star = g && g->mechanism == int(i) ? "*" : " ";
+        if (!s || !s->has_checks) return format(" %6s %6s %7s", "-", "-", "-");
+        return format(" %6s %6s%s%7s", fx(s->dc, 3), s->defined ? fx(s->zeta, 3) : "n/a", star,
+                      s->defined ? fx(s->TR_ratio, 2) : "n/a");
+      };
+      std::string line = format("%-4s ", m.id) + pad("", name_w) +
+                         format(" %7.4f %7.4f |", gc.result.alpha0, gc.result.a0_star) + cell("strength") + " |" +
+                         cell("displacement");
+      if (y18) {
+        const SafetyIndex* s = r.index(code, "dynamic");
+        const BuildingGoverning* g = b.governing_of(code, "dynamic");
+        const std::string star = g && g->mechanism == int(i) ? "*" : " ";
+        line += " |" + (s ? format(" %6s%s", fx(s->dc, 3), star) : format(" %6s ", "-")) +
+                format(" %-6s", record_set_text(b, m));
+      }
+      o += rstrip(line) + "\n";
+    }
+  }
+  o += "\ngoverning mechanisms\n";
+  for (const BuildingGoverning& g : b.governing) {
+    const BuildingMechanism& m = bc.mechanisms[std::size_t(g.mechanism)];
+    const SafetyIndex* s = b.results[std::size_t(g.mechanism)].index(g.code, g.approach);
+    std::string line = "  " + code_name(g.code) + ", " + approach_name(g.approach) + ": " + m.id + " " + m.wall + ": " +
+                       m.name;
+    if (s && s->defined)
+      line += ", zetaE = " + fx(s->zeta, 3) + " (PGA_C " + fx(s->ag_capacity_g, 4) + " g / PGA_D " +
+              fx(s->ag_demand_g, 4) + " g, " + s->limit_state + "), TR_C = " + fx(s->TR_capacity, 0) + " / TR_D = " +
+              fx(s->TR_demand, 0) + " years" + (s->TR_extrapolated ? " (extrapolated)" : "");
+    else
+      line += ", D/C = " + fx(g.dc, 3) + " (no zetaE: no PGA capacity)";
+    line += "; " + std::to_string(g.satisfied) + " of " + std::to_string(g.assessed) + " satisfied, " +
+            std::to_string(g.failing) + " not satisfied" +
+            (g.no_verdict ? ", " + std::to_string(g.no_verdict) + " without verdict" : "");
+    o += wide ? line + "\n" : wrap(line, 120);
+  }
+  if (!b.warnings.empty()) o += "\n" + std::to_string(b.warnings.size()) + " warnings (printed above; --json lists them)\n";
+  o += "\neach mechanism in full: assess run " + bc.file + " --mechanism ID (or --json, --html)\n";
+  return o;
+}
+
+}  // namespace assess

@@ -1,0 +1,92 @@
+# Issue 22: the building case (docs/user/building.md).
+# Every mechanism of the example building (and of a second building with
+# overrides, another site and soil) gives the numbers of its expanded
+# single-mechanism case run alone; the governing mechanisms are recomputed
+# from the single runs.
+foreach(b building-house:mechanisms/building-house.json chiesa_piccola:tests/cli/building/chiesa_piccola.json
+          palazzo_sulmona:tests/cli/building/palazzo_sulmona.json)
+  string(REPLACE ":" ";" parts ${b})
+  list(GET parts 0 name)
+  list(GET parts 1 file)
+  add_test(NAME cli.building_vs_single_${name}
+    COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/building_vs_single.py $<TARGET_FILE:assess_cli>
+            ${PROJECT_SOURCE_DIR} ${file} ${CMAKE_CURRENT_BINARY_DIR}/building-expanded-${name}
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+  set_tests_properties(cli.building_vs_single_${name} PROPERTIES LABELS cli TIMEOUT 300
+    ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+endforeach()
+
+# The terminal summary: every mechanism, the safety indices and the governing ones.
+assess_cli_test(building_text ARGS run mechanisms/building-house.json
+  PASS "BUILDING ASSESSMENT \\(local mechanisms, 8 mechanisms\\).*comune Norcia \\(PG\\).*S1 = one selection over.*NTC 2018.*M8 .*NTC 2008 \\(for comparison\\).*governing mechanisms.*NTC 2018, linear \\(strength\\): M1 .*zetaE = 0\\.5[0-9]+.*TR_C = ")
+assess_cli_test(building_json ARGS run mechanisms/building-house.json --json
+  PASS "\"building\".*\"record_sets\".*\"governing\".*\"mechanisms\".*\"assessment\".*\"safety_indices\".*\"zeta_E\"")
+assess_cli_test(building_one_mechanism ARGS run mechanisms/building-house.json --mechanism M4
+  PASS "gable" FAIL_REGEX "BUILDING ASSESSMENT")
+
+# Hostile input: every error names the file, the path in the building file and the unit; exit 2.
+assess_cli_error_test(building_unknown_key "building_bad/unknown_key.json: /: unknown key \"knowlege_level\" \\(did you mean \"knowledge_level\"\\?\\)"
+  run tests/cli/building_bad/unknown_key.json)
+assess_cli_error_test(building_duplicate_name "duplicate_name.json: /walls/0/mechanisms/1/name: \"Overturning\": another mechanism"
+  run tests/cli/building_bad/duplicate_name.json)
+assess_cli_error_test(building_bad_thickness "bad_thickness.json: /walls/1/mechanisms/0/mechanism/storeys/0/thickness: expected a number \\(m\\)"
+  run tests/cli/building_bad/bad_thickness.json)
+assess_cli_error_test(building_fc_and_level "fc_and_level.json: /walls/0: give \"knowledge_level\" or \"FC\", not both"
+  run tests/cli/building_bad/fc_and_level.json)
+assess_cli_error_test(building_no_walls "no_walls.json: /walls: expected at least 1" run tests/cli/building_bad/no_walls.json)
+assess_cli_error_test(building_bad_dynamic_override "bad_dynamic_override.json: /walls/0/mechanisms/0/dynamic/k: .*kN/m3"
+  run tests/cli/building_bad/bad_dynamic_override.json)
+assess_cli_error_test(building_no_site "no_site.json: /: missing required key \"site\"" run tests/cli/building_bad/no_site.json)
+assess_cli_error_test(building_unknown_entry_key "unknown_entry_key.json: /walls/0/mechanisms/0: unknown key \"mechansim\" \\(did you mean \"mechanism\"\\?\\)"
+  run tests/cli/building_bad/unknown_entry_key.json)
+assess_cli_error_test(building_mechanisms_not_array "mechanisms_not_array.json: /walls/0/mechanisms: expected an array"
+  run tests/cli/building_bad/mechanisms_not_array.json)
+assess_cli_error_test(building_site_override "site_override.json: /walls/0/mechanisms/0: unknown key \"site\""
+  run tests/cli/building_bad/site_override.json)
+assess_cli_error_test(building_bad_Z_override "bad_Z_override.json: /walls/0/mechanisms/0/building/Z_m: expected a number \\(m\\)"
+  run tests/cli/building_bad/bad_Z_override.json)
+assess_cli_error_test(building_unknown_mechanism "no mechanism \"M9\" in the building \\(its mechanisms: M1 \"Facade overturning\", M2 \"Gable\""
+  run tests/cli/building/chiesa_piccola.json --mechanism M9)
+assess_cli_error_test(building_expand_single "--mechanism and --expand apply to a building case"
+  run mechanisms/gable.json --expand /tmp/never)
+
+# The relazione of the example building in headless Chromium: loads without a
+# console message, 54 figures (the zetaE chart, the site spectra, and each
+# mechanism's figures with ids prefixed by its id), the summary with a link to
+# every mechanism's section and the sections themselves (Italian and English).
+foreach(lang it en)
+  add_test(NAME cli.building_report_browser_${lang}
+    COMMAND sh -c "\"$1\" run mechanisms/building-house.json --lang $3 --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 54 'id=\"summary\"' 'href=\"#M1\"' 'href=\"#M8\"' '<h2 id=\"M1\"' '<h2 id=\"M8\"' 'id=\"fig-zeta\"' 'id=\"M8-fig-adrs\"' 'data-governing=\"true\"' 'class=\"verdict (ok|fail)\"'"
+            sh $<TARGET_FILE:assess_cli> ${CMAKE_CURRENT_BINARY_DIR}/building-house.${lang}.html ${lang}
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+  set_tests_properties(cli.building_report_browser_${lang} PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77 TIMEOUT 300
+    ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+endforeach()
+
+# `assess fragility BUILDING --mechanism M4` = `assess fragility` of M4's expanded case (identical results.csv);
+# without --mechanism, the governing mechanism (lowest NTC 2018 zetaE of the adopted method's approach).
+set(_bfrag ${PROJECT_BINARY_DIR}/tests/building_fragility)
+add_test(NAME cli.building_fragility_mechanism
+  COMMAND ${CMAKE_COMMAND} -E env ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}
+          sh -c "rm -rf '${_bfrag}' && A='$<TARGET_FILE:assess_cli>' && F='--stripes 100,475,2475 --records 3 --bootstrap 0 --no-plots --quiet' && \"$A\" run mechanisms/building-house.json --expand '${_bfrag}/cases' > /dev/null && \"$A\" fragility mechanisms/building-house.json --mechanism M4 $F --out '${_bfrag}/b' && \"$A\" fragility '${_bfrag}/cases/M4.json' $F --out '${_bfrag}/s' > /dev/null && cmp '${_bfrag}/b/results.csv' '${_bfrag}/s/results.csv' && echo 'identical results.csv'"
+  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.building_fragility_mechanism PROPERTIES LABELS cli TIMEOUT 300
+  PASS_REGULAR_EXPRESSION "fragility of 'gable about its base'.*identical results.csv")
+add_test(NAME cli.building_fragility_governing
+  COMMAND ${CMAKE_COMMAND} -E env ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}
+          sh -c "rm -rf '${_bfrag}-gov' && '$<TARGET_FILE:assess_cli>' fragility mechanisms/building-house.json --stripes 100,2475 --records 3 --bootstrap 0 --no-plots --out '${_bfrag}-gov'"
+  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.building_fragility_governing PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "M2 \"Ribaltamento del secondo piano, cerniera al primo solaio\", the building's governing mechanism")
+assess_cli_error_test(building_fragility_single "--mechanism applies to a building case"
+  fragility mechanisms/gable.json --mechanism M1)
+assess_cli_error_test(building_kinematic "a building case \\(key \"walls\"\\): `assess run mechanisms/building-house.json` analyses"
+  kinematic mechanisms/building-house.json)
+
+# The relazione printed to PDF (A4): summary and one section per mechanism.
+add_test(NAME cli.building_report_pdf
+  COMMAND sh -c "command -v chromium >/dev/null && command -v pdfinfo >/dev/null || exit 77; \"$1\" run mechanisms/building-house.json --pdf \"$2\" > /dev/null || exit 1; p=$(pdfinfo \"$2\" | sed -n 's/^Pages: *//p'); echo pages=$p; [ \"$p\" -ge 30 ] && [ \"$p\" -le 90 ] && pdfinfo \"$2\" | grep -q 'Page size:.*(A4)' "
+          sh $<TARGET_FILE:assess_cli> ${CMAKE_CURRENT_BINARY_DIR}/building-house.pdf
+  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.building_report_pdf PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77 TIMEOUT 300
+  ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")

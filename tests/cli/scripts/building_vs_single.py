@@ -1,0 +1,155 @@
+#!/usr/bin/env python3
+"""building_vs_single.py ASSESS SOURCE_DIR BUILDING.json WORK_DIR
+
+Issue 22: a building case gives, mechanism by mechanism, the numbers of the
+same mechanism run alone. Runs `assess run BUILDING --json --expand WORK_DIR`,
+then `assess run WORK_DIR/M<n>.json --json` for every mechanism, and compares:
+the whole assessment (every number of the façade JSON: alpha0, a0*, every check
+D/C and PGA capacity, the records, every dynamic analysis and its D/C) must be
+identical (numbers within 1e-12 relative; the only string allowed to differ is
+the case file's name), and so must the safety indices (zetaE, TR_C/TR_D, per
+code and approach). The governing mechanism of each (code, approach) is
+recomputed from the single runs (lowest zetaE; dynamic: largest D/C) and must
+be the building's. Exit 0 pass, 1 fail.
+"""
+import json
+import math
+import os
+import subprocess
+import sys
+
+exe, src, building, work = sys.argv[1:5]
+os.makedirs(work, exist_ok=True)
+failures = []
+
+
+def run(args):
+    r = subprocess.run([exe] + args, capture_output=True, text=True, cwd=src)
+    if r.returncode != 0:
+        print(f"FAIL assess {' '.join(args)}: exit {r.returncode}: {r.stderr[:500]}")
+        sys.exit(1)
+    return json.loads(r.stdout)
+
+
+def same(x, y, path, single_file):
+    if isinstance(x, bool) or isinstance(y, bool):
+        if x != y:
+            failures.append(f"{path}: {x} != {y}")
+        return
+    if isinstance(x, (int, float)) and isinstance(y, (int, float)):
+        if x != y and not (math.isfinite(x) and math.isfinite(y) and abs(x - y) <= 1e-12 * max(abs(x), abs(y))):
+            failures.append(f"{path}: {x!r} != {y!r}")
+        return
+    if type(x) is not type(y):
+        failures.append(f"{path}: {type(x).__name__} != {type(y).__name__}")
+        return
+    if isinstance(x, dict):
+        for k in sorted(set(x) | set(y)):
+            if k in ("assess_version", "schema_version"):
+                continue
+            if k not in x or k not in y:
+                failures.append(f"{path}/{k}: only in {'the building' if k in x else 'the single run'}")
+                continue
+            if k == "case_file":
+                continue
+            same(x[k], y[k], f"{path}/{k}", single_file)
+    elif isinstance(x, list):
+        if len(x) != len(y):
+            failures.append(f"{path}: {len(x)} != {len(y)} elements")
+            return
+        for i, (u, v) in enumerate(zip(x, y)):
+            same(u, v, f"{path}/{i}", single_file)
+    elif x != y and x != y.replace(single_file, building):
+        failures.append(f"{path}: {x!r} != {y!r}")
+
+
+OVERRIDES = ("knowledge_level", "FC", "codes", "method", "check_SLD", "building", "analysis", "dynamic")
+
+
+def merge_patch(target, patch):  # RFC 7386
+    if not isinstance(patch, dict):
+        return patch
+    target = dict(target) if isinstance(target, dict) else {}
+    for k, v in patch.items():
+        if v is None:
+            target.pop(k, None)
+        else:
+            target[k] = merge_patch(target.get(k), v)
+    return target
+
+
+def compose(doc, wall, entry):
+    """The single case an engineer would write for `entry`, by the documented rule (docs/user/building.md)."""
+    case = {k: v for k, v in doc.items() if k not in ("walls", "record_selection", "project")}
+    for over in (wall, entry):
+        for k in OVERRIDES:
+            if k in over:
+                if k == "FC":
+                    case.pop("knowledge_level", None)
+                if k == "knowledge_level":
+                    case.pop("FC", None)
+                case = merge_patch(case, {k: over[k]})
+    case["mechanism"] = entry["mechanism"]
+    case["project"] = (doc["project"] + " — " if doc.get("project") else "") + wall["name"] + ": " + entry["name"]
+    return case
+
+
+doc = json.load(open(os.path.join(src, building), encoding="utf-8"))
+b = run(["run", building, "--json", "--expand", work])
+# The expanded cases are the documented composition (plus the shared range when shared).
+k = 0
+for wall in doc["walls"]:
+    for entry in wall["mechanisms"]:
+        m = b["mechanisms"][k]
+        k += 1
+        expected = compose(doc, wall, entry)
+        got = json.loads(json.dumps(m["case"]))
+        sel = got.get("dynamic", {}).get("select", {})
+        if m["record_set"]["kind"] == "shared":
+            if "period_range_s" not in sel:
+                failures.append(f"{m['id']}: shared record set but no period_range_s in the expanded case")
+            sel.pop("period_range_s", None)
+        elif "period_range_s" in sel and "period_range_s" not in expected.get("dynamic", {}).get("select", {}):
+            failures.append(f"{m['id']}: a period range written for a mechanism that does not share its records")
+        if got != expected:
+            failures.append(f"{m['id']}: expanded case != the documented composition:\n{json.dumps(got, sort_keys=True)}\n"
+                            f"{json.dumps(expected, sort_keys=True)}")
+print(f"{'ok  ' if not failures else 'FAIL'} {k} expanded cases = the documented composition of the building file")
+singles = []
+for m in b["mechanisms"]:
+    f = os.path.join(work, m["id"] + ".json")
+    s = run(["run", f, "--json"])
+    singles.append(s)
+    n0 = len(failures)
+    same(m["assessment"], {k: v for k, v in s.items() if k != "safety_indices"}, f"{m['id']}/assessment", f)
+    same(m["safety_indices"], s["safety_indices"], f"{m['id']}/safety_indices", f)
+    k = m["assessment"]["kinematic"]
+    print(f"{'ok  ' if len(failures) == n0 else 'FAIL'} {m['id']} {m['name']}: "
+          f"{sum(1 for _ in m['assessment']['checks'])} checks, "
+          f"{len(m['assessment'].get('dynamic', {}).get('analyses', []) or [])} dynamic analyses, "
+          f"{len(m['safety_indices'])} safety indices identical to the single run")
+
+# The governing mechanism per code and approach, from the single runs.
+for g in b["governing"]:
+    best, best_id = None, None
+    for m, s in zip(b["mechanisms"], singles):
+        for x in s["safety_indices"]:
+            if x["code"] != g["code"] or x["approach"] != g["approach"] or x["checks"] == 0:
+                continue
+            if x["defined"]:
+                key = x["zeta_E"] if x["zeta_E"] is not None else math.inf
+                better = best is None or key < best
+            else:
+                key = x["dc"] if x["dc"] is not None else math.inf
+                better = best is None or key > best
+            if better:
+                best, best_id = key, m["id"]
+    if best_id != g.get("mechanism"):
+        failures.append(f"governing {g['code']} {g['approach']}: building {g.get('mechanism')}, single runs {best_id}")
+    else:
+        print(f"ok   governing {g['code']} {g['approach']}: {best_id} ({'zetaE' if g['approach'] != 'dynamic' else 'D/C'} {best:.4f})")
+
+for f in failures[:40]:
+    print("FAIL", f)
+print(f"building_vs_single: {len(b['mechanisms'])} mechanisms, {len(failures)} difference(s)")
+sys.exit(1 if failures else 0)

@@ -1,0 +1,248 @@
+// Issue 22: the building case file: expansion into single cases (merge-patch
+// overrides, FC/knowledge level, "dynamic": null), ids and paths, the shared
+// record selection (union of the members' ranges, written into each expanded
+// case; fall-back to own ranges), error paths in the building file, and the
+// NTC 2008 PGA capacity of the safety indices (docs/theory/building.md §2-4).
+#include <doctest/doctest.h>
+
+#include <assess/assessment/building_assessment.hpp>
+#include <assess/assessment/building_case.hpp>
+#include <assess/kinematic/code_checks.hpp>
+#include <assess/support/error.hpp>
+
+#include <cmath>
+#include <string>
+
+using namespace assess;
+using nlohmann::json;
+
+namespace {
+
+json storey_mech(int hinge) {
+  return json::parse(R"({"type": "simple_overturning", "storeys": [
+    {"height": 4.0, "thickness": 0.6, "floor_weight": 40.0, "floor_distance_from_inner_face": 0.2},
+    {"height": 3.5, "thickness": 0.45, "floor_weight": 25.0, "floor_distance_from_inner_face": 0.15}],
+    "unit_weight": 20.0, "length": 8.0, "hinge_level": )" + std::to_string(hinge) + "}");
+}
+
+json building_doc() {
+  json d = json::parse(R"({
+    "project": "Test house",
+    "site": {"lat": 42.35, "lon": 13.40, "soil": "B"},
+    "building": {"height_m": 7.5, "storeys": 2},
+    "knowledge_level": "LC2",
+    "dynamic": {"model": "rigid", "restitution": [-0.5], "select": {"count": 7}},
+    "walls": [
+      {"name": "Front", "mechanisms": [{"name": "ground"}, {"name": "first floor"}]},
+      {"name": "Side", "FC": 1.1, "dynamic": {"restitution": [-0.6]},
+       "mechanisms": [{"name": "side, no dynamics", "dynamic": null, "codes": ["NTC2018"]}]}
+    ]})");
+  d["walls"][0]["mechanisms"][0]["mechanism"] = storey_mech(0);
+  d["walls"][0]["mechanisms"][1]["mechanism"] = storey_mech(1);
+  d["walls"][1]["mechanisms"][0]["mechanism"] = storey_mech(0);
+  return d;
+}
+
+}  // namespace
+
+TEST_CASE("building documents are told from single cases by the key walls") {
+  CHECK(is_building_document(building_doc()));
+  CHECK_FALSE(is_building_document(json::parse(R"({"mechanism": {"type": "simple_overturning"}})")));
+  CHECK_FALSE(is_building_document(json::array()));
+}
+
+TEST_CASE("each mechanism expands into its single case: shared keys, wall overrides, mechanism overrides") {
+  const BuildingCase b = parse_building(building_doc(), "house.json");
+  REQUIRE(b.mechanisms.size() == 3);
+  CHECK(b.mechanisms[0].id == "M1");
+  CHECK(b.mechanisms[2].id == "M3");
+  CHECK(b.mechanisms[1].json_path == "/walls/0/mechanisms/1");
+  CHECK(b.mechanisms[2].wall == "Side");
+  const json& x0 = b.mechanisms[0].expanded;
+  CHECK(x0.at("project") == "Test house — Front: ground");
+  CHECK(x0.at("knowledge_level") == "LC2");
+  CHECK(x0.at("mechanism") == storey_mech(0));
+  CHECK(x0.at("dynamic").at("model") == "rigid");
+  CHECK(b.mechanisms[0].kase.options.FC == doctest::Approx(1.20));
+  // The wall's FC replaces the building's knowledge level; the mechanism's
+  // "dynamic": null deletes the dynamic section; "codes" replaced.
+  const json& x2 = b.mechanisms[2].expanded;
+  CHECK_FALSE(x2.contains("knowledge_level"));
+  CHECK(x2.at("FC") == 1.1);
+  CHECK_FALSE(x2.contains("dynamic"));
+  CHECK(x2.at("codes") == json::array({"NTC2018"}));
+  CHECK(b.mechanisms[2].kase.options.FC == doctest::Approx(1.1));
+  CHECK(b.mechanisms[2].record_set == RecordSetKind::none);
+}
+
+TEST_CASE("a wall's partial dynamic section merges key by key (JSON merge patch)") {
+  json d = building_doc();
+  d["walls"][1]["mechanisms"][0].erase("dynamic");
+  const BuildingCase b = parse_building(d, "house.json");
+  const json& dyn = b.mechanisms[2].expanded.at("dynamic");
+  CHECK(dyn.at("model") == "rigid");                       // the building's
+  CHECK(dyn.at("restitution") == json::array({-0.6}));      // the wall's
+  CHECK(dyn.at("select").at("count") == 7);                 // the building's
+}
+
+TEST_CASE("the mechanisms with the same selection share one range: the union of their own, written in each case") {
+  const BuildingCase b = parse_building(building_doc(), "house.json");
+  REQUIRE(b.selections.size() == 1);
+  const SharedSelection& s = b.selections[0];
+  REQUIRE(s.members.size() == 2);
+  const BuildingMechanism& m1 = b.mechanisms[0];
+  const BuildingMechanism& m2 = b.mechanisms[1];
+  CHECK(m1.record_set == RecordSetKind::shared);
+  CHECK(m1.record_group == "S1");
+  CHECK(s.T_min == std::min(m1.own_T_min, m2.own_T_min));
+  CHECK(s.T_max == std::max(m1.own_T_max, m2.own_T_max));
+  CHECK(m1.own_T_min != m2.own_T_min);  // different mechanisms, different ranges
+  const json pr = json::array({s.T_min, s.T_max});
+  CHECK(m1.expanded.at("dynamic").at("select").at("period_range_s") == pr);
+  CHECK(m2.expanded.at("dynamic").at("select").at("period_range_s") == pr);
+  // The written range survives the file: the standalone case parses to the same doubles.
+  const json re = json::parse(standalone_case(b, m1).dump());
+  CHECK(re.at("dynamic").at("select").at("period_range_s").at(0).get<double>() == s.T_min);
+  CHECK(re.at("dynamic").at("select").at("period_range_s").at(1).get<double>() == s.T_max);
+
+  BuildingCase c = b;
+  fall_back_to_own_selection(c, 0);
+  CHECK(c.selections[0].fell_back);
+  CHECK(c.mechanisms[0].record_set == RecordSetKind::own);
+  CHECK_FALSE(c.mechanisms[0].expanded.at("dynamic").at("select").contains("period_range_s"));
+
+  json d = building_doc();
+  d["record_selection"] = "per_mechanism";
+  const BuildingCase p = parse_building(d, "house.json");
+  CHECK(p.selections.empty());
+  CHECK(p.mechanisms[0].record_set == RecordSetKind::own);
+  CHECK_FALSE(p.mechanisms[0].expanded.at("dynamic").at("select").contains("period_range_s"));
+}
+
+TEST_CASE("errors and warnings name the path in the building file") {
+  const BuildingCase b = parse_building(building_doc(), "house.json");
+  const BuildingMechanism& m2 = b.mechanisms[1];
+  CHECK(building_path_message(b, m2, "house.json: /mechanism/storeys/0/thickness: bad") ==
+        "house.json: /walls/0/mechanisms/1/mechanism/storeys/0/thickness: bad [M2 \"first floor\"]");
+  CHECK(building_path_message(b, m2, "house.json: /dynamic/model: bad") ==
+        "house.json: /dynamic/model: bad [M2 \"first floor\"]");
+  CHECK(building_path_message(b, b.mechanisms[2], "house.json: /FC: bad") ==
+        "house.json: /walls/1/FC: bad [M3 \"side, no dynamics\"]");
+
+  json d = building_doc();
+  d["walls"][0]["mechanisms"][1]["mechanism"]["storeys"][1]["height"] = -1.0;
+  try {
+    parse_building(d, "house.json");
+    FAIL("no error");
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    CAPTURE(what);
+    CHECK(what.find("house.json: /walls/0/mechanisms/1/mechanism/storeys/1/height") == 0);
+    CHECK(what.find("m") != std::string::npos);
+  }
+  d = building_doc();
+  d["walls"][1]["mechanisms"][0]["name"] = "ground";
+  CHECK_THROWS_WITH_AS(parse_building(d, "house.json"), doctest::Contains("/walls/1/mechanisms/0/name"), InputError);
+  d = building_doc();
+  d["walls"][0]["bogus"] = 1;
+  CHECK_THROWS_WITH_AS(parse_building(d, "house.json"), doctest::Contains("/walls/0: unknown key \"bogus\""),
+                       InputError);
+}
+
+TEST_CASE("NTC 2008 PGA capacity: the ag at which the check reaches its limit, by the checks themselves") {
+  json d = building_doc();
+  d.erase("dynamic");
+  d["walls"][1]["mechanisms"][0].erase("codes");
+  const BuildingCase b = parse_building(d, "house.json");
+  for (const BuildingMechanism& m : b.mechanisms) {
+    const FacadeAssessment a = assess_facade(m.kase);
+    const std::vector<SafetyIndex> idx = safety_indices(a);
+    for (const SafetyIndex& s : idx) {
+      if (!s.defined) continue;
+      const std::string label = m.id + " " + s.code + " " + s.approach;
+      CAPTURE(label);
+      CHECK(s.zeta == doctest::Approx(s.ag_capacity_g / s.ag_demand_g).epsilon(1e-14));
+      // Every check of the approach at SLV/SLC has PGA_C / PGA_D >= zetaE (it is the lowest).
+      for (const CandidateResult& cr : a.kinematic.candidates)
+        for (const CheckRow& r : cr.checks)
+          if (r.code == s.code && r.kind == s.approach && r.has_pga && r.limit_state != "SLD")
+            CHECK(r.ag_capacity_g / r.ag_demand_g >= s.zeta * (1 - 1e-12));
+      if (s.code != "NTC2008") continue;
+      // Re-run the governing NTC 2008 row at the capacity: D/C = 1/q (strength, the demand
+      // without q equals a0*) or 1 (displacement).
+      const CandidateResult* cand = nullptr;
+      for (const CandidateResult& cr : a.kinematic.candidates)
+        if (cr.label == s.candidate) cand = &cr;
+      REQUIRE(cand);
+      CheckInput in = m.kase.checks;
+      for (const auto& la : a.kinematic.actions) in.hazard[la.first] = la.second.hazard;
+      in.site = m.kase.site->conditions;
+      in.building = m.kase.building;
+      in.Z = cand->Z;
+      in.codes = {CodeEdition::NTC2008};
+      const double q = in.q;
+      in.hazard[LimitState::SLV].ag_g = s.approach == "strength" ? s.ag_capacity_g / q : s.ag_capacity_g;
+      bool found = false;
+      for (const CheckRow& r : run_code_checks(cand->result, in))
+        if (r.limit_state == "SLV" && r.kind == s.approach && r.location == s.location) {
+          found = true;
+          CHECK(r.dc == doctest::Approx(s.approach == "strength" ? 1.0 / q : 1.0).epsilon(1e-9));
+        }
+      CHECK(found);
+    }
+  }
+}
+
+TEST_CASE("a building of more than 1000 mechanisms is refused before any analysis") {
+  json d = building_doc();
+  json entry = d["walls"][0]["mechanisms"][0];
+  json many = json::array();
+  for (int i = 0; i < 1001; ++i) {
+    entry["name"] = "m" + std::to_string(i);
+    many.push_back(entry);
+  }
+  d["walls"][0]["mechanisms"] = many;
+  CHECK_THROWS_WITH_AS(parse_building(d, "house.json"),
+                       doctest::Contains("house.json: /walls/0/mechanisms/1000: more than 1000 mechanisms"), InputError);
+}
+
+// Hostile values at every place of a building file: each parse either
+// succeeds or throws InputError naming the file (never another exception).
+namespace {
+void leaf_paths(const json& j, const std::string& path, std::vector<std::string>& out) {
+  if (j.is_object()) {
+    for (auto it = j.begin(); it != j.end(); ++it) leaf_paths(it.value(), path + "/" + it.key(), out);
+  } else if (j.is_array()) {
+    for (std::size_t i = 0; i < j.size(); ++i) leaf_paths(j[i], path + "/" + std::to_string(i), out);
+  }
+  out.push_back(path);
+}
+}  // namespace
+
+TEST_CASE("hostile values anywhere in a building file give an InputError naming the file, or a valid case") {
+  const json base = building_doc();
+  std::vector<std::string> paths;
+  leaf_paths(base, "", paths);
+  const std::vector<json> hostile = {json(nullptr), json(-1.0), json(1e308), json("x"), json::array(), json::object()};
+  int parsed = 0, refused = 0;
+  for (const std::string& p : paths) {
+    if (p.empty()) continue;
+    for (const json& v : hostile) {
+      json d = base;
+      d[json::json_pointer(p)] = v;
+      try {
+        const BuildingCase b = parse_building(d, "hostile.json");
+        ++parsed;
+        CHECK(!b.mechanisms.empty());
+      } catch (const InputError& e) {
+        ++refused;
+        const std::string what = e.what();
+        CAPTURE(p);
+        CAPTURE(what);
+        CHECK(what.rfind("hostile.json", 0) == 0);
+      }
+    }
+  }
+  MESSAGE(parsed << " hostile variants parsed, " << refused << " refused");
+  CHECK(refused > 100);
+}
