@@ -439,10 +439,12 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
   std::vector<HDim> hdims;
   std::set<std::pair<long, long>> hdim_keys;
   for (const Block& b : blocks) {
-    std::set<long> zs;
-    for (const auto& p : b.polygon) zs.insert(mm(p.y()));
+    // The block's vertex levels as they are (rounding them to mm would put a
+    // cut of a thin slice outside it: the 0.117 m slices of a 2.8 m gable).
     std::vector<double> zv;
-    for (long z : zs) zv.push_back(z / 1000.0);
+    for (const auto& p : b.polygon) zv.push_back(p.y());
+    std::sort(zv.begin(), zv.end());
+    zv.erase(std::unique(zv.begin(), zv.end(), [](double a, double c) { return std::abs(a - c) < 1e-9; }), zv.end());
     bool rectangular = true;
     std::vector<std::pair<std::pair<double, double>, std::pair<double, double>>> bands;  // (x1, x2), (bottom, top)
     for (std::size_t k = 0; k + 1 < zv.size(); ++k) {
