@@ -91,24 +91,28 @@ nlohmann::json side_json(const KinematicCaseResult& r, double zeta, bool passes)
 
 std::string dynamics_text(const TieDynamicResult& d) {
   if (!d.applies) return d.note.empty() ? "" : "  dynamic analysis with the tie: not done: " + d.note + "\n";
-  std::string s = "  dynamic check before and after the tie (Circ. 2019 C8.7.1.2.1.9; the analyses above, without ties, repeated with the tie as a one-sided "
-                  "elastic-perfectly-plastic restraint):\n";
-  s += format("      %7s %4s %-18s %13s %13s %11s %11s %9s %9s %14s %s\n", "e", "N", "rule", "overturned bef",
-              "overturned aft", "d* bef (m)", "d* aft (m)", "d_SLV bef", "d_SLV aft", "yielded/broke", "verdict before -> after");
+  std::string s = wrap_text("  dynamic check before and after the tie (Circ. 2019 C8.7.1.2.1.9; the analyses above, "
+                             "without ties, repeated with the tie as a one-sided elastic-perfectly-plastic restraint):",
+                             4) +
+                   "\n";
+  s += format("      %7s %4s %-18s %9s %9s %10s %10s %9s %9s %9s\n", "e", "N", "rule", "overt.bef", "overt.aft",
+              "d* bef(m)", "d* aft(m)", "dSLV bef", "dSLV aft", "yld/brk");
   for (const TieDynamicSummary& x : d.summaries)
-    s += format("      %7.3f %4d %-18s %13d %13d %11.4f %11.4f %9.4f %9.4f %14s %s -> %s\n", x.e, x.records,
-                x.rule.c_str(), x.overturned_before, x.overturned_after, x.d_demand_before, x.d_demand_after,
-                x.d_SLV_before, x.d_SLV_after, format("%d/%d", x.yielded, x.ruptured).c_str(), x.satisfied_before ? "satisfied" : "NOT satisfied",
-                x.satisfied_after ? "satisfied" : "NOT satisfied");
+    s += format("      %7.3f %4d %-18s %9d %9d %10.4f %10.4f %9.4f %9.4f %9s\n        verdict: %s -> %s\n", x.e,
+                x.records, x.rule.c_str(), x.overturned_before, x.overturned_after, x.d_demand_before, x.d_demand_after,
+                x.d_SLV_before, x.d_SLV_after, format("%d/%d", x.yielded, x.ruptured).c_str(),
+                x.satisfied_before ? "satisfied" : "NOT satisfied", x.satisfied_after ? "satisfied" : "NOT satisfied");
   double ep = 0.0, E = 0.0, F = 0.0;
   for (const TieDynamicRun& r : d.runs) {
     ep = std::max(ep, r.plastic_elongation);
     E = std::max(E, r.plastic_energy);
     F = std::max(F, r.max_force);
   }
-  s += format("      largest tie force %.2f kN per tie, permanent elongation %.1f mm, energy dissipated by the rods %.3f kJ "
-              "per tie (one tie of each level, summed)\n",
-              F / kN, ep * 1e3, E / 1e3);
+  s += wrap_text(format("      largest tie force %.2f kN per tie, permanent elongation %.1f mm, energy dissipated by the "
+                        "rods %.3f kJ per tie (one tie of each level, summed)",
+                        F / kN, ep * 1e3, E / 1e3),
+                 8) +
+       "\n";
   return s;
 }
 
@@ -126,16 +130,16 @@ std::string tie_text(const TieInterventionResult& t) {
          "lists is shown\n";
   for (const TieLevelResult& L : t.levels) {
     const Tie& tie = L.tie;
-    s += format("  level \"%s\": %s%s, %s, anchor at (%.2f, %.2f) m, spacing %.2f m, free length %.2f m, "
-                "pretension %.1f kN\n",
+    s += wrap_text(format("  level \"%s\": %s%s, %s, anchor at (%.2f, %.2f) m, spacing %.2f m, free length %.2f m, "
+                "pretension %.1f kN",
                 tie.name.c_str(), rod_label(tie).c_str(),
                 tie.rod.diameter > 0.0 ? format(" (A = %.0f mm2)", tie.rod.area * 1e6).c_str() : "", anchor_label(tie).c_str(), tie.point.x(),
-                tie.point.y(), tie.spacing, tie.free_length, tie.pretension / kN);
+                tie.point.y(), tie.spacing, tie.free_length, tie.pretension / kN), 4) + "\n";
     const TieResistance& r = L.resistance;
-    s += format("    design strengths (kN): rod %.1f, local compression %.1f, punching %.1f, anchor bending %.1f -> "
-                "T_Rd = %.1f (%s); k = EA/L = %.0f kN/m; %.3f ties on the mechanism\n",
+    s += wrap_text(format("    design strengths (kN): rod %.1f, local compression %.1f, punching %.1f, anchor bending %.1f -> "
+                "T_Rd = %.1f (%s); k = EA/L = %.0f kN/m; %.3f ties on the mechanism",
                 r.rod / kN, r.bearing / kN, r.punching / kN, r.anchor_bending / kN, r.design / kN, r.governing.c_str(),
-                r.stiffness / kN, L.count);
+                r.stiffness / kN, L.count), 6) + "\n";
     s += "    force needed by each check of the mechanism (this level, the others as given):\n";
     s += format("      %-8s %-4s %-13s %-8s %12s %14s %12s\n", "code", "LS", "kind", "where", "per tie kN",
                 "per metre kN/m", "D/C without");
@@ -144,10 +148,10 @@ std::string tie_text(const TieInterventionResult& t) {
                   f.kind.c_str(), f.location.c_str(), num_or_dash(f.per_tie / kN, "%.2f").c_str(),
                   num_or_dash(f.per_metre / kN, "%.2f").c_str(), f.dc_without);
     s += format("    checks of the tie (N_Ed = %.2f kN per tie, the largest force needed):\n", L.N_Ed / kN);
-    s += format("      %-18s %-42s %10s %10s %5s %8s  %s\n", "check", "clause / source", "demand", "capacity", "unit",
+    s += format("      %-18s %-38s %9s %9s %4s %6s  %s\n", "check", "clause / source", "demand", "capacity", "unit",
                 "D/C", "verdict");
     for (const TieCheckRow& c : L.checks)
-      s += format("      %-18s %-42s %10.2f %10.2f %5s %8.3f  %s\n", c.check.c_str(), c.clause.c_str(),
+      s += format("      %-18s %-38s %9.2f %9.2f %4s %6.3f  %s\n", c.check.c_str(), c.clause.c_str(),
                   c.demand * scale(c), c.capacity * scale(c), c.unit.c_str(), c.dc, verdict(c.satisfied));
   }
   const CandidateResult& b = t.before.candidates[t.before.governing];
