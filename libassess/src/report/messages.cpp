@@ -513,6 +513,8 @@ const std::map<std::string, Entry>& catalogue() {
 // Longer phrases first where one contains another.
 const std::vector<std::pair<std::string, std::string>>& phrases_it() {
   static const std::vector<std::pair<std::string, std::string>> p{
+      // Site description (hazard/site.cpp).
+      {" (municipal seat)", " (sede municipale)"},
       // Candidate labels and parameters (kinematic/mechanism_catalogue.cpp).
       {"middle hinge at ", "cerniera intermedia a "},
       {" m above the base (minimum of alpha0)", " m dalla base (minimo di α0)"},
