@@ -38,3 +38,8 @@ assess_cli_test(ties_dynamic_at_height ARGS run tests/cli/ties/upper_storey_tie.
   PASS "\"ties\": {.*\"dynamic\": {[^}]*\"applies\": true")
 assess_cli_test(ties_dynamic_chain ARGS run tests/cli/ties/vertical_flexure_tie.json
   PASS "dynamic check before and after the tie.*yld/brk.*verdict: ")
+# Given ties decide the dynamic rows with the tied analyses (not the untied wall against the tied capacity).
+add_test(NAME cli.ties_given_dynamic_rows
+  COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/given_ties_dynamic.py $<TARGET_FILE:assess_cli>
+          ${CMAKE_CURRENT_SOURCE_DIR}/cli/ties/church_given_ties.json)
+set_tests_properties(cli.ties_given_dynamic_rows PROPERTIES LABELS cli ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")

@@ -197,6 +197,8 @@ void finish(FacadeAssessment& a) {
 
 }  // namespace
 
+void update_verdict(FacadeAssessment& a) { finish(a); }
+
 std::vector<std::size_t> dynamic_candidates(const KinematicCaseResult& k) {
   std::vector<std::size_t> out;
   for (std::size_t i = 0; i < k.candidates.size(); ++i) {

@@ -363,4 +363,41 @@ TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventi
   return R;
 }
 
+void apply_given_ties_to_dynamic_checks(FacadeAssessment& a, const TieInterventionResult& t) {
+  if (t.designed) return;
+  const std::string gov = a.kinematic.candidates[a.kinematic.governing].label;
+  bool changed = false;
+  std::size_t k = 0;  // the governing candidate's dynamic rows, one per restitution value, in order
+  for (CheckRow& r : a.checks) {
+    if (r.kind != "dynamic") continue;
+    changed = true;
+    if (r.candidate == gov && t.dynamics.applies && k < t.dynamics.summaries.size()) {
+      const TieDynamicSummary& x = t.dynamics.summaries[k++];
+      r.demand = x.d_demand_after;
+      r.capacity = x.d_SLV_after;
+      r.dc = x.d_SLV_after > 0.0 ? x.d_demand_after / x.d_SLV_after : std::numeric_limits<double>::infinity();
+      r.satisfied = x.satisfied_after;
+      r.no_verdict = x.rule == "none" && !x.collapse_after && x.satisfied_after;
+      if (r.no_verdict) r.satisfied = false;
+      r.clause += ", with the ties (tied one-sided rocking, issue 23)";
+      r.note = std::string(x.collapse_after ? "collapse with the ties" : "no collapse with the ties") +
+               " (overturned in " + std::to_string(x.overturned_after) + "); rod yielded in " +
+               std::to_string(x.yielded) + ", broke in " + std::to_string(x.ruptured) + " analyses; " +
+               std::to_string(x.records) + " records: " + x.rule;
+      continue;
+    }
+    r.satisfied = false;
+    r.no_verdict = true;
+    r.note = r.candidate == gov ? "no verdict: the case has ties and the tied dynamic analysis does not apply (" +
+                                      t.dynamics.note + "); the analysis without the ties is not a check of the tied wall"
+                                : "no verdict: analysed without the ties, which the case gives (the tied dynamic "
+                                  "analysis covers the governing candidate only)";
+  }
+  if (!changed) return;
+  update_verdict(a);
+  a.warnings.push_back(a.kase.file + ": /ties: the case gives tie rods: the dynamic check rows use the analyses with "
+                       "the ties (tied one-sided rocking); the analyses and histories listed in the dynamic section are "
+                       "those without the ties (before), shown for comparison");
+}
+
 }  // namespace assess

@@ -186,4 +186,9 @@ std::vector<std::size_t> dynamic_candidates(const KinematicCaseResult& k);
 /// (naming the JSON path); physical outcomes are results.
 FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& options = {});
 
+/// Rebuilds `verdict` from every candidate's kinematic checks, the dynamic
+/// rows of `checks` and the energy rows (after a later step changed rows,
+/// e.g. the tied dynamic check of given ties, assessment/tie_intervention.hpp).
+void update_verdict(FacadeAssessment& a);
+
 }  // namespace assess

@@ -100,6 +100,16 @@ TieInterventionResult run_tie_intervention(const CaseFile& c);
 /// analysed dynamically; otherwise applies = false and `note` says why. Before = the façade's own runs (which never include ties).
 TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventionResult& t);
 
+/// Ties GIVEN in the case (not a design): the façade's kinematic rows already
+/// hold the ties, so its dynamic check rows must too. The governing
+/// candidate's dynamic rows take the tied analyses of `t.dynamics` (demand,
+/// d_SLV of the tied mechanism, collapse, verdict per restitution value); when
+/// the tied dynamics does not apply, or for other candidates' rows (analysed
+/// without ties), the rows get no verdict with the reason, never a verdict of
+/// the untied wall against the tied capacity. The verdict is rebuilt and a
+/// warning says so. No-op for a design or when the case has no dynamic rows.
+void apply_given_ties_to_dynamic_checks(FacadeAssessment& a, const TieInterventionResult& t);
+
 /// zeta_E of a kinematic result for the adopted `method` (see above).
 double zeta_E(const KinematicCaseResult& r, const std::string& method);
 
