@@ -1049,12 +1049,14 @@ void facade_html_site_section(const FacadeAssessment& a, const ReportOptions& op
 void facade_html_mechanism_sections(const FacadeAssessment& a, const ReportOptions& options, HtmlReport& h) {
   const Ctx c{a, options, options.lang, h};
   add_verdict_box(c);
+  add_data(c);
   add_mechanism(c);
   add_kinematic(c);
   add_checks(c);
   add_dynamic(c);
   add_comparison(c);
   add_warnings(c);
+  add_checks_appendix(c);  // every other candidate's checks: the verdict box counts are the rows shown
 }
 
 }  // namespace assess
