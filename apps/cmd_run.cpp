@@ -10,6 +10,7 @@
 #include <assess/support/error.hpp>
 #include <assess/assessment/facade_assessment.hpp>
 #include <assess/report/facade_report.hpp>
+#include <assess/report/kinematic_report.hpp>
 #include <assess/assessment/tie_intervention.hpp>
 #include <assess/report/tie_report.hpp>
 #include <assess/risk/fragility_report.hpp>
@@ -28,23 +29,7 @@ namespace {
 
 // Word-wraps one line within `width` columns (continuation lines indented by
 // two spaces), for the terminal's 120-column tables (issue 14).
-std::string wrap(const std::string& line, std::size_t width) {
-  std::string out, cur;
-  std::size_t start = 0;
-  while (start < line.size()) {
-    std::size_t end = line.find(' ', start);
-    if (end == std::string::npos) end = line.size();
-    const std::string word = line.substr(start, end - start);
-    if (!cur.empty() && cur.size() + 1 + word.size() > width) {
-      out += cur + "\n";
-      cur = "  " + word;
-    } else {
-      cur += (cur.empty() ? "" : " ") + word;
-    }
-    start = end + 1;
-  }
-  return out + cur + "\n";
-}
+std::string wrap(const std::string& line, std::size_t width) { return wrap_text(line, 2, width) + "\n"; }
 
 struct RunArgs {
   std::string file, html, pdf, lang = "it", fragility, mechanism, expand;

@@ -7,6 +7,7 @@
 #include "assess/report/building_report.hpp"
 
 #include "report/text_format.hpp"
+#include "report/report_heading.hpp"
 #include "report/xml_escape.hpp"
 
 #include "assess/report/html_report.hpp"
@@ -21,6 +22,9 @@ namespace assess {
 
 namespace {
 
+using detail::code_name;
+using detail::shown_file;
+using detail::today_utc;
 using detail::xml_escape;
 
 // The building report's own phrases, Italian and English (kept here so the
@@ -160,21 +164,8 @@ std::string fx(double v, int prec) {
 
 std::string esc(const std::string& s) { return xml_escape(s); }
 
-std::string code_name(const std::string& c) { return c == "NTC2008" ? "NTC 2008" : c == "NTC2018" ? "NTC 2018" : c; }
 
-std::string today_utc() {
-  const std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&now, &tm);
-  char b[16];
-  std::strftime(b, sizeof b, "%Y-%m-%d", &tm);
-  return b;
-}
 
-std::string shown_file(const std::string& f) {
-  const std::filesystem::path p(f);
-  return p.is_absolute() ? p.filename().string() : f;
-}
 
 std::string dc_td(double dc) {
   const bool fail = !(dc <= 1.0);

@@ -2,6 +2,9 @@
 // (issue 22). Formatting only: every number comes from BuildingAssessment.
 #include "assess/report/building_report.hpp"
 
+#include "assess/report/kinematic_report.hpp"
+
+#include "report/report_heading.hpp"
 #include "report/text_format.hpp"
 
 #include <cmath>
@@ -36,26 +39,14 @@ std::string pad(const std::string& s, std::size_t n) {
   return w >= n ? s : s + std::string(n - w, ' ');
 }
 
-// Word-wraps one line within `width` columns, continuation lines indented.
+// Word-wraps one line within `width` columns, its leading blanks dropped,
+// continuation lines indented by 4.
 std::string wrap(const std::string& line, std::size_t width) {
-  std::string out, cur;
-  std::size_t start = 0;
-  while (start < line.size()) {
-    std::size_t end = line.find(' ', start);
-    if (end == std::string::npos) end = line.size();
-    const std::string word = line.substr(start, end - start);
-    if (!cur.empty() && width_of(cur) + 1 + width_of(word) > width) {
-      out += cur + "\n";
-      cur = "    " + word;
-    } else {
-      cur += (cur.empty() ? "" : " ") + word;
-    }
-    start = end + 1;
-  }
-  return out + cur + "\n";
+  const std::size_t first = line.find_first_not_of(' ');
+  return (first == std::string::npos ? std::string() : wrap_text(line.substr(first), 4, width)) + "\n";
 }
 
-std::string code_name(const std::string& c) { return c == "NTC2008" ? "NTC 2008" : c == "NTC2018" ? "NTC 2018" : c; }
+using detail::code_name;
 
 std::string approach_name(const std::string& a) {
   return a == "strength" ? "linear (strength)" : a == "displacement" ? "non-linear (displacement)" : "dynamic";

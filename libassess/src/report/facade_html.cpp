@@ -6,6 +6,7 @@
 
 #include "report/text_format.hpp"
 
+#include "report/report_heading.hpp"
 #include "report/xml_escape.hpp"
 
 #include "assess/hazard/comuni.hpp"
@@ -28,6 +29,9 @@ namespace {
 
 constexpr double g = units::g;
 constexpr double pi = 3.14159265358979323846;
+using detail::code_name;
+using detail::shown_file;
+using detail::today_utc;
 using detail::xml_escape;
 
 std::string fixed(double v, int prec) {
@@ -44,11 +48,6 @@ HtmlCell num(double v, int prec, const std::string& extra = "") {
   return HtmlCell(fixed(v, prec), extra.empty() ? "num" : "num " + extra);
 }
 
-std::string code_name(const std::string& code) {
-  if (code == "NTC2008") return "NTC 2008";
-  if (code == "NTC2018") return "NTC 2018";
-  return code;
-}
 
 struct Ctx {
   const FacadeAssessment& a;
@@ -89,23 +88,9 @@ PlotSeries series(std::string name, PlotSeries::Style style, std::vector<double>
   return s;
 }
 
-std::string today_utc() {
-  const std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&now, &tm);
-  char b[16];
-  std::strftime(b, sizeof b, "%Y-%m-%d", &tm);
-  return b;
-}
 
 // ------------------------------------------------------------ steps
 
-// The case file as shown: a relative path as given, an absolute one by its
-// file name only (a signed report carries no machine paths; issue 24).
-std::string shown_file(const std::string& f) {
-  const std::filesystem::path p(f);
-  return p.is_absolute() ? p.filename().string() : f;
-}
 
 void add_header(const Ctx& c) {
   std::string meta;
@@ -681,6 +666,25 @@ void add_histories(const Ctx& c) {
   if (!panels.empty()) c.h.add_svg_grid(panels, c.t("dyn.histories_fig"), "fig-histories");
 }
 
+// Analyses of restitution value `restitution` in which d0 was exceeded or the body overturned.
+int collapses_of(const std::vector<DynamicRun>& runs, std::size_t restitution) {
+  int n = 0;
+  for (const DynamicRun& r : runs) n += r.restitution == restitution && r.collapse ? 1 : 0;
+  return n;
+}
+
+// Why a restitution value's dynamic check fails (failed analyses, collapses,
+// D/C > 1), for the outcome cell of its row; "" when satisfied or without a verdict.
+std::string fail_reason(const Ctx& c, const std::vector<DynamicRun>& runs, const RestitutionSummary& x) {
+  if (x.slv_satisfied || x.no_verdict) return "";
+  const int collapses = collapses_of(runs, x.restitution);
+  std::string why;
+  if (x.failed > 0) why = msgf(c.L, "dyn.reason_failed", x.failed, x.analyses);
+  if (collapses > 0) why += (why.empty() ? "" : "; ") + msgf(c.L, "dyn.reason_collapse", collapses, x.analyses);
+  if (x.dc_slv > 1.0) why += (why.empty() ? "" : "; ") + c.t("dyn.reason_dc");
+  return why;
+}
+
 // The dynamic analyses of the other candidates that govern a code or fail a
 // kinematic check (issue 24): one row per candidate and restitution value,
 // with the records each used (its own selection over its own periods).
@@ -701,15 +705,9 @@ void add_other_dynamics(const Ctx& c) {
     std::string recs;
     for (const RecordUsed& r : o.records) recs += (recs.empty() ? "" : ", ") + r.name + " (" + fixed(r.scale, 2) + ")";
     for (const RestitutionSummary& x : o.summaries) {
-      int collapses = 0;
-      for (const DynamicRun& r : o.runs) collapses += r.restitution == x.restitution && r.collapse ? 1 : 0;
+      const int collapses = collapses_of(o.runs, x.restitution);
       const bool fails = !x.slv_satisfied || !std::isfinite(x.dc_slv);
-      std::string why;
-      if (fails && !x.no_verdict) {
-        if (x.failed > 0) why = msgf(c.L, "dyn.reason_failed", x.failed, x.analyses);
-        if (collapses > 0) why += (why.empty() ? "" : "; ") + msgf(c.L, "dyn.reason_collapse", collapses, x.analyses);
-        if (x.dc_slv > 1.0) why += (why.empty() ? "" : "; ") + c.t("dyn.reason_dc");
-      }
+      const std::string why = fail_reason(c, o.runs, x);
       rows.push_back({c.loc(cr.label), recs, c.loc(describe(o.dynamic->restitutions[x.restitution])),
                       HtmlCell(std::to_string(collapses) + " / " + std::to_string(x.analyses), "num"),
                       num(x.d_demand, 4), num(o.kinematic.candidates.front().result.d_SLV, 4),
@@ -807,17 +805,6 @@ void add_dynamic(const Ctx& c) {
   add_histories(c);
 
   c.h.add_heading(c.t("dyn.summary"), 3);
-  // Why a restitution value fails when its D/C does not exceed 1.
-  auto fail_reason = [&](const RestitutionSummary& x) -> std::string {
-    if (x.slv_satisfied || x.no_verdict) return "";
-    int collapses = 0;
-    for (const DynamicRun& r : a.runs) collapses += r.restitution == x.restitution && r.collapse ? 1 : 0;
-    std::string why;
-    if (x.failed > 0) why = msgf(c.L, "dyn.reason_failed", x.failed, x.analyses);
-    if (collapses > 0) why += (why.empty() ? "" : "; ") + msgf(c.L, "dyn.reason_collapse", collapses, x.analyses);
-    if (x.dc_slv > 1.0) why += (why.empty() ? "" : "; ") + c.t("dyn.reason_dc");
-    return why;
-  };
   std::vector<std::vector<HtmlCell>> srows;
   for (const RestitutionSummary& x : a.summaries) {
     const bool fails = !x.slv_satisfied || !std::isfinite(x.dc_slv);
@@ -830,7 +817,7 @@ void add_dynamic(const Ctx& c) {
                      // reason (d0 exceeded, a failed analysis) says why in its own row (issue 24).
                      x.no_verdict ? HtmlCell("—", "num") : dc_cell(x.dc_slv, !(x.dc_slv <= 1.0)),
                      x.no_verdict ? HtmlCell(c.t("verdict.no_verdict_short"), "fail")
-                                  : HtmlCell(c.t(fails ? "fail" : "ok"), fails ? "fail" : "ok", fail_reason(x))});
+                                  : HtmlCell(c.t(fails ? "fail" : "ok"), fails ? "fail" : "ok", fail_reason(c, a.runs, x))});
   }
   c.h.add_cell_table({c.t("dyn.restitution"), HtmlCell(c.t("dyn.analyses"), "num"),
                       HtmlCell(c.t("dyn.overturned"), "num"), HtmlCell(c.t("dyn.mean_dc"), "num"),
