@@ -106,12 +106,7 @@ void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_tex
   FacadeAssessment res = assess_facade(c, opt);
   // Issue 23: the tie rods ("ties" or "design"): before/after and their checks;
   // given ties also decide the dynamic check rows.
-  std::optional<TieInterventionResult> ties;
-  if (has_ties(c)) {
-    ties = run_tie_intervention(c);
-    ties->dynamics = run_tie_dynamics(res, *ties);
-    apply_given_ties_to_dynamic_checks(res, *ties);
-  }
+  const std::optional<TieInterventionResult> ties = assess_ties(res);
   print_warnings(res.warnings);
   // A fragility result of this case: --fragility DIR, or the default output
   // directory of `assess fragility` (CASE.fragility) when it holds this case's.

@@ -400,4 +400,12 @@ void apply_given_ties_to_dynamic_checks(FacadeAssessment& a, const TieInterventi
                        "those without the ties (before), shown for comparison");
 }
 
+std::optional<TieInterventionResult> assess_ties(FacadeAssessment& a) {
+  if (!has_ties(a.kase)) return std::nullopt;
+  TieInterventionResult t = run_tie_intervention(a.kase);
+  t.dynamics = run_tie_dynamics(a, t);
+  apply_given_ties_to_dynamic_checks(a, t);
+  return t;
+}
+
 }  // namespace assess

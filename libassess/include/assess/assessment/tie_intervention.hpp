@@ -110,6 +110,12 @@ TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventi
 /// warning says so. No-op for a design or when the case has no dynamic rows.
 void apply_given_ties_to_dynamic_checks(FacadeAssessment& a, const TieInterventionResult& t);
 
+/// The tie step of an assessment, as `assess run` and the building case do it:
+/// nothing when the case has no ties (has_ties false); otherwise the
+/// intervention (run_tie_intervention), its dynamics (run_tie_dynamics) and,
+/// for given ties, their effect on the façade's dynamic check rows.
+std::optional<TieInterventionResult> assess_ties(FacadeAssessment& a);
+
 /// zeta_E of a kinematic result for the adopted `method` (see above).
 double zeta_E(const KinematicCaseResult& r, const std::string& method);
 
