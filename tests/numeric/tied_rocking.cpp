@@ -170,7 +170,7 @@ TEST_CASE("tied rocking: rigid block, tie at the top yields under a pulse; indep
     assess::HybridOdeOptions opt;
     opt.rel_tol = 1e-11;
     opt.abs_tol = 1e-13;
-    const auto r = assess::analyse_tied_rocking(model, tie, ug, dt, t_end, false, opt);
+    const auto r = assess::analyse_tied_rocking(model, tie, ug, dt, t_end, opt);
     const Ref ref = reference(body, tie, r.theta_collapse);
     CAPTURE(zt);
     CHECK(r.termination != assess::HybridTermination::integrator_error);
@@ -223,7 +223,7 @@ TEST_CASE("tied rocking: smooth block on a Winkler bed (both contact branches), 
   assess::HybridOdeOptions opt;
   opt.rel_tol = 1e-11;
   opt.abs_tol = 1e-13;
-  const auto r = assess::analyse_tied_rocking(model, tie, ug, dt, t_end, false, opt);
+  const auto r = assess::analyse_tied_rocking(model, tie, ug, dt, t_end, opt);
   const Ref ref = reference(body, tie, r.theta_collapse, kw);
   CHECK(r.yielded == ref.yielded);
   CHECK(r.overturned == ref.overturned);
@@ -274,8 +274,8 @@ TEST_CASE("tied chain: a one-block chain with the tie agrees with the tied rocki
   assess::HybridOdeOptions opt;
   opt.rel_tol = 1e-11;
   opt.abs_tol = 1e-13;
-  const auto rb = assess::analyse_tied_rocking(model, tie, ug, dt, t_end, false, opt);
-  const auto rc = assess::analyse_tied_chain(cd, level, e_rest, ug, dt, t_end, false, opt);
+  const auto rb = assess::analyse_tied_rocking(model, tie, ug, dt, t_end, opt);
+  const auto rc = assess::analyse_tied_chain(cd, level, e_rest, ug, dt, t_end, opt);
   CHECK(rc.yielded == rb.yielded);
   CHECK(rc.impacts == rb.impacts);
   CHECK(rc.overturned == rb.overturned);
@@ -308,7 +308,7 @@ TEST_CASE("tied rocking: two tie levels (one inclined, one with pretension) on t
   assess::HybridOdeOptions opt;
   opt.rel_tol = 1e-11;
   opt.abs_tol = 1e-13;
-  const auto r = assess::analyse_tied_rocking(model, std::vector<assess::RockingTie>{a, c}, ug, dt, t_end, false, opt);
+  const auto r = assess::analyse_tied_rocking(model, std::vector<assess::RockingTie>{a, c}, ug, dt, t_end, opt);
   std::vector<double> eps;
   const Ref ref = reference(body, {a, c}, r.theta_collapse, 0.0, &eps);
   REQUIRE(r.levels.size() == 2);
@@ -321,4 +321,74 @@ TEST_CASE("tied rocking: two tie levels (one inclined, one with pretension) on t
   CHECK_CLOSE(r.levels[1].plastic_elongation, eps[1], abs_tol(tol_ep));
   MESSAGE("two levels: theta_max " << r.theta_max << " (ref " << ref.theta_max << "), e_p " << eps[0] << ", " << eps[1]
                                    << " m, impacts " << r.impacts);
+}
+
+#include <assess/records/record.hpp>
+
+TEST_CASE("tied rocking, front-end form: the end rule (analysis_end.hpp) ends early and changes no result") {
+  // The record form runs the pulse, then free motion ended by the rule of
+  // issue 21; the verification form integrates the same motion to a fixed
+  // end (the pulse plus the 30 s cap) with every impact. Peak, rod outcome
+  // and overturning must be the same; the early end must be before the cap.
+  constexpr double tol_same = 1e-9;  // relative (m for e_p: absolute 1e-12): the same trajectory up to the early end
+  const auto body = assess::RockingBody::rectangle(t_wall, h_wall, gamma_w);
+  const assess::RockingModel model(body, assess::Foundation::rigid(), assess::Sidedness::one_sided,
+                                   assess::Restitution::given(e_rest));
+  assess::Record rec;
+  rec.dt = dt;
+  for (double t = 0.0; t <= Tp + 1e-9; t += dt) rec.acc.push_back(pulse(t));
+  assess::RockingTie tie;
+  tie.point = {0.0, 3.9};
+  tie.stiffness = 2e5;
+  tie.capacity = 1.2e3;
+  tie.pretension = 200.0;
+  assess::RockingOptions o;
+  o.rel_tol = 1e-11;
+  o.abs_tol = 1e-13;
+  const assess::RockingResult r = assess::analyse_tied(model, {tie}, rec, o);
+  std::vector<double> ug = rec.acc;
+  for (double t = 0.0; t < o.tail_s; t += dt) ug.push_back(0.0);
+  assess::HybridOdeOptions ho;
+  ho.rel_tol = o.rel_tol;
+  ho.abs_tol = o.abs_tol;
+  const auto full = assess::analyse_tied_rocking(model, tie, ug, dt, 1e300, ho);
+  REQUIRE(r.ties.size() == 1);
+  CHECK(assess::succeeded(r));
+  CHECK(r.overturned == full.overturned);
+  CHECK(r.ties[0].yielded == full.yielded);
+  CHECK_CLOSE(r.theta_max, full.theta_max, rel_tol(tol_same));
+  CHECK_CLOSE(r.ties[0].plastic_elongation, full.plastic_elongation, abs_tol(1e-12));
+  CHECK_CLOSE(r.ties[0].max_force, full.max_force, rel_tol(tol_same));
+  CHECK(r.end != assess::AnalysisEnd::free_motion_cap);
+  CHECK(r.t_end < full.t_end);
+  CHECK(r.impacts <= full.impacts);
+  CHECK_CLOSE(r.theta_u, full.theta_collapse, rel_tol(1e-15));
+  MESSAGE("end " << std::string(assess::to_string(r.end)) << " at " << r.t_end << " s (fixed form " << full.t_end << " s), impacts "
+                 << r.impacts << " of " << full.impacts << ", theta_max " << r.theta_max);
+}
+
+TEST_CASE("tied envelope: collapse rotation and energy capacity of a rigid block with a horizontal tie, closed form") {
+  // Envelope M(theta) = W R sin(alpha - theta) + T z cos(theta) (tie on the outer
+  // face at height z, pulling inward at its strength T); its work from 0 to theta_c:
+  //   W R (cos(alpha - theta_c) - cos alpha) + T z sin(theta_c).
+  constexpr double tol_capacity = 1e-7;  // relative: trapezoids on 4000 intervals of a smooth curve
+  const auto body = assess::RockingBody::rectangle(t_wall, h_wall, gamma_w);
+  const assess::RockingModel model(body, assess::Foundation::rigid(), assess::Sidedness::one_sided,
+                                   assess::Restitution::given(e_rest));
+  assess::RockingTie tie;
+  tie.point = {0.0, 3.0};
+  tie.stiffness = 1e6;
+  tie.capacity = 500.0;
+  const assess::TiedEnvelope E = assess::tied_envelope(model, {tie});
+  auto f = [&](double th) { return body.W * body.R * std::sin(body.alpha - th) + 500.0 * 3.0 * std::cos(th); };
+  double lo = body.alpha, hi = 1.5;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (f(mid) > 0 ? lo : hi) = mid;
+  }
+  const double cap = body.W * body.R * (std::cos(body.alpha - lo) - std::cos(body.alpha)) + 500.0 * 3.0 * std::sin(lo);
+  CHECK_CLOSE(E.theta_collapse, lo, abs_tol(1e-12));
+  CHECK_CLOSE(E.capacity, cap, rel_tol(tol_capacity));
+  REQUIRE(E.theta.size() == 201);
+  CHECK_CLOSE(E.restoring[100], f(E.theta[100]), rel_tol(1e-12));
 }

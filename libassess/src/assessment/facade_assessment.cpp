@@ -197,8 +197,6 @@ void finish(FacadeAssessment& a) {
 
 }  // namespace
 
-void update_verdict(FacadeAssessment& a) { finish(a); }
-
 std::vector<std::size_t> dynamic_candidates(const KinematicCaseResult& k) {
   std::vector<std::size_t> out;
   for (std::size_t i = 0; i < k.candidates.size(); ++i) {
@@ -208,6 +206,103 @@ std::vector<std::size_t> dynamic_candidates(const KinematicCaseResult& k) {
     for (const CheckRow& r : k.candidates[i].checks)
       wanted = wanted || !r.satisfied || r.no_verdict || !std::isfinite(r.dc) || r.dc > 1.0;
     if (wanted) out.push_back(i);
+  }
+  return out;
+}
+
+std::vector<DynamicRun> dynamic_runs(const FacadeAssessment& a, const MechanismDynamics& md, const KinematicResult& kin,
+                                     bool histories) {
+  const DynamicSpec& d = *a.dynamic;
+  std::vector<bool> polarities;
+  if (d.polarity != Polarity::reversed) polarities.push_back(false);
+  if (d.polarity != Polarity::normal) polarities.push_back(true);
+  // Every (restitution, record, polarity) analysis, in this order, on all cores.
+  std::vector<DynamicRun> runs;
+  for (std::size_t ie = 0; ie < md.e.size(); ++ie)
+    for (std::size_t ir = 0; ir < a.base_motions.size(); ++ir)
+      for (bool rev : polarities) {
+        DynamicRun run;
+        run.record = ir;
+        run.reversed = rev;
+        run.restitution = ie;
+        run.e = md.e[ie];
+        runs.push_back(std::move(run));
+      }
+  detail::parallel_for(runs.size(), [&](std::size_t i) {
+    DynamicRun& run = runs[i];
+    RockingOptions ro = d.options;
+    ro.record_history = histories;
+    ro.scale = a.records[run.record].scale;
+    ro.reverse = run.reversed;
+    run.result = md.analyse(run.restitution, a.base_motions[run.record], ro);
+    run.theta_ratio = run.result.theta_u > 0 ? run.result.theta_max / run.result.theta_u : 0.0;
+    // Peak outward rotation moves the control point outward (one-sided:
+    // theta >= 0); for two-sided, |theta| on either side (symmetric body).
+    run.d_control = md.control_displacement(kin, run.result.theta_max_side * run.result.theta_max);
+    run.d_star = run.d_control * kin.d_star_per_dk;
+    run.ruptured = md.ruptured(run.result);
+    run.collapse = run.result.overturned || run.d_control >= kin.dk0 || run.ruptured;
+  });
+  return runs;
+}
+
+std::vector<RestitutionSummary> summarise_runs(const std::vector<DynamicRun>& runs, const std::vector<double>& e,
+                                               const KinematicResult& kin) {
+  std::vector<RestitutionSummary> out;
+  for (std::size_t ie = 0; ie < e.size(); ++ie) {
+    RestitutionSummary s;
+    s.restitution = ie;
+    s.e = e[ie];
+    s.min_dc = 1e300;
+    std::map<std::size_t, double> envelope;  // record -> peak d* over polarities
+    for (const DynamicRun& r : runs) {
+      if (r.restitution != ie) continue;
+      ++s.analyses;
+      if (!succeeded(r.result)) {  // its numbers are not results
+        ++s.failed;
+        continue;
+      }
+      s.overturned += r.result.overturned ? 1 : 0;
+      s.ruptured += r.ruptured ? 1 : 0;
+      s.mean_dc += r.result.dc;
+      s.min_dc = std::min(s.min_dc, r.result.dc);
+      s.max_dc = std::max(s.max_dc, r.result.dc);
+      s.mean_theta_ratio += r.theta_ratio;
+      s.any_collapse = s.any_collapse || r.collapse;
+      envelope[r.record] = std::max(envelope[r.record], r.d_star);
+    }
+    // Failed analyses (step or event limit, integrator error) are left out of
+    // the statistics and fail the check (issue 10): their numbers are not results.
+    const int trusted = s.analyses - s.failed;
+    if (trusted > 0) {
+      s.mean_dc /= trusted;
+      s.mean_theta_ratio /= trusted;
+    } else {
+      s.min_dc = 0.0;
+    }
+    for (const auto& kv : envelope) {
+      s.mean_d_star += kv.second;
+      s.max_d_star = std::max(s.max_d_star, kv.second);
+    }
+    s.records = int(envelope.size());
+    if (s.records > 0) s.mean_d_star /= double(envelope.size());
+    // NTC 2018 §7.3.5 (docs/theory/facade.md §7): with at least 7 records the
+    // mean of the results, with 3 to 6 the most unfavourable, with fewer no
+    // verdict. Any collapse fails the check whatever the count (C8.7.1.2.1.9).
+    if (s.records >= code_rules::records_for_mean) {
+      s.rule = "mean";
+      s.d_demand = s.mean_d_star;
+    } else if (s.records >= code_rules::records_min) {
+      s.rule = "most unfavourable";
+      s.d_demand = s.max_d_star;
+    } else {
+      s.rule = "none";
+      s.d_demand = s.max_d_star;
+    }
+    s.no_verdict = s.rule == "none" && !s.any_collapse && s.failed == 0;
+    s.dc_slv = kin.d_SLV > 0 ? s.d_demand / kin.d_SLV : 0.0;
+    s.slv_satisfied = s.failed == 0 && !s.any_collapse && !s.no_verdict && s.d_demand <= kin.d_SLV;
+    out.push_back(s);
   }
   return out;
 }
@@ -331,98 +426,18 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   // motion at the mechanism's base), then the free motion up to tail_s; the
   // end rule is the one of every dynamic command (dynamics/analysis_end.hpp).
   a.free_tail_s = d.options.tail_s;
-  const std::vector<Record>& run_recs = inputs;
-  a.base_motions = inputs;  // issue 23: the ties' dynamic analysis
   for (std::size_t ir = 0; ir < recs.size(); ++ir) {
     a.records[ir].duration_s = recs[ir].duration();
-    a.records[ir].integrated_s = run_recs[ir].duration();
+    a.records[ir].integrated_s = inputs[ir].duration();
   }
+  a.base_motions = std::move(inputs);
 
   // Control point of the kinematic analysis, for the C8.7.1.2.1.9 displacements.
   const KinematicResult& kin = gov.result;
-  std::vector<bool> polarities;
-  if (d.polarity != Polarity::reversed) polarities.push_back(false);
-  if (d.polarity != Polarity::normal) polarities.push_back(true);
-  // Every (restitution, record, polarity) analysis, in this order, on all cores.
-  for (std::size_t ie = 0; ie < md.e.size(); ++ie)
-    for (std::size_t ir = 0; ir < recs.size(); ++ir)
-      for (bool rev : polarities) {
-        DynamicRun run;
-        run.record = ir;
-        run.reversed = rev;
-        run.restitution = ie;
-        run.e = md.e[ie];
-        a.runs.push_back(std::move(run));
-      }
-  detail::parallel_for(a.runs.size(), [&](std::size_t i) {
-    DynamicRun& run = a.runs[i];
-    RockingOptions ro = d.options;
-    ro.record_history = opt.histories;
-    ro.scale = a.records[run.record].scale;
-    ro.reverse = run.reversed;
-    run.result = md.analyse(run.restitution, run_recs[run.record], ro);
-    run.theta_ratio = run.result.theta_u > 0 ? run.result.theta_max / run.result.theta_u : 0.0;
-    // Peak outward rotation moves the control point outward (one-sided:
-    // theta >= 0); for two-sided, |theta| on either side (symmetric body).
-    run.d_control = md.control_displacement(kin, run.result.theta_max_side * run.result.theta_max);
-    run.d_star = run.d_control * kin.d_star_per_dk;
-    run.collapse = run.result.overturned || run.d_control >= kin.dk0;
-  });
-  // Summaries per restitution value.
+  a.runs = dynamic_runs(a, md, kin, opt.histories);
+  a.summaries = summarise_runs(a.runs, md.e, kin);
   for (std::size_t ie = 0; ie < md.e.size(); ++ie) {
-    RestitutionSummary s;
-    s.restitution = ie;
-    s.e = md.e[ie];
-    s.min_dc = 1e300;
-    std::map<std::size_t, double> envelope;  // record -> peak d* over polarities
-    for (const DynamicRun& r : a.runs) {
-      if (r.restitution != ie) continue;
-      ++s.analyses;
-      if (!succeeded(r.result)) {  // its numbers are not results
-        ++s.failed;
-        continue;
-      }
-      s.overturned += r.result.overturned ? 1 : 0;
-      s.mean_dc += r.result.dc;
-      s.min_dc = std::min(s.min_dc, r.result.dc);
-      s.max_dc = std::max(s.max_dc, r.result.dc);
-      s.mean_theta_ratio += r.theta_ratio;
-      s.any_collapse = s.any_collapse || r.collapse;
-      envelope[r.record] = std::max(envelope[r.record], r.d_star);
-    }
-    // Failed analyses (step or event limit, integrator error) are left out of
-    // the statistics and fail the check (issue 10): their numbers are not results.
-    const int trusted = s.analyses - s.failed;
-    if (trusted > 0) {
-      s.mean_dc /= trusted;
-      s.mean_theta_ratio /= trusted;
-    } else {
-      s.min_dc = 0.0;
-    }
-    for (const auto& [rec, dmax] : envelope) {
-      s.mean_d_star += dmax;
-      s.max_d_star = std::max(s.max_d_star, dmax);
-    }
-    s.records = int(envelope.size());
-    if (s.records > 0) s.mean_d_star /= double(envelope.size());
-    // NTC 2018 §7.3.5 (docs/theory/facade.md §7): with at least 7 records the
-    // mean of the results, with 3 to 6 the most unfavourable, with fewer no
-    // verdict. Any collapse fails the check whatever the count (C8.7.1.2.1.9).
-    if (s.records >= code_rules::records_for_mean) {
-      s.rule = "mean";
-      s.d_demand = s.mean_d_star;
-    } else if (s.records >= code_rules::records_min) {
-      s.rule = "most unfavourable";
-      s.d_demand = s.max_d_star;
-    } else {
-      s.rule = "none";
-      s.d_demand = s.max_d_star;
-    }
-    s.no_verdict = s.rule == "none" && !s.any_collapse && s.failed == 0;
-    s.dc_slv = kin.d_SLV > 0 ? s.d_demand / kin.d_SLV : 0.0;
-    s.slv_satisfied = s.failed == 0 && !s.any_collapse && !s.no_verdict && s.d_demand <= kin.d_SLV;
-    a.summaries.push_back(s);
-
+    const RestitutionSummary& s = a.summaries[ie];
     const std::string e_text = describe(d.restitutions[ie]);
     const std::string nrec = std::to_string(s.records) + (s.records == 1 ? " record" : " records");
     CheckRow row;
@@ -432,13 +447,15 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
     row.location = md.Z > 0.0 ? "height" : "ground";
     row.candidate = gov.label;
     row.clause = "C8.7.1.2.1.9 [V-T], NTC 2018 §7.3.5, " + e_text + (md.single_body() ? "" : ", chain model") +
+                 (md.tied() ? ", with the tie rods (tied one-sided rocking)" : "") +
                  (md.filter ? ", floor motions (first-mode filter)" : md.floor_input ? ", floor motions given" : "");
     row.formula = (s.rule == "mean" ? "mean of peak d* over " : "largest peak d* of ") + nrec;
     int collapses = 0;
     for (const DynamicRun& r : a.runs) collapses += r.restitution == ie && r.collapse ? 1 : 0;
     row.note = std::string(s.any_collapse ? "d0 exceeded in " + std::to_string(collapses) + " of " +
                                                 std::to_string(s.analyses) + " analyses (overturned in " +
-                                                std::to_string(s.overturned) + ")"
+                                                std::to_string(s.overturned) +
+                                                (md.tied() ? ", a rod broken in " + std::to_string(s.ruptured) : "") + ")"
                                           : "d0 never exceeded") +
                "; " + nrec + ": " +
                (s.rule == "mean" ? "mean of the results (NTC 2018 §7.3.5, >= 7 records)"
@@ -466,7 +483,8 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
     en.kind = "dynamic energy";
     en.location = "ground";
     en.candidate = gov.label;
-    en.clause = "seed §3.2 energy D/C (not a code check), " + e_text;
+    en.clause = "seed §3.2 energy D/C (not a code check), " + e_text +
+                (md.tied() ? ", on the tied wall's restoring moment with the ties at their strength" : "");
     en.formula = "mean over " + std::to_string(s.analyses) + " analyses of the energy demand/capacity";
     en.demand = s.mean_dc;
     en.capacity = 1.0;

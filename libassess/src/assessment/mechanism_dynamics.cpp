@@ -8,6 +8,7 @@
 #include "assess/assessment/mechanism_dynamics.hpp"
 
 #include "assess/kinematic/code_rules.hpp"
+#include "assess/kinematic/tie_checks.hpp"
 #include "assess/support/error.hpp"
 #include "assess/support/units.hpp"
 
@@ -25,8 +26,53 @@ std::string fmt(const char* f, double v) {
 }  // namespace
 
 RockingResult MechanismDynamics::analyse(std::size_t ie, const Record& in, const RockingOptions& options) const {
+  if (tied()) {
+    if (body) return analyse_tied(rocking.at(ie), body_ties, in, options);
+    std::vector<TieRestraint> levels;
+    for (const DynamicTie& t : ties) levels.push_back(t.level);
+    return analyse_tied(*chain, levels, e.at(ie), in, options);
+  }
   if (body) return assess::analyse(rocking.at(ie), in, options);
   return analyse_chain(*chain, in, options, e.at(ie), sidedness);
+}
+
+MechanismDynamics MechanismDynamics::with_ties(std::vector<DynamicTie> levels) const {
+  MechanismDynamics m = *this;
+  m.ties = std::move(levels);
+  m.body_ties.clear();
+  m.tied_envelope.reset();
+  if (m.ties.empty()) return m;
+  if (sidedness != Sidedness::one_sided) {
+    m.applies = false;
+    m.note = "the dynamic analysis with tie rods covers one-sided rocking (a façade against its transverse walls); "
+             "the case asks for two-sided rocking";
+    return m;
+  }
+  if (body) {
+    // One body per unit depth of wall, about its ground hinge.
+    for (const DynamicTie& t : m.ties) {
+      const TieRestraint& r = t.level;
+      RockingTie tie;
+      tie.point = r.point - body->hinge;
+      tie.direction = r.direction;
+      tie.stiffness = r.stiffness / body->length;
+      tie.capacity = r.capacity / body->length;
+      tie.pretension = std::min(r.pretension, r.capacity) / body->length;
+      m.body_ties.push_back(tie);
+    }
+    m.tied_envelope = assess::tied_envelope(rocking.front(), m.body_ties);
+  } else {
+    std::vector<TieRestraint> levels;
+    for (const DynamicTie& t : m.ties) levels.push_back(t.level);
+    m.tied_envelope = assess::tied_envelope(*chain, levels);
+  }
+  return m;
+}
+
+bool MechanismDynamics::ruptured(const RockingResult& r) const {
+  for (std::size_t i = 0; i < r.ties.size() && i < ties.size(); ++i)
+    if (r.ties[i].max_elongation > ties[i].ultimate_elongation) return true;
+  return false;
 }
 
 double MechanismDynamics::control_displacement(const KinematicResult& kin, double q) const {
@@ -34,24 +80,43 @@ double MechanismDynamics::control_displacement(const KinematicResult& kin, doubl
   return std::fabs(chain->horizontal_displacement(kin.control_block, kin.control_point, q));
 }
 
-double MechanismDynamics::q_u() const { return body ? rocking.front().theta_u(+1) : chain->q_u(); }
+double MechanismDynamics::q_u() const {
+  if (tied_envelope) return tied_envelope->theta_collapse;
+  return body ? rocking.front().theta_u(+1) : chain->q_u();
+}
 
-double MechanismDynamics::capacity() const { return body ? rocking.front().capacity() : chain->capacity() / length; }
+double MechanismDynamics::capacity() const {
+  if (tied_envelope) return tied_envelope->capacity / (body ? 1.0 : length);
+  return body ? rocking.front().capacity() : chain->capacity() / length;
+}
 
 double MechanismDynamics::restoring(double q) const {
+  if (tied_envelope) {  // linear on the envelope's evenly spaced samples
+    const TiedEnvelope& E = *tied_envelope;
+    const double n = double(E.theta.size() - 1), x = std::min(std::max(q / E.theta_collapse * n, 0.0), n);
+    const std::size_t i = std::min(static_cast<std::size_t>(x), E.theta.size() - 2);
+    return (E.restoring[i] + (x - double(i)) * (E.restoring[i + 1] - E.restoring[i])) / (body ? 1.0 : length);
+  }
   if (body) return rocking.front().restoring_moment(q) - body->body.M_ext;
   return chain->net_restoring(q) / length;
 }
 
 std::string MechanismDynamics::describe() const {
   std::string s;
-  if (body) {
+  if (tied() && body) {
+    s = "one body rotating about its ground hinge (rocking model, seed Eq. 1) held by " + std::to_string(ties.size()) +
+        " tie level" + (ties.size() > 1 ? "s" : "") +
+        " (one-sided elastic-perfectly-plastic restraint, docs/theory/ties.md §6)";
+  } else if (body) {
     s = "one body rotating about its ground hinge (rocking model, seed Eq. 1)";
   } else {
     s = std::string(sidedness == Sidedness::two_sided ? "two-sided" : "one-sided") + " chain of " +
         std::to_string(chain->chain().blocks().size()) +
         " blocks, one coordinate q = rotation of block '" + chain->chain().blocks()[std::size_t(chain->reference_block())].name +
         "' (Lagrange's equation, docs/theory/chain-dynamics.md), q_u = " + fmt("%.5f", chain->q_u()) + " rad";
+    if (tied())
+      s += ", held by " + std::to_string(ties.size()) + " tie level" + (ties.size() > 1 ? "s" : "") +
+           " (one-sided elastic-perfectly-plastic restraint, docs/theory/ties.md §6)";
   }
   if (Z > 0.0 || floor_input) {
     s += "; base at Z = " + fmt("%.2f", Z) + " m, ";
@@ -64,8 +129,10 @@ std::string MechanismDynamics::describe() const {
   return s;
 }
 
-MechanismDynamics build_mechanism_dynamics(const CaseFile& kase, const CandidateResult& cand, const Chain& chain,
-                                           const DynamicSpec& d) {
+namespace {
+
+MechanismDynamics build_bare(const CaseFile& kase, const CandidateResult& cand, const Chain& chain,
+                             const DynamicSpec& d) {
   MechanismDynamics m;
   const std::string& file = kase.file;
   m.Z = cand.Z;
@@ -152,6 +219,28 @@ MechanismDynamics build_mechanism_dynamics(const CaseFile& kase, const Candidate
   m.length = chain.blocks()[std::size_t(m.chain->reference_block())].length;
   m.applies = true;
   return m;
+}
+
+}  // namespace
+
+MechanismDynamics build_mechanism_dynamics(const CaseFile& kase, const CandidateResult& cand, const Chain& chain,
+                                           const DynamicSpec& d) {
+  MechanismDynamics m = build_bare(kase, cand, chain, d);
+  if (!m.applies || cand.result.ties.empty()) return m;
+  if (d.options.overturn != OverturnCriterion::theta_u)
+    throw InputError(kase.file + ": /dynamic/overturn_at: a wall held by tie rods (\"ties\") collapses where its net "
+                     "restoring moment with the ties at their strength vanishes; \"half_pi\" is not available with ties");
+  std::vector<DynamicTie> levels;
+  for (const TieWork& w : cand.result.ties) {
+    DynamicTie t;
+    t.level = w.tie;
+    const double per_count = w.tie.count > 0.0 ? 1.0 / w.tie.count : 0.0;
+    t.per_tie = m.single_body() ? per_count * m.body->length : per_count;
+    for (const Tie& given : kase.ties)
+      if (given.name == w.tie.name) t.ultimate_elongation = tie_resistance(given).ultimate_elongation;
+    levels.push_back(t);
+  }
+  return m.with_ties(std::move(levels));
 }
 
 }  // namespace assess

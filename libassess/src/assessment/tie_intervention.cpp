@@ -2,7 +2,6 @@
 // smallest commercial rod and plate (docs/theory/ties.md §5).
 #include "assess/assessment/tie_intervention.hpp"
 
-#include "assess/dynamics/tied_rocking.hpp"
 #include "assess/kinematic/tie_catalogue.hpp"
 #include "assess/support/error.hpp"
 #include "assess/support/units.hpp"
@@ -224,187 +223,120 @@ TieInterventionResult run_tie_intervention(const CaseFile& c) {
 
 namespace assess {
 
+namespace {
+
+// The dynamic levels of a kinematic candidate's ties (as build_mechanism_dynamics
+// makes them), the rods' ultimate elongations from the levels' checks.
+std::vector<DynamicTie> dynamic_levels(const MechanismDynamics& md, const CandidateResult& cand,
+                                       const std::vector<TieLevelResult>& checked, const CaseFile& c) {
+  std::vector<DynamicTie> out;
+  for (const TieWork& w : cand.result.ties) {
+    DynamicTie t;
+    t.level = w.tie;
+    const double per_count = w.tie.count > 0.0 ? 1.0 / w.tie.count : 0.0;
+    t.per_tie = md.single_body() ? per_count * md.body->length : per_count;
+    for (const Tie& given : c.ties)
+      if (given.name == w.tie.name) t.ultimate_elongation = tie_resistance(given).ultimate_elongation;
+    for (const TieLevelResult& L : checked)
+      if (L.tie.name == w.tie.name) t.ultimate_elongation = L.resistance.ultimate_elongation;
+    out.push_back(t);
+  }
+  return out;
+}
+
+// One tied analysis as the ties section reports it: over the levels, the
+// largest force per tie, elongation and permanent set; the energy dissipated
+// by one tie of each level, summed.
+TieDynamicRun tie_run(const MechanismDynamics& md, const DynamicRun& run, std::size_t i) {
+  TieDynamicRun d;
+  d.run = i;
+  d.theta_max = run.result.theta_max;
+  d.theta_collapse = run.result.theta_u;
+  d.overturned = run.result.overturned;
+  for (std::size_t l = 0; l < run.result.ties.size() && l < md.ties.size(); ++l) {
+    const TiedLevelResult& x = run.result.ties[l];
+    d.yielded = d.yielded || x.yielded;
+    d.max_force = std::max(d.max_force, x.max_force * md.ties[l].per_tie);
+    d.plastic_elongation = std::max(d.plastic_elongation, x.plastic_elongation);
+    d.plastic_energy += x.plastic_energy * md.ties[l].per_tie;
+    d.max_elongation = std::max(d.max_elongation, x.max_elongation);
+  }
+  d.ruptured = run.ruptured;
+  d.d_star = run.d_star;
+  d.collapse = run.collapse || !succeeded(run.result);
+  d.failed = !succeeded(run.result);
+  return d;
+}
+
+}  // namespace
+
 TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventionResult& t) {
   TieDynamicResult R;
   if (!a.dynamic || !a.mechanism_dynamics || a.runs.empty()) {
-    R.note = "no dynamic analysis in the case";
+    R.note = a.dynamic && !a.dynamic_note.empty() && !a.dynamic_applies ? a.dynamic_note
+                                                                        : "no dynamic analysis in the case";
     return R;
   }
+  // The façade's analyses are those of its case: with the given ties, if any.
+  // The other side (for given ties, the wall without them; for a design, the
+  // wall with the designed levels) is the same model, records and polarities,
+  // on the same candidate, with the other tie levels.
+  const std::size_t g = a.kinematic.governing;
   const MechanismDynamics& md = *a.mechanism_dynamics;
-  const CandidateResult& after = t.after.candidates[t.after.governing];
-  if (md.sidedness != Sidedness::one_sided || (!md.single_body() && !md.chain)) {
-    R.note = "the tied dynamic analysis covers one-sided rocking (a body or a chain)";
+  const CandidateResult& before = t.before.candidates.at(g);
+  const CandidateResult& after = t.after.candidates.at(g);
+  const MechanismDynamics other =
+      t.designed ? md.with_ties(dynamic_levels(md, after, t.levels, t.case_after)) : md.with_ties({});
+  if (!other.applies) {
+    R.note = other.note;
     return R;
   }
-  if (after.result.ties.empty() || t.after.governing != a.kinematic.governing) {
-    R.note = "the tied dynamic analysis needs the ties on the mechanism analysed dynamically";
+  if (t.designed && !other.tied()) {
+    R.note = "the designed ties hold no block of the mechanism analysed dynamically";
     return R;
   }
-  if (a.base_motions.size() != a.records.size()) {
-    R.note = "the base motions of the records are not available";
-    return R;
-  }
-  // Every level: one body per unit depth of wall, a chain the whole level;
-  // per_tie[i] turns the analysis' forces and energies into those of one tie;
-  // e_u[i] is the rod's ultimate elongation eps_ud L (tie_checks).
-  std::vector<TieRestraint> levels;
-  std::vector<RockingTie> body_ties;
-  std::vector<double> per_tie, e_u;
-  for (const TieWork& w : after.result.ties) {
-    const TieRestraint& r = w.tie;
-    levels.push_back(r);
-    double f = r.count > 0.0 ? 1.0 / r.count : 0.0;
-    if (md.single_body()) {
-      const ChainRockingBody& body = *md.body;
-      RockingTie tie;
-      tie.point = r.point - body.hinge;
-      tie.direction = r.direction;
-      tie.stiffness = r.stiffness / body.length;
-      tie.capacity = r.capacity / body.length;
-      tie.pretension = std::min(r.pretension, r.capacity) / body.length;
-      body_ties.push_back(tie);
-      f *= body.length;
-    }
-    per_tie.push_back(f);
-    double eu = std::numeric_limits<double>::infinity();
-    for (const TieLevelResult& L : t.levels)
-      if (L.tie.name == r.name) eu = L.resistance.ultimate_elongation;
-    e_u.push_back(eu);
-  }
-  const KinematicResult& kin = after.result;
-  R.runs.resize(a.runs.size());
-  detail::parallel_for(a.runs.size(), [&](std::size_t i) {
-    const DynamicRun& run = a.runs[i];
-    const Record& rec = a.base_motions[run.record];
-    const double f = a.records[run.record].scale * (run.reversed ? -1.0 : 1.0);
-    std::vector<double> ug;
-    ug.reserve(rec.acc.size() + static_cast<std::size_t>(a.free_tail_s / rec.dt) + 1);
-    for (double v : rec.acc) ug.push_back(f * v);
-    for (double s = 0.0; s < a.free_tail_s; s += rec.dt) ug.push_back(0.0);
-    HybridOdeOptions o;
-    o.rel_tol = a.dynamic->options.rel_tol;
-    o.abs_tol = a.dynamic->options.abs_tol;
-    const TiedRockingResult tr =
-        md.single_body() ? analyse_tied_rocking(md.rocking[run.restitution], body_ties, ug, rec.dt, 1e300, false, o)
-                         : analyse_tied_chain(*md.chain, levels, md.e[run.restitution], ug, rec.dt, 1e300, false, o);
-    TieDynamicRun& d = R.runs[i];
-    d.run = i;
-    d.theta_max = tr.theta_max;
-    d.theta_collapse = tr.theta_collapse;
-    d.overturned = tr.overturned;
-    d.yielded = tr.yielded;
-    // Over the levels: the largest force per tie, elongation and permanent
-    // set; the energy dissipated by one tie of each level, summed.
-    for (std::size_t l = 0; l < tr.levels.size(); ++l) {
-      const TiedLevelResult& x = tr.levels[l];
-      d.max_force = std::max(d.max_force, x.max_force * per_tie[l]);
-      d.plastic_elongation = std::max(d.plastic_elongation, x.plastic_elongation);
-      d.plastic_energy += x.plastic_energy * per_tie[l];
-      d.max_elongation = std::max(d.max_elongation, x.max_elongation);
-      d.ruptured = d.ruptured || x.max_elongation > e_u[l];
-    }
-    d.failed = !(tr.termination == HybridTermination::completed || tr.termination == HybridTermination::finished ||
-                 tr.termination == HybridTermination::stopped_by_event);
-    const double dc = md.control_displacement(kin, tr.theta_max);
-    d.d_star = dc * kin.d_star_per_dk;
-    d.collapse = d.overturned || d.ruptured || dc >= kin.dk0 || d.failed;
-  });
-  // Per restitution value: the rule of NTC 2018 §7.3.5 on the envelope of the polarities.
-  // Before: the façade's runs (never with ties) against the mechanism without
-  // the ties of `t` (the façade's kinematic part has the case's given ties).
-  const KinematicResult& kin_before = t.before.candidates[t.before.governing].result;
-  for (const RestitutionSummary& s0 : a.summaries) {
+  const std::vector<DynamicRun> other_runs = dynamic_runs(a, other, (t.designed ? after : before).result, false);
+  const std::vector<DynamicRun>& runs_before = t.designed ? a.runs : other_runs;
+  const std::vector<DynamicRun>& runs_after = t.designed ? other_runs : a.runs;
+  const MechanismDynamics& md_after = t.designed ? other : md;
+  for (std::size_t i = 0; i < runs_after.size(); ++i) R.runs.push_back(tie_run(md_after, runs_after[i], i));
+  const std::vector<RestitutionSummary> sb = summarise_runs(runs_before, md.e, before.result);
+  const std::vector<RestitutionSummary> sa = summarise_runs(runs_after, md.e, after.result);
+  for (std::size_t ie = 0; ie < sa.size(); ++ie) {
     TieDynamicSummary s;
-    s.e = s0.e;
-    s.records = s0.records;
-    s.rule = s0.rule;
-    s.overturned_before = s0.overturned;
-    s.d_SLV_before = kin_before.d_SLV;
-    std::map<std::size_t, double> env0;
-    bool failed0 = false;
-    for (const DynamicRun& run : a.runs) {
-      if (run.restitution != s0.restitution) continue;
-      failed0 = failed0 || !(run.result.termination == RockingTermination::completed ||
-                             run.result.termination == RockingTermination::overturned);
-      s.collapse_before = s.collapse_before || run.result.overturned || run.d_control >= kin_before.dk0;
-      env0[run.record] = std::max(env0[run.record], run.d_star);
-    }
-    double mean0 = 0.0, mx0 = 0.0;
-    for (const auto& kv : env0) {
-      mean0 += kv.second / double(env0.size());
-      mx0 = std::max(mx0, kv.second);
-    }
-    s.d_demand_before = s.rule == "mean" ? mean0 : mx0;
-    s.collapse_before = s.collapse_before || failed0;
-    s.satisfied_before = s.rule != "none" && !s.collapse_before && s.d_demand_before <= s.d_SLV_before;
-    s.d_SLV_after = kin.d_SLV;
-    std::map<std::size_t, double> env;
+    s.e = sa[ie].e;
+    s.records = sa[ie].records;
+    s.rule = sa[ie].rule;
+    s.overturned_before = sb[ie].overturned;
+    s.overturned_after = sa[ie].overturned;
+    s.d_demand_before = sb[ie].d_demand;
+    s.d_demand_after = sa[ie].d_demand;
+    s.d_SLV_before = before.result.d_SLV;
+    s.d_SLV_after = after.result.d_SLV;
+    s.collapse_before = sb[ie].any_collapse || sb[ie].failed > 0;
+    s.collapse_after = sa[ie].any_collapse || sa[ie].failed > 0;
+    s.satisfied_before = sb[ie].slv_satisfied;
+    s.satisfied_after = sa[ie].slv_satisfied;
+    s.ruptured = sa[ie].ruptured;
     for (const TieDynamicRun& d : R.runs) {
-      const DynamicRun& run = a.runs[d.run];
-      if (run.restitution != s0.restitution) continue;
-      s.overturned_after += d.overturned ? 1 : 0;
-      s.collapse_after = s.collapse_after || d.collapse;
+      if (runs_after[d.run].restitution != ie) continue;
       s.yielded += d.yielded ? 1 : 0;
-      s.ruptured += d.ruptured ? 1 : 0;
       s.max_plastic_elongation = std::max(s.max_plastic_elongation, d.plastic_elongation);
-      env[run.record] = std::max(env[run.record], d.d_star);
     }
-    double mean = 0.0, mx = 0.0;
-    for (const auto& kv : env) {
-      mean += kv.second / double(env.size());
-      mx = std::max(mx, kv.second);
-    }
-    s.d_demand_after = s.rule == "mean" ? mean : mx;
-    s.satisfied_after = s.rule != "none" && !s.collapse_after && s.d_demand_after <= s.d_SLV_after;
     R.summaries.push_back(s);
   }
   R.applies = true;
-  R.note = "the façade's analyses repeated with the tie as a one-sided elastic-perfectly-plastic restraint";
+  R.note = t.designed ? "the façade's analyses repeated with the designed ties as one-sided elastic-perfectly-plastic "
+                        "restraints"
+                      : "the façade's analyses are those of the wall with its ties (one-sided elastic-perfectly-plastic "
+                        "restraints); before: the same analyses without them";
   return R;
 }
 
-void apply_given_ties_to_dynamic_checks(FacadeAssessment& a, const TieInterventionResult& t) {
-  if (t.designed) return;
-  const std::string gov = a.kinematic.candidates[a.kinematic.governing].label;
-  bool changed = false;
-  std::size_t k = 0;  // the governing candidate's dynamic rows, one per restitution value, in order
-  for (CheckRow& r : a.checks) {
-    if (r.kind != "dynamic") continue;
-    changed = true;
-    if (r.candidate == gov && t.dynamics.applies && k < t.dynamics.summaries.size()) {
-      const TieDynamicSummary& x = t.dynamics.summaries[k++];
-      r.demand = x.d_demand_after;
-      r.capacity = x.d_SLV_after;
-      r.dc = x.d_SLV_after > 0.0 ? x.d_demand_after / x.d_SLV_after : std::numeric_limits<double>::infinity();
-      r.satisfied = x.satisfied_after;
-      r.no_verdict = x.rule == "none" && !x.collapse_after && x.satisfied_after;
-      if (r.no_verdict) r.satisfied = false;
-      r.clause += ", with the ties (tied one-sided rocking, issue 23)";
-      r.note = std::string(x.collapse_after ? "collapse with the ties" : "no collapse with the ties") +
-               " (overturned in " + std::to_string(x.overturned_after) + "); rod yielded in " +
-               std::to_string(x.yielded) + ", broke in " + std::to_string(x.ruptured) + " analyses; " +
-               std::to_string(x.records) + " records: " + x.rule;
-      continue;
-    }
-    r.satisfied = false;
-    r.no_verdict = true;
-    r.note = r.candidate == gov ? "no verdict: the case has ties and the tied dynamic analysis does not apply (" +
-                                      t.dynamics.note + "); the analysis without the ties is not a check of the tied wall"
-                                : "no verdict: analysed without the ties, which the case gives (the tied dynamic "
-                                  "analysis covers the governing candidate only)";
-  }
-  if (!changed) return;
-  update_verdict(a);
-  a.warnings.push_back(a.kase.file + ": /ties: the case gives tie rods: the dynamic check rows use the analyses with "
-                       "the ties (tied one-sided rocking); the analyses and histories listed in the dynamic section are "
-                       "those without the ties (before), shown for comparison");
-}
-
-std::optional<TieInterventionResult> assess_ties(FacadeAssessment& a) {
+std::optional<TieInterventionResult> assess_ties(const FacadeAssessment& a) {
   if (!has_ties(a.kase)) return std::nullopt;
   TieInterventionResult t = run_tie_intervention(a.kase);
   t.dynamics = run_tie_dynamics(a, t);
-  apply_given_ties_to_dynamic_checks(a, t);
   return t;
 }
 

@@ -12,6 +12,7 @@
 
 #include "assess/support/error.hpp"
 #include "dynamics/integration_run.hpp"
+#include "dynamics/quintic.hpp"
 #include "support/bracket_root.hpp"
 
 #include <cmath>
@@ -20,24 +21,6 @@ namespace assess {
 namespace {
 
 enum class Ev { lift_out, lift_in, impact, q_u, branch };
-
-// Quintic Hermite on a step of length h from the values, first and second
-// derivatives at both ends; s in [0, 1].
-struct Quintic {
-  double p0, m0, a0, p1, m1, a1, h;
-  double value(double s) const {
-    const double s2 = s * s, s3 = s2 * s, s4 = s3 * s, s5 = s4 * s;
-    return (1 - 10 * s3 + 15 * s4 - 6 * s5) * p0 + (s - 6 * s3 + 8 * s4 - 3 * s5) * h * m0 +
-           (0.5 * s2 - 1.5 * s3 + 1.5 * s4 - 0.5 * s5) * h * h * a0 + (0.5 * s3 - s4 + 0.5 * s5) * h * h * a1 +
-           (-4 * s3 + 7 * s4 - 3 * s5) * h * m1 + (10 * s3 - 15 * s4 + 6 * s5) * p1;
-  }
-  double slope(double s) const {  // d/ds
-    const double s2 = s * s, s3 = s2 * s, s4 = s3 * s;
-    return (-30 * s2 + 60 * s3 - 30 * s4) * p0 + (1 - 18 * s2 + 32 * s3 - 15 * s4) * h * m0 +
-           (s - 4.5 * s2 + 6 * s3 - 2.5 * s4) * h * h * a0 + (1.5 * s2 - 4 * s3 + 2.5 * s4) * h * h * a1 +
-           (-12 * s2 + 28 * s3 - 15 * s4) * h * m1 + (30 * s2 - 60 * s3 + 30 * s4) * p1;
-  }
-};
 
 class ChainSystem final : public HybridSystem {
  public:
@@ -124,18 +107,10 @@ class ChainSystem final : public HybridSystem {
                int) override {
     peak(t0, y0[0]);
     peak(t1, y1[0]);
-    if (y0[1] * y1[1] < 0.0) {
-      // An extremum inside the step: the root of the slope of the quintic
-      // Hermite of q from (q, q', q'') at both ends (as the rocking analysis).
-      const Quintic qp{y0[0], f0[0], f0[1], y1[0], f1[0], f1[1], t1 - t0};
-      const double d0 = qp.slope(0.0), d1 = qp.slope(1.0);
-      if (d0 * d1 < 0.0) {
-        auto slope = [&](double s) { return qp.slope(s); };
-        const auto br = detail::shrink_bracket(slope, {0.0, d0, 1.0, d1}, 1e-13);
-        const double s = 0.5 * (br.a + br.b);
-        peak(t0 + s * (t1 - t0), qp.value(s));
-      }
-    }
+    // An extremum inside the step: the root of the slope of the quintic
+    // Hermite of q from (q, q', q'') at both ends (as the rocking analysis).
+    double tp, qp;
+    if (detail::extremum_in_step(t0, y0, f0, t1, y1, f1, tp, qp)) peak(tp, qp);
     push_history(t1, y1);
   }
   double next_breakpoint(double t) const override { return motion_.next_breakpoint(t); }

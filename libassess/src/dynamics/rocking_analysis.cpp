@@ -21,6 +21,7 @@
 #include "assess/support/error.hpp"
 #include "assess/support/units.hpp"
 #include "dynamics/integration_run.hpp"
+#include "dynamics/quintic.hpp"
 #include "support/bracket_root.hpp"
 
 #include <algorithm>
@@ -31,24 +32,6 @@ namespace assess {
 namespace {
 
 enum class Ev { lift_out, lift_in, impact, theta_u, half_pi, branch };
-
-/// Quintic Hermite interpolation on a step of length h from the values, first
-/// and second derivatives at both ends; s in [0, 1].
-struct Quintic {
-  double p0, m0, a0, p1, m1, a1, h;
-  double value(double s) const {
-    const double s2 = s * s, s3 = s2 * s, s4 = s3 * s, s5 = s4 * s;
-    return (1 - 10 * s3 + 15 * s4 - 6 * s5) * p0 + (s - 6 * s3 + 8 * s4 - 3 * s5) * h * m0 +
-           (0.5 * s2 - 1.5 * s3 + 1.5 * s4 - 0.5 * s5) * h * h * a0 + (0.5 * s3 - s4 + 0.5 * s5) * h * h * a1 +
-           (-4 * s3 + 7 * s4 - 3 * s5) * h * m1 + (10 * s3 - 15 * s4 + 6 * s5) * p1;
-  }
-  double slope(double s) const {  // d/ds
-    const double s2 = s * s, s3 = s2 * s, s4 = s3 * s;
-    return (-30 * s2 + 60 * s3 - 30 * s4) * p0 + (1 - 18 * s2 + 32 * s3 - 15 * s4) * h * m0 +
-           (s - 4.5 * s2 + 6 * s3 - 2.5 * s4) * h * h * a0 + (1.5 * s2 - 4 * s3 + 2.5 * s4) * h * h * a1 +
-           (-12 * s2 + 28 * s3 - 15 * s4) * h * m1 + (30 * s2 - 60 * s3 + 30 * s4) * p1;
-  }
-};
 
 class RockingSystem final : public HybridSystem {
  public:
@@ -116,7 +99,7 @@ class RockingSystem final : public HybridSystem {
   void interpolate(double t0, const double* y0, const double* f0, double t1, const double* y1, const double* f1,
                    int mode, double s, double* y) const override {
     if (mode == 0) return HybridSystem::interpolate(t0, y0, f0, t1, y1, f1, mode, s, y);
-    const Quintic q{y0[0], f0[0], f0[1], y1[0], f1[0], f1[1], t1 - t0};
+    const detail::Quintic q{y0[0], f0[0], f0[1], y1[0], f1[0], f1[1], t1 - t0};
     y[0] = q.value(s);
     y[1] = q.slope(s) / (t1 - t0);
   }
@@ -155,16 +138,8 @@ class RockingSystem final : public HybridSystem {
                int) override {
     consider_peak(t0, y0[0]);
     consider_peak(t1, y1[0]);
-    if (y0[1] * y1[1] < 0.0) {  // theta' changes sign: an extremum inside the step
-      const Quintic q{y0[0], f0[0], f0[1], y1[0], f1[0], f1[1], t1 - t0};
-      const double d0 = q.slope(0.0), d1 = q.slope(1.0);
-      if (d0 * d1 < 0.0) {
-        auto slope = [&](double s) { return q.slope(s); };
-        const auto br = detail::shrink_bracket(slope, {0.0, d0, 1.0, d1}, 1e-13);
-        const double s = 0.5 * (br.a + br.b);
-        consider_peak(t0 + s * (t1 - t0), q.value(s));
-      }
-    }
+    double tp, qp;  // theta' changes sign: an extremum inside the step
+    if (detail::extremum_in_step(t0, y0, f0, t1, y1, f1, tp, qp)) consider_peak(tp, qp);
     push_history(t1, y1);
   }
 

@@ -352,7 +352,7 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
                        {"free_motion_cap_s", a.free_tail_s},
                        {"free_energy_fraction", free_energy_fraction}};
       nlohmann::json runs = nlohmann::json::array();
-      for (const DynamicRun& r : a.runs)
+      for (const DynamicRun& r : a.runs) {
         runs.push_back({{"record", a.records[r.record].name},
                         {"scale", a.records[r.record].scale},
                         {"reversed", r.reversed},
@@ -375,6 +375,19 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
                         {"t_end", r.result.t_end},
                         {"motion_duration_s", r.result.motion_duration},
                         {"failed", !succeeded(r.result)}});
+        if (r.result.ties.empty()) continue;
+        // A wall held by tie rods: each level's outcome (body: per metre of wall; chain: the whole level).
+        nlohmann::json lv = nlohmann::json::array();
+        for (const TiedLevelResult& x : r.result.ties)
+          lv.push_back({{"max_force_kN", x.max_force / units::kN},
+                        {"max_elongation_mm", x.max_elongation * 1e3},
+                        {"yielded", x.yielded},
+                        {"plastic_elongation_mm", x.plastic_elongation * 1e3},
+                        {"plastic_energy_kJ", x.plastic_energy / units::kN}});
+        runs.back()["ties"] = lv;
+        runs.back()["ties_per"] = a.mechanism_dynamics && a.mechanism_dynamics->single_body() ? "m of wall" : "level";
+        runs.back()["rod_broken"] = r.ruptured;
+      }
       d["analyses"] = runs;
       nlohmann::json sums = nlohmann::json::array();
       for (const RestitutionSummary& s : a.summaries)
@@ -383,6 +396,7 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
                         {"failed", s.failed},
                         {"analyses", s.analyses},
                         {"overturned", s.overturned},
+                        {"rod_broken", s.ruptured},
                         {"mean_dc", s.mean_dc},
                         {"min_dc", s.min_dc},
                         {"max_dc", s.max_dc},

@@ -89,10 +89,15 @@ const std::string& tr(Lang lang, const std::string& key) {
        {"Verifica dinamica prima e dopo la catena (Circ. 2019 C8.7.1.2.1.9)",
         "Dynamic check before and after the tie (Circ. 2019 C8.7.1.2.1.9)"}},
       {"dyn_intro",
-       {"Le analisi dinamiche della facciata (sopra, senza catene) ripetute con la catena come vincolo monolatero (solo trazione) "
+       {"Le analisi dinamiche della facciata (sopra) ripetute con la catena progettata come vincolo monolatero (solo trazione) "
         "elastico-perfettamente plastico nel suo punto.",
-        "The façade's dynamic analyses (above, without ties) repeated with the tie as a one-sided (tension-only) elastic-perfectly-plastic "
-        "restraint at its point."}},
+        "The façade's dynamic analyses (above) repeated with the designed tie as a one-sided (tension-only) "
+        "elastic-perfectly-plastic restraint at its point."}},
+      {"dyn_intro_given",
+       {"Le analisi dinamiche della facciata (sopra) sono quelle della parete con le sue catene, vincoli monolateri (solo "
+        "trazione) elastico-perfettamente plastici nel loro punto; prima: le stesse analisi senza catene.",
+        "The façade's dynamic analyses (above) are those of the wall with its ties, one-sided (tension-only) "
+        "elastic-perfectly-plastic restraints at their points; before: the same analyses without them."}},
       {"dyn_not",
        {"Analisi dinamica con la catena non eseguita: richiede la sezione dinamica e un moto monolatero "
         "(corpo o catena cinematica).",
@@ -224,7 +229,7 @@ std::string tie_html_section(const TieInterventionResult& t, Lang lang) {
   if (!t.dynamics.applies) {
     h += "<p>" + tr(lang, "dyn_not") + "</p>\n";
   } else {
-    h += "<p>" + tr(lang, "dyn_intro") + "</p>\n<table class=\"data\"><tr>" + th(tr(lang, "dyn_e")) +
+    h += "<p>" + tr(lang, t.designed ? "dyn_intro" : "dyn_intro_given") + "</p>\n<table class=\"data\"><tr>" + th(tr(lang, "dyn_e")) +
          th(tr(lang, "dyn_N")) + th(tr(lang, "dyn_over")) + th(tr(lang, "dyn_d")) + th(tr(lang, "dyn_dslv")) +
          th(tr(lang, "dyn_yield")) + th(tr(lang, "dyn_verdict")) + "</tr>\n";
     for (const TieDynamicSummary& x : t.dynamics.summaries)

@@ -89,10 +89,13 @@ nlohmann::json side_json(const KinematicCaseResult& r, double zeta, bool passes)
   return j;
 }
 
-std::string dynamics_text(const TieDynamicResult& d) {
+std::string dynamics_text(const TieDynamicResult& d, bool designed) {
   if (!d.applies) return d.note.empty() ? "" : "  dynamic analysis with the tie: not done: " + d.note + "\n";
-  std::string s = wrap_text("  dynamic check before and after the tie (Circ. 2019 C8.7.1.2.1.9; the analyses above, "
-                             "without ties, repeated with the tie as a one-sided elastic-perfectly-plastic restraint):",
+  std::string s = wrap_text(designed ? "  dynamic check before and after the tie (Circ. 2019 C8.7.1.2.1.9; the analyses "
+                                       "above repeated with the tie as a one-sided elastic-perfectly-plastic restraint):"
+                                     : "  dynamic check before and after the tie (Circ. 2019 C8.7.1.2.1.9; the analyses "
+                                       "above are those of the wall with its ties, as one-sided elastic-perfectly-plastic "
+                                       "restraints; before: the same analyses without them):",
                              4) +
                    "\n";
   s += format("      %7s %4s %-18s %9s %9s %10s %10s %9s %9s %9s\n", "e", "N", "rule", "overt.bef", "overt.aft",
@@ -176,7 +179,7 @@ std::string tie_text(const TieInterventionResult& t) {
     s += format("      %-8s %-4s %-13s %-8s %12.3f %12s\n", row.code.c_str(), row.limit_state.c_str(), row.kind.c_str(),
                 row.location.c_str(), row.dc, r2 ? format("%.3f", r2->dc).c_str() : "-");
   }
-  s += dynamics_text(t.dynamics);
+  s += dynamics_text(t.dynamics, t.designed);
   return s;
 }
 

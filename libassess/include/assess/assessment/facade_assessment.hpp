@@ -53,7 +53,8 @@ struct DynamicRun {
   double theta_ratio = 0.0;     ///< theta_max / theta_u (-)
   double d_control = 0.0;       ///< peak horizontal displacement of the control point (m)
   double d_star = 0.0;          ///< the same in the equivalent SDOF [C8.7.1.4] (m)
-  bool collapse = false;        ///< overturned, or d_control >= dk0 (the threshold d0 of C8.7.1.2.1.9)
+  bool ruptured = false;        ///< tied mechanism: a rod's elongation exceeded eps_ud L (it breaks) [I]
+  bool collapse = false;        ///< overturned, d_control >= dk0 (the threshold d0 of C8.7.1.2.1.9), or a rod broken
 };
 
 /// The analyses of one restitution value, summarised (seed Fig. 8; Circ. 2019 C8.7.1.2.1.9).
@@ -62,6 +63,7 @@ struct RestitutionSummary {
   double e = 0.0;
   int analyses = 0;
   int overturned = 0;
+  int ruptured = 0;               ///< analyses in which a tie rod broke (tied mechanisms)
   /// Analyses that failed (step or event limit, integrator error): left out
   /// of the statistics, and the check is then not satisfied (a result that
   /// cannot be trusted is a failure).
@@ -132,8 +134,8 @@ struct FacadeAssessment {
   double free_tail_s = 0.0;   ///< cap on the free motion after each record (s; dynamics/analysis_end.hpp)
   std::vector<std::string> record_failures;  ///< "<path>: <message>" of records skipped (--keep-going)
   std::vector<DynamicRun> runs;
-  /// Issue 23: the motion at the mechanism's base of each record (unscaled),
-  /// kept so that the tie rods' dynamic analysis uses the same inputs.
+  /// The motion at the mechanism's base of each record (unscaled): the
+  /// analyses' inputs (also of the tie rods' before/after, issue 23).
   std::vector<Record> base_motions;
   std::vector<RestitutionSummary> summaries;
   /// Every check: the kinematic rows of both editions, then "dynamic" rows.
@@ -182,13 +184,21 @@ struct FacadeAssessment {
 /// their kinematic checks, in candidate order, the governing one excluded.
 std::vector<std::size_t> dynamic_candidates(const KinematicCaseResult& k);
 
+/// The analyses of the model `md` (every restitution value, record and
+/// polarity, in this order, on all cores) under the base motions of `a`
+/// (records, scales and polarities of its dynamic section), the
+/// C8.7.1.2.1.9 displacements measured at the control point of `kin`.
+std::vector<DynamicRun> dynamic_runs(const FacadeAssessment& a, const MechanismDynamics& md, const KinematicResult& kin,
+                                     bool histories);
+
+/// The analyses of each restitution value summarised against `kin`'s d_SLV
+/// (Circ. 2019 C8.7.1.2.1.9, NTC 2018 §7.3.5 on the records' count).
+std::vector<RestitutionSummary> summarise_runs(const std::vector<DynamicRun>& runs, const std::vector<double>& e,
+                                               const KinematicResult& kin);
+
 /// Runs the whole assessment of a case. Throws InputError for bad input
 /// (naming the JSON path); physical outcomes are results.
 FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& options = {});
 
-/// Rebuilds `verdict` from every candidate's kinematic checks, the dynamic
-/// rows of `checks` and the energy rows (after a later step changed rows,
-/// e.g. the tied dynamic check of given ties, assessment/tie_intervention.hpp).
-void update_verdict(FacadeAssessment& a);
 
 }  // namespace assess

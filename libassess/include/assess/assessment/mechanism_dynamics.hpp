@@ -5,6 +5,9 @@
 //    1e-10, tests/numeric/chain_dynamics.cpp);
 //  - any other 1-DOF chain (vertical flexure, storeys above a hinge, wedges,
 //    explicit chains): the chain model (ChainDynamics), one-sided;
+//  - a mechanism held by tie rods (issue 23; the case's "ties", or a
+//    design's): the same model with each level as a one-sided elastic-
+//    perfectly-plastic restraint (dynamics/tied_rocking.hpp), one-sided only;
 //  - at height Z > 0 the ground records are filtered to the floor by the
 //    building's first mode (a_Z = ug'' + gamma psi(Z) ur'', records/floor_motion),
 //    unless the records are floor motions ("input": "floor").
@@ -14,14 +17,23 @@
 #include "assess/assessment/dynamic_case.hpp"
 #include "assess/dynamics/chain_analysis.hpp"
 #include "assess/dynamics/rocking_from_chain.hpp"
+#include "assess/dynamics/tied_rocking.hpp"
 #include "assess/records/floor_motion.hpp"
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace assess {
+
+/// A tie level holding the mechanism in the dynamic analysis (issue 23).
+struct DynamicTie {
+  TieRestraint level;              ///< the whole level on the chain (N, N/m; kinematic result's TieWork::tie)
+  double per_tie = 1.0;            ///< factor turning the analysis' forces and energies into one tie's (-)
+  double ultimate_elongation = std::numeric_limits<double>::infinity();  ///< eps_ud L of its rod (m, tie_checks)
+};
 
 struct MechanismDynamics {
   bool applies = false;                           ///< false: `note` says why the model cannot represent the chain
@@ -36,6 +48,21 @@ struct MechanismDynamics {
   bool floor_input = false;                       ///< the records are floor motions as given
   std::optional<FloorFilter> filter;              ///< first-mode filter applied to ground records (Z > 0)
   double filter_damping_pct = 0.0;                ///< its damping (%)
+  /// Tie levels holding the mechanism (empty: none); for one body, the same
+  /// levels per unit depth about its hinge (body_ties).
+  std::vector<DynamicTie> ties;
+  std::vector<RockingTie> body_ties;
+  /// The tied wall's restoring moment with the ties at their strength, its
+  /// collapse rotation and energy capacity (dynamics/tied_rocking.hpp); tied only.
+  std::optional<TiedEnvelope> tied_envelope;
+
+  bool tied() const { return !ties.empty(); }
+  /// The same model held by `levels` instead (none: the bare mechanism).
+  /// applies = false, with the reason, when the tied analysis cannot represent
+  /// it (two-sided rocking).
+  MechanismDynamics with_ties(std::vector<DynamicTie> levels) const;
+  /// True if a tie rod of the analysis broke: its largest elongation beyond eps_ud L.
+  bool ruptured(const RockingResult& r) const;
 
   bool single_body() const { return body.has_value(); }
   /// The motion at the mechanism's base from a ground record (the record itself
@@ -46,10 +73,12 @@ struct MechanismDynamics {
   /// Peak horizontal displacement (m, magnitude) of the kinematic control point for a peak
   /// coordinate q (rad; signed: q < 0 inward, two-sided).
   double control_displacement(const KinematicResult& kin, double q) const;
-  /// Ultimate coordinate (rad) and energy capacity per unit length (J/m) of the outward side.
+  /// Ultimate coordinate (rad) and energy capacity per unit length (J/m) of the
+  /// outward side (held by ties: the collapse rotation and the capacity on the envelope).
   double q_u() const;
   double capacity() const;
-  /// Net restoring moment (single body, N m/m) or generalised force per unit length (N m/m) at q.
+  /// Net restoring moment (single body, N m/m) or generalised force per unit
+  /// length (N m/m) at q (held by ties: on the envelope, q in [0, q_u]).
   double restoring(double q) const;
   /// One line: "rocking body ..." or "chain of N blocks ...", the input motion.
   std::string describe() const;
@@ -60,7 +89,9 @@ struct MechanismDynamics {
 /// "housner"/"one-sided-theory" request for a multi-block chain, a missing
 /// building at height). A chain the dynamic model cannot represent (friction
 /// loads, a locking chain, a Winkler bed under several ground hinges) gives
-/// applies = false and the reason in `note`.
+/// applies = false and the reason in `note`. The tie levels of the candidate
+/// (`cand.result.ties`, the case's "ties") hold the model; their rods'
+/// ultimate elongation comes from the case's ties of the same name.
 MechanismDynamics build_mechanism_dynamics(const CaseFile& kase, const CandidateResult& cand, const Chain& chain,
                                            const DynamicSpec& d);
 

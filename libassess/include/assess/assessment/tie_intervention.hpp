@@ -20,7 +20,7 @@ namespace assess {
 /// One tied analysis (issue 23): the run of the façade assessment with the same
 /// record, polarity and restitution, now with the tie (dynamics/tied_rocking.hpp).
 struct TieDynamicRun {
-  std::size_t run = 0;            ///< index in FacadeAssessment::runs (the analysis without the tie)
+  std::size_t run = 0;            ///< index of the analysis (restitution, record, polarity order of FacadeAssessment::runs)
   double theta_max = 0.0;         ///< rad
   double theta_collapse = 0.0;    ///< rad
   bool overturned = false;
@@ -95,26 +95,19 @@ bool has_ties(const CaseFile& c);
 /// the checks; throws InputError otherwise.
 TieInterventionResult run_tie_intervention(const CaseFile& c);
 
-/// The façade's dynamic analyses repeated with the ties of `t` (after):
-/// one-sided rocking of a body or a chain, every tie level of the mechanism
-/// analysed dynamically; otherwise applies = false and `note` says why. Before = the façade's own runs (which never include ties).
+/// The dynamic check before and after the ties of `t`, per restitution value
+/// (docs/theory/ties.md §6). The façade's analyses are those of its case, with
+/// any given ties already holding the wall (mechanism_dynamics); the other
+/// side is the same model, records, polarities and candidate with the other
+/// tie levels: without the given ties, or with the designed ones. `runs` are
+/// the tied analyses. applies = false, with `note`, when the façade has no
+/// dynamic analysis or the tied model cannot represent it (two-sided rocking).
 TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventionResult& t);
-
-/// Ties GIVEN in the case (not a design): the façade's kinematic rows already
-/// hold the ties, so its dynamic check rows must too. The governing
-/// candidate's dynamic rows take the tied analyses of `t.dynamics` (demand,
-/// d_SLV of the tied mechanism, collapse, verdict per restitution value); when
-/// the tied dynamics does not apply, or for other candidates' rows (analysed
-/// without ties), the rows get no verdict with the reason, never a verdict of
-/// the untied wall against the tied capacity. The verdict is rebuilt and a
-/// warning says so. No-op for a design or when the case has no dynamic rows.
-void apply_given_ties_to_dynamic_checks(FacadeAssessment& a, const TieInterventionResult& t);
 
 /// The tie step of an assessment, as `assess run` and the building case do it:
 /// nothing when the case has no ties (has_ties false); otherwise the
-/// intervention (run_tie_intervention), its dynamics (run_tie_dynamics) and,
-/// for given ties, their effect on the façade's dynamic check rows.
-std::optional<TieInterventionResult> assess_ties(FacadeAssessment& a);
+/// intervention (run_tie_intervention) and its dynamics (run_tie_dynamics).
+std::optional<TieInterventionResult> assess_ties(const FacadeAssessment& a);
 
 /// zeta_E of a kinematic result for the adopted `method` (see above).
 double zeta_E(const KinematicCaseResult& r, const std::string& method);

@@ -57,6 +57,15 @@ struct RockingHistory {
   std::vector<double> omega;  ///< rad/s
 };
 
+/// One tie level's outcome in a tied analysis (dynamics/tied_rocking.hpp).
+struct TiedLevelResult {
+  double max_force = 0.0;           ///< largest force (N/m for a body, N for a chain)
+  double max_elongation = 0.0;      ///< largest elongation e (m)
+  bool yielded = false;
+  double plastic_elongation = 0.0;  ///< e_p at the end (m)
+  double plastic_energy = 0.0;      ///< T_y e_p (J/m for a body, J for a chain)
+};
+
 /// Outcome of one analysis (SI units).
 struct RockingResult {
   double theta_max = 0.0;     ///< peak |theta| (rad)
@@ -81,6 +90,9 @@ struct RockingResult {
   AnalysisEnd end = AnalysisEnd::free_motion_cap;  ///< why the analysis ended (analysis_end.hpp)
   long steps = 0, rejected_steps = 0, event_steps = 0, rhs_evaluations = 0;
   RockingHistory history;     ///< filled if RockingOptions::record_history
+  /// A wall held by tie rods (dynamics/tied_rocking.hpp): each level's
+  /// outcome, in the order of the levels; empty for an analysis without ties.
+  std::vector<TiedLevelResult> ties;
 
   /// One-line summary.
   std::string brief_report() const;

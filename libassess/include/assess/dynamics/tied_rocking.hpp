@@ -19,6 +19,7 @@
 
 #include "assess/dynamics/chain_dynamics.hpp"
 #include "assess/dynamics/hybrid_ode.hpp"
+#include "assess/dynamics/rocking_analysis.hpp"
 #include "assess/dynamics/rocking_model.hpp"
 #include "assess/kinematic/tie.hpp"
 
@@ -47,17 +48,9 @@ struct RockingTie {
   void validate() const;  ///< InputError naming the field
 };
 
-/// One tie level's outcome.
-struct TiedLevelResult {
-  double max_force = 0.0;           ///< largest force (N/m for a body, N for a chain)
-  double max_elongation = 0.0;      ///< largest elongation e (m)
-  bool yielded = false;
-  double plastic_elongation = 0.0;  ///< e_p at the end (m)
-  double plastic_energy = 0.0;      ///< T_y e_p (J/m for a body, J for a chain)
-};
-
-/// Outcome of one tied analysis. The scalars about the tie are those of the
-/// first level; `levels` holds every level's.
+/// Outcome of one tied analysis integrated to a fixed end time (the
+/// verification form of the tests). The scalars about the tie are those of
+/// the first level; `levels` holds every level's.
 struct TiedRockingResult {
   HybridTermination termination = HybridTermination::completed;
   double theta_max = 0.0;         ///< largest rotation (rad)
@@ -71,21 +64,19 @@ struct TiedRockingResult {
   double plastic_elongation = 0.0;  ///< e_p at the end (m): the permanent set of the rod
   double plastic_energy = 0.0;      ///< T_y e_p (J/m): energy dissipated by the rod
   std::vector<TiedLevelResult> levels;
-  /// Samples at the record's steps (when asked): t (s), theta (rad), T of the first level (N/m).
-  std::vector<double> t, theta, force;
 };
 
 /// Integrates the tied one-sided rocking under the ground acceleration ug
 /// (m/s^2, positive outward, samples every dt s, linear in between) from rest
-/// to t_end (s). The model must be one-sided. @throws InputError for a
-/// two-sided model or a bad tie.
+/// to t_end (s), without the early end of analysis_end.hpp (every impact up
+/// to t_end is counted). The model must be one-sided. @throws InputError for
+/// a two-sided model or a bad tie.
 TiedRockingResult analyse_tied_rocking(const RockingModel& model, const RockingTie& tie, const std::vector<double>& ug,
-                                       double dt, double t_end, bool history = false,
-                                       const HybridOdeOptions& options = {});
+                                       double dt, double t_end, const HybridOdeOptions& options = {});
 /// Several tie levels (each with its own plastic elongation and yield state;
 /// modes: rest, or rocking with the set of yielding levels).
 TiedRockingResult analyse_tied_rocking(const RockingModel& model, const std::vector<RockingTie>& ties,
-                                       const std::vector<double>& ug, double dt, double t_end, bool history = false,
+                                       const std::vector<double>& ug, double dt, double t_end,
                                        const HybridOdeOptions& options = {});
 
 /// The same for a one-sided chain (dynamics/chain_dynamics.hpp) held by the
@@ -96,10 +87,42 @@ TiedRockingResult analyse_tied_rocking(const RockingModel& model, const std::vec
 /// for de/dq); `e` is the coefficient of restitution at q = 0 (in [-1, 0]).
 /// Forces and energies of the result are those of the level (N, J).
 TiedRockingResult analyse_tied_chain(const ChainDynamics& chain, const TieRestraint& tie, double e,
-                                     const std::vector<double>& ug, double dt, double t_end, bool history = false,
+                                     const std::vector<double>& ug, double dt, double t_end,
                                      const HybridOdeOptions& options = {});
 TiedRockingResult analyse_tied_chain(const ChainDynamics& chain, const std::vector<TieRestraint>& ties, double e,
-                                     const std::vector<double>& ug, double dt, double t_end, bool history = false,
+                                     const std::vector<double>& ug, double dt, double t_end,
                                      const HybridOdeOptions& options = {});
+
+/// The restoring moment (force) of the tied wall with every level at its
+/// strength (the rigid-plastic envelope of the elastic-perfectly-plastic
+/// ties): the collapse rotation where it vanishes after its peak (rad), the
+/// energy capacity up to there (seed §3.2 on the envelope: J/m for a body, J
+/// for a chain), and the curve at n + 1 rotations evenly spaced on [0, collapse]
+/// (rad; N m/m or N m).
+struct TiedEnvelope {
+  double theta_collapse = 0.0;
+  double capacity = 0.0;
+  std::vector<double> theta, restoring;
+};
+TiedEnvelope tied_envelope(const RockingModel& model, const std::vector<RockingTie>& ties, int n = 200);
+TiedEnvelope tied_envelope(const ChainDynamics& chain, const std::vector<TieRestraint>& ties, int n = 200);
+
+/// The tied analysis as every front end runs an analysis (issue 21's rule,
+/// dynamics/analysis_end.hpp): the record scaled and reversed as in
+/// `options`, integrated to its last sample, then free motion that ends when
+/// the wall rests, or at an impact after which its energy is at most
+/// free_energy_fraction of the least work from rest to the peak rotation
+/// (a lower bound with the ties: the bare wall's work minus what a tie at its
+/// strength could give back where it shortens, docs/theory/ties.md §6), or at
+/// the cap options.tail_s. The result is a RockingResult: theta_u is the
+/// collapse rotation with the ties at their strength; the energy measure
+/// (seed §3.2) is taken on that rigid-plastic envelope of the tied wall's
+/// restoring moment (demand: its work up to theta_max, or capacity + kinetic
+/// energy at collapse; capacity: its work up to theta_u) [I]; `ties` holds
+/// each level's outcome. options.overturn must be theta_u.
+RockingResult analyse_tied(const RockingModel& model, const std::vector<RockingTie>& ties, const Record& record,
+                           const RockingOptions& options);
+RockingResult analyse_tied(const ChainDynamics& chain, const std::vector<TieRestraint>& ties, double e,
+                           const Record& record, const RockingOptions& options);
 
 }  // namespace assess
