@@ -752,7 +752,7 @@ void add_dynamic(const Ctx& c) {
   s.highlight = true;
   mr.series.push_back(s);
   mr.height = 320;
-  c.h.add_svg(render_svg(mr), c.t("dyn.mr_fig"), "fig-moment-rotation");
+  c.h.add_svg(render_svg(mr), c.t(a.mechanism_dynamics->tied() ? "dyn.mr_fig_tied" : "dyn.mr_fig"), "fig-moment-rotation");
   if (!a.code_floor_Se.empty()) {
     Plot fp;
     fp.title = c.t("dyn.floor_title");

@@ -94,7 +94,7 @@ std::string facade_text(const FacadeAssessment& a, TextWidth width) {
                          "capacity %.4f kJ/m",
                          a.dynamic->smooth ? "smooth (Winkler bed under the ground-hinge block)" : "rigid",
                          md.sidedness == Sidedness::two_sided ? "two-sided" : "one-sided", c.mass(0.0),
-                         c.coupling(0.0), c.q_u(), md.capacity() / units::kN),
+                         c.coupling(0.0), c.q_u(), c.capacity() / md.length / units::kN),
                   7) +
              "\n";
         if (a.dynamic->smooth)
@@ -102,6 +102,12 @@ std::string facade_text(const FacadeAssessment& a, TextWidth width) {
                       c.N() / units::kN, c.half_base(), c.q_cr());
       }
       o += para("  " + md.describe(), 4) + "\n";
+      if (md.tied_envelope)
+        o += para(format("  with the ties at their strength (docs/theory/ties.md §6): collapse rotation %.5f rad, "
+                         "energy capacity %.4f kJ/m (the analyses' th/th_u and energy D/C refer to these)",
+                         md.q_u(), md.capacity() / units::kN),
+                  4) +
+             "\n";
       if (!a.code_floor_Se.empty()) {
         o += "  floor motions, 5 % spectrum (mean of the records) vs the code's floor spectrum S_eZ [C7.2.6] (SLV, 5 %):\n";
         o += format("  %8s %14s %14s %8s\n", "T (s)", "floor (g)", "code (g)", "ratio");
@@ -290,8 +296,12 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
                       {"chain_blocks", c.chain().blocks().size()},
                       {"M0_kg_m2", c.mass(0.0)}, {"B0_kg_m", c.coupling(0.0)},
                       {"theta_cr", a.dynamic->smooth ? nlohmann::json(c.q_cr()) : nlohmann::json(nullptr)},
-                      {"theta_u", c.q_u()}, {"capacity_kJ_m", md.capacity() / units::kN}};
+                      {"theta_u", c.q_u()}, {"capacity_kJ_m", c.capacity() / md.length / units::kN}};
       }
+      if (md.tied_envelope)  // the ties at their strength (docs/theory/ties.md §6)
+        d["model"]["tied"] = {{"levels", md.ties.size()},
+                              {"theta_collapse", md.q_u()},
+                              {"capacity_kJ_m", md.capacity() / units::kN}};
       d["model"]["kind"] = md.single_body() ? "rocking body" : "chain";
       d["model"]["Z"] = md.Z;
       d["model"]["input"] = md.floor_input ? "floor motions given" : md.filter ? "floor motions (first-mode filter)" : "ground motions";

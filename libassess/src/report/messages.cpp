@@ -253,6 +253,11 @@ const std::map<std::string, Entry>& catalogue() {
                       "Net restoring moment about the toe up to θu; the area under it is the energy capacity (Lipo & "
                       "de Felice 2017, §3.2, Fig. 3)."}},
       {"dyn.mr_series", {"momento stabilizzante", "restoring moment"}},
+      {"dyn.mr_fig_tied",
+       {"Momento stabilizzante netto della parete con le catene alla loro resistenza (inviluppo rigido-plastico, "
+        "docs/theory/ties.md §6) fino alla rotazione di collasso; l'area sottesa è la capacità energetica.",
+        "Net restoring moment of the wall with the ties at their strength (rigid-plastic envelope, "
+        "docs/theory/ties.md §6) up to the collapse rotation; the area under it is the energy capacity."}},
       {"dyn.records", {"Accelerogrammi", "Records"}},
       {"dyn.record", {"accelerogramma", "record"}},
       {"dyn.event", {"evento", "event"}},
@@ -548,6 +553,17 @@ const std::vector<std::pair<std::string, std::string>>& phrases_it() {
       {"seed §3.2 energy D/C (not a code check)", "D/C in energia di Lipo e de Felice 2017 §3.2 (non è una verifica di norma)"},
       {"one-sided theory", "teoria monolatera"},
       {"chain model", "modello a catena"},
+      // Tied walls (issue 23: assessment/mechanism_dynamics.cpp, facade_assessment.cpp).
+      {", with the tie rods (tied one-sided rocking)", ", con le catene (rocking monolatero vincolato)"},
+      {", on the tied wall's restoring moment with the ties at their strength",
+       ", sul momento stabilizzante della parete con le catene alla loro resistenza"},
+      {", a rod broken in ", ", catena rotta in "},
+      {" held by ", " trattenuto da "},
+      {", held by ", ", trattenuta da "},
+      {" tie levels (one-sided elastic-perfectly-plastic restraint, docs/theory/ties.md §6)",
+       " livelli di catene (vincolo monolatero elastico-perfettamente plastico, docs/theory/ties.md §6)"},
+      {" tie level (one-sided elastic-perfectly-plastic restraint, docs/theory/ties.md §6)",
+       " livello di catene (vincolo monolatero elastico-perfettamente plastico, docs/theory/ties.md §6)"},
       {"floor motions (first-mode filter)", "moti di piano (filtro del primo modo)"},
       {"floor motions given by the user", "moti di piano forniti dall'utente"},
       {" of ", " su "},
