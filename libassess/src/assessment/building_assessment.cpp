@@ -312,7 +312,7 @@ BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& o
       if (g.assessed > 0) out.governing.push_back(g);
     }
   // The building's index before and after the ties: the smallest mechanism
-  // zetaE (docs/theory/building.md §6). Ties: the first in the file.
+  // zetaE (docs/theory/building.md §8). Ties: the first in the file.
   BuildingTieIndex& t = out.tie_index;
   for (std::size_t i = 0; i < n; ++i) {
     const BuildingMechanismResult& r = out.results[i];

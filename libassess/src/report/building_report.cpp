@@ -210,7 +210,7 @@ nlohmann::json building_json(const BuildingAssessment& b) {
     gv.push_back(x);
   }
   j["governing"] = gv;
-  // The building's index before and after the ties (docs/theory/building.md §6).
+  // The building's index before and after the ties (docs/theory/building.md §8).
   const BuildingTieIndex& ti = b.tie_index;
   nlohmann::json tj;
   tj["definition"] = "the smallest mechanism zeta_E (NTC 2018, each mechanism's adopted method: strength rows for "
@@ -332,7 +332,7 @@ std::string building_text(const BuildingAssessment& b, TextWidth width) {
     const std::string head =
         "tie rods (\"ties\" given, \"design\" proposed): each mechanism's zetaE (NTC 2018, its adopted method's "
         "approach) and every kinematic check (both editions; after: and the ties' checks), without and with its ties; "
-        "dynamic: the tied analyses' check (docs/theory/building.md §6)";
+        "dynamic: the tied analyses' check (docs/theory/building.md §8)";
     o += "\n" + (wide ? head + "\n" : wrap(head, 120));
     o += rstrip(format("%-4s %-6s %-38s | %7s %7s | %6s %6s | %6s %6s", "id", "ties", "rod, anchor", "zetaE", "zetaE",
                        "checks", "checks", "dyn.", "dyn.")) + "\n";

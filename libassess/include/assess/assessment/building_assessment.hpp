@@ -52,7 +52,7 @@ struct BuildingMechanismResult {
   std::optional<TieInterventionResult> ties;
   /// The mechanism's zetaE of its adopted method's approach (NTC 2018; zeta_E of
   /// tie_intervention.hpp: strength rows for "linear", displacement rows
-  /// otherwise) before and after its ties (docs/theory/building.md §6); equal
+  /// otherwise) before and after its ties (docs/theory/building.md §8); equal
   /// without ties; NaN without NTC 2018 rows.
   double zeta_before = std::numeric_limits<double>::quiet_NaN();
   double zeta_after = std::numeric_limits<double>::quiet_NaN();
@@ -75,7 +75,7 @@ struct BuildingGoverning {
 };
 
 /// The building's safety index before and after the tie rods of its mechanisms
-/// (docs/theory/building.md §6): the smallest mechanism zetaE (the weakest local
+/// (docs/theory/building.md §8): the smallest mechanism zetaE (the weakest local
 /// mechanism governs the building, Circ. 2019 C8.7.1), NaN when no mechanism has one.
 struct BuildingTieIndex {
   bool any_ties = false;  ///< some mechanism has "ties" or "design"
