@@ -94,6 +94,16 @@ foreach(lang it en)
     ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
 endforeach()
 
+# The relazione of the building with ties (Italian): the summary's before/after table and the building
+# index, each tied mechanism's tie section (ids prefixed by its id, subheadings one level down), 56 figures
+# (the 54 of building-house and the two tie drawings).
+add_test(NAME cli.building_ties_report_browser
+  COMMAND sh -c "\"$1\" run mechanisms/building-house-ties.json --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 56 'id=\"ties-row-M1\"' 'id=\"M1-ties\"' 'id=\"M2-ties\"' '<h4>Verifiche della catena' 'Indicatore di rischio dell.edificio[^<]*: 0\\.794 \\(M2\\) senza le catene, 1\\.108 \\(M6\\) con le catene'"
+          sh $<TARGET_FILE:assess_cli> ${CMAKE_CURRENT_BINARY_DIR}/building-house-ties.it.html
+  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.building_ties_report_browser PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77 TIMEOUT 300
+  ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+
 # `assess fragility BUILDING --mechanism M4` = `assess fragility` of M4's expanded case (identical results.csv);
 # without --mechanism, the governing mechanism (lowest NTC 2018 zetaE of the adopted method's approach).
 set(_bfrag ${PROJECT_BINARY_DIR}/tests/building_fragility)
