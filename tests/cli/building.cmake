@@ -3,8 +3,11 @@
 # overrides, another site and soil) gives the numbers of its expanded
 # single-mechanism case run alone; the governing mechanisms are recomputed
 # from the single runs.
+# Issue 23: building-house-ties (a wall's design of a tie, a mechanism's given
+# ties, a mechanism that opts out with "design": null) also compares each
+# mechanism's tie result and the building's index before/after the ties.
 foreach(b building-house:mechanisms/building-house.json chiesa_piccola:tests/cli/building/chiesa_piccola.json
-          palazzo_sulmona:tests/cli/building/palazzo_sulmona.json)
+          palazzo_sulmona:tests/cli/building/palazzo_sulmona.json building-house-ties:mechanisms/building-house-ties.json)
   string(REPLACE ":" ";" parts ${b})
   list(GET parts 0 name)
   list(GET parts 1 file)
@@ -47,6 +50,34 @@ assess_cli_error_test(building_bad_Z_override "bad_Z_override.json: /walls/0/mec
   run tests/cli/building_bad/bad_Z_override.json)
 assess_cli_error_test(building_unknown_mechanism "no mechanism \"M9\" in the building \\(its mechanisms: M1 \"Facade overturning\", M2 \"Gable\""
   run tests/cli/building/chiesa_piccola.json --mechanism M9)
+# Issue 23: bad tie rods in a building name the building file and the path in it; exit 2.
+assess_cli_error_test(building_ties_bad_grade
+  "ties_bad_grade.json: /walls/1/mechanisms/0/ties/0/rod/grade: \"S420\": expected one of \"S235\", \"S275\", \"S355\", \"B450C\" \\[M2 \"Side overturning\"\\]"
+  run tests/cli/building_bad/ties_bad_grade.json)
+assess_cli_error_test(building_ties_wall_design_fm
+  "ties_wall_design_fm.json: /walls/0/design/ties/levels/0/masonry/fm_MPa: value -2 out of range: expected > 0 MPa"
+  run tests/cli/building_bad/ties_wall_design_fm.json)
+assess_cli_error_test(building_ties_point_off_wall
+  "ties_point_off_wall.json: /walls/0/mechanisms/0/ties/0/point: the anchor point .* is on no moving block"
+  run tests/cli/building_bad/ties_point_off_wall.json)
+assess_cli_error_test(building_ties_building_level
+  "ties_building_level.json: /ties: \"ties\" is not a building-wide key"
+  run tests/cli/building_bad/ties_building_level.json)
+assess_cli_error_test(building_ties_design_no_levels
+  "ties_design_no_levels.json: /walls/1/mechanisms/0/design/ties: missing required key \"levels\""
+  run tests/cli/building_bad/ties_design_no_levels.json)
+add_test(NAME cli.building_ties_exit2
+  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:assess_cli> -DSRC=${PROJECT_SOURCE_DIR}
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/building_ties_exit2.cmake
+  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.building_ties_exit2 PROPERTIES LABELS cli)
+# The summary of a building with ties: each mechanism without and with its ties, the building index before/after,
+# each mechanism's tie section; --mechanism runs the single case with its ties.
+assess_cli_test(building_ties_text ARGS run mechanisms/building-house-ties.json
+  PASS "M1   design diam\\. 12 mm S275, plate 150x150x12 +\\| +0\\.847 +2\\.116 \\| +NO +ok.*M2   given +diam\\. 16 mm S275.*building index \\(the smallest mechanism zetaE\\): 0\\.794 \\(M2\\) without the ties, 1\\.108 \\(M6\\) with them.*M1 Facciata su strada: .*Tie rods \\(catene\\).*design: the smallest rod and plate.*M2 Facciata su strada: .*Tie rods")
+assess_cli_test(building_ties_one_mechanism ARGS run mechanisms/building-house-ties.json --mechanism M2
+  PASS "Tie rods \\(catene\\).*level \"catena al sottotetto \\(esistente\\)\": rod diam\\. 16 mm S275" FAIL_REGEX "BUILDING ASSESSMENT")
+
 assess_cli_error_test(building_expand_single "--mechanism and --expand apply to a building case"
   run mechanisms/gable.json --expand /tmp/never)
 
@@ -62,6 +93,16 @@ foreach(lang it en)
   set_tests_properties(cli.building_report_browser_${lang} PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77 TIMEOUT 300
     ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
 endforeach()
+
+# The relazione of the building with ties (Italian): the summary's before/after table and the building
+# index, each tied mechanism's tie section (ids prefixed by its id, subheadings one level down), 56 figures
+# (the 54 of building-house and the two tie drawings).
+add_test(NAME cli.building_ties_report_browser
+  COMMAND sh -c "\"$1\" run mechanisms/building-house-ties.json --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 56 'id=\"ties-row-M1\"' 'id=\"M1-ties\"' 'id=\"M2-ties\"' '<h4>Verifiche della catena' 'Indicatore di rischio dell.edificio[^<]*: 0\\.794 \\(M2\\) senza le catene, 1\\.108 \\(M6\\) con le catene'"
+          sh $<TARGET_FILE:assess_cli> ${CMAKE_CURRENT_BINARY_DIR}/building-house-ties.it.html
+  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.building_ties_report_browser PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77 TIMEOUT 300
+  ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
 
 # `assess fragility BUILDING --mechanism M4` = `assess fragility` of M4's expanded case (identical results.csv);
 # without --mechanism, the governing mechanism (lowest NTC 2018 zetaE of the adopted method's approach).

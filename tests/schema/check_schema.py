@@ -77,7 +77,10 @@ for f in bgood:
 # overrides are the tool's alone).
 bbad = [os.path.join(src, "tests/cli/building_bad", n + ".json") for n in
         ("unknown_key", "no_walls", "no_site", "fc_and_level", "mechanisms_not_array", "unknown_entry_key",
-         "site_override", "bad_thickness", "bad_Z_override")]
+         "site_override", "bad_thickness", "bad_Z_override",
+         # Issue 23: tie rods in a building (a bad rod grade in a mechanism, a negative fm in a wall's design, ties
+         # at the building level). An anchor off the wall and a design without levels are the tool's alone.
+         "ties_bad_grade", "ties_wall_design_fm", "ties_building_level")]
 for f in bbad:
     rel = os.path.relpath(f, src)
     doc = json.load(open(f, encoding="utf-8"))

@@ -246,3 +246,58 @@ TEST_CASE("hostile values anywhere in a building file give an InputError naming 
   MESSAGE(parsed << " hostile variants parsed, " << refused << " refused");
   CHECK(refused > 100);
 }
+
+// Issue 23: "ties" and "design" are override keys of walls and mechanisms (not
+// building-wide); a mechanism's null removes its wall's; errors name the path
+// in the building file (docs/theory/building.md §8).
+TEST_CASE("tie rods in a building: a wall's design reaches its mechanisms, a mechanism's null or ties override it") {
+  json d = building_doc();
+  d.erase("dynamic");  // kinematic only: no record selection pre-pass
+  const json masonry = {{"fm_MPa", 2.0}, {"tau_MPa", 0.035}, {"thickness_m", 0.45}};
+  json level = {{"name", "eaves"}, {"point", {0.0, 7.3}}, {"free_length_m", 9.0}, {"masonry", masonry},
+                {"spacing_m", 2.5}};
+  d["walls"][0]["design"] = {{"ties", {{"levels", {level}}, {"grades", {"S275", "S355"}}}}};
+  json given = level;
+  given["name"] = "existing";
+  given["rod"] = {{"diameter_mm", 16}};
+  given["anchor"] = {{"type", "plate"}, {"a_mm", 200}, {"t_mm", 15}};
+  d["walls"][0]["mechanisms"][1]["design"] = nullptr;
+  d["walls"][0]["mechanisms"][1]["ties"] = json::array({given});
+  const BuildingCase b = parse_building(d, "house.json");
+  REQUIRE(b.mechanisms.size() == 3);
+  // M1: the wall's design, both grades, the level at 7.3 m.
+  REQUIRE(b.mechanisms[0].kase.tie_design.has_value());
+  CHECK(b.mechanisms[0].kase.ties.empty());
+  CHECK(b.mechanisms[0].expanded.at("design") == d["walls"][0]["design"]);
+  CHECK(b.mechanisms[0].kase.tie_design->levels.size() == 1);
+  CHECK(b.mechanisms[0].kase.tie_design->levels[0].point.y() == doctest::Approx(7.3).epsilon(1e-15));
+  // M2: no design (null), its own given tie (Ø16: A = pi 16^2 / 4 mm^2).
+  CHECK_FALSE(b.mechanisms[1].kase.tie_design.has_value());
+  CHECK_FALSE(b.mechanisms[1].expanded.contains("design"));
+  REQUIRE(b.mechanisms[1].kase.ties.size() == 1);
+  CHECK(b.mechanisms[1].kase.ties[0].rod.area == doctest::Approx(std::acos(-1.0) * 0.016 * 0.016 / 4.0).epsilon(1e-14));
+  CHECK(has_ties(b.mechanisms[1].kase));
+  // M3 (another wall): none.
+  CHECK_FALSE(has_ties(b.mechanisms[2].kase));
+
+  // Not at the building level: the message says why.
+  json top = building_doc();
+  top.erase("dynamic");
+  top["design"] = d["walls"][0]["design"];
+  try {
+    parse_building(top, "house.json");
+    FAIL("a building-level design was accepted");
+  } catch (const InputError& e) {
+    CHECK(std::string(e.what()).find("house.json: /design: \"design\" is not a building-wide key") != std::string::npos);
+  }
+  // A bad value in the wall's design is reported at the wall's path, for the mechanism that uses it.
+  d["walls"][0]["design"]["ties"]["levels"][0]["spacing_m"] = 0;
+  try {
+    parse_building(d, "house.json");
+    FAIL("a zero spacing was accepted");
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    CHECK(m.find("house.json: /walls/0/design/ties/levels/0/spacing_m: value 0 out of range") != std::string::npos);
+    CHECK(m.find("[M1 \"ground\"]") != std::string::npos);
+  }
+}

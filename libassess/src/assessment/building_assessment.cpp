@@ -1,6 +1,7 @@
 // building_assessment.cpp: every mechanism of a building through
-// assess_facade, the safety indices zetaE = PGA_C / PGA_D and TR_C / TR_D, and
-// the governing mechanism per approach (docs/theory/building.md).
+// assess_facade and assess_ties, the safety indices zetaE = PGA_C / PGA_D and
+// TR_C / TR_D, the governing mechanism per approach and the building's index
+// before and after the tie rods (docs/theory/building.md).
 #include "assess/assessment/building_assessment.hpp"
 
 #include "assess/hazard/hazard_curve.hpp"
@@ -64,6 +65,15 @@ double ag_capacity_2008(const FacadeAssessment& a, const CandidateResult& cr, co
     if (hi > 20.0) return inf;
   }
   return factor * detail::brent_root([&](double ag) { return dc(ag) - target; }, lo, hi, 1e-12);
+}
+
+// Every kinematic check of every candidate satisfied (the reading of
+// TieInterventionResult::passes_before, for a mechanism without ties).
+bool every_kinematic_check_passes(const KinematicCaseResult& r) {
+  for (const CandidateResult& cr : r.candidates)
+    for (const CheckRow& row : cr.checks)
+      if (!row.satisfied || row.no_verdict) return false;
+  return true;
 }
 
 }  // namespace
@@ -231,9 +241,31 @@ BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& o
   for (std::size_t i = 0; i < n; ++i)
     if (!errors[i].empty()) throw InputError(building_path_message(b, b.mechanisms[i], errors[i]));
 
+  // Issue 23: the tie rods of each mechanism, as `assess run` of its case does
+  // them (after the record sets are final): given ties decide the assessment's
+  // dynamic rows, so the safety indices below are computed after this.
+  detail::parallel_for(n, [&](std::size_t i) {
+    try {
+      out.results[i].ties = assess_ties(out.results[i].a);
+    } catch (const InputError& e) {
+      errors[i] = e.what();
+    }
+  });
+  for (std::size_t i = 0; i < n; ++i)
+    if (!errors[i].empty()) throw InputError(building_path_message(b, b.mechanisms[i], errors[i]));
+
   for (std::size_t i = 0; i < n; ++i) {
     BuildingMechanismResult& r = out.results[i];
     r.indices = safety_indices(r.a);
+    if (r.ties) {
+      r.zeta_before = r.ties->zetaE_before;
+      r.zeta_after = r.ties->zetaE_after;
+      r.passes_before = r.ties->passes_before;
+      r.passes_after = r.ties->passes_after;
+    } else {
+      r.zeta_before = r.zeta_after = zeta_E(r.a.kinematic, r.a.kase.method);
+      r.passes_before = r.passes_after = every_kinematic_check_passes(r.a.kinematic);
+    }
     for (const std::string& w : r.a.warnings) out.warnings.push_back(building_path_message(b, b.mechanisms[i], w));
   }
   const FacadeAssessment& a0 = out.results.front().a;
@@ -279,6 +311,23 @@ BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& o
       }
       if (g.assessed > 0) out.governing.push_back(g);
     }
+  // The building's index before and after the ties: the smallest mechanism
+  // zetaE (docs/theory/building.md §8). Ties: the first in the file.
+  BuildingTieIndex& t = out.tie_index;
+  for (std::size_t i = 0; i < n; ++i) {
+    const BuildingMechanismResult& r = out.results[i];
+    t.any_ties = t.any_ties || r.ties.has_value();
+    t.passing_before += r.passes_before;
+    t.passing_after += r.passes_after;
+    if (!std::isnan(r.zeta_before) && (t.mechanism_before < 0 || r.zeta_before < t.zeta_before)) {
+      t.zeta_before = r.zeta_before;
+      t.mechanism_before = int(i);
+    }
+    if (!std::isnan(r.zeta_after) && (t.mechanism_after < 0 || r.zeta_after < t.zeta_after)) {
+      t.zeta_after = r.zeta_after;
+      t.mechanism_after = int(i);
+    }
+  }
   return out;
 }
 

@@ -20,9 +20,11 @@ namespace assess {
 namespace {
 
 // The keys a wall or a mechanism entry may override (the case keys but the site:
-// one building stands on one site).
-constexpr std::initializer_list<const char*> override_keys = {"knowledge_level", "FC", "codes", "method",
-                                                               "check_SLD", "building", "analysis", "dynamic"};
+// one building stands on one site). "ties" and "design" (issue 23) are given
+// in a wall or a mechanism only: their anchor points are in the mechanism's
+// own coordinates (docs/user/building.md, Tie rods).
+constexpr std::initializer_list<const char*> override_keys = {"knowledge_level", "FC", "codes", "method", "check_SLD",
+                                                               "building", "analysis", "dynamic", "ties", "design"};
 
 std::string directory_of(const std::string& path) {
   const auto p = path.find_last_of('/');
@@ -122,6 +124,11 @@ BuildingCase parse_building(const nlohmann::json& doc, const std::string& file) 
   b.doc = doc;
   const JsonNode root(b.doc, file);
   if (!root.is_object()) root.fail("expected an object (a building case file)");
+  for (const char* k : {"ties", "design"})
+    if (root.find(k))
+      root.at(k).fail(std::string("\"") + k +
+                      "\" is not a building-wide key: tie anchor points are in each mechanism's own coordinates; give "
+                      "it in a wall (its mechanisms) or a mechanism (docs/user/building.md, Tie rods)");
   root.allow_only({"schema_version", "project", "site", "building", "knowledge_level", "FC", "codes", "method",
                    "check_SLD", "analysis", "dynamic", "walls", "record_selection"});
   if (root.find("schema_version")) root.integer("schema_version", 1, 1);
@@ -143,7 +150,7 @@ BuildingCase parse_building(const nlohmann::json& doc, const std::string& file) 
     const JsonNode& w = walls[wi];
     if (!w.is_object()) w.fail("expected an object {\"name\", \"mechanisms\": [...]}");
     w.allow_only({"name", "mechanisms", "knowledge_level", "FC", "codes", "method", "check_SLD", "building",
-                  "analysis", "dynamic"});
+                  "analysis", "dynamic", "ties", "design"});
     const std::string wall_name = w.string("name");
     if (w.find("FC") && w.find("knowledge_level")) w.fail("give \"knowledge_level\" or \"FC\", not both");
     const std::vector<JsonNode> ms = w.array("mechanisms", 1);
@@ -154,7 +161,7 @@ BuildingCase parse_building(const nlohmann::json& doc, const std::string& file) 
                " mechanisms in the building: split it into several building cases");
       if (!e.is_object()) e.fail("expected an object {\"name\", \"mechanism\": {...}}");
       e.allow_only({"name", "mechanism", "knowledge_level", "FC", "codes", "method", "check_SLD", "building",
-                    "analysis", "dynamic"});
+                    "analysis", "dynamic", "ties", "design"});
       BuildingMechanism m;
       m.name = e.string("name");
       if (m.name.empty()) e.at("name").fail("expected a non-empty name");

@@ -147,6 +147,37 @@ const std::string& bt(Lang L, const std::string& key) {
       {"height_m", {"in quota", "at height"}},
       {"ground", {"al piede", "at the ground"}},
       {"extrapolated", {"estrapolato oltre 30–2475 anni", "extrapolated beyond 30–2475 years"}},
+      {"ties_title", {"Catene: i meccanismi prima e dopo l'intervento", "Tie rods: the mechanisms before and after the intervention"}},
+      {"ties_cap",
+       {"Per ogni meccanismo: le catene (assegnate nel file o progettate: la barra e la piastra commerciali più piccole "
+        "che soddisfano ogni verifica), ζE = PGA_C/PGA_D (NTC 2018, approccio del metodo adottato: resistenza per il "
+        "lineare, spostamento altrimenti) senza e con le catene, l'esito di tutte le verifiche cinematiche (entrambe le "
+        "norme; dopo, anche le verifiche delle catene) e la verifica dinamica delle analisi ripetute con le catene. "
+        "Per le catene assegnate le tabelle precedenti sono già con le catene; per un progetto sono senza.",
+        "For each mechanism: its ties (given in the file, or designed: the smallest commercial rod and plate that "
+        "satisfy every check), ζE = PGA_C/PGA_D (NTC 2018, the adopted method's approach: strength for linear, "
+        "displacement otherwise) without and with the ties, whether every kinematic check is satisfied (both codes; "
+        "after: the ties' checks too) and the dynamic check of the analyses repeated with the ties. With given ties "
+        "the tables above already include them; with a design they do not."}},
+      {"ties_kind", {"Catene", "Ties"}},
+      {"ties_design", {"progetto", "design"}},
+      {"ties_given", {"assegnate", "given"}},
+      {"ties_none", {"—", "—"}},
+      {"ties_rod", {"Barra e capochiave", "Rod and anchor"}},
+      {"ties_plate", {"piastra", "plate"}},
+      {"ties_bar", {"paletto", "bar anchor"}},
+      {"ties_levels", {"livelli", "levels"}},
+      {"ties_not_found", {"non trovata", "not found"}},
+      {"before", {"prima", "before"}},
+      {"after", {"dopo", "after"}},
+      {"checks_all", {"Verifiche cinematiche", "Kinematic checks"}},
+      {"dyn_check", {"Verifica dinamica", "Dynamic check"}},
+      {"ties_index",
+       {"Indicatore di rischio dell'edificio (il più piccolo ζE dei suoi meccanismi)",
+        "Safety index of the building (the smallest ζE of its mechanisms)"}},
+      {"without_ties", {"senza le catene", "without the ties"}},
+      {"with_ties", {"con le catene", "with the ties"}},
+      {"ties_passing", {"meccanismi con tutte le verifiche cinematiche soddisfatte", "mechanisms with every kinematic check satisfied"}},
   };
   const auto it = m.find(key);
   if (it == m.end()) {
@@ -275,6 +306,77 @@ std::string zeta_chart(Lang L, const BuildingAssessment& b) {
   return svg + "</svg>";
 }
 
+// The tie rods of a mechanism in a few words (its first level: a design gives
+// every level the same rod and plate).
+std::string tie_label(Lang L, const TieInterventionResult& t) {
+  if (t.levels.empty()) return "—";
+  const Tie& x = t.levels.front().tie;
+  std::string s = x.rod.diameter > 0.0 ? format("Ø%.0f mm ", x.rod.diameter * 1e3) + x.rod.grade
+                                       : format("A = %.0f mm² ", x.rod.area * 1e6) + x.rod.grade;
+  s += x.anchor.type == AnchorType::Plate
+           ? ", " + bt(L, "ties_plate") + format(" %.0f × %.0f × %.0f mm", x.anchor.a * 1e3, x.anchor.b * 1e3, x.anchor.t * 1e3)
+           : ", " + bt(L, "ties_bar") + format(" %.0f mm", x.anchor.a * 1e3);
+  if (t.levels.size() > 1) s += format(" (%d ", int(t.levels.size())) + bt(L, "ties_levels") + ")";
+  if (t.designed && !t.found) s = bt(L, "ties_not_found") + " (" + s + ")";
+  return s;
+}
+
+std::string pass_td(Lang L, bool ok) {
+  return std::string("<td class=\"") + (ok ? "ok" : "fail") + "\">" + esc(bt(L, ok ? "ok" : "fail")) + "</td>";
+}
+
+// The dynamic check of the tied analyses, before → after (or —).
+std::string tie_dynamic_td(Lang L, const TieInterventionResult* t) {
+  if (!t || !t->dynamics.applies || t->dynamics.summaries.empty()) return "<td>—</td>";
+  bool before = true, after = true;
+  for (const TieDynamicSummary& x : t->dynamics.summaries) {
+    before = before && x.satisfied_before;
+    after = after && x.satisfied_after;
+  }
+  return std::string("<td class=\"") + (after ? "ok" : "fail") + "\">" + esc(bt(L, before ? "ok" : "fail")) + " → " +
+         esc(bt(L, after ? "ok" : "fail")) + "</td>";
+}
+
+// The building's index before and after the ties, one sentence.
+std::string tie_index_text(Lang L, const BuildingAssessment& b) {
+  const BuildingTieIndex& ti = b.tie_index;
+  const BuildingCase& bc = b.building;
+  auto at = [&](int k) { return k >= 0 ? " (" + bc.mechanisms[std::size_t(k)].id + ")" : std::string(); };
+  return bt(L, "ties_index") + ": " + fx(ti.zeta_before, 3) + at(ti.mechanism_before) + " " + bt(L, "without_ties") +
+         ", " + fx(ti.zeta_after, 3) + at(ti.mechanism_after) + " " + bt(L, "with_ties") + "; " + bt(L, "ties_passing") +
+         ": " + std::to_string(ti.passing_before) + " " + bt(L, "of") + " " + std::to_string(bc.mechanisms.size()) + " " +
+         bt(L, "without_ties") + ", " + std::to_string(ti.passing_after) + " " + bt(L, "with_ties") + ".";
+}
+
+// The table of the mechanisms before and after their ties (issue 23).
+void add_ties_summary(Lang L, const BuildingAssessment& b, HtmlReport& h) {
+  const BuildingCase& bc = b.building;
+  h.add_heading(bt(L, "ties_title"), 3);
+  std::string t = "<table class=\"building-summary ties-summary\"><caption>" + esc(bt(L, "ties_cap")) +
+                  "</caption>\n<thead><tr><th rowspan=\"2\">" + esc(bt(L, "id")) + "</th><th rowspan=\"2\">" +
+                  esc(bt(L, "wall_mech")) + "</th><th rowspan=\"2\">" + esc(bt(L, "ties_kind")) +
+                  "</th><th rowspan=\"2\">" + esc(bt(L, "ties_rod")) + "</th><th colspan=\"2\">ζE</th><th colspan=\"2\">" +
+                  esc(bt(L, "checks_all")) + "</th><th rowspan=\"2\">" + esc(bt(L, "dyn_check")) + "</th></tr>\n<tr>";
+  for (int k = 0; k < 2; ++k)
+    t += "<th class=\"num\">" + esc(bt(L, "before")) + "</th><th class=\"num\">" + esc(bt(L, "after")) + "</th>";
+  t += "</tr></thead>\n<tbody>\n";
+  auto zeta = [&](double z) {
+    return std::string("<td class=\"num ") + (z >= 1.0 ? "zeta-ok" : "zeta-fail") + "\">" + esc(fx(z, 3)) + "</td>";
+  };
+  for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
+    const BuildingMechanism& m = bc.mechanisms[i];
+    const BuildingMechanismResult& r = b.results[i];
+    const TieInterventionResult* x = r.ties ? &*r.ties : nullptr;
+    t += "<tr id=\"ties-row-" + esc(m.id) + "\"><td><a href=\"#" + esc(m.id) + "\">" + esc(m.id) + "</a></td><td>" +
+         esc(m.name) + "</td><td>" +
+         esc(bt(L, !x ? "ties_none" : x->designed ? "ties_design" : "ties_given")) + "</td><td>" +
+         esc(x ? tie_label(L, *x) : "—") + "</td>" + zeta(r.zeta_before) + zeta(r.zeta_after) +
+         pass_td(L, r.passes_before) + pass_td(L, r.passes_after) + tie_dynamic_td(L, x) + "</tr>\n";
+  }
+  h.add_raw_html(t + "</tbody></table>");
+  h.add_paragraph(tie_index_text(L, b));
+}
+
 void add_summary(Lang L, const BuildingAssessment& b, HtmlReport& h) {
   const BuildingCase& bc = b.building;
   h.add_raw_html("<h2 id=\"summary\">" + esc(bt(L, "summary")) + "</h2>");
@@ -394,6 +496,7 @@ void add_summary(Lang L, const BuildingAssessment& b, HtmlReport& h) {
   h.add_cell_table({bt(L, "id"), bt(L, "wall_mech"), bt(L, "records")}, rows, "");
   for (const SharedSelection& s : bc.selections)
     if (s.fell_back) h.add_paragraph(s.id + ": " + s.note);
+  if (b.tie_index.any_ties) add_ties_summary(L, b, h);
 }
 
 }  // namespace
@@ -470,6 +573,7 @@ std::string building_html(const BuildingAssessment& b, const ReportOptions& opti
     HtmlReport part(bt(L, "title"));
     part.set_id_prefix(m.id + "-");
     part.set_heading_shift(1);
+    mo.ties = r.ties ? &*r.ties : nullptr;  // issue 23: the mechanism's tie section
     facade_html_mechanism_sections(r.a, mo, part);
     std::string body = part.body();
     const std::string vh = "<h2 class=\"verdicts-heading\"";
@@ -519,6 +623,7 @@ std::string building_html(const BuildingAssessment& b, const ReportOptions& opti
   }
   h.add_paragraph(std::to_string(ok) + " " + bt(L, "of") + " " + std::to_string(with) + " " + bt(L, "concl_counts") +
                   " (" + methods + ")" + (failing.empty() ? "" : "; " + bt(L, "concl_failing") + ": " + failing) + ".");
+  if (b.tie_index.any_ties) h.add_paragraph(tie_index_text(L, b));
   h.add_raw_html("<div class=\"signature\"><p>" + esc(bt(L, "place_date")) + ": ______________________</p><p>" +
                  esc(bt(L, "engineer")) + ": ______________________</p></div>");
   h.add_heading(bt(L, "appendix"));

@@ -3,6 +3,7 @@
 #include "assess/report/building_report.hpp"
 
 #include "assess/report/kinematic_report.hpp"
+#include "assess/report/tie_report.hpp"
 
 #include "report/report_heading.hpp"
 #include "report/text_format.hpp"
@@ -61,6 +62,30 @@ std::string record_set_text(const BuildingAssessment& b, const BuildingMechanism
   }
   (void)b;
   return "-";
+}
+
+// The tie rods of a mechanism in a few words: the rod and anchor of its first
+// level (a design gives every level the same), "+n levels" for the others.
+std::string tie_label(const TieInterventionResult& t) {
+  if (t.levels.empty()) return "-";
+  const Tie& x = t.levels.front().tie;
+  std::string s = x.rod.diameter > 0.0 ? format("diam. %.0f mm %s", x.rod.diameter * 1e3, x.rod.grade)
+                                       : format("A = %.0f mm2 %s", x.rod.area * 1e6, x.rod.grade);
+  s += x.anchor.type == AnchorType::Plate
+           ? format(", plate %.0fx%.0fx%.0f", x.anchor.a * 1e3, x.anchor.b * 1e3, x.anchor.t * 1e3)
+           : format(", bar %.0f mm", x.anchor.a * 1e3);
+  if (t.levels.size() > 1) s += format(" +%d lev.", int(t.levels.size() - 1));
+  if (t.designed && !t.found) s = "NOT FOUND (" + s + ")";
+  return s;
+}
+
+// The dynamic check of the tied analyses, before or after: every restitution
+// value satisfied ("ok"), not ("NO"), or no tied dynamics ("-").
+std::string tie_dynamic_verdict(const TieInterventionResult& t, bool after) {
+  if (!t.dynamics.applies || t.dynamics.summaries.empty()) return "-";
+  for (const TieDynamicSummary& x : t.dynamics.summaries)
+    if (!(after ? x.satisfied_after : x.satisfied_before)) return "NO";
+  return "ok";
 }
 
 }  // namespace
@@ -152,6 +177,16 @@ nlohmann::json building_json(const BuildingAssessment& b) {
       v["dc"] = num(c->max_dc);
       mj["conclusion"] = v;
     }
+    // Issue 23: the mechanism's ties (as `assess run` of its case prints them)
+    // and its zetaE / every-check verdict before and after them.
+    nlohmann::json iv;
+    iv["ties"] = !r.ties ? "none" : r.ties->designed ? "design" : "given";
+    iv["zeta_E_before"] = num(r.zeta_before);
+    iv["zeta_E_after"] = num(r.zeta_after);
+    iv["passes_before"] = r.passes_before;
+    iv["passes_after"] = r.passes_after;
+    mj["intervention"] = iv;
+    if (r.ties) mj["ties"] = tie_json(*r.ties);
     mj["case"] = m.expanded;
     mj["assessment"] = facade_json(r.a);
     ms.push_back(mj);
@@ -175,6 +210,20 @@ nlohmann::json building_json(const BuildingAssessment& b) {
     gv.push_back(x);
   }
   j["governing"] = gv;
+  // The building's index before and after the ties (docs/theory/building.md §8).
+  const BuildingTieIndex& ti = b.tie_index;
+  nlohmann::json tj;
+  tj["definition"] = "the smallest mechanism zeta_E (NTC 2018, each mechanism's adopted method: strength rows for "
+                     "linear, displacement rows otherwise), before and after the mechanisms' ties";
+  tj["any_ties"] = ti.any_ties;
+  tj["zeta_E_before"] = num(ti.zeta_before);
+  tj["zeta_E_after"] = num(ti.zeta_after);
+  if (ti.mechanism_before >= 0) tj["mechanism_before"] = bc.mechanisms[std::size_t(ti.mechanism_before)].id;
+  if (ti.mechanism_after >= 0) tj["mechanism_after"] = bc.mechanisms[std::size_t(ti.mechanism_after)].id;
+  tj["passing_before"] = ti.passing_before;
+  tj["passing_after"] = ti.passing_after;
+  tj["mechanisms"] = bc.mechanisms.size();
+  j["tie_index"] = tj;
   j["warnings"] = b.warnings;
   return j;
 }
@@ -276,6 +325,45 @@ std::string building_text(const BuildingAssessment& b, TextWidth width) {
             std::to_string(g.failing) + " not satisfied" +
             (g.no_verdict ? ", " + std::to_string(g.no_verdict) + " without verdict" : "");
     o += wide ? line + "\n" : wrap(line, 120);
+  }
+  // Issue 23: the tie rods, before and after, then each mechanism's ties in full.
+  const BuildingTieIndex& ti = b.tie_index;
+  if (ti.any_ties) {
+    const std::string head =
+        "tie rods (\"ties\" given, \"design\" proposed): each mechanism's zetaE (NTC 2018, its adopted method's "
+        "approach) and every kinematic check (both editions; after: and the ties' checks), without and with its ties; "
+        "dynamic: the tied analyses' check (docs/theory/building.md §8)";
+    o += "\n" + (wide ? head + "\n" : wrap(head, 120));
+    o += rstrip(format("%-4s %-6s %-38s | %7s %7s | %6s %6s | %6s %6s", "id", "ties", "rod, anchor", "zetaE", "zetaE",
+                       "checks", "checks", "dyn.", "dyn.")) + "\n";
+    o += rstrip(format("%-4s %-6s %-38s | %7s %7s | %6s %6s | %6s %6s", "", "", "", "before", "after", "before",
+                       "after", "before", "after")) + "\n";
+    auto yes = [](bool p) { return std::string(p ? "ok" : "NO"); };
+    for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
+      const BuildingMechanismResult& r = b.results[i];
+      const std::string kind = !r.ties ? "-" : r.ties->designed ? "design" : "given";
+      std::string label = r.ties ? tie_label(*r.ties) : "-";
+      if (!wide && width_of(label) > 38) label = label.substr(0, 37) + "~";
+      o += rstrip(format("%-4s %-6s ", bc.mechanisms[i].id, kind) + pad(label, 38) +
+                  format(" | %7s %7s | %6s %6s | %6s %6s", fx(r.zeta_before, 3), fx(r.zeta_after, 3),
+                         yes(r.passes_before), yes(r.passes_after), r.ties ? tie_dynamic_verdict(*r.ties, false) : "-",
+                         r.ties ? tie_dynamic_verdict(*r.ties, true) : "-")) +
+           "\n";
+    }
+    auto at = [&](int k) { return k >= 0 ? " (" + bc.mechanisms[std::size_t(k)].id + ")" : std::string(); };
+    const std::string idx = "building index (the smallest mechanism zetaE): " + fx(ti.zeta_before, 3) +
+                            at(ti.mechanism_before) + " without the ties, " + fx(ti.zeta_after, 3) +
+                            at(ti.mechanism_after) + " with them; every kinematic check satisfied: " +
+                            std::to_string(ti.passing_before) + " of " + std::to_string(bc.mechanisms.size()) +
+                            " mechanisms without, " + std::to_string(ti.passing_after) + " with";
+    o += wide ? idx + "\n" : wrap(idx, 120);
+    for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
+      const BuildingMechanismResult& r = b.results[i];
+      if (!r.ties) continue;
+      const BuildingMechanism& m = bc.mechanisms[i];
+      const std::string title = m.id + " " + m.wall + ": " + m.name + " (" + m.json_path + ")";
+      o += "\n" + (wide ? title + "\n" : wrap(title, 120)) + tie_text(*r.ties).substr(1);
+    }
   }
   if (!b.warnings.empty()) o += "\n" + std::to_string(b.warnings.size()) + " warnings (printed above; --json lists them)\n";
   o += "\neach mechanism in full: assess run " + bc.file + " --mechanism ID (or --json, --html)\n";

@@ -1042,6 +1042,12 @@ void facade_html_mechanism_sections(const FacadeAssessment& a, const ReportOptio
   add_checks(c);
   add_dynamic(c);
   add_comparison(c);
+  // Issue 23: the mechanism's tie rods (the building's "ties"/"design"), as in
+  // facade_html; ids prefixed and subheadings shifted with the nesting.
+  if (options.ties) {
+    h.add_heading(tie_section_title(c.L));
+    h.add_raw_html(tie_html_section(*options.ties, c.L, h.id_prefix(), 3 + h.heading_shift()));
+  }
   add_warnings(c);
   add_checks_appendix(c);  // every other candidate's checks: the verdict box counts are the rows shown
 }

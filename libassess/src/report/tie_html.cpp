@@ -155,11 +155,23 @@ std::string drawing(const TieInterventionResult& t, Lang lang) {
 
 std::string tie_section_title(Lang lang) { return tr(lang, "title"); }
 
-std::string tie_html_section(const TieInterventionResult& t, Lang lang) {
-  std::string h = "<div class=\"ties\" id=\"ties\">\n";
+std::string tie_html_section(const TieInterventionResult& t, Lang lang, const std::string& id_prefix,
+                             int heading_level) {
+  // Headings at `heading_level`; every id (the section's, the drawing's
+  // markers) prefixed, so that several sections share a page (the building).
+  const std::string h_open = "<h" + std::to_string(heading_level) + ">";
+  const std::string h_close = "</h" + std::to_string(heading_level) + ">";
+  auto prefixed = [&](std::string svg) {
+    for (const char* key : {"id=\"", "url(#"})
+      for (std::size_t at = svg.find(key); !id_prefix.empty() && at != std::string::npos;
+           at = svg.find(key, at + std::string(key).size() + id_prefix.size()))
+        svg.insert(at + std::string(key).size(), id_prefix);
+    return svg;
+  };
+  std::string h = "<div class=\"ties\" id=\"" + xml_escape(id_prefix) + "ties\">\n";
   h += "<p>" + tr(lang, t.designed ? "intro_design" : "intro_given") + "</p>\n";
   if (t.designed && !t.found) h += "<p style=\"color:#c62828\">" + tr(lang, "not_found") + "</p>\n";
-  h += "<figure>" + drawing(t, lang) + "<figcaption>" + tr(lang, "drawing") + "</figcaption></figure>\n";
+  h += "<figure>" + prefixed(drawing(t, lang)) + "<figcaption>" + tr(lang, "drawing") + "</figcaption></figure>\n";
   // Levels.
   h += "<table class=\"data\"><tr>" + th(tr(lang, "level")) + th(tr(lang, "rod")) + th(tr(lang, "anchor")) +
        th(tr(lang, "position")) + th(tr(lang, "spacing")) + th(tr(lang, "free_length")) + th(tr(lang, "T_Rd")) + "</tr>\n";
@@ -179,7 +191,7 @@ std::string tie_html_section(const TieInterventionResult& t, Lang lang) {
   }
   h += "</table>\n";
   for (const TieLevelResult& L : t.levels) {
-    h += "<h3>" + tr(lang, "checks_title") + " — " + xml_escape(L.tie.name) + "</h3>\n";
+    h += h_open + tr(lang, "checks_title") + " — " + xml_escape(L.tie.name) + h_close + "\n";
     h += "<p>" + tr(lang, "N_Ed") + format(" = %.2f kN.", L.N_Ed / kN) + "</p>\n";
     h += "<table class=\"data\"><tr>" + th(tr(lang, "check")) + th(tr(lang, "clause")) + th(tr(lang, "demand")) +
          th(tr(lang, "capacity")) + th(tr(lang, "unit")) + th("D/C") + th(tr(lang, "outcome")) + "</tr>\n";
@@ -193,7 +205,7 @@ std::string tie_html_section(const TieInterventionResult& t, Lang lang) {
            td(fnum(c.capacity * s, "%.2f")) + td(c.unit) + td(fnum(c.dc, "%.3f")) + verdict_cell(lang, c.satisfied) +
            "</tr>\n";
     }
-    h += "</table>\n<h3>" + tr(lang, "required_title") + " — " + xml_escape(L.tie.name) + "</h3>\n";
+    h += "</table>\n" + h_open + tr(lang, "required_title") + " — " + xml_escape(L.tie.name) + h_close + "\n";
     h += "<table class=\"data\"><tr>" + th(tr(lang, "code")) + th(tr(lang, "ls")) + th(tr(lang, "kind")) +
          th(tr(lang, "where")) + th(tr(lang, "per_tie")) + th(tr(lang, "per_metre")) + th(tr(lang, "dc_without")) +
          "</tr>\n";
@@ -206,7 +218,7 @@ std::string tie_html_section(const TieInterventionResult& t, Lang lang) {
   // Before / after.
   const CandidateResult& b = t.before.candidates[t.before.governing];
   const CandidateResult& a = t.after.candidates[t.after.governing];
-  h += "<h3>" + tr(lang, "before_after") + "</h3>\n<table class=\"data\"><tr>" + th("") + th(tr(lang, "before")) +
+  h += h_open + tr(lang, "before_after") + h_close + "\n<table class=\"data\"><tr>" + th("") + th(tr(lang, "before")) +
        th(tr(lang, "after")) + "</tr>\n";
   h += "<tr>" + td("α0") + td(format("%.4f", b.result.alpha0)) + td(format("%.4f", a.result.alpha0)) + "</tr>\n";
   h += "<tr>" + td("a0* (m/s²)") + td(format("%.4f", b.result.a0_star)) + td(format("%.4f", a.result.a0_star)) + "</tr>\n";
@@ -225,7 +237,7 @@ std::string tie_html_section(const TieInterventionResult& t, Lang lang) {
   }
   h += "</table>\n";
   // Dynamics before / after.
-  h += "<h3>" + tr(lang, "dyn_title") + "</h3>\n";
+  h += h_open + tr(lang, "dyn_title") + h_close + "\n";
   if (!t.dynamics.applies) {
     h += "<p>" + tr(lang, "dyn_not") + "</p>\n";
   } else {

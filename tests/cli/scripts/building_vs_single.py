@@ -10,7 +10,11 @@ identical (numbers within 1e-12 relative; the only string allowed to differ is
 the case file's name), and so must the safety indices (zetaE, TR_C/TR_D, per
 code and approach). The governing mechanism of each (code, approach) is
 recomputed from the single runs (lowest zetaE; dynamic: largest D/C) and must
-be the building's. Exit 0 pass, 1 fail.
+be the building's. Issue 23: a mechanism with "ties" or "design" carries the
+tie result of its single run (`"ties"`: the design found, every level's checks
+and required forces, before/after, the tied dynamics; numbers within 1e-12
+relative), its zetaE before/after are the single run's, and the building's
+index before/after is recomputed from the single runs. Exit 0 pass, 1 fail.
 """
 import json
 import math
@@ -63,7 +67,8 @@ def same(x, y, path, single_file):
         failures.append(f"{path}: {x!r} != {y!r}")
 
 
-OVERRIDES = ("knowledge_level", "FC", "codes", "method", "check_SLD", "building", "analysis", "dynamic")
+OVERRIDES = ("knowledge_level", "FC", "codes", "method", "check_SLD", "building", "analysis", "dynamic", "ties",
+             "design")
 
 
 def merge_patch(target, patch):  # RFC 7386
@@ -121,13 +126,42 @@ for m in b["mechanisms"]:
     s = run(["run", f, "--json"])
     singles.append(s)
     n0 = len(failures)
-    same(m["assessment"], {k: v for k, v in s.items() if k != "safety_indices"}, f"{m['id']}/assessment", f)
+    same(m["assessment"], {k: v for k, v in s.items() if k not in ("safety_indices", "ties")}, f"{m['id']}/assessment", f)
     same(m["safety_indices"], s["safety_indices"], f"{m['id']}/safety_indices", f)
+    # Issue 23: the tie result and the zetaE before/after.
+    ties_note = ""
+    if ("ties" in m) != ("ties" in s):
+        failures.append(f"{m['id']}: tie result only in {'the building' if 'ties' in m else 'the single run'}")
+    elif "ties" in m:
+        same(m["ties"], s["ties"], f"{m['id']}/ties", f)
+        numbers = []
+        walk = [m["ties"]]
+        while walk:
+            x = walk.pop()
+            if isinstance(x, dict):
+                walk.extend(x.values())
+            elif isinstance(x, list):
+                walk.extend(x)
+            elif isinstance(x, (int, float)) and not isinstance(x, bool):
+                numbers.append(x)
+        if len(numbers) < 50:
+            failures.append(f"{m['id']}/ties: only {len(numbers)} numbers compared")
+        iv = m["intervention"]
+        same(iv["zeta_E_before"], s["ties"]["before"]["zeta_E"], f"{m['id']}/intervention/zeta_E_before", f)
+        same(iv["zeta_E_after"], s["ties"]["after"]["zeta_E"], f"{m['id']}/intervention/zeta_E_after", f)
+        if iv["ties"] == "given":
+            # Given ties: the mechanism's own displacement (or strength) zetaE is the tied one.
+            approach = "strength" if m["case"].get("method") == "linear" else "displacement"
+            for x in s["safety_indices"]:
+                if x["code"] == "NTC2018" and x["approach"] == approach and x["defined"]:
+                    same(x["zeta_E"], iv["zeta_E_after"], f"{m['id']}/given ties: safety index = zeta_E after", f)
+        ties_note = (f", ties ({iv['ties']}, {len(numbers)} numbers) identical, zetaE {iv['zeta_E_before']:.3f} -> "
+                     f"{iv['zeta_E_after']:.3f}")
     k = m["assessment"]["kinematic"]
     print(f"{'ok  ' if len(failures) == n0 else 'FAIL'} {m['id']} {m['name']}: "
           f"{sum(1 for _ in m['assessment']['checks'])} checks, "
           f"{len(m['assessment'].get('dynamic', {}).get('analyses', []) or [])} dynamic analyses, "
-          f"{len(m['safety_indices'])} safety indices identical to the single run")
+          f"{len(m['safety_indices'])} safety indices identical to the single run{ties_note}")
 
 # The governing mechanism per code and approach, from the single runs.
 for g in b["governing"]:
@@ -148,6 +182,29 @@ for g in b["governing"]:
         failures.append(f"governing {g['code']} {g['approach']}: building {g.get('mechanism')}, single runs {best_id}")
     else:
         print(f"ok   governing {g['code']} {g['approach']}: {best_id} ({'zetaE' if g['approach'] != 'dynamic' else 'D/C'} {best:.4f})")
+
+# The building's index before/after the ties: the smallest mechanism zetaE, from the single runs.
+ti = b["tie_index"]
+for when in ("before", "after"):
+    best, best_id = None, None
+    for m, s in zip(b["mechanisms"], singles):
+        if "ties" in s:
+            z = s["ties"][when]["zeta_E"]
+        else:
+            z = m["intervention"]["zeta_E_" + when]  # no ties: checked equal to the mechanism's own below
+            approach = "strength" if m["case"].get("method") == "linear" else "displacement"
+            own = [x["zeta_E"] for x in s["safety_indices"]
+                   if x["code"] == "NTC2018" and x["approach"] == approach and x["defined"]]
+            if own and own[0] is not None and z is not None:
+                same(z, own[0], f"{m['id']}/intervention/zeta_E_{when} = its safety index", "")
+        if z is not None and (best is None or z < best):
+            best, best_id = z, m["id"]
+    if best_id != ti.get("mechanism_" + when) or (best is not None and
+                                                  abs(best - ti["zeta_E_" + when]) > 1e-12 * abs(best)):
+        failures.append(f"building index {when}: {ti.get('mechanism_' + when)} {ti['zeta_E_' + when]}, "
+                        f"single runs {best_id} {best}")
+    elif best is not None:
+        print(f"ok   building index {when} the ties: {best_id} (zetaE {best:.4f})")
 
 for f in failures[:40]:
     print("FAIL", f)

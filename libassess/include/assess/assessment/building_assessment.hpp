@@ -9,8 +9,10 @@
 
 #include "assess/assessment/building_case.hpp"
 #include "assess/assessment/facade_assessment.hpp"
+#include "assess/assessment/tie_intervention.hpp"
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,8 +43,22 @@ struct SafetyIndex {
 };
 
 struct BuildingMechanismResult {
+  /// The mechanism's assessment as assess_ties left it (given ties decide its
+  /// dynamic rows; a design leaves it as is), the code path of `assess run`.
   FacadeAssessment a;
   std::vector<SafetyIndex> indices;  ///< per code (as the case lists them), then strength, displacement, dynamic
+  /// Issue 23: the tie rods of the mechanism ("ties" or "design" in its wall or
+  /// entry): assess_ties of its assessment; empty when it has none.
+  std::optional<TieInterventionResult> ties;
+  /// The mechanism's zetaE of its adopted method's approach (NTC 2018; zeta_E of
+  /// tie_intervention.hpp: strength rows for "linear", displacement rows
+  /// otherwise) before and after its ties (docs/theory/building.md §8); equal
+  /// without ties; NaN without NTC 2018 rows.
+  double zeta_before = std::numeric_limits<double>::quiet_NaN();
+  double zeta_after = std::numeric_limits<double>::quiet_NaN();
+  /// Every kinematic check of every candidate satisfied (both editions), before
+  /// and after its ties (after: every check of the ties too; TieInterventionResult).
+  bool passes_before = false, passes_after = false;
   /// The index of (code, approach), or nullptr.
   const SafetyIndex* index(const std::string& code, const std::string& approach) const;
 };
@@ -58,11 +74,23 @@ struct BuildingGoverning {
   int assessed = 0;                                ///< mechanisms with checks of the approach
 };
 
+/// The building's safety index before and after the tie rods of its mechanisms
+/// (docs/theory/building.md §8): the smallest mechanism zetaE (the weakest local
+/// mechanism governs the building, Circ. 2019 C8.7.1), NaN when no mechanism has one.
+struct BuildingTieIndex {
+  bool any_ties = false;  ///< some mechanism has "ties" or "design"
+  double zeta_before = std::numeric_limits<double>::quiet_NaN();
+  double zeta_after = std::numeric_limits<double>::quiet_NaN();
+  int mechanism_before = -1, mechanism_after = -1;  ///< index in BuildingCase::mechanisms (the smallest; ties: the first)
+  int passing_before = 0, passing_after = 0;        ///< mechanisms with passes_before / passes_after
+};
+
 struct BuildingAssessment {
   BuildingCase building;  ///< as run (a shared selection that fell back is marked)
   std::vector<BuildingMechanismResult> results;  ///< one per mechanism, in the file's order
   std::vector<BuildingGoverning> governing;      ///< per code, then approach
   std::vector<std::string> codes;                ///< the codes present, NTC2018 first
+  BuildingTieIndex tie_index;                    ///< before/after the tie rods (issue 23)
   std::string site_description;
   double VR = 0.0;
   double TR_SLV = 0.0;  ///< years
@@ -72,9 +100,9 @@ struct BuildingAssessment {
   const BuildingGoverning* governing_of(const std::string& code, const std::string& approach) const;
 };
 
-/// Runs every mechanism (assess_facade on its expanded case, in parallel
-/// across mechanisms, results in the file's order). Errors name the building
-/// file and the path in it. @throws InputError
+/// Runs every mechanism (assess_facade on its expanded case, then assess_ties,
+/// in parallel across mechanisms, results in the file's order). Errors name the
+/// building file and the path in it. @throws InputError
 BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& options = {});
 
 /// The governing mechanism of the building for `approach` ("strength" or

@@ -65,7 +65,7 @@ void facade_html_site_section(const FacadeAssessment& a, const ReportOptions& op
 
 /// One mechanism's sections of the relazione appended to `h` (verdict box,
 /// mechanism, kinematic analysis, checks, dynamic analysis, D/C by approach,
-/// warnings): the building relazione nests them under each mechanism's heading
+/// the tie rods when options.ties is set, warnings): the building relazione nests them under each mechanism's heading
 /// (with HtmlReport::set_id_prefix and set_heading_shift).
 void facade_html_mechanism_sections(const FacadeAssessment& a, const ReportOptions& options, HtmlReport& h);
 

@@ -64,6 +64,8 @@ class HtmlReport {
   /// Headings added from now on go `shift` levels deeper (0 by default; 1
   /// nests a whole report under a level-2 heading: 2 -> h3, 3 -> h4, 4 -> h5).
   void set_heading_shift(int shift) { heading_shift_ = shift; }
+  const std::string& id_prefix() const { return id_prefix_; }
+  int heading_shift() const { return heading_shift_; }
 
   /// The body built so far (no title, subtitle or styles): a report nested
   /// in another one is built apart and inserted with add_raw_html.

@@ -25,8 +25,11 @@ nlohmann::json tie_json(const TieInterventionResult& t);
 /// The HTML section of the relazione (tie_html.cpp), below its heading
 /// tie_section_title(): drawing of the ties on the mechanism, each level's
 /// rod and anchor, the checks table, the force each check needs and the
-/// before/after verdicts.
-std::string tie_html_section(const TieInterventionResult& t, Lang lang);
+/// before/after verdicts. Its subheadings are <h`heading_level`>; every id in
+/// it (the section's "ties", the drawing's markers) starts with `id_prefix`
+/// (the building relazione: one section per mechanism, "M3-").
+std::string tie_html_section(const TieInterventionResult& t, Lang lang, const std::string& id_prefix = "",
+                             int heading_level = 3);
 std::string tie_section_title(Lang lang);
 
 }  // namespace assess
