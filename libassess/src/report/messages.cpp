@@ -555,8 +555,8 @@ const std::vector<std::pair<std::string, std::string>>& phrases_it() {
       {"chain model", "modello a catena"},
       // Tied walls (issue 23: assessment/mechanism_dynamics.cpp, facade_assessment.cpp).
       {", with the tie rods (tied one-sided rocking)", ", con le catene (rocking monolatero vincolato)"},
-      {", on the tied wall's restoring moment with the ties at their strength",
-       ", sul momento stabilizzante della parete con le catene alla loro resistenza"},
+      {"on the tied wall's restoring moment with the ties at their strength",
+       "sul momento stabilizzante della parete con le catene alla loro resistenza"},
       {", a rod broken in ", ", catena rotta in "},
       {" held by ", " trattenuto da "},
       {", held by ", ", trattenuta da "},
@@ -609,21 +609,6 @@ const std::vector<std::pair<std::string, std::string>>& phrases_it() {
       {" over ", " tra "},
       {"(band [", "(fascia ["},
       {" to ", " a "},
-      // Given ties on the dynamic check rows (assessment/tie_intervention.cpp, apply_given_ties_to_dynamic_checks).
-      {", with the ties (tied one-sided rocking, issue 23)", ", con le catene (rocking monolatero con catene, issue 23)"},
-      {"no collapse with the ties", "nessun collasso con le catene"},
-      {"collapse with the ties", "collasso con le catene"},
-      {"); rod yielded in ", "); barra snervata in "},
-      {", broke in ", ", rotta in "},
-      {" analyses; ", " analisi; "},
-      {"no verdict: the case has ties and the tied dynamic analysis does not apply (",
-       "senza esito: il caso ha catene e l'analisi dinamica con le catene non si applica ("},
-      {"); the analysis without the ties is not a check of the tied wall",
-       "); l'analisi senza le catene non è una verifica della parete con le catene"},
-      {"no verdict: analysed without the ties, which the case gives (the tied dynamic analysis covers the governing "
-       "candidate only)",
-       "senza esito: analizzato senza le catene, che il caso assegna (l'analisi dinamica con le catene riguarda solo il "
-       "cinematismo che governa)"},
   };
   return p;
 }
