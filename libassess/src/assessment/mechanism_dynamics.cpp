@@ -223,6 +223,21 @@ MechanismDynamics build_bare(const CaseFile& kase, const CandidateResult& cand, 
 
 }  // namespace
 
+std::vector<DynamicTie> dynamic_ties(const MechanismDynamics& md, const CandidateResult& cand,
+                                     const std::vector<Tie>& ties) {
+  std::vector<DynamicTie> out;
+  for (const TieWork& w : cand.result.ties) {
+    DynamicTie t;
+    t.level = w.tie;
+    const double per_count = w.tie.count > 0.0 ? 1.0 / w.tie.count : 0.0;
+    t.per_tie = md.single_body() ? per_count * md.body->length : per_count;
+    for (const Tie& given : ties)
+      if (given.name == w.tie.name) t.ultimate_elongation = tie_resistance(given).ultimate_elongation;
+    out.push_back(t);
+  }
+  return out;
+}
+
 MechanismDynamics build_mechanism_dynamics(const CaseFile& kase, const CandidateResult& cand, const Chain& chain,
                                            const DynamicSpec& d) {
   MechanismDynamics m = build_bare(kase, cand, chain, d);
@@ -230,17 +245,7 @@ MechanismDynamics build_mechanism_dynamics(const CaseFile& kase, const Candidate
   if (d.options.overturn != OverturnCriterion::theta_u)
     throw InputError(kase.file + ": /dynamic/overturn_at: a wall held by tie rods (\"ties\") collapses where its net "
                      "restoring moment with the ties at their strength vanishes; \"half_pi\" is not available with ties");
-  std::vector<DynamicTie> levels;
-  for (const TieWork& w : cand.result.ties) {
-    DynamicTie t;
-    t.level = w.tie;
-    const double per_count = w.tie.count > 0.0 ? 1.0 / w.tie.count : 0.0;
-    t.per_tie = m.single_body() ? per_count * m.body->length : per_count;
-    for (const Tie& given : kase.ties)
-      if (given.name == w.tie.name) t.ultimate_elongation = tie_resistance(given).ultimate_elongation;
-    levels.push_back(t);
-  }
-  return m.with_ties(std::move(levels));
+  return m.with_ties(dynamic_ties(m, cand, kase.ties));
 }
 
 }  // namespace assess

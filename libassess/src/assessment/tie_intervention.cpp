@@ -225,25 +225,6 @@ namespace assess {
 
 namespace {
 
-// The dynamic levels of a kinematic candidate's ties (as build_mechanism_dynamics
-// makes them), the rods' ultimate elongations from the levels' checks.
-std::vector<DynamicTie> dynamic_levels(const MechanismDynamics& md, const CandidateResult& cand,
-                                       const std::vector<TieLevelResult>& checked, const CaseFile& c) {
-  std::vector<DynamicTie> out;
-  for (const TieWork& w : cand.result.ties) {
-    DynamicTie t;
-    t.level = w.tie;
-    const double per_count = w.tie.count > 0.0 ? 1.0 / w.tie.count : 0.0;
-    t.per_tie = md.single_body() ? per_count * md.body->length : per_count;
-    for (const Tie& given : c.ties)
-      if (given.name == w.tie.name) t.ultimate_elongation = tie_resistance(given).ultimate_elongation;
-    for (const TieLevelResult& L : checked)
-      if (L.tie.name == w.tie.name) t.ultimate_elongation = L.resistance.ultimate_elongation;
-    out.push_back(t);
-  }
-  return out;
-}
-
 // One tied analysis as the ties section reports it: over the levels, the
 // largest force per tie, elongation and permanent set; the energy dissipated
 // by one tie of each level, summed.
@@ -286,7 +267,7 @@ TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventi
   const CandidateResult& before = t.before.candidates.at(g);
   const CandidateResult& after = t.after.candidates.at(g);
   const MechanismDynamics other =
-      t.designed ? md.with_ties(dynamic_levels(md, after, t.levels, t.case_after)) : md.with_ties({});
+      t.designed ? md.with_ties(dynamic_ties(md, after, t.case_after.ties)) : md.with_ties({});
   if (!other.applies) {
     R.note = other.note;
     return R;

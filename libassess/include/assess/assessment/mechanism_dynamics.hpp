@@ -84,6 +84,13 @@ struct MechanismDynamics {
   std::string describe() const;
 };
 
+/// The tie levels of a kinematic candidate (`cand.result.ties`) as the model
+/// `md` of its chain holds them: per-tie factors for one body (per metre of
+/// wall) or a chain (whole level), each rod's eps_ud L from the tie of the same
+/// name in `ties` (kinematic/tie_checks.hpp).
+std::vector<DynamicTie> dynamic_ties(const MechanismDynamics& md, const CandidateResult& cand,
+                                     const std::vector<Tie>& ties);
+
 /// Builds the model of `chain` (candidate `cand` of `kase`) for the dynamic
 /// section `d`. Errors name the case file and the JSON path (a two-sided or
 /// "housner"/"one-sided-theory" request for a multi-block chain, a missing
