@@ -83,13 +83,14 @@ const std::string& bt(Lang L, const std::string& key) {
       {"ok", {"soddisfatta", "satisfied"}},
       {"fail", {"non soddisfatta", "not satisfied"}},
       {"chart_title", {"ζE per meccanismo (NTC 2018)", "ζE per mechanism (NTC 2018)"}},
+      {"chart_designed", {"con le catene progettate", "with the designed ties"}},
       {"chart_cap",
        {"Indicatore di rischio ζE = PGA_C/PGA_D di ogni meccanismo, approccio lineare e non lineare, confrontato con 1 "
         "(linea rossa): sotto 1 il meccanismo non sopporta l'azione richiesta allo SLV. Barre oltre il grafico: valore "
-        "scritto; ∞: capacità non raggiunta sotto 20 g.",
+        "scritto; ∞: capacità non raggiunta sotto 20 g. Rombo verde: ζE con le catene progettate (approccio adottato).",
         "Safety index ζE = PGA_C/PGA_D of every mechanism, linear and non-linear approach, against 1 (red line): "
         "below 1 the mechanism does not withstand the action required at SLV. Bars beyond the chart: value written; "
-        "∞: capacity not reached below 20 g."}},
+        "∞: capacity not reached below 20 g. Green diamond: ζE with the designed ties (adopted approach)."}},
       {"sets", {"Accelerogrammi usati", "Records used"}},
       {"sets_text",
        {"I meccanismi con la stessa selezione automatica condividono un solo insieme di accelerogrammi, scelto una volta "
@@ -271,6 +272,7 @@ std::string zeta_chart(Lang L, const BuildingAssessment& b) {
   const double group = plot_w / double(std::max<std::size_t>(n, 1));
   const double bw = std::min(28.0, group * 0.36);
   static const char* colour[] = {"#1f5fbf", "#d9730d"};
+  bool designed = false;
   for (std::size_t i = 0; i < n; ++i) {
     const double x0 = left + group * double(i) + group / 2.0;
     int k = 0;
@@ -288,6 +290,18 @@ std::string zeta_chart(Lang L, const BuildingAssessment& b) {
       }
       ++k;
     }
+    // A design of tie rods: its zetaE after (adopted approach) as a diamond over the bars.
+    const BuildingMechanismResult& r = b.results[i];
+    if (r.ties && r.ties->designed && std::isfinite(r.zeta_after)) {
+      const double y = y_of(r.zeta_after);
+      svg += format("<path d=\"M %.1f %.1f l 6 6 l -6 6 l -6 -6 z\" fill=\"#1a7f37\" stroke=\"#fff\"><title>%s %s: ζE = %s"
+                    "</title></path>\n",
+                    x0, y - 6, esc(b.building.mechanisms[i].id), esc(bt(L, "chart_designed")), esc(fx(r.zeta_after, 3)));
+      if (r.zeta_after > zmax)
+        svg += format("<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" font-size=\"9\" fill=\"#1a7f37\">%s</text>\n",
+                      x0, y + 18, esc(fx(r.zeta_after, 2)));
+      designed = true;
+    }
     svg += format("<a href=\"#%s\"><text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">%s</text></a>\n",
                   esc(b.building.mechanisms[i].id), x0, top + plot_h + 16, esc(b.building.mechanisms[i].id));
   }
@@ -302,6 +316,11 @@ std::string zeta_chart(Lang L, const BuildingAssessment& b) {
     const double lx = left + 8 + 190.0 * k, ly = H - 10;
     svg += format("<rect x=\"%.1f\" y=\"%.1f\" width=\"12\" height=\"10\" fill=\"%s\"/><text x=\"%.1f\" y=\"%.1f\">%s</text>\n",
                   lx, ly - 9, colour[k], lx + 16, ly, esc(bt(L, k == 0 ? "strength" : "displacement")));
+  }
+  if (designed) {
+    const double lx = left + 8 + 380.0, ly = H - 10;
+    svg += format("<path d=\"M %.1f %.1f l 6 6 l -6 6 l -6 -6 z\" fill=\"#1a7f37\"/><text x=\"%.1f\" y=\"%.1f\">%s</text>\n",
+                  lx + 6, ly - 11, lx + 16, ly, esc(bt(L, "chart_designed")));
   }
   return svg + "</svg>";
 }
