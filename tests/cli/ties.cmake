@@ -43,3 +43,11 @@ add_test(NAME cli.ties_given_dynamic_rows
   COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/given_ties_dynamic.py $<TARGET_FILE:assess_cli>
           ${CMAKE_CURRENT_SOURCE_DIR}/cli/ties/church_given_ties.json)
 set_tests_properties(cli.ties_given_dynamic_rows PROPERTIES LABELS cli ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+# Given ties are part of the dynamic model: one-sided only (a two-sided tied
+# wall is not analysed dynamically, and both reports say why); "half_pi" is
+# refused (the tied wall collapses where its envelope vanishes).
+assess_cli_test(ties_given_two_sided ARGS run tests/cli/ties/church_given_ties_two_sided.json
+  PASS "not applicable: the dynamic analysis with tie rods covers one-sided rocking.*dynamic analysis with the tie: not done: the dynamic analysis with tie rods covers one-sided")
+assess_cli_error_test(ties_given_half_pi "ties_bad_dynamic/given_half_pi.json: /dynamic/overturn_at: a wall held by tie rods \\(\"ties\"\\) collapses where its net restoring moment"
+  run tests/cli/ties_bad_dynamic/given_half_pi.json)
+

@@ -69,7 +69,7 @@ std::string facade_text(const FacadeAssessment& a, TextWidth width) {
   if (a.dynamic) {
     o += "\n== Non-linear dynamic analysis (rocking; seed Eq. 1; Circ. 2019 C8.7.1.2.1.9) ==\n";
     if (!a.dynamic_applies) {
-      o += "not applicable: " + a.dynamic_note + "\n";
+      o += para("not applicable: " + a.dynamic_note, 2) + "\n";
     } else {
       const MechanismDynamics& md = *a.mechanism_dynamics;
       if (a.model) {

@@ -90,7 +90,7 @@ nlohmann::json side_json(const KinematicCaseResult& r, double zeta, bool passes)
 }
 
 std::string dynamics_text(const TieDynamicResult& d, bool designed) {
-  if (!d.applies) return d.note.empty() ? "" : "  dynamic analysis with the tie: not done: " + d.note + "\n";
+  if (!d.applies) return d.note.empty() ? "" : wrap_text("  dynamic analysis with the tie: not done: " + d.note, 4) + "\n";
   std::string s = wrap_text(designed ? "  dynamic check before and after the tie (Circ. 2019 C8.7.1.2.1.9; the analyses "
                                        "above repeated with the tie as a one-sided elastic-perfectly-plastic restraint):"
                                      : "  dynamic check before and after the tie (Circ. 2019 C8.7.1.2.1.9; the analyses "
