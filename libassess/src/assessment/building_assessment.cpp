@@ -67,15 +67,6 @@ double ag_capacity_2008(const FacadeAssessment& a, const CandidateResult& cr, co
   return factor * detail::brent_root([&](double ag) { return dc(ag) - target; }, lo, hi, 1e-12);
 }
 
-// Every kinematic check of every candidate satisfied (the reading of
-// TieInterventionResult::passes_before, for a mechanism without ties).
-bool every_kinematic_check_passes(const KinematicCaseResult& r) {
-  for (const CandidateResult& cr : r.candidates)
-    for (const CheckRow& row : cr.checks)
-      if (!row.satisfied || row.no_verdict) return false;
-  return true;
-}
-
 }  // namespace
 
 const SafetyIndex* BuildingMechanismResult::index(const std::string& code, const std::string& approach) const {
@@ -264,7 +255,7 @@ BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& o
       r.passes_after = r.ties->passes_after;
     } else {
       r.zeta_before = r.zeta_after = zeta_E(r.a.kinematic, r.a.kase.method);
-      r.passes_before = r.passes_after = every_kinematic_check_passes(r.a.kinematic);
+      r.passes_before = r.passes_after = every_kinematic_check_satisfied(r.a.kinematic);
     }
     for (const std::string& w : r.a.warnings) out.warnings.push_back(building_path_message(b, b.mechanisms[i], w));
   }

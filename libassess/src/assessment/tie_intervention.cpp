@@ -15,13 +15,6 @@
 namespace assess {
 namespace {
 
-bool all_pass(const KinematicCaseResult& r) {
-  for (const CandidateResult& cr : r.candidates)
-    for (const CheckRow& row : cr.checks)
-      if (!row.satisfied || row.no_verdict) return false;
-  return true;
-}
-
 // The checks' inputs of one candidate (as run_kinematic_case builds them).
 CheckInput check_input(const CaseFile& c, const KinematicCaseResult& r, const CandidateResult& cr) {
   CheckInput in = c.checks;
@@ -73,6 +66,13 @@ std::vector<TieLevelResult> level_results(const CaseFile& c, const KinematicCase
 
 }  // namespace
 
+bool every_kinematic_check_satisfied(const KinematicCaseResult& r) {
+  for (const CandidateResult& cr : r.candidates)
+    for (const CheckRow& row : cr.checks)
+      if (!row.satisfied || row.no_verdict) return false;
+  return true;
+}
+
 bool has_ties(const CaseFile& c) { return !c.ties.empty() || c.tie_design.has_value(); }
 
 double zeta_E(const KinematicCaseResult& r, const std::string& method) {
@@ -96,7 +96,7 @@ TieInterventionResult run_tie_intervention(const CaseFile& c) {
   R.case_before.tie_design.reset();
   if (!R.designed) R.case_before.ties.clear();
   R.before = run_kinematic_case(R.case_before);
-  R.passes_before = all_pass(R.before);
+  R.passes_before = every_kinematic_check_satisfied(R.before);
   R.zetaE_before = zeta_E(R.before, c.method);
 
   if (!R.designed) {
@@ -136,7 +136,7 @@ TieInterventionResult run_tie_intervention(const CaseFile& c) {
     // Every check of the mechanism, and each designed rod's elongation at the
     // largest displacement demand of the governing candidate within eps_ud L.
     auto cheap_pass = [&](const CaseFile& trial, const KinematicCaseResult& after) {
-      if (!all_pass(after)) return false;
+      if (!every_kinematic_check_satisfied(after)) return false;
       const CandidateResult& cr = after.candidates[after.governing];
       const Chain& chain = trial.mechanism.candidates[after.governing].chain;
       double d_demand = -1.0;
@@ -211,7 +211,7 @@ TieInterventionResult run_tie_intervention(const CaseFile& c) {
       R.levels = level_results(trial, R.after, levels, first);
     }
   }
-  R.passes_after = all_pass(R.after) &&
+  R.passes_after = every_kinematic_check_satisfied(R.after) &&
                    std::all_of(R.levels.begin(), R.levels.end(), [](const TieLevelResult& l) { return l.satisfied; });
   R.zetaE_after = zeta_E(R.after, c.method);
   return R;

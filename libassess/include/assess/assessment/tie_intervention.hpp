@@ -88,6 +88,10 @@ struct TieInterventionResult {
   TieDynamicResult dynamics;
 };
 
+/// Every kinematic check of every candidate satisfied (with a verdict): the
+/// reading of passes_before / passes_after.
+bool every_kinematic_check_satisfied(const KinematicCaseResult& r);
+
 /// True when the case has ties or a design of ties.
 bool has_ties(const CaseFile& c);
 
