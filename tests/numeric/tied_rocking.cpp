@@ -35,6 +35,19 @@ constexpr double e_rest = -0.7;
 
 double pulse(double t) { return t < Tp ? -A * std::sin(2.0 * assess::units::pi * t / Tp) : 0.0; }
 
+// The pulse sampled every dt up to t_end (m/s^2).
+std::vector<double> pulse_samples() {
+  std::vector<double> ug;
+  for (double t = 0.0; t <= t_end + 1e-9; t += dt) ug.push_back(pulse(t));
+  return ug;
+}
+
+// The test wall and its one-sided model (restitution e_rest) on `base`.
+assess::RockingBody wall() { return assess::RockingBody::rectangle(t_wall, h_wall, gamma_w); }
+assess::RockingModel one_sided(const assess::RockingBody& body, assess::Foundation base = assess::Foundation::rigid()) {
+  return assess::RockingModel(body, base, assess::Sidedness::one_sided, assess::Restitution::given(e_rest));
+}
+
 struct Ref {
   double theta_max = 0.0, ep = 0.0, max_force = 0.0;
   long impacts = 0;
@@ -156,11 +169,9 @@ Ref reference(const assess::RockingBody& b, const assess::RockingTie& tie, doubl
 }  // namespace
 
 TEST_CASE("tied rocking: rigid block, tie at the top yields under a pulse; independent RK4 with return mapping") {
-  const auto body = assess::RockingBody::rectangle(t_wall, h_wall, gamma_w);
-  const assess::RockingModel model(body, assess::Foundation::rigid(), assess::Sidedness::one_sided,
-                                   assess::Restitution::given(e_rest));
-  std::vector<double> ug;
-  for (double t = 0.0; t <= t_end + 1e-9; t += dt) ug.push_back(pulse(t));
+  const auto body = wall();
+  const assess::RockingModel model = one_sided(body);
+  const std::vector<double> ug = pulse_samples();
   for (double zt : {3.9, 2.5}) {
     assess::RockingTie tie;
     tie.point = {0.0, zt};
@@ -188,9 +199,8 @@ TEST_CASE("tied rocking: rigid block, tie at the top yields under a pulse; indep
 }
 
 TEST_CASE("tied rocking: collapse rotation = where W R sin(alpha - theta) = T_y z(theta) (horizontal tie on the outer face)") {
-  const auto body = assess::RockingBody::rectangle(t_wall, h_wall, gamma_w);
-  const assess::RockingModel model(body, assess::Foundation::rigid(), assess::Sidedness::one_sided,
-                                   assess::Restitution::given(e_rest));
+  const auto body = wall();
+  const assess::RockingModel model = one_sided(body);
   assess::RockingTie tie;
   tie.point = {0.0, 3.0};
   tie.stiffness = 1e6;
@@ -209,12 +219,10 @@ TEST_CASE("tied rocking: collapse rotation = where W R sin(alpha - theta) = T_y 
 }
 
 TEST_CASE("tied rocking: smooth block on a Winkler bed (both contact branches), independent RK4") {
-  const auto body = assess::RockingBody::rectangle(t_wall, h_wall, gamma_w);
+  const auto body = wall();
   const double kw = 2e8;  // N/m^3: theta_cr = W / (2 b^2 k) = 1.8e-3 rad
-  const assess::RockingModel model(body, assess::Foundation::winkler(kw), assess::Sidedness::one_sided,
-                                   assess::Restitution::given(e_rest));
-  std::vector<double> ug;
-  for (double t = 0.0; t <= t_end + 1e-9; t += dt) ug.push_back(pulse(t));
+  const assess::RockingModel model = one_sided(body, assess::Foundation::winkler(kw));
+  const std::vector<double> ug = pulse_samples();
   assess::RockingTie tie;
   tie.point = {-t_wall, 3.6};  // on the inner face
   tie.stiffness = 3e5;
@@ -254,11 +262,9 @@ TEST_CASE("tied chain: a one-block chain with the tie agrees with the tied rocki
   hinge.point = {0.0, 0.0};
   const assess::Chain chain({blk}, {hinge}, {});
   const assess::ChainDynamics cd(chain, assess::Foundation::rigid());
-  const auto body = assess::RockingBody::rectangle(t_wall, h_wall, gamma_w);
-  const assess::RockingModel model(body, assess::Foundation::rigid(), assess::Sidedness::one_sided,
-                                   assess::Restitution::given(e_rest));
-  std::vector<double> ug;
-  for (double t = 0.0; t <= t_end + 1e-9; t += dt) ug.push_back(pulse(t));
+  const auto body = wall();
+  const assess::RockingModel model = one_sided(body);
+  const std::vector<double> ug = pulse_samples();
   assess::RockingTie tie;
   tie.point = {0.0, 2.5};
   tie.stiffness = 2e5;
@@ -291,11 +297,9 @@ TEST_CASE("tied chain: a one-block chain with the tie agrees with the tied rocki
 }
 
 TEST_CASE("tied rocking: two tie levels (one inclined, one with pretension) on the rigid block, independent RK4") {
-  const auto body = assess::RockingBody::rectangle(t_wall, h_wall, gamma_w);
-  const assess::RockingModel model(body, assess::Foundation::rigid(), assess::Sidedness::one_sided,
-                                   assess::Restitution::given(e_rest));
-  std::vector<double> ug;
-  for (double t = 0.0; t <= t_end + 1e-9; t += dt) ug.push_back(pulse(t));
+  const auto body = wall();
+  const assess::RockingModel model = one_sided(body);
+  const std::vector<double> ug = pulse_samples();
   assess::RockingTie a, c;
   a.point = {0.0, 3.8};
   a.stiffness = 1.5e5;
@@ -331,9 +335,8 @@ TEST_CASE("tied rocking, front-end form: the end rule (analysis_end.hpp) ends ea
   // end (the pulse plus the 30 s cap) with every impact. Peak, rod outcome
   // and overturning must be the same; the early end must be before the cap.
   constexpr double tol_same = 1e-9;  // relative (m for e_p: absolute 1e-12): the same trajectory up to the early end
-  const auto body = assess::RockingBody::rectangle(t_wall, h_wall, gamma_w);
-  const assess::RockingModel model(body, assess::Foundation::rigid(), assess::Sidedness::one_sided,
-                                   assess::Restitution::given(e_rest));
+  const auto body = wall();
+  const assess::RockingModel model = one_sided(body);
   assess::Record rec;
   rec.dt = dt;
   for (double t = 0.0; t <= Tp + 1e-9; t += dt) rec.acc.push_back(pulse(t));
@@ -372,9 +375,8 @@ TEST_CASE("tied envelope: collapse rotation and energy capacity of a rigid block
   // face at height z, pulling inward at its strength T); its work from 0 to theta_c:
   //   W R (cos(alpha - theta_c) - cos alpha) + T z sin(theta_c).
   constexpr double tol_capacity = 1e-7;  // relative: trapezoids on 4000 intervals of a smooth curve
-  const auto body = assess::RockingBody::rectangle(t_wall, h_wall, gamma_w);
-  const assess::RockingModel model(body, assess::Foundation::rigid(), assess::Sidedness::one_sided,
-                                   assess::Restitution::given(e_rest));
+  const auto body = wall();
+  const assess::RockingModel model = one_sided(body);
   assess::RockingTie tie;
   tie.point = {0.0, 3.0};
   tie.stiffness = 1e6;

@@ -23,14 +23,26 @@ std::string fmt(const char* f, double v) {
   std::snprintf(buf, sizeof buf, f, v);
   return buf;
 }
+
+// The tie levels on the chain (whole levels, N and N/m).
+std::vector<TieRestraint> chain_levels(const std::vector<DynamicTie>& ties) {
+  std::vector<TieRestraint> levels;
+  for (const DynamicTie& t : ties) levels.push_back(t.level);
+  return levels;
+}
+
+// ", held by N tie level(s) (...)": the ties in the model's description.
+std::string held_by(std::size_t n) {
+  return " held by " + std::to_string(n) + " tie level" + (n > 1 ? "s" : "") +
+         " (one-sided elastic-perfectly-plastic restraint, docs/theory/ties.md §6)";
+}
+
 }  // namespace
 
 RockingResult MechanismDynamics::analyse(std::size_t ie, const Record& in, const RockingOptions& options) const {
   if (tied()) {
     if (body) return analyse_tied(rocking.at(ie), body_ties, in, options);
-    std::vector<TieRestraint> levels;
-    for (const DynamicTie& t : ties) levels.push_back(t.level);
-    return analyse_tied(*chain, levels, e.at(ie), in, options);
+    return analyse_tied(*chain, chain_levels(ties), e.at(ie), in, options);
   }
   if (body) return assess::analyse(rocking.at(ie), in, options);
   return analyse_chain(*chain, in, options, e.at(ie), sidedness);
@@ -62,9 +74,7 @@ MechanismDynamics MechanismDynamics::with_ties(std::vector<DynamicTie> levels) c
     }
     m.tied_envelope = assess::tied_envelope(rocking.front(), m.body_ties);
   } else {
-    std::vector<TieRestraint> levels;
-    for (const DynamicTie& t : m.ties) levels.push_back(t.level);
-    m.tied_envelope = assess::tied_envelope(*chain, levels);
+    m.tied_envelope = assess::tied_envelope(*chain, chain_levels(m.ties));
   }
   return m;
 }
@@ -103,20 +113,15 @@ double MechanismDynamics::restoring(double q) const {
 
 std::string MechanismDynamics::describe() const {
   std::string s;
-  if (tied() && body) {
-    s = "one body rotating about its ground hinge (rocking model, seed Eq. 1) held by " + std::to_string(ties.size()) +
-        " tie level" + (ties.size() > 1 ? "s" : "") +
-        " (one-sided elastic-perfectly-plastic restraint, docs/theory/ties.md §6)";
-  } else if (body) {
+  if (body) {
     s = "one body rotating about its ground hinge (rocking model, seed Eq. 1)";
+    if (tied()) s += held_by(ties.size());
   } else {
     s = std::string(sidedness == Sidedness::two_sided ? "two-sided" : "one-sided") + " chain of " +
         std::to_string(chain->chain().blocks().size()) +
         " blocks, one coordinate q = rotation of block '" + chain->chain().blocks()[std::size_t(chain->reference_block())].name +
         "' (Lagrange's equation, docs/theory/chain-dynamics.md), q_u = " + fmt("%.5f", chain->q_u()) + " rad";
-    if (tied())
-      s += ", held by " + std::to_string(ties.size()) + " tie level" + (ties.size() > 1 ? "s" : "") +
-           " (one-sided elastic-perfectly-plastic restraint, docs/theory/ties.md §6)";
+    if (tied()) s += "," + held_by(ties.size());
   }
   if (Z > 0.0 || floor_input) {
     s += "; base at Z = " + fmt("%.2f", Z) + " m, ";
