@@ -375,13 +375,49 @@ std::vector<std::string> input_warnings(const nlohmann::json& mech, const std::s
 }
 
 
-// ---- Issue 23: tie rods ("ties", "design") ---------------------------------
-// File units: mm (rod, anchor), mm^2, MPa, kN, m (point, lengths, spacing);
-// SI inside. docs/user/case-file.md §Ties.
+// ---- Issues 23, 29: tie rods ("ties", "design") -----------------------------
+// File units: mm (rod, thread, anchor), mm^2, MPa, kN, m (point, lengths,
+// layout); SI inside. Bounds: tie_catalogue::bounds. docs/user/case-file.md §Ties.
 
-double grade_fyk(const JsonNode& n, const std::string& key, std::string& grade) {
+namespace TB = tie_catalogue::bounds;
+
+// A number as printed in the messages (6 significant digits, no trailing zeros).
+std::string tnum(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+const tie_catalogue::SteelGrade& grade_of(const JsonNode& n, const std::string& key, std::string& grade) {
   grade = n.find(key) ? n.choice(key, {"S235", "S275", "S355", "B450C"}) : "S275";
-  return tie_catalogue::find_grade(grade)->fyk;
+  return *tie_catalogue::find_grade(grade);
+}
+
+// The layout of a level along its wall: its length and either the count of
+// ties or their largest spacing (count = ceil(length / spacing)); the edge
+// distance (default: half the tributary length).
+TieLayout parse_layout(const JsonNode& t) {
+  TieLayout L;
+  L.wall_length = t.number("wall_length_m", "m", TB::wall_length_min, TB::wall_length_max);
+  if (t.has("count") == t.has("spacing_m"))
+    t.fail("give exactly one of \"count\" (ties on the wall, an integer) or \"spacing_m\" (their largest spacing, m)");
+  if (t.has("count")) {
+    L.count = t.integer("count", 1, TB::count_max);
+  } else {
+    const double s = t.number("spacing_m", "m", TB::spacing_min, TB::spacing_max);
+    const double n = std::ceil(L.wall_length / s - 1e-9);
+    if (n > TB::count_max)
+      t.at("spacing_m").fail("gives " + std::to_string(static_cast<long long>(n)) + " ties on the " +
+                             tnum(L.wall_length) + " m wall: expected at most " + std::to_string(TB::count_max));
+    L.count = std::max(1, static_cast<int>(n));
+  }
+  const double tributary = L.wall_length / L.count;
+  L.edge_distance = t.number_or("edge_distance_m", tributary / 2.0, "m", 0.0, L.wall_length / 2.0);
+  if (!(L.edge_distance > 0.0)) t.at("edge_distance_m").fail("expected > 0 m");
+  if (L.count > 1 && !(L.centre_spacing() >= TB::spacing_min))
+    t.fail("the layout puts the ties " + tnum(L.centre_spacing()) + " m apart: expected at least " +
+           tnum(TB::spacing_min) + " m (wall_length_m, count, edge_distance_m)");
+  return L;
 }
 
 // The fields a tie level shares with a level to design (no rod, no anchor).
@@ -391,58 +427,109 @@ void parse_tie_common(const JsonNode& t, Tie& tie, double FC, std::size_t index)
   if (t.find("block")) tie.block = t.integer("block", 0, 1000000);
   if (t.find("direction")) {
     tie.direction = t.at("direction").as_point("-");
-    if (!(tie.direction.norm() > 0.0)) t.at("direction").fail("expected a non-zero direction [dx, dz] (-), e.g. [-1, 0] inward");
+    if (!(tie.direction.norm() > 1e-9) || !tie.direction.allFinite())
+      t.at("direction").fail("expected a non-zero direction [dx, dz] (-), e.g. [-1, 0] inward");
     tie.direction.normalize();
   }
-  tie.free_length = t.positive("free_length_m", "m");
+  tie.free_length = t.number("free_length_m", "m", TB::free_length_min, TB::free_length_max);
   const JsonNode m = t.at("masonry");
   m.allow_only({"fm_MPa", "tau_MPa", "thickness_m", "FC", "gamma_M"});
-  tie.masonry.fm = m.positive("fm_MPa", "MPa") * 1e6;
-  tie.masonry.tau = m.positive("tau_MPa", "MPa") * 1e6;
-  tie.masonry.thickness = m.positive("thickness_m", "m");
+  tie.masonry.fm = m.number("fm_MPa", "MPa", TB::fm_min / 1e6, TB::fm_max / 1e6) * 1e6;
+  tie.masonry.tau = m.number("tau_MPa", "MPa", TB::tau_min / 1e6, TB::tau_max / 1e6) * 1e6;
+  tie.masonry.thickness = m.number("thickness_m", "m", TB::thickness_min, TB::thickness_max);
   tie.masonry.FC = m.number_or("FC", FC, "-", 1.0, 10.0);
   tie.masonry.gamma_M = m.number_or("gamma_M", tie_catalogue::masonry_gamma_M, "-", 1.0, 10.0);
-  tie.spacing = t.positive("spacing_m", "m");
-  tie.pretension = t.number_or("pretension_kN", 0.0, "kN", 0.0) * kN;
+  tie.layout = parse_layout(t);
+  tie.spacing = tie.layout.wall_length / tie.layout.count;
+  tie.pretension = t.number_or("pretension_kN", 0.0, "kN", 0.0, TB::pretension_max / kN) * kN;
+}
+
+// The end of a rod: its ISO metric thread (the table of tie_catalogue.hpp).
+void parse_rod_ends(const JsonNode& r, TieRod& rod) {
+  const std::string ends = r.find("ends") ? r.choice("ends", {"threaded", "upset", "welded"}) : "threaded";
+  rod.ends = ends == "upset" ? TieEnds::Upset : ends == "welded" ? TieEnds::Welded : TieEnds::Threaded;
+  double d = 0.0;
+  if (r.has("thread_mm")) {
+    d = r.number("thread_mm", "mm", 1.0, 1000.0) * 1e-3;
+  } else if (rod.ends == TieEnds::Threaded && rod.diameter > 0.0) {
+    d = rod.diameter;  // threaded on the rod itself
+  } else {
+    r.fail(std::string("missing required key \"thread_mm\": the nominal diameter (mm) of the ISO metric thread of ") +
+           (rod.ends == TieEnds::Threaded ? "the rod's ends (a rod given by its area)" : "its " + ends + " ends"));
+  }
+  const tie_catalogue::Thread* th = tie_catalogue::find_thread(d);
+  if (!th) {
+    std::string list;
+    for (const tie_catalogue::Thread& x : tie_catalogue::threads)
+      list += (list.empty() ? "" : ", ") + std::to_string(static_cast<int>(std::lround(x.d * 1e3)));
+    (r.has("thread_mm") ? r.at("thread_mm") : r.at("diameter_mm"))
+        .fail("no ISO metric coarse thread M" + tnum(d * 1e3) + " in the table (mm: " + list +
+              "); give \"thread_mm\" with \"ends\": \"upset\" or \"welded\" for an end larger than the rod");
+  }
+  if (rod.ends == TieEnds::Threaded && rod.diameter > 0.0 && std::fabs(th->d - rod.diameter) > 1e-4)
+    r.at("thread_mm").fail("a rod threaded at its ends has the thread of its own diameter (" +
+                           tnum(rod.diameter * 1e3) + " mm); an end of another size is \"upset\" or \"welded\"");
+  if (rod.ends != TieEnds::Threaded && rod.diameter > 0.0 && th->d < rod.diameter - 1e-4)
+    r.at("thread_mm").fail("expected an " + ends + " end at least as large as the rod (" + tnum(rod.diameter * 1e3) +
+                           " mm)");
+  rod.thread_diameter = th->d;
+  rod.thread_area = th->As;
+  rod.nut_width = th->s;
 }
 
 Tie parse_tie(const JsonNode& t, double FC, std::size_t index) {
-  t.allow_only({"name", "point", "block", "direction", "rod", "free_length_m", "anchor", "masonry", "spacing_m",
-                "pretension_kN"});
+  t.allow_only({"name", "existing", "point", "block", "direction", "rod", "free_length_m", "anchor", "masonry",
+                "wall_length_m", "count", "spacing_m", "edge_distance_m", "pretension_kN"});
   Tie tie;
+  tie.existing = t.boolean_or("existing", false);
   parse_tie_common(t, tie, FC, index);
   const JsonNode r = t.at("rod");
-  r.allow_only({"diameter_mm", "area_mm2", "grade", "fyk_MPa", "gamma_M0"});
+  r.allow_only({"diameter_mm", "area_mm2", "grade", "fyk_MPa", "ftk_MPa", "gamma_M0", "ends", "thread_mm"});
   if (r.has("diameter_mm") == r.has("area_mm2")) r.fail("give exactly one of \"diameter_mm\" (mm) or \"area_mm2\" (mm^2)");
   if (r.has("diameter_mm")) {
-    tie.rod.diameter = r.positive("diameter_mm", "mm") * 1e-3;
+    tie.rod.diameter = r.number("diameter_mm", "mm", TB::rod_diameter_min * 1e3, TB::rod_diameter_max * 1e3) * 1e-3;
     tie.rod.area = units::pi * tie.rod.diameter * tie.rod.diameter / 4.0;
   } else {
-    tie.rod.area = r.positive("area_mm2", "mm^2") * 1e-6;
+    tie.rod.area = r.number("area_mm2", "mm^2", TB::rod_area_min * 1e6, TB::rod_area_max * 1e6) * 1e-6;
   }
-  tie.rod.fyk = grade_fyk(r, "grade", tie.rod.grade);
-  if (r.find("fyk_MPa")) tie.rod.fyk = r.positive("fyk_MPa", "MPa") * 1e6;
+  const tie_catalogue::SteelGrade& g = grade_of(r, "grade", tie.rod.grade);
+  tie.rod.fyk = g.fyk;
+  tie.rod.ftk = g.ftk;
+  tie.rod.elongation = g.elongation;
+  if (r.find("fyk_MPa")) tie.rod.fyk = r.number("fyk_MPa", "MPa", TB::fyk_min / 1e6, TB::fyk_max / 1e6) * 1e6;
+  if (r.find("ftk_MPa")) tie.rod.ftk = r.number("ftk_MPa", "MPa", tie.rod.fyk / 1e6, 2.0 * TB::fyk_max / 1e6) * 1e6;
+  if (!(tie.rod.ftk >= tie.rod.fyk))
+    r.fail("ftk = " + tnum(tie.rod.ftk / 1e6) + " MPa below fyk = " + tnum(tie.rod.fyk / 1e6) +
+           " MPa: give \"ftk_MPa\" with \"fyk_MPa\"");
   tie.rod.gamma_M0 = r.number_or("gamma_M0", tie_catalogue::gamma_M0, "-", 1.0, 10.0);
   tie.rod.E = tie_catalogue::steel_E;
+  parse_rod_ends(r, tie.rod);
   const JsonNode a = t.at("anchor");
   const std::string type = a.choice("type", {"plate", "bar"});
   if (type == "plate") {
     a.allow_only({"type", "a_mm", "b_mm", "t_mm", "grade"});
     tie.anchor.type = AnchorType::Plate;
-    tie.anchor.a = a.positive("a_mm", "mm") * 1e-3;
-    tie.anchor.b = a.find("b_mm") ? a.positive("b_mm", "mm") * 1e-3 : tie.anchor.a;
-    tie.anchor.t = a.positive("t_mm", "mm") * 1e-3;
+    tie.anchor.a = a.number("a_mm", "mm", TB::plate_side_min * 1e3, TB::plate_side_max * 1e3) * 1e-3;
+    tie.anchor.b = a.find("b_mm") ? a.number("b_mm", "mm", TB::plate_side_min * 1e3, TB::plate_side_max * 1e3) * 1e-3
+                                  : tie.anchor.a;
+    tie.anchor.t = a.number("t_mm", "mm", TB::plate_t_min * 1e3, TB::plate_t_max * 1e3) * 1e-3;
+    if (!(std::min(tie.anchor.a, tie.anchor.b) > tie.rod.nut_width))
+      a.fail("a plate of " + tnum(tie.anchor.a * 1e3) + " x " + tnum(tie.anchor.b * 1e3) +
+             " mm is no wider than its nut (" + tnum(tie.rod.nut_width * 1e3) +
+             " mm across flats, ISO 4032): expected a plate wider than the nut");
   } else {
     a.allow_only({"type", "length_mm", "diameter_mm", "grade"});
     tie.anchor.type = AnchorType::Bar;
-    tie.anchor.a = a.positive("length_mm", "mm") * 1e-3;
-    tie.anchor.b = a.positive("diameter_mm", "mm") * 1e-3;
+    tie.anchor.a = a.number("length_mm", "mm", TB::plate_side_min * 1e3, TB::plate_side_max * 1e3) * 1e-3;
+    tie.anchor.b = a.number("diameter_mm", "mm", TB::plate_side_min * 1e3, TB::plate_side_max * 1e3) * 1e-3;
   }
-  tie.anchor.fyk = grade_fyk(a, "grade", tie.anchor.grade);
+  tie.anchor.fyk = grade_of(a, "grade", tie.anchor.grade).fyk;
   try {
-    tie.validate();
+    const TieResistance res = tie_resistance(tie);  // validate() and the pretension below the strength
+    (void)res;
   } catch (const InputError& e) {
-    t.fail(e.what());
+    (t.has("pretension_kN") && std::string(e.what()).find("pretension") != std::string::npos ? t.at("pretension_kN") : t)
+        .fail(e.what());
   }
   return tie;
 }
@@ -450,13 +537,15 @@ Tie parse_tie(const JsonNode& t, double FC, std::size_t index) {
 TieDesignSpec parse_tie_design(const JsonNode& d, double FC) {
   d.allow_only({"ties"});
   const JsonNode t = d.at("ties");
-  t.allow_only({"levels", "grades"});
+  t.allow_only({"levels", "grades", "ends", "min_rod_diameter_mm"});
   TieDesignSpec spec;
   std::size_t i = 0;
   for (const JsonNode& l : t.array("levels", 1)) {
-    l.allow_only({"name", "point", "block", "direction", "free_length_m", "masonry", "spacing_m", "pretension_kN"});
+    l.allow_only({"name", "point", "block", "direction", "free_length_m", "masonry", "wall_length_m", "count",
+                  "spacing_m", "edge_distance_m", "pretension_kN"});
     Tie tie;
     parse_tie_common(l, tie, FC, i++);
+    if (!l.find("name")) tie.name = "new tie " + std::to_string(i);
     spec.levels.push_back(tie);
   }
   if (t.find("grades")) {
@@ -467,25 +556,41 @@ TieDesignSpec parse_tie_design(const JsonNode& d, double FC) {
       spec.grades.push_back(s);
     }
   }
+  if (t.find("ends")) spec.ends = t.choice("ends", {"threaded", "upset"}) == "upset" ? TieEnds::Upset : TieEnds::Threaded;
+  spec.min_rod_diameter = t.number_or("min_rod_diameter_mm", tie_catalogue::min_rod_diameter * 1e3, "mm",
+                                      tie_catalogue::rod_diameters.front() * 1e3,
+                                      tie_catalogue::rod_diameters.back() * 1e3) *
+                          1e-3;
   return spec;
 }
 
-// Every level must hold a moving block of at least one candidate.
-void check_ties_hold(const JsonNode& arr, const std::vector<Tie>& ties, const MechanismSet& set) {
+// Every level must hold a moving block of at least one candidate, and the
+// wall it is laid along must be at least as long as the candidates that hold it.
+void check_ties_hold(const JsonNode& arr, const std::vector<Tie>& ties, const std::vector<std::size_t>& index,
+                     const MechanismSet& set) {
   for (std::size_t i = 0; i < ties.size(); ++i) {
+    const JsonNode node = arr.at(index[i]);
     bool holds = false;
     for (const MechanismCandidate& m : set.candidates) {
+      int b = -1;
       try {
-        if (tie_block(m.chain, ties[i].block, ties[i].point) >= 0) holds = true;
+        b = tie_block(m.chain, ties[i].block, ties[i].point);
       } catch (const InputError& e) {
-        arr.at(i).fail(e.what());
+        node.fail(e.what());
       }
+      if (b < 0) continue;
+      holds = true;
+      const double length = m.chain.blocks()[static_cast<std::size_t>(b)].length;
+      if (length > ties[i].layout.wall_length * (1.0 + 1e-9))
+        node.at("wall_length_m")
+            .fail("the wall is " + tnum(ties[i].layout.wall_length) + " m long, shorter than the mechanism (" +
+                  tnum(length) + " m out of plane): expected the length of the wall the ties are laid along");
     }
     if (!holds)
-      arr.at(i).at("point").fail("the anchor point (" + std::to_string(ties[i].point.x()) + ", " +
-                                 std::to_string(ties[i].point.y()) +
-                                 ") m is on no moving block of the mechanism (the wall's outer face is x = 0, "
-                                 "the wall at x < 0, z up from the foundation)");
+      node.at("point").fail("the anchor point (" + tnum(ties[i].point.x()) + ", " +
+                            tnum(ties[i].point.y()) +
+                            ") m is on no moving block of the mechanism (the wall's outer face is x = 0, "
+                            "the wall at x < 0, z up from the foundation)");
   }
 }
 // ---- end issue 23 -------------------------------------------------------------
@@ -570,16 +675,47 @@ CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
     c.checks.damping_SLV_pct = a->number_or("damping_SLV_pct", code_rules::mechanism_damping_SLV_pct, "%", 0.0);
     c.checks.damping_SLC_pct = a->number_or("damping_SLC_pct", code_rules::mechanism_damping_SLC_pct, "%", 0.0);
   }
-  // Issue 23: tie levels and the design of ties (after FC, their masonry's default).
+  // Issues 23, 29: tie levels (after FC, their masonry's default): those marked
+  // "existing" act in every analysis of the case (stato di fatto); the others,
+  // and a design's, are the intervention.
+  std::size_t levels = 0;
   if (root.find("ties")) {
-    std::size_t i = 0;
-    for (const JsonNode& t : root.array("ties")) c.ties.push_back(parse_tie(t, c.options.FC, i++));
-    check_ties_hold(root.at("ties"), c.ties, c.mechanism);
+    const std::vector<JsonNode> arr = root.array("ties");
+    if (arr.size() > static_cast<std::size_t>(TB::levels_max))
+      root.at("ties").fail(std::to_string(arr.size()) + " tie levels: expected at most " +
+                           std::to_string(TB::levels_max) + " (each level is a row of ties along the wall: \"count\")");
+    std::vector<std::size_t> idx_old, idx_new;
+    for (std::size_t i = 0; i < arr.size(); ++i) {
+      Tie t = parse_tie(arr[i], c.options.FC, i);
+      (t.existing ? idx_old : idx_new).push_back(i);
+      (t.existing ? c.ties : c.new_ties).push_back(std::move(t));
+    }
+    for (const auto* v : {&c.ties, &c.new_ties})
+      for (const Tie& t : *v)
+        for (const auto* w : {&c.ties, &c.new_ties})
+          for (const Tie& u : *w)
+            if (&t != &u && t.name == u.name)
+              root.at("ties").fail("two tie levels named \"" + t.name + "\": expected distinct names");
+    check_ties_hold(root.at("ties"), c.ties, idx_old, c.mechanism);
+    check_ties_hold(root.at("ties"), c.new_ties, idx_new, c.mechanism);
+    levels += arr.size();
   }
   if (const auto d = root.find("design")) {
     c.tie_design = parse_tie_design(*d, c.options.FC);
-    check_ties_hold(d->at("ties").at("levels"), c.tie_design->levels, c.mechanism);
+    std::vector<std::size_t> idx(c.tie_design->levels.size());
+    for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = i;
+    check_ties_hold(d->at("ties").at("levels"), c.tie_design->levels, idx, c.mechanism);
+    levels += idx.size();
+    for (const Tie& t : c.tie_design->levels)
+      for (const auto* v : {&c.ties, &c.new_ties})
+        for (const Tie& u : *v)
+          if (t.name == u.name)
+            d->at("ties").at("levels").fail("a level to design named \"" + t.name +
+                                            "\" like a given tie level: expected distinct names");
   }
+  if (levels > static_cast<std::size_t>(TB::levels_max))
+    root.fail(std::to_string(levels) + " tie levels in \"ties\" and \"design\": expected at most " +
+              std::to_string(TB::levels_max));
   c.warnings = input_warnings(doc.at("mechanism"), file);
   // Hook for the façade issue (dynamic rocking): kept raw, parsed there.
   if (root.has("dynamic")) c.dynamic = doc.at("dynamic");

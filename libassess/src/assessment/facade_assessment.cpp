@@ -240,10 +240,18 @@ std::vector<DynamicRun> dynamic_runs(const FacadeAssessment& a, const MechanismD
     // theta >= 0); for two-sided, |theta| on either side (symmetric body).
     run.d_control = md.control_displacement(kin, run.result.theta_max_side * run.result.theta_max);
     run.d_star = run.d_control * kin.d_star_per_dk;
+    // Issue 29: a tie level that breaks leaves the wall bare (the analysis goes
+    // on): d0 is then the bare wall's; the rupture is reported, and the ties'
+    // checks fail on it (tie_intervention.cpp), the wall's check on its motion.
     run.ruptured = md.ruptured(run.result);
-    run.collapse = run.result.overturned || run.d_control >= kin.dk0 || run.ruptured;
+    const double dk0 = run.ruptured && kin.without_ties ? std::min(kin.dk0, kin.without_ties->dk0) : kin.dk0;
+    run.collapse = run.result.overturned || run.d_control >= dk0;
   });
   return runs;
+}
+
+double dynamic_d_SLV(const KinematicResult& kin) {
+  return kin.without_ties ? std::max(kin.d_SLV, kin.without_ties->d_SLV) : kin.d_SLV;
 }
 
 std::vector<RestitutionSummary> summarise_runs(const std::vector<DynamicRun>& runs, const std::vector<double>& e,
@@ -300,8 +308,9 @@ std::vector<RestitutionSummary> summarise_runs(const std::vector<DynamicRun>& ru
       s.d_demand = s.max_d_star;
     }
     s.no_verdict = s.rule == "none" && !s.any_collapse && s.failed == 0;
-    s.dc_slv = kin.d_SLV > 0 ? s.d_demand / kin.d_SLV : 0.0;
-    s.slv_satisfied = s.failed == 0 && !s.any_collapse && !s.no_verdict && s.d_demand <= kin.d_SLV;
+    const double d_SLV = dynamic_d_SLV(kin);
+    s.dc_slv = d_SLV > 0 ? s.d_demand / d_SLV : 0.0;
+    s.slv_satisfied = s.failed == 0 && !s.any_collapse && !s.no_verdict && s.d_demand <= d_SLV;
     out.push_back(s);
   }
   return out;
@@ -468,7 +477,7 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
       row.note += "; " + std::to_string(s.failed) + " of " + std::to_string(s.analyses) +
                   " analyses FAILED (not verified; left out of the statistics)";
     row.demand = s.d_demand;
-    row.capacity = kin.d_SLV;
+    row.capacity = dynamic_d_SLV(kin);
     row.unit = "m";
     row.dc = s.dc_slv;
     row.satisfied = s.slv_satisfied;

@@ -70,6 +70,8 @@ MechanismDynamics MechanismDynamics::with_ties(std::vector<DynamicTie> levels) c
       tie.stiffness = r.stiffness / body->length;
       tie.capacity = r.capacity / body->length;
       tie.pretension = std::min(r.pretension, r.capacity) / body->length;
+      tie.ductile = r.ductile;
+      tie.ultimate_elongation = r.ultimate_elongation;
       m.body_ties.push_back(tie);
     }
     m.tied_envelope = assess::tied_envelope(rocking.front(), m.body_ties);
@@ -80,8 +82,8 @@ MechanismDynamics MechanismDynamics::with_ties(std::vector<DynamicTie> levels) c
 }
 
 bool MechanismDynamics::ruptured(const RockingResult& r) const {
-  for (std::size_t i = 0; i < r.ties.size() && i < ties.size(); ++i)
-    if (r.ties[i].max_elongation > ties[i].ultimate_elongation) return true;
+  for (const TiedLevelResult& x : r.ties)
+    if (x.broken) return true;
   return false;
 }
 
@@ -237,7 +239,7 @@ std::vector<DynamicTie> dynamic_ties(const MechanismDynamics& md, const Candidat
     const double per_count = w.tie.count > 0.0 ? 1.0 / w.tie.count : 0.0;
     t.per_tie = md.single_body() ? per_count * md.body->length : per_count;
     for (const Tie& given : ties)
-      if (given.name == w.tie.name) t.ultimate_elongation = tie_resistance(given).ultimate_elongation;
+      if (given.name == w.tie.name) t.tie = given;
     out.push_back(t);
   }
   return out;

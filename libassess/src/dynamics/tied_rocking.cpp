@@ -47,6 +47,8 @@ namespace {
 // (the generalised force of a force T is -T de/dq, since e = -d . (p - p0)).
 struct Level {
   double k = 0.0, cap = 0.0, P0 = 0.0;
+  bool brittle = false;  // not ductile: breaks when its force reaches cap (issue 29)
+  double e_u = std::numeric_limits<double>::infinity();  // ductile: breaks at this elongation (m)
   std::function<double(double)> e, de;
 };
 
@@ -120,11 +122,16 @@ struct Settings {
   bool history = false;
 };
 
+// The collapse coordinate of the body held by the intact levels (`broken[i]`
+// true: level i lost), given the last coordinate of its tables.
+using CollapseOf = std::function<double(const std::vector<char>& broken)>;
+
 class TiedSystem : public HybridSystem {
  public:
   TiedSystem(const Body& b, const std::vector<Level>& lv, const GroundMotion& motion, double q_c, const Works& works,
-             const Settings& set, RockingResult& out)
-      : b_(b), lv_(lv), motion_(motion), q_c_(q_c), works_(works), set_(set), out_(out) {
+             const Settings& set, RockingResult& out, CollapseOf collapse_of)
+      : b_(b), lv_(lv), motion_(motion), q_c_(q_c), works_(works), set_(set), out_(out),
+        collapse_of_(std::move(collapse_of)), broken_(lv.size(), 0) {
     out_.ties.assign(lv_.size(), TiedLevelResult{});
   }
 
@@ -132,6 +139,7 @@ class TiedSystem : public HybridSystem {
   static bool yielding(int mode, std::size_t i) { return mode >= 0 && ((mode >> i) & 1); }
   double force(std::size_t i, const double* y, int mode) const {
     const Level& L = lv_[i];
+    if (broken_[i]) return 0.0;
     if (mode == kRest) return std::min(L.P0, L.cap);
     if (yielding(mode, i)) return L.cap;
     return std::min(std::max(L.P0 + L.k * (L.e(y[0]) - y[2 + i]), 0.0), L.cap);
@@ -139,7 +147,8 @@ class TiedSystem : public HybridSystem {
   // Lift-off margin at rest (rad/s^2) under ug'', with the pretensions' generalised force.
   double lift_margin(double ug) const {
     double Q = 0.0;
-    for (const Level& L : lv_) Q -= std::min(L.P0, L.cap) * L.de(0.0);
+    for (std::size_t i = 0; i < lv_.size(); ++i)
+      if (!broken_[i]) Q -= std::min(lv_[i].P0, lv_[i].cap) * lv_[i].de(0.0);
     return b_.lift(ug) + Q / b_.inertia(0.0);
   }
   bool rhs(double t, const double* y, int mode, double* f) const override {
@@ -158,20 +167,33 @@ class TiedSystem : public HybridSystem {
     f[1] = b_.acc(th, y[1], motion_.acc(t)) + Q / b_.inertia(th);
     return std::isfinite(f[1]);
   }
-  std::size_t event_count(int mode) const override { return mode == kRest ? 1 : 2 + lv_.size(); }
+  // Events: impact, collapse, then per level its strength (yield of a ductile
+  // level, rupture of one that is not) or unloading, then per level the
+  // rupture of a ductile rod at its ultimate elongation. A broken level's
+  // events are constants that never cross.
+  std::size_t event_count(int mode) const override { return mode == kRest ? 1 : 2 + 2 * lv_.size(); }
   double event(std::size_t k, double t, const double* y, int mode) const override {
     if (mode == kRest) return lift_margin(motion_.acc(t));
     if (k == 0) return y[0];          // impact at q = 0 (falling)
     if (k == 1) return y[0] - q_c_;   // collapse (rising)
+    const std::size_t n = lv_.size();
+    if (k >= 2 + n) {                 // rupture by elongation (rising)
+      const std::size_t i = k - 2 - n;
+      const Level& L = lv_[i];
+      if (broken_[i] || L.brittle || !std::isfinite(L.e_u)) return -1.0;
+      return L.e(y[0]) - L.e_u;
+    }
     const std::size_t i = k - 2;
+    if (broken_[i]) return 1.0;
     const Level& L = lv_[i];
-    if (!yielding(mode, i)) return L.P0 + L.k * (L.e(y[0]) - y[2 + i]) - L.cap;  // yield (rising)
+    if (!yielding(mode, i)) return L.P0 + L.k * (L.e(y[0]) - y[2 + i]) - L.cap;  // strength (rising)
     return L.de(y[0]) * y[1];                                                   // unloading (falling)
   }
   EventDirection event_direction(std::size_t k, int mode) const override {
     if (mode == kRest) return EventDirection::rising;
     if (k == 0) return EventDirection::falling;
     if (k == 1) return EventDirection::rising;
+    if (k >= 2 + lv_.size()) return EventDirection::rising;
     return yielding(mode, k - 2) ? EventDirection::falling : EventDirection::rising;
   }
   EventAction on_event(std::size_t k, double t, double* y, int& mode) override {
@@ -209,18 +231,33 @@ class TiedSystem : public HybridSystem {
       push_history(t, y);
       return EventAction::stop;
     }
-    // A yield or unloading event; the state just past it also decides the
+    if (k >= 2 + lv_.size()) {  // a ductile rod at its ultimate elongation
+      const std::size_t i = k - 2 - lv_.size();
+      mode &= ~(1 << i);
+      return break_level(i, t, y, true);
+    }
+    // A strength or unloading event; the state just past it also decides the
     // other levels, whose event functions may cross zero at the same instant
     // (every yielding rod unloads when theta' changes sign).
     const std::size_t i = k - 2;
     const bool unloading = yielding(mode, i);
+    std::vector<std::size_t> breaking;
     for (std::size_t j = 0; j < lv_.size(); ++j) {
       const Level& L = lv_[j];
+      if (broken_[j]) continue;
       if (unloading && yielding(mode, j) && (j == i || L.de(y[0]) * y[1] <= 0.0)) mode &= ~(1 << j);
       if (!unloading && !yielding(mode, j) && (j == i || L.P0 + L.k * (L.e(y[0]) - y[2 + j]) >= L.cap)) {
-        mode |= (1 << j);
-        out_.ties[j].yielded = true;
+        if (L.brittle) {
+          breaking.push_back(j);  // not ductile: its weakest component fails (issue 29)
+        } else {
+          mode |= (1 << j);
+          out_.ties[j].yielded = true;
+        }
       }
+    }
+    for (std::size_t j : breaking) {
+      out_.ties[j].max_force = std::max(out_.ties[j].max_force, lv_[j].cap);
+      if (break_level(j, t, y, false) == EventAction::stop) return EventAction::stop;
     }
     return EventAction::proceed;
   }
@@ -238,6 +275,7 @@ class TiedSystem : public HybridSystem {
     push_history(t1, y1);
   }
   double next_breakpoint(double t) const override { return motion_.next_breakpoint(t); }
+  double collapse() const { return q_c_; }
   bool stationary(int mode) const override { return mode == kRest; }
   // The end rule (analysis_end.hpp): at rest for good, or the energy after an
   // impact in the free motion cannot reach the peak again.
@@ -252,6 +290,27 @@ class TiedSystem : public HybridSystem {
   AnalysisEnd why() const { return why_; }
 
  private:
+  // Level i breaks at t: its force is lost from then on; the wall held by the
+  // levels left collapses where their envelope vanishes, at once if it is
+  // already beyond that rotation.
+  EventAction break_level(std::size_t i, double t, double* y, bool by_elongation) {
+    broken_[i] = 1;
+    TiedLevelResult& r = out_.ties[i];
+    r.broken = true;
+    r.broken_by_elongation = by_elongation;
+    r.t_broken = t;
+    r.max_elongation = std::max(r.max_elongation, lv_[i].e(y[0]));
+    q_c_ = collapse_of_(broken_);
+    if (y[0] >= q_c_) {
+      out_.overturned = true;
+      out_.t_overturn = t;
+      out_.kinetic_energy_overturn = 0.5 * b_.inertia(y[0]) * y[1] * y[1];
+      consider_peak(t, y[0]);
+      push_history(t, y);
+      return EventAction::stop;
+    }
+    return EventAction::proceed;
+  }
   void consider_peak(double t, double q) {
     if (q > out_.theta_max) {
       out_.theta_max = q;
@@ -272,21 +331,26 @@ class TiedSystem : public HybridSystem {
   const Works& works_;
   Settings set_;
   RockingResult& out_;
+  CollapseOf collapse_of_;
+  std::vector<char> broken_;
   bool decayed_ = false;
   AnalysisEnd why_ = AnalysisEnd::free_motion_cap;
 };
 
-// Net restoring force with every level at its capacity.
-double envelope(const Body& body, const std::vector<Level>& lv, double q) {
+// Net restoring force with every level at its capacity (the levels not
+// broken, when `broken` is given).
+double envelope(const Body& body, const std::vector<Level>& lv, double q, const std::vector<char>* broken = nullptr) {
   double r = body.restoring(q);
-  for (const Level& L : lv) r += L.cap * L.de(q);
+  for (std::size_t i = 0; i < lv.size(); ++i)
+    if (!broken || !(*broken)[i]) r += lv[i].cap * lv[i].de(q);
   return r;
 }
 
 // Collapse coordinate: the first zero, after the peak, of the net restoring
 // force with every level at its capacity; `q_end` if there is none before it.
-double collapse_coordinate(const Body& body, const std::vector<Level>& lv, double q_end) {
-  auto net = [&](double q) { return envelope(body, lv, q); };
+double collapse_coordinate(const Body& body, const std::vector<Level>& lv, double q_end,
+                           const std::vector<char>* broken = nullptr) {
+  auto net = [&](double q) { return envelope(body, lv, q, broken); };
   const int n = 4000;
   const double h = q_end / n;
   double q_peak = 0.0, best = -1e300;
@@ -332,8 +396,13 @@ void check_levels(const std::vector<Level>& lv) {
   if (lv.empty() || lv.size() > 16) throw InputError("tied rocking: expected 1 to 16 tie levels");
 }
 
+// The collapse coordinate of the levels left intact, on [0, q_end].
+CollapseOf collapse_of(const Body& body, const std::vector<Level>& lv, double q_end) {
+  return [&body, &lv, q_end](const std::vector<char>& broken) { return collapse_coordinate(body, lv, q_end, &broken); };
+}
+
 // Verification form: from rest to t_end under ug, no early end.
-TiedRockingResult integrate_fixed(const Body& body, const std::vector<Level>& lv, double q_c,
+TiedRockingResult integrate_fixed(const Body& body, const std::vector<Level>& lv, double q_c, double q_end,
                                   const std::vector<double>& ug, double dt, double t_end,
                                   const HybridOdeOptions& options) {
   if (!(dt > 0.0) || ug.size() < 2) throw InputError("tied rocking: expected >= 2 samples and dt > 0 s");
@@ -344,7 +413,7 @@ TiedRockingResult integrate_fixed(const Body& body, const std::vector<Level>& lv
   const GroundMotion motion = GroundMotion::from_record(rec);
   const Works works = works_of(body, lv, q_c);
   RockingResult r;
-  TiedSystem sys(body, lv, motion, q_c, works, Settings{}, r);
+  TiedSystem sys(body, lv, motion, q_c, works, Settings{}, r, collapse_of(body, lv, q_end));
   std::vector<double> y(2 + lv.size(), 0.0);
   const double t1 = std::min(t_end, rec.duration());
   const HybridOdeResult h = integrate_hybrid(sys, 0.0, t1, y.data(), kRest, options);
@@ -371,8 +440,8 @@ TiedRockingResult integrate_fixed(const Body& body, const std::vector<Level>& lv
 
 // Front-end form: the record as in `options`, to its last sample, then free
 // motion with the end rule; the result as the untied analyses give theirs.
-RockingResult integrate_record(const Body& body, const std::vector<Level>& lv, double q_c, const Record& record,
-                               const RockingOptions& options, double restitution) {
+RockingResult integrate_record(const Body& body, const std::vector<Level>& lv, double q_c, double q_end,
+                               const Record& record, const RockingOptions& options, double restitution) {
   options.validate();
   if (options.overturn != OverturnCriterion::theta_u)
     throw InputError("tied rocking: overturn_at: a tied wall collapses where its net restoring moment with the ties "
@@ -385,7 +454,7 @@ RockingResult integrate_record(const Body& body, const std::vector<Level>& lv, d
   set.end_rule = true;
   set.rest_velocity = options.rest_velocity;
   set.history = options.record_history;
-  TiedSystem sys(body, lv, motion, q_c, works, set, r);
+  TiedSystem sys(body, lv, motion, q_c, works, set, r, collapse_of(body, lv, q_end));
   std::vector<double> y(2 + lv.size(), 0.0);
   HybridOdeOptions ho = detail::hybrid_options(options, motion);
   const HybridOdeResult h = integrate_hybrid(sys, 0.0, motion.duration() + options.tail_s, y.data(), kRest, ho);
@@ -402,7 +471,8 @@ RockingResult integrate_record(const Body& body, const std::vector<Level>& lv, d
   r.energy_demand = r.overturned ? r.capacity + r.kinetic_energy_overturn
                                  : Works::at(works.cap, works.h, std::min(r.theta_max, q_c));
   r.dc = r.capacity > 0.0 ? r.energy_demand / r.capacity : std::numeric_limits<double>::infinity();
-  if (succeeded(r) && !(std::isfinite(r.theta_max) && std::isfinite(r.dc) && r.theta_max <= q_c * (1.0 + 1e-9))) {
+  const double q_stop = std::max(q_c, sys.collapse());  // a broken level moves the collapse rotation
+  if (succeeded(r) && !(std::isfinite(r.theta_max) && std::isfinite(r.dc) && r.theta_max <= q_stop * (1.0 + 1e-9))) {
     r.termination = RockingTermination::integrator_error;
     r.message = "the tied analysis gave a peak rotation or an energy that cannot be true";
   }
@@ -415,6 +485,7 @@ struct Tied {
   Body body;
   std::vector<Level> levels;
   double q_c = 0.0;
+  double q_end = 0.0;  // the last coordinate of the tables (the collapse search's range)
 };
 
 Tied tied_body(const RockingModel& model, const std::vector<RockingTie>& ties) {
@@ -427,6 +498,8 @@ Tied tied_body(const RockingModel& model, const std::vector<RockingTie>& ties) {
     L.k = t.stiffness;
     L.cap = t.capacity;
     L.P0 = t.pretension;
+    L.brittle = !t.ductile;
+    L.e_u = t.ultimate_elongation;
     L.e = [t](double q) { return t.elongation(q); };
     L.de = [t](double q) { return t.delongation(q); };
     T.levels.push_back(L);
@@ -441,7 +514,8 @@ Tied tied_body(const RockingModel& model, const std::vector<RockingTie>& ties) {
   b.restoring = [&model](double q) {
     return model.restoring_moment(q, +1, q > model.theta_cr()) - model.body().M_ext;
   };
-  T.q_c = collapse_coordinate(b, T.levels, 1.5707);
+  T.q_end = 1.5707;
+  T.q_c = collapse_coordinate(b, T.levels, T.q_end);
   return T;
 }
 
@@ -469,6 +543,8 @@ Tied tied_chain(const ChainDynamics& chain, const std::vector<TieRestraint>& tie
     L.k = tie.stiffness;
     L.cap = tie.capacity;
     L.P0 = std::min(tie.pretension, tie.capacity);
+    L.brittle = !tie.ductile;
+    L.e_u = tie.ultimate_elongation;
     L.e = [tab](double q) { return tab->elong(q); };
     L.de = [tab](double q) { return tab->delong(q); };
     T.levels.push_back(L);
@@ -482,6 +558,7 @@ Tied tied_chain(const ChainDynamics& chain, const std::vector<TieRestraint>& tie
   b.restoring = [&chain](double q) { return chain.net_restoring(q); };
   // The chain's tables end a little beyond its bare q_u: beyond them the
   // tied chain is stopped (counted as overturned), docs/theory/ties.md §6.
+  T.q_end = q_end;
   T.q_c = collapse_coordinate(b, T.levels, q_end);
   return T;
 }
@@ -517,7 +594,7 @@ TiedRockingResult analyse_tied_rocking(const RockingModel& model, const std::vec
                                        const std::vector<double>& ug, double dt, double t_end,
                                        const HybridOdeOptions& options) {
   const Tied T = tied_body(model, ties);
-  return integrate_fixed(T.body, T.levels, T.q_c, ug, dt, t_end, options);
+  return integrate_fixed(T.body, T.levels, T.q_c, T.q_end, ug, dt, t_end, options);
 }
 
 TiedRockingResult analyse_tied_chain(const ChainDynamics& chain, const TieRestraint& tie, double e,
@@ -530,13 +607,13 @@ TiedRockingResult analyse_tied_chain(const ChainDynamics& chain, const std::vect
                                      const std::vector<double>& ug, double dt, double t_end,
                                      const HybridOdeOptions& options) {
   const Tied T = tied_chain(chain, ties, e);
-  return integrate_fixed(T.body, T.levels, T.q_c, ug, dt, t_end, options);
+  return integrate_fixed(T.body, T.levels, T.q_c, T.q_end, ug, dt, t_end, options);
 }
 
 RockingResult analyse_tied(const RockingModel& model, const std::vector<RockingTie>& ties, const Record& record,
                            const RockingOptions& options) {
   const Tied T = tied_body(model, ties);
-  RockingResult r = integrate_record(T.body, T.levels, T.q_c, record, options,
+  RockingResult r = integrate_record(T.body, T.levels, T.q_c, T.q_end, record, options,
                                      model.restitution());
   r.alpha = model.body().alpha;
   if (!model.foundation().is_rigid()) r.theta_cr = model.theta_cr();
@@ -546,7 +623,7 @@ RockingResult analyse_tied(const RockingModel& model, const std::vector<RockingT
 RockingResult analyse_tied(const ChainDynamics& chain, const std::vector<TieRestraint>& ties, double e,
                            const Record& record, const RockingOptions& options) {
   const Tied T = tied_chain(chain, ties, e);
-  return integrate_record(T.body, T.levels, T.q_c, record, options, e);
+  return integrate_record(T.body, T.levels, T.q_c, T.q_end, record, options, e);
 }
 
 }  // namespace assess

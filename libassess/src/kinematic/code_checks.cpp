@@ -137,7 +137,34 @@ double displacement_demand(const CheckInput& in, CodeEdition code, LimitState ls
                                            code_rules::gamma_first_mode(b.storeys), T, b.T1);
 }
 
+namespace {
+std::vector<CheckRow> checks_of(const KinematicResult& r, const CheckInput& in);
+}  // namespace
+
+// Issue 29: a mechanism held by tie levels whose displacement capacity stops
+// where the first level reaches its strength (kinematic_analysis.hpp) is also
+// the wall without them once they fail: each displacement check takes the
+// better of the two (the wall passes if either holds), so that a tie never
+// makes a check worse (docs/theory/ties.md §2).
 std::vector<CheckRow> run_code_checks(const KinematicResult& r, const CheckInput& in) {
+  std::vector<CheckRow> rows = checks_of(r, in);
+  if (!r.without_ties || !r.without_ties->activates || !r.without_ties->curve_complete()) return rows;
+  const std::vector<CheckRow> bare = checks_of(*r.without_ties, in);
+  for (CheckRow& row : rows) {
+    if (row.kind != "displacement") continue;
+    for (const CheckRow& b : bare)
+      if (b.code == row.code && b.limit_state == row.limit_state && b.kind == row.kind && b.location == row.location &&
+          b.dc < row.dc) {
+        row = b;
+        row.without_ties = true;
+        row.note = "satisfied by the wall without its tie levels (their failure leaves it)";
+      }
+  }
+  return rows;
+}
+
+namespace {
+std::vector<CheckRow> checks_of(const KinematicResult& r, const CheckInput& in) {
   in.validate();
   std::vector<CheckRow> rows;
   if (!r.activates) return rows;
@@ -277,5 +304,6 @@ std::vector<CheckRow> run_code_checks(const KinematicResult& r, const CheckInput
                rows.end());
   return rows;
 }
+}  // namespace
 
 }  // namespace assess

@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace assess {
 namespace {
@@ -147,12 +148,16 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
 }
 
 KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& opt,
-                                  const std::vector<TieRestraint>& ties) {
+                                  const std::vector<TieRestraint>& ties,
+                                  std::shared_ptr<const KinematicResult> without_ties) {
   opt.validate();
   for (const TieRestraint& t : ties)
     if (t.block < 0 || t.block >= static_cast<int>(chain.blocks().size()))
       throw InputError("tie \"" + t.name + "\": it holds no block of the mechanism");
   KinematicResult R;
+  if (!ties.empty())
+    R.without_ties = without_ties ? std::move(without_ties)
+                                  : std::make_shared<const KinematicResult>(analyse_kinematic(chain, opt, {}));
   R.FC = opt.FC;
   R.curve_model = opt.curve_model;
   const Eigen::VectorXd q0 = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(chain.n_coordinates()));
@@ -290,18 +295,84 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
     R.curve.push_back(p);
   }
 
-  // NTC 2008 (C8A.4, §6 of docs/theory/kinematic.md).
-  R.du_star = std::min(code_rules::du_over_d0_2008 * R.d0_star, opt.du_cap);
-  R.ds_star = code_rules::ds_over_du_2008 * R.du_star;
-  R.as_star = a_star_at(R.ds_star);
-  R.Ts = 2.0 * units::pi * std::sqrt(R.ds_star / R.as_star);
-  // NTC 2018 (Circ. 2019 §C8.7.1.2.1.6, [C8.7.1.10], [C8.7.1.11]).
-  R.d_SLV = std::min(code_rules::dSLV_over_d0_2018 * R.d0_star, opt.d_SLV_cap);
-  R.a_SLV = a_star_at(R.d_SLV);
-  R.T_SLV = code_rules::T_SLV_factor_of_pi * units::pi * std::sqrt(R.d_SLV / R.a_SLV);
-  R.d_SLC = std::min(code_rules::dSLC_over_d0_2018 * R.d0_star, opt.d_SLC_cap);
-  R.a_SLC = a_star_at(R.d_SLC);
-  R.T_SLC = code_rules::T_SLC_factor_of_pi * units::pi * std::sqrt(R.d_SLC / R.a_SLC);
+  // Tie levels (issue 29): where along the path the first level reaches its
+  // strength (its elongation (T_Rd - P0)/k) and where the first level fails
+  // (a ductile one at eps_ud L): the first crossing on the marching grid,
+  // refined by bisection on the path's configurations.
+  auto first_crossing = [&](auto elongation_limit) {
+    double best = std::numeric_limits<double>::infinity();
+    std::string who;
+    for (const TieRestraint& t : ties) {
+      // A level without an elastic range (rigid-plastic, or at its strength from
+      // the start, as in the search of required forces) limits nothing.
+      if (!(t.stiffness > 0.0) || !(t.capacity > t.pretension)) continue;
+      const double lim = elongation_limit(t);
+      double prev_dk = 0.0;
+      for (std::size_t i = 1; i < path.dk.size() && path.dk[i - 1] < best; ++i) {
+        if (path.dk[i] > R.dk0 + h) break;
+        if (tie_elongation(chain, t, path.q[i]) < lim) {
+          prev_dk = path.dk[i];
+          continue;
+        }
+        double lo = prev_dk, hi = std::min(path.dk[i], R.dk0);
+        Eigen::VectorXd q;
+        for (int it = 0; it < 60 && hi - lo > 1e-12 * chain.size(); ++it) {
+          const double mid = 0.5 * (lo + hi);
+          (path.configuration(mid, q) && tie_elongation(chain, t, q) >= lim ? hi : lo) = mid;
+        }
+        if (hi < best) {
+          best = hi;
+          who = t.name;
+        }
+        break;
+      }
+    }
+    return std::make_pair(best * R.d_star_per_dk, who);
+  };
+  if (!ties.empty()) {
+    const auto lim = first_crossing([](const TieRestraint& t) { return t.yield_elongation(); });
+    R.d_star_tie_limit = lim.first;
+    R.tie_limit_level = lim.second;
+    R.d_star_tie_failure = first_crossing([](const TieRestraint& t) { return t.failure_elongation(); }).first;
+  }
+  // The displacement capacities with a cap d*_cap (m): (du*, d_SLV, d_SLC) and their periods.
+  struct Caps {
+    double du, ds, as, Ts, dSLV, aSLV, TSLV, dSLC, aSLC, TSLC;
+  };
+  auto capacities = [&](double d_tie) {
+    Caps c{};
+    // NTC 2008 (C8A.4, §6 of docs/theory/kinematic.md).
+    c.du = std::min({code_rules::du_over_d0_2008 * R.d0_star, opt.du_cap, d_tie});
+    c.ds = code_rules::ds_over_du_2008 * c.du;
+    c.as = a_star_at(c.ds);
+    c.Ts = 2.0 * units::pi * std::sqrt(c.ds / c.as);
+    // NTC 2018 (Circ. 2019 §C8.7.1.2.1.6, [C8.7.1.10], [C8.7.1.11]).
+    c.dSLV = std::min({code_rules::dSLV_over_d0_2018 * R.d0_star, opt.d_SLV_cap, d_tie});
+    c.aSLV = a_star_at(c.dSLV);
+    c.TSLV = code_rules::T_SLV_factor_of_pi * units::pi * std::sqrt(c.dSLV / c.aSLV);
+    c.dSLC = std::min({code_rules::dSLC_over_d0_2018 * R.d0_star, opt.d_SLC_cap, d_tie});
+    c.aSLC = a_star_at(c.dSLC);
+    c.TSLC = code_rules::T_SLC_factor_of_pi * units::pi * std::sqrt(c.dSLC / c.aSLC);
+    return c;
+  };
+  const Caps adopted = capacities(R.d_star_tie_limit);
+  R.du_star = adopted.du;
+  R.ds_star = adopted.ds;
+  R.as_star = adopted.as;
+  R.Ts = adopted.Ts;
+  R.d_SLV = adopted.dSLV;
+  R.a_SLV = adopted.aSLV;
+  R.T_SLV = adopted.TSLV;
+  R.d_SLC = adopted.dSLC;
+  R.a_SLC = adopted.aSLC;
+  R.T_SLC = adopted.TSLC;
+  const Caps plastic = R.d_star_tie_failure > R.d_star_tie_limit ? capacities(R.d_star_tie_failure) : adopted;
+  R.du_star_plastic = plastic.du;
+  R.Ts_plastic = plastic.Ts;
+  R.d_SLV_plastic = plastic.dSLV;
+  R.T_SLV_plastic = plastic.TSLV;
+  R.d_SLC_plastic = plastic.dSLC;
+  R.T_SLC_plastic = plastic.TSLC;
   return R;
 }
 

@@ -1,6 +1,7 @@
 // tie.cpp: the tie rod and its restraint law (docs/theory/ties.md §2).
 #include "assess/kinematic/tie.hpp"
 
+#include "assess/kinematic/tie_catalogue.hpp"
 #include "assess/support/error.hpp"
 
 #include <algorithm>
@@ -22,33 +23,88 @@ std::string num(double v) {
 
 }  // namespace
 
+const char* to_string(TieEnds e) {
+  switch (e) {
+    case TieEnds::Threaded: return "threaded";
+    case TieEnds::Upset: return "upset";
+    case TieEnds::Welded: return "welded";
+  }
+  return "threaded";
+}
+
+double TieLayout::centre_spacing() const {
+  return count > 1 ? (wall_length - 2.0 * edge_distance) / double(count - 1) : wall_length;
+}
+
+// Every field within its bounds (tie_catalogue::bounds): the case-file reader
+// refuses the same values first, naming the JSON path; this guards the
+// library's other callers.
 void Tie::validate() const {
+  namespace B = tie_catalogue::bounds;
   const std::string t = "tie \"" + name + "\": ";
+  auto in = [](double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; };
   require(point.allFinite(), t + "point: expected finite (x, z) in m");
   require(direction.allFinite() && direction.norm() > 0.0, t + "direction: expected a non-zero vector");
-  require(rod.area > 0.0 && std::isfinite(rod.area), t + "rod area = " + num(rod.area) + ": expected > 0 m^2");
-  require(rod.fyk > 0.0 && std::isfinite(rod.fyk), t + "rod fyk: expected > 0 Pa");
-  require(rod.gamma_M0 >= 1.0 && std::isfinite(rod.gamma_M0), t + "rod gamma_M0 = " + num(rod.gamma_M0) + ": expected >= 1");
-  require(rod.E > 0.0 && std::isfinite(rod.E), t + "rod E: expected > 0 Pa");
-  require(free_length > 0.0 && std::isfinite(free_length), t + "free length = " + num(free_length) + ": expected > 0 m");
-  require(anchor.a > 0.0 && anchor.b > 0.0 && std::isfinite(anchor.a) && std::isfinite(anchor.b),
-          t + "anchor size: expected > 0 m");
-  require(anchor.type == AnchorType::Bar || (anchor.t > 0.0 && std::isfinite(anchor.t)),
-          t + "anchor plate thickness = " + num(anchor.t) + ": expected > 0 m");
-  require(anchor.fyk > 0.0 && std::isfinite(anchor.fyk), t + "anchor fyk: expected > 0 Pa");
-  require(masonry.fm > 0.0 && std::isfinite(masonry.fm), t + "masonry fm = " + num(masonry.fm) + ": expected > 0 Pa");
-  require(masonry.tau > 0.0 && std::isfinite(masonry.tau), t + "masonry tau = " + num(masonry.tau) + ": expected > 0 Pa");
-  require(masonry.thickness > 0.0 && std::isfinite(masonry.thickness),
-          t + "masonry thickness = " + num(masonry.thickness) + ": expected > 0 m");
-  require(masonry.FC >= 1.0 && std::isfinite(masonry.FC), t + "masonry FC = " + num(masonry.FC) + ": expected >= 1");
-  require(masonry.gamma_M >= 1.0 && std::isfinite(masonry.gamma_M),
-          t + "masonry gamma_M = " + num(masonry.gamma_M) + ": expected >= 1");
-  require(spacing > 0.0 && std::isfinite(spacing), t + "spacing = " + num(spacing) + ": expected > 0 m");
-  require(pretension >= 0.0 && std::isfinite(pretension), t + "pretension = " + num(pretension) + ": expected >= 0 N");
+  require(in(rod.area, B::rod_area_min, B::rod_area_max),
+          t + "rod area = " + num(rod.area) + " m^2: expected " + num(B::rod_area_min) + " to " + num(B::rod_area_max) + " m^2");
+  require(in(rod.fyk, B::fyk_min, B::fyk_max), t + "rod fyk: expected 100 to 1000 MPa");
+  require(in(rod.ftk, rod.fyk, 2.0 * B::fyk_max), t + "rod ftk: expected >= fyk and <= 2000 MPa");
+  require(in(rod.elongation, 0.01, 0.6), t + "rod elongation: expected 0.01 to 0.6");
+  require(in(rod.gamma_M0, 1.0, 10.0), t + "rod gamma_M0 = " + num(rod.gamma_M0) + ": expected 1 to 10");
+  require(in(rod.E, 1e9, 1e12), t + "rod E: expected 1 to 1000 GPa");
+  require(in(rod.thread_area, B::rod_area_min, B::rod_area_max),
+          t + "thread stress area = " + num(rod.thread_area) + " m^2: expected " + num(B::rod_area_min) + " to " +
+              num(B::rod_area_max) + " m^2");
+  require(in(rod.nut_width, 0.005, 0.5), t + "nut width across flats = " + num(rod.nut_width) + " m: expected 0.005 to 0.5 m");
+  require(in(free_length, B::free_length_min, B::free_length_max),
+          t + "free length = " + num(free_length) + " m: expected " + num(B::free_length_min) + " to " +
+              num(B::free_length_max) + " m");
+  require(in(anchor.a, B::plate_side_min, B::plate_side_max) && in(anchor.b, B::plate_side_min, B::plate_side_max),
+          t + "anchor size: expected " + num(B::plate_side_min) + " to " + num(B::plate_side_max) + " m");
+  require(anchor.type == AnchorType::Bar || in(anchor.t, B::plate_t_min, B::plate_t_max),
+          t + "anchor plate thickness = " + num(anchor.t) + " m: expected " + num(B::plate_t_min) + " to " +
+              num(B::plate_t_max) + " m");
+  // The nut must bear on the plate with a cantilever around it (issue 29): a
+  // plate no wider than the nut is refused (its bending capacity has no meaning).
+  require(anchor.type == AnchorType::Bar || std::min(anchor.a, anchor.b) > rod.nut_width,
+          t + "anchor plate " + num(anchor.a * 1e3) + " x " + num(anchor.b * 1e3) + " mm: expected wider than its nut (" +
+              num(rod.nut_width * 1e3) + " mm across flats)");
+  require(anchor.type == AnchorType::Plate || anchor.b < anchor.a,
+          t + "bar anchor: expected its length larger than its diameter");
+  require(in(anchor.fyk, B::fyk_min, B::fyk_max), t + "anchor fyk: expected 100 to 1000 MPa");
+  require(in(masonry.fm, B::fm_min, B::fm_max),
+          t + "masonry fm = " + num(masonry.fm) + " Pa: expected " + num(B::fm_min / 1e6) + " to " + num(B::fm_max / 1e6) + " MPa");
+  require(in(masonry.tau, B::tau_min, B::tau_max),
+          t + "masonry tau = " + num(masonry.tau) + " Pa: expected " + num(B::tau_min / 1e6) + " to " + num(B::tau_max / 1e6) +
+              " MPa");
+  require(in(masonry.thickness, B::thickness_min, B::thickness_max),
+          t + "masonry thickness = " + num(masonry.thickness) + " m: expected " + num(B::thickness_min) + " to " +
+              num(B::thickness_max) + " m");
+  require(in(masonry.FC, 1.0, 10.0), t + "masonry FC = " + num(masonry.FC) + ": expected 1 to 10");
+  require(in(masonry.gamma_M, 1.0, 10.0), t + "masonry gamma_M = " + num(masonry.gamma_M) + ": expected 1 to 10");
+  require(in(layout.wall_length, B::wall_length_min, B::wall_length_max),
+          t + "wall length = " + num(layout.wall_length) + " m: expected " + num(B::wall_length_min) + " to " +
+              num(B::wall_length_max) + " m");
+  require(layout.count >= 1 && layout.count <= B::count_max,
+          t + "count = " + std::to_string(layout.count) + ": expected 1 to " + std::to_string(B::count_max) + " ties");
+  require(std::isfinite(layout.edge_distance) && layout.edge_distance > 0.0 &&
+              (layout.count == 1 ? layout.edge_distance < layout.wall_length
+                                 : 2.0 * layout.edge_distance <= layout.wall_length),
+          t + "edge distance = " + num(layout.edge_distance) + " m: expected > 0 and the ties within the wall");
+  require(layout.count == 1 || in(layout.centre_spacing(), B::spacing_min, B::spacing_max),
+          t + "spacing = " + num(layout.centre_spacing()) + " m: expected " + num(B::spacing_min) + " to " +
+              num(B::spacing_max) + " m");
+  require(in(spacing, B::spacing_min * 1e-3, B::wall_length_max), t + "tributary length = " + num(spacing) + " m: expected > 0");
+  require(in(pretension, 0.0, B::pretension_max),
+          t + "pretension = " + num(pretension) + " N: expected 0 to " + num(B::pretension_max / 1e3) + " kN");
 }
 
 double TieRestraint::yield_elongation() const {
   return stiffness > 0.0 ? std::max(capacity - pretension, 0.0) / stiffness : 0.0;
+}
+
+double TieRestraint::failure_elongation() const {
+  return ductile ? std::max(ultimate_elongation, yield_elongation()) : yield_elongation();
 }
 
 double tie_force(const TieRestraint& r, double e) {

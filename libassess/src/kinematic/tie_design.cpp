@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 namespace assess {
 namespace {
@@ -22,10 +23,12 @@ std::vector<RequiredTieForce> required_tie_forces(const Chain& chain, const Kine
   std::vector<TieRestraint> t = ties;
   const double count = t.at(level).count;
   // D/C of every check with the level at strength T (N).
+  // The chain without any level (the checks' fallback once the ties fail), once.
+  const auto bare = std::make_shared<const KinematicResult>(analyse_kinematic(chain, opt, {}));
   auto rows_at = [&](double T) {
     t[level].capacity = T;
     t[level].pretension = std::min(ties[level].pretension, T);
-    const KinematicResult r = analyse_kinematic(chain, opt, t);
+    const KinematicResult r = analyse_kinematic(chain, opt, t, bare);
     if (!r.activates) return std::vector<CheckRow>{};
     return run_code_checks(r, in);
   };
@@ -36,8 +39,7 @@ std::vector<RequiredTieForce> required_tie_forces(const Chain& chain, const Kine
   };
   // The rows of the mechanism with the level at a large strength, so that
   // every check (displacement ones need a complete curve) is listed.
-  const KinematicResult bare = analyse_kinematic(chain, opt, {});
-  const double W = bare.sum_W;
+  const double W = bare->sum_W;
   const double T_max = 100.0 * W;
   std::vector<RequiredTieForce> out;
   const std::vector<CheckRow> zero = rows_at(0.0);
@@ -60,8 +62,16 @@ std::vector<RequiredTieForce> required_tie_forces(const Chain& chain, const Kine
       hi *= 2.0;
     }
     if (hi >= T_max && dc_of(rows_at(hi), f) > 1.0) {
+      // No force reaches it: reported as such, with the reason, never as a number.
       f.reachable = false;
-      f.level_force = std::numeric_limits<double>::infinity();
+      const double dc = dc_of(rows_at(hi), f);
+      f.reason = "the check is not satisfied even with the level at " + std::to_string(static_cast<long long>(hi / 1e3)) +
+                 " kN (100 times the mechanism's weight)" +
+                 (std::isfinite(dc) ? ", D/C " + std::to_string(dc).substr(0, 5)
+                                    : ": the mechanism with the level that strong has no capacity curve");
+      f.level_force = f.per_tie = f.per_metre = 0.0;
+      out.push_back(f);
+      continue;
     } else {
       while (hi - lo > 1e-7 * hi) {
         const double mid = 0.5 * (lo + hi);

@@ -325,75 +325,78 @@ std::string zeta_chart(Lang L, const BuildingAssessment& b) {
   return svg + "</svg>";
 }
 
-// The tie rods of a mechanism in a few words (its first level: a design gives
-// every level the same rod and plate).
-std::string tie_label(Lang L, const TieInterventionResult& t) {
-  if (t.levels.empty()) return "—";
-  const Tie& x = t.levels.front().tie;
-  std::string s = x.rod.diameter > 0.0 ? format("Ø%.0f mm ", x.rod.diameter * 1e3) + x.rod.grade
-                                       : format("A = %.0f mm² ", x.rod.area * 1e6) + x.rod.grade;
-  s += x.anchor.type == AnchorType::Plate
-           ? ", " + bt(L, "ties_plate") + format(" %.0f × %.0f × %.0f mm", x.anchor.a * 1e3, x.anchor.b * 1e3, x.anchor.t * 1e3)
-           : ", " + bt(L, "ties_bar") + format(" %.0f mm", x.anchor.a * 1e3);
-  if (t.levels.size() > 1) s += format(" (%d ", int(t.levels.size())) + bt(L, "ties_levels") + ")";
-  if (t.designed && !t.found) s = bt(L, "ties_not_found") + " (" + s + ")";
-  return s;
+// The tie rods of a mechanism in one state in a few words (issue 29): the
+// existing ties, then the new ones (count, rod, anchor; "+ n" levels).
+std::string tie_label(Lang L, const TieInterventionResult& t, bool after) {
+  const std::vector<TieLevelResult>& lv = after ? t.levels : t.levels_before;
+  std::string out;
+  for (bool existing : {true, false}) {
+    int n = 0;
+    const Tie* x = nullptr;
+    for (const TieLevelResult& l : lv)
+      if (l.tie.existing == existing && n++ == 0) x = &l.tie;
+    if (!x) continue;
+    std::string s = msg(L, existing ? "tie.existing" : "tie.new") + ": " + format("%d × ", x->layout.count) +
+                    (x->rod.diameter > 0.0 ? format("Ø%.0f mm ", x->rod.diameter * 1e3) + x->rod.grade
+                                           : format("A = %.0f mm² ", x->rod.area * 1e6) + x->rod.grade);
+    s += x->anchor.type == AnchorType::Plate
+             ? ", " + bt(L, "ties_plate") + format(" %.0f × %.0f × %.0f mm", x->anchor.a * 1e3, x->anchor.b * 1e3, x->anchor.t * 1e3)
+             : ", " + bt(L, "ties_bar") + format(" %.0f mm", x->anchor.a * 1e3);
+    if (n > 1) s += format(" (%d ", n) + bt(L, "ties_levels") + ")";
+    out += (out.empty() ? "" : "; ") + s;
+  }
+  if (after && t.designed && !t.found) out = bt(L, "ties_not_found") + " (" + out + ")";
+  return out.empty() ? "—" : out;
 }
 
 std::string pass_td(Lang L, bool ok) {
   return std::string("<td class=\"") + (ok ? "ok" : "fail") + "\">" + esc(bt(L, ok ? "ok" : "fail")) + "</td>";
 }
 
-// The dynamic check of the tied analyses, before → after (or —).
-std::string tie_dynamic_td(Lang L, const TieInterventionResult* t) {
+// The dynamic check of the tied analyses of one state (or —).
+std::string tie_dynamic_td(Lang L, const TieInterventionResult* t, bool after) {
   if (!t || !t->dynamics.applies || t->dynamics.summaries.empty()) return "<td>—</td>";
-  bool before = true, after = true;
-  for (const TieDynamicSummary& x : t->dynamics.summaries) {
-    before = before && x.satisfied_before;
-    after = after && x.satisfied_after;
-  }
-  return std::string("<td class=\"") + (after ? "ok" : "fail") + "\">" + esc(bt(L, before ? "ok" : "fail")) + " → " +
-         esc(bt(L, after ? "ok" : "fail")) + "</td>";
+  bool ok = true;
+  for (const TieDynamicSummary& x : t->dynamics.summaries) ok = ok && (after ? x.satisfied_after : x.satisfied_before);
+  return std::string("<td class=\"") + (ok ? "ok" : "fail") + "\">" + esc(bt(L, ok ? "ok" : "fail")) + "</td>";
 }
 
-// The building's index before and after the ties, one sentence.
-std::string tie_index_text(Lang L, const BuildingAssessment& b) {
+// The building's index in one state (issue 29: one index per state), one sentence.
+std::string tie_index_text(Lang L, const BuildingAssessment& b, bool after) {
   const BuildingTieIndex& ti = b.tie_index;
   const BuildingCase& bc = b.building;
-  auto at = [&](int k) { return k >= 0 ? " (" + bc.mechanisms[std::size_t(k)].id + ")" : std::string(); };
-  return bt(L, "ties_index") + ": " + fx(ti.zeta_before, 3) + at(ti.mechanism_before) + " " + bt(L, "without_ties") +
-         ", " + fx(ti.zeta_after, 3) + at(ti.mechanism_after) + " " + bt(L, "with_ties") + "; " + bt(L, "ties_passing") +
-         ": " + std::to_string(ti.passing_before) + " " + bt(L, "of") + " " + std::to_string(bc.mechanisms.size()) + " " +
-         bt(L, "without_ties") + ", " + std::to_string(ti.passing_after) + " " + bt(L, "with_ties") + ".";
+  const int k = after ? ti.mechanism_after : ti.mechanism_before;
+  return msgf(L, after ? "tie.bld.index_after" : "tie.bld.index_before", fx(after ? ti.zeta_after : ti.zeta_before, 3),
+              k >= 0 ? bc.mechanisms[std::size_t(k)].id : std::string("—"),
+              after ? ti.passing_after : ti.passing_before, bc.mechanisms.size());
 }
 
-// The table of the mechanisms before and after their ties (issue 23).
+// The building in its stato di fatto and in its stato di progetto (issues 23,
+// 29): one table and one index per state.
 void add_ties_summary(Lang L, const BuildingAssessment& b, HtmlReport& h) {
   const BuildingCase& bc = b.building;
   h.add_heading(bt(L, "ties_title"), 3);
-  std::string t = "<table class=\"building-summary ties-summary\"><caption>" + esc(bt(L, "ties_cap")) +
-                  "</caption>\n<thead><tr><th rowspan=\"2\">" + esc(bt(L, "id")) + "</th><th rowspan=\"2\">" +
-                  esc(bt(L, "wall_mech")) + "</th><th rowspan=\"2\">" + esc(bt(L, "ties_kind")) +
-                  "</th><th rowspan=\"2\">" + esc(bt(L, "ties_rod")) + "</th><th colspan=\"2\">ζE</th><th colspan=\"2\">" +
-                  esc(bt(L, "checks_all")) + "</th><th rowspan=\"2\">" + esc(bt(L, "dyn_check")) + "</th></tr>\n<tr>";
-  for (int k = 0; k < 2; ++k)
-    t += "<th class=\"num\">" + esc(bt(L, "before")) + "</th><th class=\"num\">" + esc(bt(L, "after")) + "</th>";
-  t += "</tr></thead>\n<tbody>\n";
   auto zeta = [&](double z) {
     return std::string("<td class=\"num ") + (z >= 1.0 ? "zeta-ok" : "zeta-fail") + "\">" + esc(fx(z, 3)) + "</td>";
   };
-  for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
-    const BuildingMechanism& m = bc.mechanisms[i];
-    const BuildingMechanismResult& r = b.results[i];
-    const TieInterventionResult* x = r.ties ? &*r.ties : nullptr;
-    t += "<tr id=\"ties-row-" + esc(m.id) + "\"><td><a href=\"#" + esc(m.id) + "\">" + esc(m.id) + "</a></td><td>" +
-         esc(m.name) + "</td><td>" +
-         esc(bt(L, !x ? "ties_none" : x->designed ? "ties_design" : "ties_given")) + "</td><td>" +
-         esc(x ? tie_label(L, *x) : "—") + "</td>" + zeta(r.zeta_before) + zeta(r.zeta_after) +
-         pass_td(L, r.passes_before) + pass_td(L, r.passes_after) + tie_dynamic_td(L, x) + "</tr>\n";
+  for (bool after : {false, true}) {
+    std::string t = "<table class=\"building-summary ties-summary\"><caption>" +
+                    esc(msg(L, after ? "tie.bld.cap_after" : "tie.bld.cap_before")) + "</caption>\n<thead><tr><th>" +
+                    esc(bt(L, "id")) + "</th><th>" + esc(bt(L, "wall_mech")) + "</th><th>" +
+                    esc(msg(L, after ? "tie.bld.ties_after" : "tie.bld.ties_before")) + "</th><th class=\"num\">ζE</th><th>" +
+                    esc(bt(L, "checks_all")) + "</th><th>" + esc(bt(L, "dyn_check")) + "</th></tr></thead>\n<tbody>\n";
+    for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
+      const BuildingMechanism& m = bc.mechanisms[i];
+      const BuildingMechanismResult& r = b.results[i];
+      const TieInterventionResult* x = r.ties ? &*r.ties : nullptr;
+      t += "<tr id=\"ties-" + std::string(after ? "row-" : "existing-row-") + esc(m.id) + "\"><td><a href=\"#" +
+           esc(m.id) + "\">" + esc(m.id) + "</a></td><td>" + esc(m.name) + "</td><td>" +
+           esc(x ? tie_label(L, *x, after) : "—") + "</td>" + zeta(after ? r.zeta_after : r.zeta_before) +
+           pass_td(L, after ? r.passes_after : r.passes_before) + tie_dynamic_td(L, x, after) + "</tr>\n";
+    }
+    h.add_raw_html(t + "</tbody></table>");
+    h.add_paragraph(tie_index_text(L, b, after));
   }
-  h.add_raw_html(t + "</tbody></table>");
-  h.add_paragraph(tie_index_text(L, b));
 }
 
 void add_summary(Lang L, const BuildingAssessment& b, HtmlReport& h) {
@@ -642,7 +645,10 @@ std::string building_html(const BuildingAssessment& b, const ReportOptions& opti
   }
   h.add_paragraph(std::to_string(ok) + " " + bt(L, "of") + " " + std::to_string(with) + " " + bt(L, "concl_counts") +
                   " (" + methods + ")" + (failing.empty() ? "" : "; " + bt(L, "concl_failing") + ": " + failing) + ".");
-  if (b.tie_index.any_ties) h.add_paragraph(tie_index_text(L, b));
+  if (b.tie_index.any_ties) {
+    h.add_paragraph(tie_index_text(L, b, false));
+    h.add_paragraph(tie_index_text(L, b, true));
+  }
   h.add_raw_html("<div class=\"signature\"><p>" + esc(bt(L, "place_date")) + ": ______________________</p><p>" +
                  esc(bt(L, "engineer")) + ": ______________________</p></div>");
   h.add_heading(bt(L, "appendix"));

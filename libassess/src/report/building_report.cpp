@@ -64,19 +64,30 @@ std::string record_set_text(const BuildingAssessment& b, const BuildingMechanism
   return "-";
 }
 
-// The tie rods of a mechanism in a few words: the rod and anchor of its first
-// level (a design gives every level the same), "+n levels" for the others.
-std::string tie_label(const TieInterventionResult& t) {
-  if (t.levels.empty()) return "-";
-  const Tie& x = t.levels.front().tie;
-  std::string s = x.rod.diameter > 0.0 ? format("diam. %.0f mm %s", x.rod.diameter * 1e3, x.rod.grade)
-                                       : format("A = %.0f mm2 %s", x.rod.area * 1e6, x.rod.grade);
-  s += x.anchor.type == AnchorType::Plate
-           ? format(", plate %.0fx%.0fx%.0f", x.anchor.a * 1e3, x.anchor.b * 1e3, x.anchor.t * 1e3)
-           : format(", bar %.0f mm", x.anchor.a * 1e3);
-  if (t.levels.size() > 1) s += format(" +%d lev.", int(t.levels.size() - 1));
-  if (t.designed && !t.found) s = "NOT FOUND (" + s + ")";
-  return s;
+// The tie rods of a mechanism in one state in a few words (issue 29): its
+// first level's count, rod and anchor (a design gives every level the same),
+// "+n lev." for the others; existing and new apart.
+std::string tie_label(const TieInterventionResult& t, bool after) {
+  const std::vector<TieLevelResult>& lv = after ? t.levels : t.levels_before;
+  if (lv.empty()) return "-";
+  std::string out;
+  for (bool existing : {true, false}) {
+    int n = 0;
+    const Tie* x = nullptr;
+    for (const TieLevelResult& l : lv)
+      if (l.tie.existing == existing && n++ == 0) x = &l.tie;
+    if (!x) continue;
+    std::string s = std::string(existing ? "exist. " : "new ") + format("%dx ", x->layout.count) +
+                    (x->rod.diameter > 0.0 ? format("diam. %.0f %s", x->rod.diameter * 1e3, x->rod.grade)
+                                           : format("A %.0f mm2 %s", x->rod.area * 1e6, x->rod.grade));
+    s += x->anchor.type == AnchorType::Plate
+             ? format(", pl. %.0fx%.0fx%.0f", x->anchor.a * 1e3, x->anchor.b * 1e3, x->anchor.t * 1e3)
+             : format(", bar %.0f", x->anchor.a * 1e3);
+    if (n > 1) s += format(" +%d lev.", n - 1);
+    out += (out.empty() ? "" : "; ") + s;
+  }
+  if (after && t.designed && !t.found) out = "NOT FOUND (" + out + ")";
+  return out;
 }
 
 // The dynamic check of the tied analyses, before or after: every restitution
@@ -180,7 +191,7 @@ nlohmann::json building_json(const BuildingAssessment& b) {
     // Issue 23: the mechanism's ties (as `assess run` of its case prints them)
     // and its zetaE / every-check verdict before and after them.
     nlohmann::json iv;
-    iv["ties"] = !r.ties ? "none" : r.ties->designed ? "design" : "given";
+    iv["ties"] = !r.ties ? "none" : r.ties->designed ? "design" : r.ties->intervention ? "given" : "existing";
     iv["zeta_E_before"] = num(r.zeta_before);
     iv["zeta_E_after"] = num(r.zeta_after);
     iv["passes_before"] = r.passes_before;
@@ -214,7 +225,8 @@ nlohmann::json building_json(const BuildingAssessment& b) {
   const BuildingTieIndex& ti = b.tie_index;
   nlohmann::json tj;
   tj["definition"] = "the smallest mechanism zeta_E (NTC 2018, each mechanism's adopted method: strength rows for "
-                     "linear, displacement rows otherwise), before and after the mechanisms' ties";
+                     "linear, displacement rows otherwise), in the stato di fatto (before: each mechanism with its "
+                     "existing ties) and in the stato di progetto (after: with the new ties)";
   tj["any_ties"] = ti.any_ties;
   tj["zeta_E_before"] = num(ti.zeta_before);
   tj["zeta_E_after"] = num(ti.zeta_after);
@@ -223,6 +235,14 @@ nlohmann::json building_json(const BuildingAssessment& b) {
   tj["passing_before"] = ti.passing_before;
   tj["passing_after"] = ti.passing_after;
   tj["mechanisms"] = bc.mechanisms.size();
+  // The same, by state (issue 29): one index per state.
+  for (const char* state : {"existing_state", "design_state"}) {
+    const bool after = std::string(state) == "design_state";
+    const int m = after ? ti.mechanism_after : ti.mechanism_before;
+    tj[state] = {{"zeta_E", num(after ? ti.zeta_after : ti.zeta_before)},
+                 {"mechanism", m >= 0 ? nlohmann::json(bc.mechanisms[std::size_t(m)].id) : nlohmann::json(nullptr)},
+                 {"passing", after ? ti.passing_after : ti.passing_before}};
+  }
   j["tie_index"] = tj;
   j["warnings"] = b.warnings;
   return j;
@@ -326,37 +346,42 @@ std::string building_text(const BuildingAssessment& b, TextWidth width) {
             (g.no_verdict ? ", " + std::to_string(g.no_verdict) + " without verdict" : "");
     o += wide ? line + "\n" : wrap(line, 120);
   }
-  // Issue 23: the tie rods, before and after, then each mechanism's ties in full.
+  // Issues 23, 29: the building in its stato di fatto (each mechanism with its
+  // existing ties) and in its stato di progetto (with the new ties): one table
+  // and one index per state; then each mechanism's ties in full.
   const BuildingTieIndex& ti = b.tie_index;
   if (ti.any_ties) {
     const std::string head =
-        "tie rods (\"ties\" given, \"design\" proposed): each mechanism's zetaE (NTC 2018, its adopted method's "
-        "approach) and every kinematic check (both editions; after: and the ties' checks), without and with its ties; "
-        "dynamic: the tied analyses' check (docs/theory/building.md §8)";
+        "tie rods: the building in its stato di fatto (existing ties part of the walls) and in its stato di progetto "
+        "(with the new ties, given or designed): each mechanism's zetaE (NTC 2018, its adopted method's approach), "
+        "every kinematic check and every check of its ties, and the dynamic check of its tied analyses "
+        "(docs/theory/building.md §8)";
     o += "\n" + (wide ? head + "\n" : wrap(head, 120));
-    o += rstrip(format("%-4s %-6s %-38s | %7s %7s | %6s %6s | %6s %6s", "id", "ties", "rod, anchor", "zetaE", "zetaE",
-                       "checks", "checks", "dyn.", "dyn.")) + "\n";
-    o += rstrip(format("%-4s %-6s %-38s | %7s %7s | %6s %6s | %6s %6s", "", "", "", "before", "after", "before",
-                       "after", "before", "after")) + "\n";
     auto yes = [](bool p) { return std::string(p ? "ok" : "NO"); };
-    for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
-      const BuildingMechanismResult& r = b.results[i];
-      const std::string kind = !r.ties ? "-" : r.ties->designed ? "design" : "given";
-      std::string label = r.ties ? tie_label(*r.ties) : "-";
-      if (!wide && width_of(label) > 38) label = label.substr(0, 37) + "~";
-      o += rstrip(format("%-4s %-6s ", bc.mechanisms[i].id, kind) + pad(label, 38) +
-                  format(" | %7s %7s | %6s %6s | %6s %6s", fx(r.zeta_before, 3), fx(r.zeta_after, 3),
-                         yes(r.passes_before), yes(r.passes_after), r.ties ? tie_dynamic_verdict(*r.ties, false) : "-",
-                         r.ties ? tie_dynamic_verdict(*r.ties, true) : "-")) +
-           "\n";
-    }
     auto at = [&](int k) { return k >= 0 ? " (" + bc.mechanisms[std::size_t(k)].id + ")" : std::string(); };
-    const std::string idx = "building index (the smallest mechanism zetaE): " + fx(ti.zeta_before, 3) +
-                            at(ti.mechanism_before) + " without the ties, " + fx(ti.zeta_after, 3) +
-                            at(ti.mechanism_after) + " with them; every kinematic check satisfied: " +
-                            std::to_string(ti.passing_before) + " of " + std::to_string(bc.mechanisms.size()) +
-                            " mechanisms without, " + std::to_string(ti.passing_after) + " with";
-    o += wide ? idx + "\n" : wrap(idx, 120);
+    for (bool after : {false, true}) {
+      o += std::string(after ? "stato di progetto" : "stato di fatto") + "\n";
+      o += rstrip(format("%-4s %-52s | %7s | %6s | %6s", "id", after ? "ties (existing and new)" : "existing ties",
+                         "zetaE", "checks", "dyn.")) +
+           "\n";
+      for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
+        const BuildingMechanismResult& r = b.results[i];
+        std::string label = r.ties ? tie_label(*r.ties, after) : "-";
+        if (!wide && width_of(label) > 52) label = label.substr(0, 51) + "~";
+        o += rstrip(format("%-4s ", bc.mechanisms[i].id) + pad(label, 52) +
+                    format(" | %7s | %6s | %6s", fx(after ? r.zeta_after : r.zeta_before, 3),
+                           yes(after ? r.passes_after : r.passes_before),
+                           r.ties ? tie_dynamic_verdict(*r.ties, after) : "-")) +
+             "\n";
+      }
+      const std::string idx = std::string("building index, ") + (after ? "stato di progetto" : "stato di fatto") +
+                              " (the smallest mechanism zetaE): " + fx(after ? ti.zeta_after : ti.zeta_before, 3) +
+                              at(after ? ti.mechanism_after : ti.mechanism_before) +
+                              "; every check satisfied: " +
+                              std::to_string(after ? ti.passing_after : ti.passing_before) + " of " +
+                              std::to_string(bc.mechanisms.size()) + " mechanisms";
+      o += wide ? idx + "\n" : wrap(idx, 120);
+    }
     for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
       const BuildingMechanismResult& r = b.results[i];
       if (!r.ties) continue;

@@ -702,7 +702,8 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
         std::vector<Cand> p = {{xm, ym - 5, Anchor::Middle}, {sx, ay + 4, side},
                                {xm, std::max(y1, y2) + 14, Anchor::Middle}, {sx, ay - 6, side}, {sx, ay + 15, side}};
         if (tie_out) p.insert(p.begin(), {{x2 + 3, ym - 5, Anchor::Start}, {x2 + 3, ym + 14, Anchor::Start}});
-        labels.push_back({std::string(1, sym) + " = " + kn(n), 11, std::string("fill=\"") + colour + "\"", ax, ay, p});
+        labels.push_back({l.label.empty() ? std::string(1, sym) + " = " + kn(n) : l.label, 11,
+                          std::string("fill=\"") + colour + "\"", ax, ay, p});
         break;
       }
     }

@@ -1,17 +1,20 @@
-// tie_html.cpp: the section of the relazione on the tie rods (issue 23):
-// the ties drawn on the mechanism, each level's rod and anchor, the checks
-// of the tie with their clauses, the force each check of the mechanism needs,
-// and the verdicts before and after side by side. Formatting only. Italian
-// and English strings are kept here, in one table, apart from messages.cpp.
+// tie_html.cpp: the section of the relazione on the tie rods (issues 23,
+// 29): the stato di fatto and the stato di progetto, the ties drawn on the
+// mechanism, each level's rod, ends, anchor and layout, the formulas with
+// their sources, the checks (capacity design), the force each check needs,
+// the two states side by side, the dynamic analyses with each tie's outcome,
+// the detailing; and the readings adopted (tie_readings, for the appendix:
+// the body carries no certainty tag). Formatting only; every sentence is in
+// the message catalogue (messages_ties.cpp, keys "tie.*").
 #include "assess/report/tie_report.hpp"
 
+#include "assess/kinematic/tie_catalogue.hpp"
 #include "assess/report/mechanism_drawing.hpp"
 #include "assess/support/units.hpp"
 #include "report/text_format.hpp"
 #include "report/xml_escape.hpp"
 
 #include <cmath>
-#include <map>
 
 namespace assess {
 namespace {
@@ -19,118 +22,55 @@ namespace {
 using detail::xml_escape;
 constexpr double kN = units::kN;
 
-const std::string& tr(Lang lang, const std::string& key) {
-  static const std::map<std::string, std::pair<std::string, std::string>> t{
-      {"title", {"Intervento: catene (tiranti)", "Intervention: tie rods"}},
-      {"intro_design",
-       {"Progetto della catena più piccola (barra e piastra commerciali) che soddisfa tutte le verifiche del "
-        "meccanismo e della catena (riparazione o intervento locale, NTC 2018 §8.4.1).",
-        "Design of the smallest tie (commercial rod and plate) that satisfies every check of the mechanism and of "
-        "the tie (repair or local intervention, NTC 2018 §8.4.1)."}},
-      {"intro_given",
-       {"Verifica del meccanismo con le catene indicate e verifiche delle catene.",
-        "Check of the mechanism with the given ties, and checks of the ties."}},
-      {"not_found",
-       {"Nessuna combinazione degli elenchi soddisfa tutte le verifiche; si riporta la più grande.",
-        "No combination of the lists satisfies every check; the largest is shown."}},
-      {"level", {"Livello", "Level"}},
-      {"rod", {"Barra", "Rod"}},
-      {"anchor", {"Capochiave", "Anchor"}},
-      {"position", {"Posizione (m)", "Position (m)"}},
-      {"spacing", {"Interasse (m)", "Spacing (m)"}},
-      {"free_length", {"Lunghezza libera (m)", "Free length (m)"}},
-      {"T_Rd", {"Resistenza di progetto T_Rd (kN)", "Design strength T_Rd (kN)"}},
-      {"governing", {"governata da", "governed by"}},
-      {"checks_title", {"Verifiche della catena", "Checks of the tie"}},
-      {"check", {"Verifica", "Check"}},
-      {"clause", {"Riferimento", "Clause / source"}},
-      {"demand", {"Domanda", "Demand"}},
-      {"capacity", {"Capacità", "Capacity"}},
-      {"unit", {"Unità", "Unit"}},
-      {"outcome", {"Esito", "Outcome"}},
-      {"ok", {"verificato", "satisfied"}},
-      {"ko", {"non verificato", "not satisfied"}},
-      {"required_title",
-       {"Forza necessaria per ogni verifica del meccanismo", "Force needed by each check of the mechanism"}},
-      {"code", {"Norma", "Code"}},
-      {"ls", {"SL", "LS"}},
-      {"kind", {"Tipo", "Kind"}},
-      {"where", {"Posizione", "Location"}},
-      {"per_tie", {"per catena (kN)", "per tie (kN)"}},
-      {"per_metre", {"per metro (kN/m)", "per metre (kN/m)"}},
-      {"dc_without", {"D/C senza catena", "D/C without the tie"}},
-      {"before_after", {"Meccanismo prima e dopo l'intervento", "The mechanism before and after the intervention"}},
-      {"before", {"prima", "before"}},
-      {"after", {"dopo", "after"}},
-      {"all_checks", {"tutte le verifiche", "every check"}},
-      {"zeta", {"ζE = PGA capacità / PGA domanda (NTC 2018)", "ζE = PGA capacity / PGA demand (NTC 2018)"}},
-      {"N_Ed",
-       {"Domanda N_Ed: la massima forza necessaria per catena", "Demand N_Ed: the largest force needed per tie"}},
-      {"rod yield", {"snervamento della barra", "rod yield"}},
-      {"local compression", {"compressione locale della muratura", "local compression of the masonry"}},
-      {"punching", {"punzonamento del cuneo murario", "punching of the masonry wedge"}},
-      {"anchor bending", {"flessione del capochiave", "bending of the anchor"}},
-      {"rod elongation", {"allungamento della barra", "rod elongation"}},
-      {"strength", {"resistenza", "strength"}},
-      {"displacement", {"spostamento", "displacement"}},
-      {"ground", {"al suolo", "ground"}},
-      {"height", {"in quota", "height"}},
-      {"bearing", {"compressione locale", "local compression"}},
-      {"rodg", {"barra", "rod"}},
-      // The clauses of the tie checks (tie_checks.cpp), in the relazione's language.
-      {"clause.rod yield", {"NTC 2018 §4.2.4.1.2 [4.2.6] [R]", "NTC 2018 §4.2.4.1.2 [4.2.6] [R]"}},
-      {"clause.local compression",
-       {"muratura sotto il capochiave, prassi [R]", "masonry under the anchor, practice [R]"}},
-      {"clause.punching", {"cuneo murario a 45°, prassi [R]", "45-degree masonry wedge, practice [R]"}},
-      {"clause.anchor bending.plate", {"piastra a mensole [I]", "plate as cantilever strips [I]"}},
-      {"clause.anchor bending.bar", {"paletto appoggiato [I]", "bar, simply supported [I]"}},
-      {"clause.rod elongation", {"eps_ud = 0,9 eps_uk, eps_uk = 7,5 % [I]", "eps_ud = 0.9 eps_uk, eps_uk = 7.5 % [I]"}},
-      {"dyn_title",
-       {"Verifica dinamica prima e dopo la catena (Circ. 2019 C8.7.1.2.1.9)",
-        "Dynamic check before and after the tie (Circ. 2019 C8.7.1.2.1.9)"}},
-      {"dyn_intro",
-       {"Le analisi dinamiche della facciata (sopra) ripetute con la catena progettata come vincolo monolatero (solo trazione) "
-        "elastico-perfettamente plastico nel suo punto.",
-        "The façade's dynamic analyses (above) repeated with the designed tie as a one-sided (tension-only) "
-        "elastic-perfectly-plastic restraint at its point."}},
-      {"dyn_intro_given",
-       {"Le analisi dinamiche della facciata (sopra) sono quelle della parete con le sue catene, vincoli monolateri (solo "
-        "trazione) elastico-perfettamente plastici nel loro punto; prima: le stesse analisi senza catene.",
-        "The façade's dynamic analyses (above) are those of the wall with its ties, one-sided (tension-only) "
-        "elastic-perfectly-plastic restraints at their points; before: the same analyses without them."}},
-      {"dyn_not",
-       {"Analisi dinamica con la catena non eseguita: richiede la sezione dinamica e un moto monolatero "
-        "(corpo o catena cinematica).",
-        "Dynamic analysis with the tie not done: it needs the dynamic section and one-sided rocking (a body or a "
-        "chain)."}},
-      {"dyn_e", {"e (restituzione)", "e (restitution)"}},
-      {"dyn_N", {"N accelerogrammi", "N records"}},
-      {"dyn_over", {"ribaltamenti prima / dopo", "overturned before / after"}},
-      {"dyn_d", {"d* domanda prima / dopo (m)", "d* demand before / after (m)"}},
-      {"dyn_dslv", {"d_SLV prima / dopo (m)", "d_SLV before / after (m)"}},
-      {"dyn_yield", {"catena snervata / rotta", "rod yielded / broken"}},
-      {"dyn_verdict", {"esito prima → dopo", "outcome before → after"}},
-      {"drawing",
-       {"Le catene sul meccanismo (frecce: la resistenza di progetto del livello sulla striscia analizzata).",
-        "The ties on the mechanism (arrows: the level's design strength on the strip analysed)."}},
-  };
-  static const std::string empty;
-  const auto it = t.find(key);
-  if (it == t.end()) return key;
-  return lang == Lang::it ? it->second.first : it->second.second;
-}
-
 std::string td(const std::string& s) { return "<td>" + s + "</td>"; }
+std::string tdn(const std::string& s) { return "<td class=\"num\">" + s + "</td>"; }
 std::string th(const std::string& s) { return "<th>" + s + "</th>"; }
 std::string fnum(double v, const char* f) { return std::isfinite(v) ? format(f, v) : std::string("–"); }
-std::string verdict_cell(Lang lang, bool ok) {
-  return std::string("<td style=\"color:") + (ok ? "#1a7f37" : "#c62828") + "\">" + tr(lang, ok ? "ok" : "ko") + "</td>";
+
+struct Ctx {
+  Lang L;
+  const std::string& t(const std::string& key) const { return msg(L, "tie." + key); }
+  template <class... A>
+  std::string f(const std::string& key, const A&... a) const {
+    return msgf(L, "tie." + key, a...);
+  }
+  std::string ok(bool v) const {
+    return std::string("<td style=\"color:") + (v ? "#1a7f37" : "#c62828") + "\">" + t(v ? "ok" : "ko") + "</td>";
+  }
+};
+
+std::string component(const Ctx& c, const std::string& name) { return c.t("component." + name); }
+
+std::string rod_cell(const Ctx& c, const Tie& x) {
+  return (x.rod.diameter > 0.0 ? format("Ø%.0f mm", x.rod.diameter * 1e3) : format("A = %.0f mm²", x.rod.area * 1e6)) +
+         " " + x.rod.grade + format(" (A = %.0f mm²)", x.rod.area * 1e6);
 }
 
-// The governing candidate's chain with each level drawn as a tie arrow of its design strength.
-std::string drawing(const TieInterventionResult& t, Lang lang) {
-  const CandidateResult& cr = t.after.candidates[t.after.governing];
-  const Chain& chain = t.case_after.mechanism.candidates[t.after.governing].chain;
+std::string ends_cell(const Ctx& c, const Tie& x) {
+  return c.t("ends." + std::string(to_string(x.rod.ends))) + format(" M%.0f, A_res = %.1f mm²", x.rod.thread_diameter * 1e3,
+                                                                     x.rod.thread_area * 1e6);
+}
+
+std::string anchor_cell(const Ctx& c, const Tie& x) {
+  return x.anchor.type == AnchorType::Plate
+             ? c.t("plate") + format(" %.0f × %.0f × %.0f mm ", x.anchor.a * 1e3, x.anchor.b * 1e3, x.anchor.t * 1e3) +
+                   x.anchor.grade
+             : c.t("bar") + format(" %.0f mm, Ø%.0f mm ", x.anchor.a * 1e3, x.anchor.b * 1e3) + x.anchor.grade;
+}
+
+std::string layout_cell(const Ctx& c, const Tie& x) {
+  const TieLayout& L = x.layout;
+  std::string s = c.f("layout_n", L.count, format("%.2f", L.wall_length));
+  if (L.count > 1) s += ", " + c.f("layout_i", format("%.2f", L.centre_spacing()));
+  return s + ", " + c.f("layout_e", format("%.2f", L.edge_distance));
+}
+
+// The governing candidate's chain of a state with each level drawn as a tie
+// arrow of its design strength, labelled per tie and per level.
+std::string drawing(const Ctx& c, const CaseFile& kase, const KinematicCaseResult& r,
+                    const std::vector<TieLevelResult>& levels) {
+  const CandidateResult& cr = r.candidates[r.governing];
+  const Chain& chain = kase.mechanism.candidates[r.governing].chain;
   std::vector<Load> loads;
   for (const Load& l : chain.loads())
     if (l.type != LoadType::SelfWeight) loads.push_back(l);
@@ -141,26 +81,194 @@ std::string drawing(const TieInterventionResult& t, Lang lang) {
     l.block = w.tie.block;
     l.point = w.tie.point;
     l.force = w.tie.capacity * w.tie.direction;
+    for (const TieLevelResult& x : levels)
+      if (x.tie.name == w.tie.name)
+        l.label = c.f("drawing_label", format("%.1f", x.resistance.design / kN),
+                      format("%.1f", x.resistance.design * x.tie.layout.count / kN));
     loads.push_back(l);
   }
   try {
     const Chain drawn(chain.blocks(), chain.constraints(), loads);
-    return mechanism_svg(drawn, cr.result, lang);
+    return mechanism_svg(drawn, cr.result, c.L);
   } catch (const std::exception&) {
-    return mechanism_svg(chain, cr.result, lang);
+    return mechanism_svg(chain, cr.result, c.L);
   }
+}
+
+std::string levels_table(const Ctx& c, const std::vector<TieLevelResult>& levels) {
+  std::string h = "<table class=\"data\"><tr>" + th(c.t("level")) + th(c.t("state")) + th(c.t("rod")) + th(c.t("ends")) +
+                  th(c.t("anchor")) + th(c.t("layout")) + th(c.t("free_length")) + th(c.t("pretension")) +
+                  th(c.t("T_Rd_tie")) + th(c.t("T_Rd_level")) + th(c.t("behaviour")) + "</tr>\n";
+  for (const TieLevelResult& L : levels) {
+    const Tie& x = L.tie;
+    h += "<tr>" + td(xml_escape(x.name)) + td(c.t(x.existing ? "existing" : "new")) + td(rod_cell(c, x)) +
+         td(ends_cell(c, x)) + td(anchor_cell(c, x)) + td(layout_cell(c, x)) + tdn(format("%.2f", x.free_length)) +
+         tdn(format("%.1f", x.pretension / kN)) +
+         td(format("%.1f", L.resistance.design / kN) + " (" + component(c, L.resistance.governing) + ")") +
+         tdn(format("%.1f", L.resistance.design * x.layout.count / kN)) +
+         td(c.t(L.resistance.ductile ? "ductile" : "elastic")) + "</tr>\n";
+  }
+  return h + "</table>\n";
+}
+
+std::string formulas(const Ctx& c) {
+  std::string h = "<ul class=\"formulas\">\n";
+  for (const char* k : {"f.rod", "f.thread", "f.bearing", "f.punching", "f.plate", "f.bar", "f.hierarchy", "f.elastic",
+                        "f.elongation", "f.capacity", "f.layout"})
+    h += "<li>" + c.t(k) + "</li>\n";
+  return h + "</ul>\n<p>" + c.t("f.note") + "</p>\n";
+}
+
+std::string checks_table(const Ctx& c, const TieLevelResult& L) {
+  std::string h = "<table class=\"data\"><tr>" + th(c.t("check")) + th(c.t("clause")) + th(c.t("demand")) +
+                  th(c.t("capacity")) + th(c.t("unit")) + th("D/C") + th(c.t("outcome")) + "</tr>\n";
+  for (const TieCheckRow& r : L.checks) {
+    const double s = r.unit == "mm" ? 1e3 : r.unit == "kN" ? 1.0 / kN : 1.0;
+    const bool count = r.unit == "analyses";
+    const std::string clause = r.clause.empty() ? "" : c.t("clause." + r.check);
+    std::string demand = !r.reachable ? c.t("unreachable") : count ? format("%.0f", r.demand) : fnum(r.demand * s, "%.2f");
+    std::string capacity = count ? "0" : fnum(r.capacity * s, "%.2f");
+    std::string unit = count ? c.t("unit_analyses") : r.unit;
+    h += "<tr>" + td(c.t("check." + r.check)) + td(xml_escape(clause)) + tdn(demand) + tdn(capacity) + td(unit) +
+         tdn(r.reachable && !count ? fnum(r.dc, "%.3f") : "–") + c.ok(r.satisfied) + "</tr>\n";
+  }
+  return h + "</table>\n";
+}
+
+std::string required_table(const Ctx& c, const TieLevelResult& L) {
+  std::string h = "<table class=\"data\"><tr>" + th(c.t("code")) + th(c.t("ls")) + th(c.t("kind")) + th(c.t("where")) +
+                  th(c.t("per_tie")) + th(c.t("per_level")) + th(c.t("per_metre")) + th(c.t("dc_without")) + "</tr>\n";
+  for (const RequiredTieForce& f : L.required) {
+    h += "<tr>" + td(f.code) + td(f.limit_state) + td(c.t("kind." + f.kind)) + td(c.t("where." + f.location));
+    if (f.reachable)
+      h += tdn(format("%.2f", f.per_tie / kN)) + tdn(format("%.2f", f.per_tie * L.tie.layout.count / kN)) +
+           tdn(format("%.2f", f.per_metre / kN));
+    else
+      h += "<td colspan=\"3\">" + c.t("unreachable") + ": " + c.t("unreachable_why") + "</td>";
+    h += tdn(fnum(f.dc_without, "%.3f")) + "</tr>\n";
+  }
+  return h + "</table>\n";
+}
+
+std::string level_block(const Ctx& c, const TieLevelResult& L, const std::string& state, const std::string& ho,
+                        const std::string& hc) {
+  std::string h = ho + c.t("checks_title") + " — " + xml_escape(L.tie.name) + " (" + state + ")" + hc + "\n";
+  const TieResistance& r = L.resistance;
+  h += "<p>" +
+       (r.ductile ? c.f("ductile_text", format("%.1f", r.hierarchy_demand / kN), component(c, r.weakest_brittle),
+                        format("%.1f", r.weakest_brittle_capacity / kN), format("%.0f", r.ultimate_elongation * 1e3))
+                  : c.f("elastic_text", component(c, r.weakest_brittle), format("%.1f", r.weakest_brittle_capacity / kN),
+                        format("%.1f", r.hierarchy_demand / kN), format("%.2f", L.demand.elastic_demand() / kN))) +
+       "</p>\n";
+  std::string dem = c.f("demand_static", format("%.2f", L.demand.static_force / kN));
+  if (L.demand.curve_force) dem += "; " + c.f("demand_curve", format("%.2f", *L.demand.curve_force / kN));
+  if (L.demand.dynamic_force)
+    dem += "; " + c.f("demand_dynamic", format("%.2f", *L.demand.dynamic_force / kN), L.demand.dynamic_runs);
+  if (L.demand.dynamic_breaks > 0)
+    dem += "; " + c.f("demand_broken", L.demand.dynamic_breaks, L.demand.dynamic_runs,
+                      component(c, L.demand.dynamic_component));
+  h += "<p>" + dem + ".</p>\n" + checks_table(c, L);
+  h += ho + c.t("required_title") + " — " + xml_escape(L.tie.name) + hc + "\n" + required_table(c, L);
+  return h;
+}
+
+std::string states_table(const Ctx& c, const TieInterventionResult& t) {
+  const KinematicResult& b = t.before.candidates[t.before.governing].result;
+  const KinematicResult& a = t.after.candidates[t.after.governing].result;
+  auto dk = [](const KinematicResult& k, double v) { return k.curve_complete() ? fnum(v, "%.4f") : std::string("–"); };
+  std::string h = "<table class=\"data\"><tr>" + th("") + th(c.t("before")) + th(c.t("after")) + "</tr>\n";
+  auto row = [&](const std::string& label, const std::string& x, const std::string& y) {
+    h += "<tr>" + td(label) + tdn(x) + tdn(y) + "</tr>\n";
+  };
+  row("α0", fnum(b.alpha0, "%.4f"), fnum(a.alpha0, "%.4f"));
+  row("a0* (m/s²)", fnum(b.a0_star, "%.4f"), fnum(a.a0_star, "%.4f"));
+  row("d0* (m)", dk(b, b.d0_star), dk(a, a.d0_star));
+  row(c.t("d_tie"), dk(b, b.d_star_tie_limit), dk(a, a.d_star_tie_limit));
+  row("d_SLV (m)", dk(b, b.d_SLV), dk(a, a.d_SLV));
+  row("d_SLC (m)", dk(b, b.d_SLC), dk(a, a.d_SLC));
+  row(c.t("d_SLV_plastic"), dk(b, b.d_SLV_plastic), dk(a, a.d_SLV_plastic));
+  row(c.t("zeta"), fnum(t.zetaE_before, "%.3f"), fnum(t.zetaE_after, "%.3f"));
+  h += "<tr>" + td(c.t("all_checks")) + c.ok(t.passes_before) + c.ok(t.passes_after) + "</tr>\n";
+  const CandidateResult& cb = t.before.candidates[t.before.governing];
+  const CandidateResult& ca = t.after.candidates[t.after.governing];
+  for (const CheckRow& r : cb.checks) {
+    const CheckRow* r2 = nullptr;
+    for (const CheckRow& x : ca.checks)
+      if (x.code == r.code && x.limit_state == r.limit_state && x.kind == r.kind && x.location == r.location) r2 = &x;
+    row(r.code + " " + r.limit_state + " " + c.t("kind." + r.kind) + " " + c.t("where." + r.location) + " D/C",
+        fnum(r.dc, "%.3f"), r2 ? fnum(r2->dc, "%.3f") : "–");
+  }
+  return h + "</table>\n<p>" + c.t("plastic_note") + "</p>\n";
+}
+
+std::string run_outcome(const Ctx& c, const TieDynamicRun& r) {
+  if (r.failed) return c.t("run_failed");
+  for (const TieLevelRun& l : r.levels)
+    if (l.broken)
+      return "<span style=\"color:#c62828\">" +
+             c.f("run_broken", xml_escape(l.name), component(c, l.component), format("%.2f", l.t_broken)) + "</span>";
+  if (r.yielded) return c.f("run_yielded", format("%.1f", r.plastic_elongation * 1e3));
+  return c.t("run_elastic");
+}
+
+std::string dynamics(const Ctx& c, const TieInterventionResult& t, const std::string& ho, const std::string& hc) {
+  const TieDynamicResult& d = t.dynamics;
+  std::string h = ho + c.t("dyn_title") + hc + "\n";
+  if (!d.applies) return h + "<p>" + c.t("dyn_not") + "</p>\n";
+  h += "<p>" + c.t(t.intervention ? "dyn_intro" : "dyn_intro_existing") + "</p>\n<table class=\"data\"><tr>" +
+       th(c.t("dyn_e")) + th(c.t("dyn_N")) + th(c.t("dyn_over")) + th(c.t("dyn_d")) + th(c.t("dyn_dslv")) +
+       th(c.t("dyn_yield")) + th(c.t("dyn_broken")) + th(c.t("dyn_verdict")) + "</tr>\n";
+  for (const TieDynamicSummary& x : d.summaries)
+    h += "<tr>" + tdn(format("%.3f", x.e)) + tdn(format("%d", x.records)) +
+         tdn(format("%d / %d", x.overturned_before, x.overturned_after)) +
+         tdn(format("%.4f / %.4f", x.d_demand_before, x.d_demand_after)) +
+         tdn(format("%.4f / %.4f", x.d_SLV_before, x.d_SLV_after)) +
+         tdn(format("%d / %d", x.yielded_before, x.yielded_after)) + tdn(format("%d / %d", x.broken_before, x.broken_after)) +
+         "<td>" + c.t(x.satisfied_before ? "ok" : "ko") + " → " + c.t(x.satisfied_after ? "ok" : "ko") + "</td></tr>\n";
+  h += "</table>\n<p>" + c.t("dyn_runs_intro") + "</p>\n<table class=\"data\"><tr>" + th(c.t("dyn_record")) +
+       th(c.t("dyn_e")) + th(c.t("dyn_polarity")) + th("θ_max (rad)") + th(c.t("dyn_fmax")) + th(c.t("dyn_outcome")) +
+       "</tr>\n";
+  for (const TieDynamicRun& r : d.runs)
+    h += "<tr>" + tdn(format("%zu", r.record + 1)) + tdn(format("%.3f", r.e)) +
+         td(c.t(r.reversed ? "reversed" : "normal")) + tdn(format("%.5f", r.theta_max)) +
+         tdn(format("%.2f", r.max_force / kN)) + td(run_outcome(c, r)) + "</tr>\n";
+  return h + "</table>\n";
+}
+
+std::string detailing(const Ctx& c, const TieInterventionResult& t, const std::string& ho, const std::string& hc) {
+  std::string h = ho + c.t("det_title") + hc + "\n<ul class=\"detailing\">\n";
+  for (const TieLevelResult& L : t.levels) {
+    const Tie& x = L.tie;
+    const tie_catalogue::Thread* th = tie_catalogue::find_thread(x.rod.thread_diameter);
+    std::string item = "<strong>" + xml_escape(x.name) + "</strong> (" + c.t(x.existing ? "existing" : "new") + "): ";
+    item += c.f("det_anchor", anchor_cell(c, x), c.t(x.anchor.type == AnchorType::Plate ? "det_plate" : "det_bar"));
+    if (th)
+      item += " " + c.f("det_nut", format("%.0f", th->d * 1e3), format("%.0f", th->s * 1e3), format("%.1f", th->m * 1e3),
+                        format("%.0f", th->dw * 1e3), format("%.1f", th->hw * 1e3));
+    item += " " + c.t("det_ends." + std::string(to_string(x.rod.ends)));
+    item += " " + c.f("det_layout", layout_cell(c, x));
+    if (x.pretension > 0.0)
+      item += " " + c.f("det_pretension", format("%.1f", x.pretension / kN),
+                        format("%.0f", 100.0 * x.pretension / L.resistance.design));
+    else
+      item += " " + c.t("det_pretension_none");
+    h += "<li>" + item + "</li>\n";
+  }
+  for (const char* k : {"det_far_end", "det_corrosion", "det_execution"}) h += "<li>" + c.t(k) + "</li>\n";
+  return h + "</ul>\n";
 }
 
 }  // namespace
 
-std::string tie_section_title(Lang lang) { return tr(lang, "title"); }
+std::string tie_section_title(Lang lang) { return msg(lang, "tie.title"); }
 
 std::string tie_html_section(const TieInterventionResult& t, Lang lang, const std::string& id_prefix,
                              int heading_level) {
+  const Ctx c{lang};
   // Headings at `heading_level`; every id (the section's, the drawing's
   // markers) prefixed, so that several sections share a page (the building).
-  const std::string h_open = "<h" + std::to_string(heading_level) + ">";
-  const std::string h_close = "</h" + std::to_string(heading_level) + ">";
+  const std::string ho = "<h" + std::to_string(heading_level) + ">";
+  const std::string hc = "</h" + std::to_string(heading_level) + ">";
   auto prefixed = [&](std::string svg) {
     for (const char* key : {"id=\"", "url(#"})
       for (std::size_t at = svg.find(key); !id_prefix.empty() && at != std::string::npos;
@@ -169,92 +277,32 @@ std::string tie_html_section(const TieInterventionResult& t, Lang lang, const st
     return svg;
   };
   std::string h = "<div class=\"ties\" id=\"" + xml_escape(id_prefix) + "ties\">\n";
-  h += "<p>" + tr(lang, t.designed ? "intro_design" : "intro_given") + "</p>\n";
-  if (t.designed && !t.found) h += "<p style=\"color:#c62828\">" + tr(lang, "not_found") + "</p>\n";
-  h += "<figure>" + prefixed(drawing(t, lang)) + "<figcaption>" + tr(lang, "drawing") + "</figcaption></figure>\n";
-  // Levels.
-  h += "<table class=\"data\"><tr>" + th(tr(lang, "level")) + th(tr(lang, "rod")) + th(tr(lang, "anchor")) +
-       th(tr(lang, "position")) + th(tr(lang, "spacing")) + th(tr(lang, "free_length")) + th(tr(lang, "T_Rd")) + "</tr>\n";
-  for (const TieLevelResult& L : t.levels) {
-    const Tie& x = L.tie;
-    const std::string rod = (x.rod.diameter > 0.0 ? format("Ø%.0f mm", x.rod.diameter * 1e3)
-                                                  : format("A = %.0f mm²", x.rod.area * 1e6)) +
-                            " " + x.rod.grade;
-    const std::string anchor =
-        x.anchor.type == AnchorType::Plate
-            ? format("%.0f × %.0f × %.0f mm ", x.anchor.a * 1e3, x.anchor.b * 1e3, x.anchor.t * 1e3) + x.anchor.grade
-            : format("paletto %.0f mm, Ø%.0f mm ", x.anchor.a * 1e3, x.anchor.b * 1e3) + x.anchor.grade;
-    const std::string gov = L.resistance.governing == "rod" ? tr(lang, "rodg") : tr(lang, L.resistance.governing);
-    h += "<tr>" + td(xml_escape(x.name)) + td(rod) + td(anchor) + td(format("(%.2f, %.2f)", x.point.x(), x.point.y())) +
-         td(format("%.2f", x.spacing)) + td(format("%.2f", x.free_length)) +
-         td(format("%.1f", L.resistance.design / kN) + " (" + tr(lang, "governing") + " " + gov + ")") + "</tr>\n";
-  }
-  h += "</table>\n";
-  for (const TieLevelResult& L : t.levels) {
-    h += h_open + tr(lang, "checks_title") + " — " + xml_escape(L.tie.name) + h_close + "\n";
-    h += "<p>" + tr(lang, "N_Ed") + format(" = %.2f kN.", L.N_Ed / kN) + "</p>\n";
-    h += "<table class=\"data\"><tr>" + th(tr(lang, "check")) + th(tr(lang, "clause")) + th(tr(lang, "demand")) +
-         th(tr(lang, "capacity")) + th(tr(lang, "unit")) + th("D/C") + th(tr(lang, "outcome")) + "</tr>\n";
-    for (const TieCheckRow& c : L.checks) {
-      const double s = c.unit == "mm" ? 1e3 : 1.0 / kN;
-      const std::string ck = c.check == "anchor bending"
-                                 ? std::string("clause.anchor bending.") +
-                                       (L.tie.anchor.type == AnchorType::Plate ? "plate" : "bar")
-                                 : "clause." + c.check;
-      h += "<tr>" + td(tr(lang, c.check)) + td(xml_escape(tr(lang, ck))) + td(fnum(c.demand * s, "%.2f")) +
-           td(fnum(c.capacity * s, "%.2f")) + td(c.unit) + td(fnum(c.dc, "%.3f")) + verdict_cell(lang, c.satisfied) +
-           "</tr>\n";
-    }
-    h += "</table>\n" + h_open + tr(lang, "required_title") + " — " + xml_escape(L.tie.name) + h_close + "\n";
-    h += "<table class=\"data\"><tr>" + th(tr(lang, "code")) + th(tr(lang, "ls")) + th(tr(lang, "kind")) +
-         th(tr(lang, "where")) + th(tr(lang, "per_tie")) + th(tr(lang, "per_metre")) + th(tr(lang, "dc_without")) +
-         "</tr>\n";
-    for (const RequiredTieForce& f : L.required)
-      h += "<tr>" + td(f.code) + td(f.limit_state) + td(tr(lang, f.kind)) + td(tr(lang, f.location)) +
-           td(fnum(f.per_tie / kN, "%.2f")) + td(fnum(f.per_metre / kN, "%.2f")) + td(fnum(f.dc_without, "%.3f")) +
-           "</tr>\n";
-    h += "</table>\n";
-  }
-  // Before / after.
-  const CandidateResult& b = t.before.candidates[t.before.governing];
-  const CandidateResult& a = t.after.candidates[t.after.governing];
-  h += h_open + tr(lang, "before_after") + h_close + "\n<table class=\"data\"><tr>" + th("") + th(tr(lang, "before")) +
-       th(tr(lang, "after")) + "</tr>\n";
-  h += "<tr>" + td("α0") + td(format("%.4f", b.result.alpha0)) + td(format("%.4f", a.result.alpha0)) + "</tr>\n";
-  h += "<tr>" + td("a0* (m/s²)") + td(format("%.4f", b.result.a0_star)) + td(format("%.4f", a.result.a0_star)) + "</tr>\n";
-  h += "<tr>" + td("d0* (m)") + td(b.result.curve_complete() ? format("%.4f", b.result.d0_star) : "–") +
-       td(a.result.curve_complete() ? format("%.4f", a.result.d0_star) : "–") + "</tr>\n";
-  h += "<tr>" + td(tr(lang, "zeta")) + td(fnum(t.zetaE_before, "%.3f")) + td(fnum(t.zetaE_after, "%.3f")) + "</tr>\n";
-  h += "<tr>" + td(tr(lang, "all_checks")) + verdict_cell(lang, t.passes_before) + verdict_cell(lang, t.passes_after) +
-       "</tr>\n";
-  for (const CheckRow& row : b.checks) {
-    const CheckRow* r2 = nullptr;
-    for (const CheckRow& x : a.checks)
-      if (x.code == row.code && x.limit_state == row.limit_state && x.kind == row.kind && x.location == row.location)
-        r2 = &x;
-    h += "<tr>" + td(row.code + " " + row.limit_state + " " + tr(lang, row.kind) + " " + tr(lang, row.location) + " D/C") +
-         td(fnum(row.dc, "%.3f")) + td(r2 ? fnum(r2->dc, "%.3f") : "–") + "</tr>\n";
-  }
-  h += "</table>\n";
-  // Dynamics before / after.
-  h += h_open + tr(lang, "dyn_title") + h_close + "\n";
-  if (!t.dynamics.applies) {
-    h += "<p>" + tr(lang, "dyn_not") + "</p>\n";
-  } else {
-    h += "<p>" + tr(lang, t.designed ? "dyn_intro" : "dyn_intro_given") + "</p>\n<table class=\"data\"><tr>" + th(tr(lang, "dyn_e")) +
-         th(tr(lang, "dyn_N")) + th(tr(lang, "dyn_over")) + th(tr(lang, "dyn_d")) + th(tr(lang, "dyn_dslv")) +
-         th(tr(lang, "dyn_yield")) + th(tr(lang, "dyn_verdict")) + "</tr>\n";
-    for (const TieDynamicSummary& x : t.dynamics.summaries)
-      h += "<tr>" + td(format("%.3f", x.e)) + td(format("%d", x.records)) +
-           td(format("%d / %d", x.overturned_before, x.overturned_after)) +
-           td(format("%.4f / %.4f", x.d_demand_before, x.d_demand_after)) +
-           td(format("%.4f / %.4f", x.d_SLV_before, x.d_SLV_after)) + td(format("%d / %d", x.yielded, x.ruptured)) +
-           "<td>" + tr(lang, x.satisfied_before ? "ok" : "ko") + " → " + tr(lang, x.satisfied_after ? "ok" : "ko") +
-           "</td></tr>\n";
-    h += "</table>\n";
-  }
+  h += "<p>" + c.t(t.designed ? "intro_design" : t.intervention ? "intro_given" : "intro_existing") + "</p>\n";
+  if (t.designed && t.found) h += "<p>" + c.t(t.regime == "ductile" ? "regime_ductile" : "regime_elastic") + "</p>\n";
+  if (t.designed && !t.found) h += "<p style=\"color:#c62828\">" + c.t("not_found") + "</p>\n";
+  h += "<figure>" +
+       prefixed(drawing(c, t.intervention ? t.case_after : t.case_before, t.intervention ? t.after : t.before, t.levels)) +
+       "<figcaption>" + c.t("drawing") + "</figcaption></figure>\n";
+  h += ho + c.t("levels_title") + hc + "\n" + levels_table(c, t.levels);
+  h += ho + c.t("formulas_title") + hc + "\n" + formulas(c);
+  for (const TieLevelResult& L : t.levels_before) h += level_block(c, L, c.t("state_before"), ho, hc);
+  if (t.intervention)
+    for (const TieLevelResult& L : t.levels) h += level_block(c, L, c.t("state_after"), ho, hc);
+  h += ho + c.t("before_after") + hc + "\n" + states_table(c, t);
+  h += dynamics(c, t, ho, hc);
+  h += detailing(c, t, ho, hc);
   h += "</div>\n";
   return h;
+}
+
+std::vector<TieReading> tie_readings(const TieInterventionResult& t, Lang lang) {
+  std::vector<TieReading> out;
+  for (int i = 1; i <= 14; ++i) {
+    const std::string k = "tie.reading." + std::to_string(i);
+    out.push_back({msg(lang, k + ".q"), msg(lang, k + ".r"), msg(lang, k + ".b")});
+  }
+  (void)t;
+  return out;
 }
 
 }  // namespace assess

@@ -1,12 +1,14 @@
-// tie_report.cpp: text and JSON of the tie rods (issue 23); formatting only.
+// tie_report.cpp: text and JSON of the tie rods (issues 23, 29), and the
+// readings adopted; formatting only.
 #include "assess/report/tie_report.hpp"
 
+#include "assess/kinematic/tie_catalogue.hpp"
 #include "assess/report/kinematic_report.hpp"
 #include "assess/support/units.hpp"
 #include "report/text_format.hpp"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace assess {
@@ -14,10 +16,13 @@ namespace {
 
 constexpr double kN = units::kN;
 
+std::string mm(double m) { return format("%.0f", m * 1e3); }
+
 std::string rod_label(const Tie& t) {
-  if (t.rod.diameter > 0.0)
-    return format("rod %s%.0f mm %s", "diam. ", t.rod.diameter * 1e3, t.rod.grade.c_str());
-  return format("rod A = %.0f mm2 %s", t.rod.area * 1e6, t.rod.grade.c_str());
+  std::string s = t.rod.diameter > 0.0 ? "diam. " + mm(t.rod.diameter) + " mm" : format("A = %.0f mm2", t.rod.area * 1e6);
+  s += " " + t.rod.grade;
+  if (t.rod.ends == TieEnds::Threaded) return s + ", threaded ends M" + mm(t.rod.thread_diameter);
+  return s + ", " + to_string(t.rod.ends) + " ends M" + mm(t.rod.thread_diameter);
 }
 
 std::string anchor_label(const Tie& t) {
@@ -25,6 +30,13 @@ std::string anchor_label(const Tie& t) {
     return format("plate %.0f x %.0f x %.0f mm %s", t.anchor.a * 1e3, t.anchor.b * 1e3, t.anchor.t * 1e3,
                   t.anchor.grade.c_str());
   return format("bar anchor %.0f mm, diam. %.0f mm %s", t.anchor.a * 1e3, t.anchor.b * 1e3, t.anchor.grade.c_str());
+}
+
+std::string layout_label(const Tie& t) {
+  const TieLayout& L = t.layout;
+  std::string s = format("%d ties on the %.2f m wall", L.count, L.wall_length);
+  if (L.count > 1) s += format(", spacing %.2f m", L.centre_spacing());
+  return s + format(", edge distance %.2f m", L.edge_distance);
 }
 
 std::string num_or_dash(double v, const char* f) { return std::isfinite(v) ? format(f, v) : std::string("-"); }
@@ -37,36 +49,44 @@ const CheckRow* find_row(const KinematicCaseResult& r, const CheckRow& key) {
   return nullptr;
 }
 
-double scale(const TieCheckRow& r) { return r.unit == "mm" ? 1e3 : 1.0 / kN; }
+double scale(const TieCheckRow& r) { return r.unit == "mm" ? 1e3 : r.unit == "kN" ? 1.0 / kN : 1.0; }
 
 nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 nlohmann::json side_json(const KinematicCaseResult& r, double zeta, bool passes) {
   const CandidateResult& cr = r.candidates[r.governing];
+  const KinematicResult& k = cr.result;
   nlohmann::json j;
   j["governing"] = cr.label;
-  j["alpha0"] = cr.result.alpha0;
-  j["a0_star"] = cr.result.a0_star;
-  j["d0_star"] = cr.result.curve_complete() ? num(cr.result.d0_star) : nlohmann::json(nullptr);
+  j["alpha0"] = num(k.alpha0);
+  j["a0_star"] = num(k.a0_star);
+  j["d0_star"] = k.curve_complete() ? num(k.d0_star) : nlohmann::json(nullptr);
   j["zeta_E"] = num(zeta);
   j["every_check_satisfied"] = passes;
-  j["e_star"] = cr.result.e_star;
-  j["dk0"] = cr.result.curve_complete() ? num(cr.result.dk0) : nlohmann::json(nullptr);
-  j["d_star_per_dk"] = cr.result.d_star_per_dk;
-  j["d_SLV"] = cr.result.d_SLV;
-  j["d_SLC"] = cr.result.d_SLC;
-  j["T_SLV"] = cr.result.T_SLV;
-  j["T_SLC"] = cr.result.T_SLC;
-  j["du_star"] = cr.result.du_star;
-  j["Ts"] = cr.result.Ts;
+  j["e_star"] = num(k.e_star);
+  j["dk0"] = k.curve_complete() ? num(k.dk0) : nlohmann::json(nullptr);
+  j["d_star_per_dk"] = num(k.d_star_per_dk);
+  j["d_SLV"] = num(k.d_SLV);
+  j["d_SLC"] = num(k.d_SLC);
+  j["T_SLV"] = num(k.T_SLV);
+  j["T_SLC"] = num(k.T_SLC);
+  j["du_star"] = num(k.du_star);
+  j["Ts"] = num(k.Ts);
+  // Issue 29: the capacity stops where a tie reaches its strength; the plastic reserve apart.
+  j["d_star_tie_limit"] = num(k.d_star_tie_limit);
+  j["tie_limit_level"] = k.tie_limit_level;
+  j["plastic_reserve"] = {{"d_star_tie_failure", num(k.d_star_tie_failure)}, {"du_star", num(k.du_star_plastic)},
+                          {"d_SLV", num(k.d_SLV_plastic)},  {"d_SLC", num(k.d_SLC_plastic)},
+                          {"Ts", num(k.Ts_plastic)},        {"T_SLV", num(k.T_SLV_plastic)},
+                          {"T_SLC", num(k.T_SLC_plastic)}};
   // The capacity curve with each tie level's force (kN) and elongation (m) at each point.
   nlohmann::json curve = nlohmann::json::array();
-  for (const CapacityPoint& p : cr.result.curve) {
-    nlohmann::json pt{{"dk", p.dk}, {"d_star", p.d_star}, {"alpha", p.alpha}, {"a_star", p.a_star}};
+  for (const CapacityPoint& p : k.curve) {
+    nlohmann::json pt{{"dk", num(p.dk)}, {"d_star", num(p.d_star)}, {"alpha", num(p.alpha)}, {"a_star", num(p.a_star)}};
     if (!p.tie_force.empty()) {
       nlohmann::json f = nlohmann::json::array(), e = nlohmann::json::array();
-      for (double v : p.tie_force) f.push_back(v / kN);
-      for (double v : p.tie_elongation) e.push_back(v);
+      for (double v : p.tie_force) f.push_back(num(v / kN));
+      for (double v : p.tie_elongation) e.push_back(num(v));
       pt["tie_force_kN"] = f;
       pt["tie_elongation_m"] = e;
     }
@@ -74,172 +94,313 @@ nlohmann::json side_json(const KinematicCaseResult& r, double zeta, bool passes)
   }
   j["capacity_curve"] = curve;
   nlohmann::json tl = nlohmann::json::array();
-  for (const TieWork& w : cr.result.ties)
+  for (const TieWork& w : k.ties)
     tl.push_back({{"name", w.tie.name},
-                  {"ties_on_mechanism", w.tie.count},
-                  {"strength_kN", w.tie.capacity / kN},
-                  {"stiffness_kN_m", w.tie.stiffness / kN},
-                  {"pretension_kN", w.tie.pretension / kN},
-                  {"yield_elongation_m", w.tie.yield_elongation()},
-                  {"virtual_elongation_m_per_rad", w.d_along},
-                  {"work_in_alpha0_kNm", w.work / kN}});
+                  {"ties_on_mechanism", num(w.tie.count)},
+                  {"strength_kN", num(w.tie.capacity / kN)},
+                  {"stiffness_kN_m", num(w.tie.stiffness / kN)},
+                  {"pretension_kN", num(w.tie.pretension / kN)},
+                  {"ductile", w.tie.ductile},
+                  {"yield_elongation_m", num(w.tie.yield_elongation())},
+                  {"failure_elongation_m", num(w.tie.failure_elongation())},
+                  {"virtual_elongation_m_per_rad", num(w.d_along)},
+                  {"work_in_alpha0_kNm", num(w.work / kN)}});
   j["tie_levels_on_mechanism"] = tl;
   j["checks"] = nlohmann::json::array();
   for (const CheckRow& row : cr.checks) j["checks"].push_back(to_json(row));
   return j;
 }
 
-std::string dynamics_text(const TieDynamicResult& d, bool designed) {
-  if (!d.applies) return d.note.empty() ? "" : wrap_text("  dynamic analysis with the tie: not done: " + d.note, 4) + "\n";
-  std::string s = wrap_text(designed ? "  dynamic check before and after the tie (Circ. 2019 C8.7.1.2.1.9; the analyses "
-                                       "above repeated with the tie as a one-sided elastic-perfectly-plastic restraint):"
-                                     : "  dynamic check before and after the tie (Circ. 2019 C8.7.1.2.1.9; the analyses "
-                                       "above are those of the wall with its ties, as one-sided elastic-perfectly-plastic "
-                                       "restraints; before: the same analyses without them):",
-                             4) +
-                   "\n";
-  s += format("      %7s %4s %-18s %9s %9s %10s %10s %9s %9s %9s\n", "e", "N", "rule", "overt.bef", "overt.aft",
-              "d* bef(m)", "d* aft(m)", "dSLV bef", "dSLV aft", "yld/brk");
-  for (const TieDynamicSummary& x : d.summaries)
-    s += format("      %7.3f %4d %-18s %9d %9d %10.4f %10.4f %9.4f %9.4f %9s\n        verdict: %s -> %s\n", x.e,
-                x.records, x.rule.c_str(), x.overturned_before, x.overturned_after, x.d_demand_before, x.d_demand_after,
-                x.d_SLV_before, x.d_SLV_after, format("%d/%d", x.yielded, x.ruptured).c_str(),
-                x.satisfied_before ? "satisfied" : "NOT satisfied", x.satisfied_after ? "satisfied" : "NOT satisfied");
-  double ep = 0.0, E = 0.0, F = 0.0;
-  for (const TieDynamicRun& r : d.runs) {
-    ep = std::max(ep, r.plastic_elongation);
-    E = std::max(E, r.plastic_energy);
-    F = std::max(F, r.max_force);
+nlohmann::json level_json(const TieLevelResult& L) {
+  const Tie& tie = L.tie;
+  nlohmann::json l;
+  l["name"] = tie.name;
+  l["existing"] = tie.existing;
+  l["point_m"] = {tie.point.x(), tie.point.y()};
+  l["direction"] = {tie.direction.x(), tie.direction.y()};
+  l["rod"] = {{"diameter_mm", tie.rod.diameter * 1e3},
+              {"area_mm2", tie.rod.area * 1e6},
+              {"grade", tie.rod.grade},
+              {"fyk_MPa", tie.rod.fyk / 1e6},
+              {"ftk_MPa", tie.rod.ftk / 1e6},
+              {"gamma_M0", tie.rod.gamma_M0},
+              {"ends", to_string(tie.rod.ends)},
+              {"thread_mm", tie.rod.thread_diameter * 1e3},
+              {"thread_area_mm2", tie.rod.thread_area * 1e6},
+              {"nut_width_mm", tie.rod.nut_width * 1e3}};
+  l["anchor"] = tie.anchor.type == AnchorType::Plate
+                    ? nlohmann::json{{"type", "plate"}, {"a_mm", tie.anchor.a * 1e3}, {"b_mm", tie.anchor.b * 1e3},
+                                     {"t_mm", tie.anchor.t * 1e3}, {"grade", tie.anchor.grade}}
+                    : nlohmann::json{{"type", "bar"}, {"length_mm", tie.anchor.a * 1e3},
+                                     {"diameter_mm", tie.anchor.b * 1e3}, {"grade", tie.anchor.grade}};
+  l["free_length_m"] = tie.free_length;
+  l["layout"] = {{"wall_length_m", tie.layout.wall_length},
+                 {"count", tie.layout.count},
+                 {"spacing_m", tie.layout.centre_spacing()},
+                 {"edge_distance_m", tie.layout.edge_distance},
+                 {"tributary_length_m", tie.spacing}};
+  l["pretension_kN"] = tie.pretension / kN;
+  l["ties_on_mechanism"] = L.count;
+  const TieResistance& r = L.resistance;
+  l["strength_kN"] = {{"rod", r.rod / kN},           {"thread", r.thread / kN},
+                      {"local_compression", r.bearing / kN}, {"punching", r.punching / kN},
+                      {"anchor_bending", r.anchor_bending / kN}, {"design", r.design / kN},
+                      {"governing", r.governing}};
+  l["per_level_kN"] = L.count > 0.0 ? num(r.design * tie.layout.count / kN) : nlohmann::json(nullptr);
+  l["ductile"] = r.ductile;
+  l["capacity_design"] = {{"yield_force_kN", r.yield_force / kN},
+                          {"demand_kN", r.hierarchy_demand / kN},
+                          {"gamma_Rd", tie_catalogue::gamma_Rd},
+                          {"gamma_ov", tie_catalogue::gamma_ov},
+                          {"weakest_brittle", r.weakest_brittle},
+                          {"weakest_brittle_kN", r.weakest_brittle_capacity / kN}};
+  l["stiffness_kN_m"] = r.stiffness / kN;
+  l["yield_elongation_mm"] = r.yield_elongation * 1e3;
+  l["ultimate_elongation_mm"] = r.ultimate_elongation * 1e3;
+  l["required"] = nlohmann::json::array();
+  for (const RequiredTieForce& f : L.required) {
+    nlohmann::json q{{"code", f.code},
+                     {"limit_state", f.limit_state},
+                     {"kind", f.kind},
+                     {"location", f.location},
+                     {"reachable", f.reachable},
+                     {"dc_without", num(f.dc_without)}};
+    if (f.reachable) {
+      q["per_tie_kN"] = num(f.per_tie / kN);
+      q["per_metre_kN_m"] = num(f.per_metre / kN);
+      q["level_kN"] = num(f.level_force / kN);
+    } else {
+      q["per_tie_kN"] = q["per_metre_kN_m"] = q["level_kN"] = nullptr;
+      q["reason"] = f.reason;
+    }
+    l["required"].push_back(q);
   }
-  s += wrap_text(format("      largest tie force %.2f kN per tie, permanent elongation %.1f mm, energy dissipated by the "
-                        "rods %.3f kJ per tie (one tie of each level, summed)",
-                        F / kN, ep * 1e3, E / 1e3),
-                 8) +
+  const TieDemand& d = L.demand;
+  l["demand"] = {{"static_kN", d.static_force / kN},
+                 {"reachable", d.reachable},
+                 {"at_displacement_demand_kN", d.curve_force ? num(*d.curve_force / kN) : nlohmann::json(nullptr)},
+                 {"dynamic_kN", d.dynamic_force ? num(*d.dynamic_force / kN) : nlohmann::json(nullptr)},
+                 {"elongation_m", d.elongation ? num(*d.elongation) : nlohmann::json(nullptr)},
+                 {"elastic_demand_kN", d.elastic_demand() / kN},
+                 {"dynamic_analyses", d.dynamic_runs},
+                 {"dynamic_breaks", d.dynamic_breaks}};
+  if (!d.reachable) l["demand"]["unreachable"] = d.unreachable;
+  if (d.dynamic_breaks > 0) l["demand"]["dynamic_component"] = d.dynamic_component;
+  l["checks"] = nlohmann::json::array();
+  for (const TieCheckRow& c : L.checks) {
+    nlohmann::json row{{"check", c.check},       {"clause", c.clause},         {"formula", c.formula},
+                       {"unit", c.unit},         {"satisfied", c.satisfied},   {"reachable", c.reachable}};
+    row["demand"] = c.reachable ? num(c.demand * scale(c)) : nlohmann::json(nullptr);
+    row["capacity"] = num(c.capacity * scale(c));
+    row["dc"] = c.reachable && c.unit != "analyses" ? num(c.dc) : nlohmann::json(nullptr);
+    l["checks"].push_back(row);
+  }
+  l["satisfied"] = L.satisfied;
+  l["dynamic"] = {{"analyses", L.dynamic_runs}, {"yielded", L.dynamic_yielded}, {"broken", L.dynamic_broken}};
+  return l;
+}
+
+nlohmann::json runs_json(const std::vector<TieDynamicRun>& runs) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const TieDynamicRun& r : runs) {
+    nlohmann::json lv = nlohmann::json::array();
+    for (const TieLevelRun& l : r.levels)
+      lv.push_back({{"name", l.name},
+                    {"max_force_kN", num(l.max_force / kN)},
+                    {"max_elongation_m", num(l.max_elongation)},
+                    {"yielded", l.yielded},
+                    {"plastic_elongation_m", num(l.plastic_elongation)},
+                    {"broken", l.broken},
+                    {"component", l.component},
+                    {"t_broken_s", l.broken ? num(l.t_broken) : nlohmann::json(nullptr)}});
+    out.push_back({{"run", r.run},
+                   {"record", r.record},
+                   {"reversed", r.reversed},
+                   {"e", r.e},
+                   {"theta_max", num(r.theta_max)},
+                   {"theta_collapse", num(r.theta_collapse)},
+                   {"overturned", r.overturned},
+                   {"yielded", r.yielded},
+                   {"broken", r.broken},
+                   {"max_force_kN", num(r.max_force / kN)},
+                   {"plastic_elongation_m", num(r.plastic_elongation)},
+                   {"max_elongation_m", num(r.max_elongation)},
+                   {"plastic_energy_kJ", num(r.plastic_energy / 1e3)},
+                   {"d_star_m", num(r.d_star)},
+                   {"collapse", r.collapse},
+                   {"failed", r.failed},
+                   {"levels", lv}});
+  }
+  return out;
+}
+
+// The outcome of one analysis for the ties, in words.
+std::string outcome_text(const TieDynamicRun& r) {
+  if (r.failed) return "integration failed";
+  for (const TieLevelRun& l : r.levels)
+    if (l.broken)
+      return format("BROKEN: %s, %s at t = %.2f s", l.name.c_str(),
+                    l.component == "elongation" ? "rod at its ultimate elongation" : l.component.c_str(), l.t_broken);
+  if (r.yielded) return format("yielded (ductile), permanent elongation %.1f mm", r.plastic_elongation * 1e3);
+  return "elastic";
+}
+
+std::string dynamics_text(const TieInterventionResult& t) {
+  const TieDynamicResult& d = t.dynamics;
+  if (!d.applies) return d.note.empty() ? "" : wrap_text("  dynamic analysis with the ties: not done: " + d.note, 4) + "\n";
+  std::string s = wrap_text(t.intervention ? "  dynamic check, stato di fatto -> stato di progetto (Circ. 2019 "
+                                             "C8.7.1.2.1.9; the analyses above repeated with every tie of the project)"
+                                           : "  dynamic check of the stato di fatto with its existing ties (Circ. 2019 "
+                                             "C8.7.1.2.1.9)",
+                            4) +
+                  "\n";
+  s += format("      %7s %4s %-18s %9s %9s %10s %10s %9s %9s %8s %8s\n", "e", "N", "rule", "overt.bef", "overt.aft",
+              "d* bef(m)", "d* aft(m)", "dSLV bef", "dSLV aft", "yielded", "broken");
+  for (const TieDynamicSummary& x : d.summaries)
+    s += format("      %7.3f %4d %-18s %9d %9d %10.4f %10.4f %9.4f %9.4f %8d %8d\n        verdict: %s -> %s\n", x.e,
+                x.records, x.rule.c_str(), x.overturned_before, x.overturned_after, x.d_demand_before, x.d_demand_after,
+                x.d_SLV_before, x.d_SLV_after, x.yielded_after, x.broken_after,
+                x.satisfied_before ? "satisfied" : "NOT satisfied", x.satisfied_after ? "satisfied" : "NOT satisfied");
+  s += t.intervention ? "    each analysis of the stato di progetto (per tie):\n" : "    each analysis of the stato di fatto (per tie):\n";
+  s += format("      %4s %7s %-8s %10s %11s  %s\n", "rec", "e", "polarity", "theta_max", "F max (kN)", "tie outcome");
+  for (const TieDynamicRun& r : d.runs)
+    s += format("      %4zu %7.3f %-8s %10.5f %11.2f  %s\n", r.record + 1, r.e, r.reversed ? "reversed" : "normal",
+                r.theta_max, r.max_force / kN, outcome_text(r).c_str());
+  return s;
+}
+
+std::string level_text(const TieLevelResult& L) {
+  const Tie& tie = L.tie;
+  std::string s = wrap_text(format("  level \"%s\" (%s): rod %s (A = %.0f mm2, A_res = %.1f mm2), %s, anchor at (%.2f, "
+                                   "%.2f) m, %s, free length %.2f m, pretension %.1f kN",
+                                   tie.name.c_str(), tie.existing ? "existing" : "new", rod_label(tie).c_str(),
+                                   tie.rod.area * 1e6, tie.rod.thread_area * 1e6, anchor_label(tie).c_str(),
+                                   tie.point.x(), tie.point.y(), layout_label(tie).c_str(), tie.free_length,
+                                   tie.pretension / kN),
+                            4) +
+                  "\n";
+  const TieResistance& r = L.resistance;
+  s += wrap_text(format("    design strengths per tie (kN): rod %.1f, thread %.1f, local compression %.1f, punching "
+                        "%.1f, anchor bending %.1f -> T_Rd = %.1f (%s), %.1f kN per level of %d ties; k = EA/L = %.0f "
+                        "kN/m; %.3f ties on the mechanism",
+                        r.rod / kN, r.thread / kN, r.bearing / kN, r.punching / kN, r.anchor_bending / kN,
+                        r.design / kN, r.governing.c_str(), r.design * tie.layout.count / kN, tie.layout.count,
+                        r.stiffness / kN, L.count),
+                 6) +
        "\n";
+  s += wrap_text(r.ductile ? format("    DUCTILE: every brittle capacity >= gamma_Rd gamma_ov A fyk = %.2f x %.2f x %.1f = "
+                                    "%.1f kN (the weakest, %s, %.1f kN): the rod may yield, up to eps_ud L = %.0f mm",
+                                    tie_catalogue::gamma_Rd, tie_catalogue::gamma_ov, r.yield_force / kN,
+                                    r.hierarchy_demand / kN, r.weakest_brittle.c_str(),
+                                    r.weakest_brittle_capacity / kN, r.ultimate_elongation * 1e3)
+                           : format("    NOT DUCTILE (%s %.1f kN < gamma_Rd gamma_ov A fyk = %.1f kN): the tie must "
+                                    "stay elastic; its checks take the largest force it develops (%.2f kN)",
+                                    r.weakest_brittle.c_str(), r.weakest_brittle_capacity / kN, r.hierarchy_demand / kN,
+                                    L.demand.elastic_demand() / kN),
+                 6) +
+       "\n";
+  s += "    force needed by each check of the mechanism (this level, the others as given):\n";
+  s += format("      %-8s %-4s %-13s %-8s %12s %14s %12s\n", "code", "LS", "kind", "where", "per tie kN",
+              "per metre kN/m", "D/C without");
+  for (const RequiredTieForce& f : L.required)
+    s += format("      %-8s %-4s %-13s %-8s %12s %14s %12s\n", f.code.c_str(), f.limit_state.c_str(), f.kind.c_str(),
+                f.location.c_str(), f.reachable ? format("%.2f", f.per_tie / kN).c_str() : "not reachable",
+                f.reachable ? format("%.2f", f.per_metre / kN).c_str() : "-", num_or_dash(f.dc_without, "%.3f").c_str());
+  for (const RequiredTieForce& f : L.required)
+    if (!f.reachable)
+      s += wrap_text("      not reachable (" + f.code + " " + f.limit_state + " " + f.kind + " " + f.location +
+                         "): " + f.reason,
+                     8) +
+           "\n";
+  s += "    checks of the tie:\n";
+  s += format("      %-28s %-34s %9s %9s %8s %6s  %s\n", "check", "clause / source", "demand", "capacity", "unit",
+              "D/C", "verdict");
+  for (const TieCheckRow& c : L.checks) {
+    const bool count = c.unit == "analyses";
+    s += format("      %-28s %-34s %9s %9s %8s %6s  %s\n", c.check.c_str(), c.clause.c_str(),
+                !c.reachable ? "n/r" : count ? format("%.0f", c.demand).c_str() : format("%.2f", c.demand * scale(c)).c_str(),
+                count ? "0" : format("%.2f", c.capacity * scale(c)).c_str(), c.unit.c_str(),
+                c.reachable && !count ? format("%.3f", c.dc).c_str() : "-", verdict(c.satisfied));
+  }
   return s;
 }
 
 }  // namespace
 
 std::string tie_text(const TieInterventionResult& t) {
-  std::string s = "\nTie rods (catene) - issue 23\n";
-  if (t.designed)
+  std::string s = "\nTie rods (catene): stato di fatto and stato di progetto\n";
+  if (t.designed) {
     s += t.found ? format("  design: the smallest rod and plate of the lists that make every check pass (%d combinations "
-                          "analysed)\n",
-                          t.tried)
-                 : "  design: NOT FOUND: " + t.message + "; the largest combination is shown\n";
-  if (t.designed && t.passes_before)
-    s += "  note: the mechanism already satisfies every check without the ties designed here; the smallest tie of the "
-         "lists is shown\n";
-  for (const TieLevelResult& L : t.levels) {
-    const Tie& tie = L.tie;
-    s += wrap_text(format("  level \"%s\": %s%s, %s, anchor at (%.2f, %.2f) m, spacing %.2f m, free length %.2f m, "
-                "pretension %.1f kN",
-                tie.name.c_str(), rod_label(tie).c_str(),
-                tie.rod.diameter > 0.0 ? format(" (A = %.0f mm2)", tie.rod.area * 1e6).c_str() : "", anchor_label(tie).c_str(), tie.point.x(),
-                tie.point.y(), tie.spacing, tie.free_length, tie.pretension / kN), 4) + "\n";
-    const TieResistance& r = L.resistance;
-    s += wrap_text(format("    design strengths (kN): rod %.1f, local compression %.1f, punching %.1f, anchor bending %.1f -> "
-                "T_Rd = %.1f (%s); k = EA/L = %.0f kN/m; %.3f ties on the mechanism",
-                r.rod / kN, r.bearing / kN, r.punching / kN, r.anchor_bending / kN, r.design / kN, r.governing.c_str(),
-                r.stiffness / kN, L.count), 6) + "\n";
-    s += "    force needed by each check of the mechanism (this level, the others as given):\n";
-    s += format("      %-8s %-4s %-13s %-8s %12s %14s %12s\n", "code", "LS", "kind", "where", "per tie kN",
-                "per metre kN/m", "D/C without");
-    for (const RequiredTieForce& f : L.required)
-      s += format("      %-8s %-4s %-13s %-8s %12s %14s %12.3f\n", f.code.c_str(), f.limit_state.c_str(),
-                  f.kind.c_str(), f.location.c_str(), num_or_dash(f.per_tie / kN, "%.2f").c_str(),
-                  num_or_dash(f.per_metre / kN, "%.2f").c_str(), f.dc_without);
-    s += format("    checks of the tie (N_Ed = %.2f kN per tie, the largest force needed):\n", L.N_Ed / kN);
-    s += format("      %-18s %-38s %9s %9s %4s %6s  %s\n", "check", "clause / source", "demand", "capacity", "unit",
-                "D/C", "verdict");
-    for (const TieCheckRow& c : L.checks)
-      s += format("      %-18s %-38s %9.2f %9.2f %4s %6.3f  %s\n", c.check.c_str(), c.clause.c_str(),
-                  c.demand * scale(c), c.capacity * scale(c), c.unit.c_str(), c.dc, verdict(c.satisfied));
+                          "analysed); the ties are %s\n",
+                          t.tried,
+                          t.regime == "ductile" ? "DUCTILE (capacity design satisfied)"
+                                                : "NOT ductile and stay ELASTIC in every analysis")
+                 : "  design: NOT FOUND: " + t.message + "; the combination that came closest is shown\n";
+    if (t.passes_before)
+      s += "  note: the mechanism already satisfies every check without the ties designed here; the smallest tie of the "
+           "lists is shown\n";
+  } else if (!t.intervention) {
+    s += "  no intervention: the existing ties are part of the stato di fatto\n";
+  }
+  if (!t.levels_before.empty()) {
+    s += "  stato di fatto: the existing ties\n";
+    for (const TieLevelResult& L : t.levels_before) s += level_text(L);
+  }
+  if (t.intervention) {
+    s += "  stato di progetto: every tie\n";
+    for (const TieLevelResult& L : t.levels) s += level_text(L);
   }
   const CandidateResult& b = t.before.candidates[t.before.governing];
   const CandidateResult& a = t.after.candidates[t.after.governing];
-  s += "  the mechanism before and after the ties (governing candidate):\n";
-  s += format("      %-34s %14s %14s\n", "", "before", "after");
-  s += format("      %-34s %14.4f %14.4f\n", "alpha0 (-)", b.result.alpha0, a.result.alpha0);
-  s += format("      %-34s %14.4f %14.4f\n", "a0* (m/s2)", b.result.a0_star, a.result.a0_star);
-  s += format("      %-34s %14s %14s\n", "d0* (m)",
-              b.result.curve_complete() ? format("%.4f", b.result.d0_star).c_str() : "-",
-              a.result.curve_complete() ? format("%.4f", a.result.d0_star).c_str() : "-");
-  s += format("      %-34s %14s %14s\n", "zeta_E = PGA capacity / demand", num_or_dash(t.zetaE_before, "%.3f").c_str(),
+  s += "  the mechanism in the stato di fatto and in the stato di progetto (governing candidate):\n";
+  s += format("      %-44s %14s %14s\n", "", "di fatto", "di progetto");
+  s += format("      %-44s %14.4f %14.4f\n", "alpha0 (-)", b.result.alpha0, a.result.alpha0);
+  s += format("      %-44s %14.4f %14.4f\n", "a0* (m/s2)", b.result.a0_star, a.result.a0_star);
+  auto dcol = [](const KinematicResult& k, double v) {
+    return k.curve_complete() ? num_or_dash(v, "%.4f") : std::string("-");
+  };
+  s += format("      %-44s %14s %14s\n", "d0* (m)", dcol(b.result, b.result.d0_star).c_str(),
+              dcol(a.result, a.result.d0_star).c_str());
+  s += format("      %-44s %14s %14s\n", "d* where a tie reaches its strength (m)",
+              dcol(b.result, b.result.d_star_tie_limit).c_str(), dcol(a.result, a.result.d_star_tie_limit).c_str());
+  s += format("      %-44s %14s %14s\n", "d_SLV (m), adopted", dcol(b.result, b.result.d_SLV).c_str(),
+              dcol(a.result, a.result.d_SLV).c_str());
+  s += format("      %-44s %14s %14s\n", "d_SLV (m), plastic reserve (not adopted)",
+              dcol(b.result, b.result.d_SLV_plastic).c_str(), dcol(a.result, a.result.d_SLV_plastic).c_str());
+  s += format("      %-44s %14s %14s\n", "zeta_E = PGA capacity / demand", num_or_dash(t.zetaE_before, "%.3f").c_str(),
               num_or_dash(t.zetaE_after, "%.3f").c_str());
-  s += format("      %-34s %14s %14s\n", "every check", t.passes_before ? "satisfied" : "NOT satisfied",
+  s += format("      %-44s %14s %14s\n", "every check", t.passes_before ? "satisfied" : "NOT satisfied",
               t.passes_after ? "satisfied" : "NOT satisfied");
-  if (std::isfinite(t.zetaE_before) && std::isfinite(t.zetaE_after))
+  if (t.intervention && std::isfinite(t.zetaE_before) && std::isfinite(t.zetaE_after) && t.zetaE_before > 0.0)
     s += format("      improvement of zeta_E: %+.3f (x %.2f)\n", t.zetaE_after - t.zetaE_before,
                 t.zetaE_after / t.zetaE_before);
-  s += format("      %-8s %-4s %-13s %-8s %12s %12s\n", "code", "LS", "kind", "where", "D/C before", "D/C after");
+  s += format("      %-8s %-4s %-13s %-8s %12s %12s\n", "code", "LS", "kind", "where", "D/C fatto", "D/C progetto");
   for (const CheckRow& row : b.checks) {
     const CheckRow* r2 = find_row(t.after, row);
-    s += format("      %-8s %-4s %-13s %-8s %12.3f %12s\n", row.code.c_str(), row.limit_state.c_str(), row.kind.c_str(),
-                row.location.c_str(), row.dc, r2 ? format("%.3f", r2->dc).c_str() : "-");
+    s += format("      %-8s %-4s %-13s %-8s %12s %12s\n", row.code.c_str(), row.limit_state.c_str(), row.kind.c_str(),
+                row.location.c_str(), num_or_dash(row.dc, "%.3f").c_str(), r2 ? num_or_dash(r2->dc, "%.3f").c_str() : "-");
   }
-  s += dynamics_text(t.dynamics, t.designed);
+  s += dynamics_text(t);
+  s += "  readings adopted (for the appendix):\n";
+  for (const TieReading& r : tie_readings(t, Lang::en))
+    s += wrap_text("    - " + r.quantity + ": " + r.reading + " (" + r.basis + ")", 6) + "\n";
   return s;
 }
 
 nlohmann::json tie_json(const TieInterventionResult& t) {
   nlohmann::json j;
   j["designed"] = t.designed;
+  j["intervention"] = t.intervention;
   if (t.designed) {
     j["found"] = t.found;
     j["combinations_analysed"] = t.tried;
+    j["regime"] = t.regime;
     if (!t.found) j["message"] = t.message;
   }
+  j["levels_before"] = nlohmann::json::array();
+  for (const TieLevelResult& L : t.levels_before) j["levels_before"].push_back(level_json(L));
   j["levels"] = nlohmann::json::array();
-  for (const TieLevelResult& L : t.levels) {
-    const Tie& tie = L.tie;
-    nlohmann::json l;
-    l["name"] = tie.name;
-    l["point_m"] = {tie.point.x(), tie.point.y()};
-    l["direction"] = {tie.direction.x(), tie.direction.y()};
-    l["rod"] = {{"diameter_mm", tie.rod.diameter * 1e3}, {"area_mm2", tie.rod.area * 1e6}, {"grade", tie.rod.grade},
-                {"fyk_MPa", tie.rod.fyk / 1e6}, {"gamma_M0", tie.rod.gamma_M0}};
-    l["anchor"] = tie.anchor.type == AnchorType::Plate
-                      ? nlohmann::json{{"type", "plate"}, {"a_mm", tie.anchor.a * 1e3}, {"b_mm", tie.anchor.b * 1e3},
-                                       {"t_mm", tie.anchor.t * 1e3}, {"grade", tie.anchor.grade}}
-                      : nlohmann::json{{"type", "bar"}, {"length_mm", tie.anchor.a * 1e3},
-                                       {"diameter_mm", tie.anchor.b * 1e3}, {"grade", tie.anchor.grade}};
-    l["free_length_m"] = tie.free_length;
-    l["spacing_m"] = tie.spacing;
-    l["pretension_kN"] = tie.pretension / kN;
-    l["ties_on_mechanism"] = L.count;
-    const TieResistance& r = L.resistance;
-    l["strength_kN"] = {{"rod", r.rod / kN},           {"local_compression", r.bearing / kN},
-                        {"punching", r.punching / kN}, {"anchor_bending", num(r.anchor_bending / kN)},
-                        {"design", r.design / kN},     {"governing", r.governing}};
-    l["stiffness_kN_m"] = r.stiffness / kN;
-    l["required"] = nlohmann::json::array();
-    for (const RequiredTieForce& f : L.required)
-      l["required"].push_back({{"code", f.code},
-                               {"limit_state", f.limit_state},
-                               {"kind", f.kind},
-                               {"location", f.location},
-                               {"per_tie_kN", num(f.per_tie / kN)},
-                               {"per_metre_kN_m", num(f.per_metre / kN)},
-                               {"level_kN", num(f.level_force / kN)},
-                               {"reachable", f.reachable},
-                               {"dc_without", num(f.dc_without)}});
-    l["N_Ed_kN"] = L.N_Ed / kN;
-    l["elongation_demand_m"] = L.elongation_demand ? num(*L.elongation_demand) : nlohmann::json(nullptr);
-    l["checks"] = nlohmann::json::array();
-    for (const TieCheckRow& c : L.checks)
-      l["checks"].push_back({{"check", c.check},
-                             {"clause", c.clause},
-                             {"formula", c.formula},
-                             {"demand", c.demand * scale(c)},
-                             {"capacity", num(c.capacity * scale(c))},
-                             {"unit", c.unit},
-                             {"dc", num(c.dc)},
-                             {"satisfied", c.satisfied}});
-    l["satisfied"] = L.satisfied;
-    j["levels"].push_back(l);
-  }
+  for (const TieLevelResult& L : t.levels) j["levels"].push_back(level_json(L));
   j["before"] = side_json(t.before, t.zetaE_before, t.passes_before);
   j["after"] = side_json(t.after, t.zetaE_after, t.passes_after);
   j["zeta_E_improvement"] = num(t.zetaE_after - t.zetaE_before);
@@ -253,33 +414,25 @@ nlohmann::json tie_json(const TieInterventionResult& t) {
                                {"rule", x.rule},
                                {"overturned_before", x.overturned_before},
                                {"overturned_after", x.overturned_after},
-                               {"d_demand_before_m", x.d_demand_before},
-                               {"d_demand_after_m", x.d_demand_after},
-                               {"d_SLV_before_m", x.d_SLV_before},
-                               {"d_SLV_after_m", x.d_SLV_after},
+                               {"d_demand_before_m", num(x.d_demand_before)},
+                               {"d_demand_after_m", num(x.d_demand_after)},
+                               {"d_SLV_before_m", num(x.d_SLV_before)},
+                               {"d_SLV_after_m", num(x.d_SLV_after)},
                                {"collapse_before", x.collapse_before},
                                {"collapse_after", x.collapse_after},
                                {"satisfied_before", x.satisfied_before},
                                {"satisfied_after", x.satisfied_after},
-                               {"analyses_rod_yielded", x.yielded},
-                               {"analyses_rod_broken", x.ruptured},
-                               {"max_plastic_elongation_m", x.max_plastic_elongation}});
-  dj["runs"] = nlohmann::json::array();
-  for (const TieDynamicRun& r : t.dynamics.runs)
-    dj["runs"].push_back({{"run", r.run},
-                          {"theta_max", r.theta_max},
-                          {"theta_collapse", r.theta_collapse},
-                          {"overturned", r.overturned},
-                          {"yielded", r.yielded},
-                          {"max_force_kN", r.max_force / kN},
-                          {"plastic_elongation_m", r.plastic_elongation},
-                          {"max_elongation_m", r.max_elongation},
-                          {"ruptured", r.ruptured},
-                          {"plastic_energy_kJ", r.plastic_energy / 1e3},
-                          {"d_star_m", r.d_star},
-                          {"collapse", r.collapse},
-                          {"failed", r.failed}});
+                               {"analyses_yielded_before", x.yielded_before},
+                               {"analyses_yielded_after", x.yielded_after},
+                               {"analyses_broken_before", x.broken_before},
+                               {"analyses_broken_after", x.broken_after},
+                               {"max_plastic_elongation_m", num(x.max_plastic_elongation)}});
+  dj["runs_before"] = runs_json(t.dynamics.runs_before);
+  dj["runs"] = runs_json(t.dynamics.runs);
   j["dynamic"] = dj;
+  j["readings"] = nlohmann::json::array();
+  for (const TieReading& r : tie_readings(t, Lang::en))
+    j["readings"].push_back({{"quantity", r.quantity}, {"reading", r.reading}, {"basis", r.basis}});
   return j;
 }
 

@@ -37,10 +37,15 @@ struct CaseFile {
   /// "linear", "nonlinear" (default) or "dynamic"; its verdict is the
   /// conclusion (assessment/verdict.hpp, docs/theory/facade.md §6).
   std::string method = "nonlinear";
-  /// Issue 23: tie levels of the mechanism ("ties"), SI inside (the file
-  /// uses mm, MPa, kN, m: docs/user/case-file.md §Ties); every candidate is
-  /// analysed with the levels whose anchor lies on one of its moving blocks.
+  /// Issues 23, 29: the tie levels that act in this case's analyses, SI
+  /// inside (the file uses mm, MPa, kN, m: docs/user/case-file.md §Ties);
+  /// every candidate is analysed with the levels whose anchor lies on one of
+  /// its moving blocks. As read from a file: the ties marked "existing" (the
+  /// stato di fatto); the intervention adds new_ties or a design's.
   std::vector<Tie> ties;
+  /// Issue 29: the given ties that are not "existing": the intervention (stato
+  /// di progetto), assessed by assessment/tie_intervention.hpp.
+  std::vector<Tie> new_ties;
   /// Issue 23: "design": {"ties": ...}: the ties to design (assessment/tie_intervention.hpp).
   std::optional<TieDesignSpec> tie_design;
   /// Reserved for the façade issue: the raw "dynamic" section, not parsed here.

@@ -191,6 +191,12 @@ std::vector<std::size_t> dynamic_candidates(const KinematicCaseResult& k);
 std::vector<DynamicRun> dynamic_runs(const FacadeAssessment& a, const MechanismDynamics& md, const KinematicResult& kin,
                                      bool histories);
 
+/// The capacity d_SLV (m) of the dynamic check: kin.d_SLV, or for a
+/// mechanism held by tie levels the larger of the tied one (up to the first
+/// level's strength) and the bare wall's, which a wall whose tie broke is left
+/// with (issue 29; docs/theory/ties.md §6).
+double dynamic_d_SLV(const KinematicResult& kin);
+
 /// The analyses of each restitution value summarised against `kin`'s d_SLV
 /// (Circ. 2019 C8.7.1.2.1.9, NTC 2018 §7.3.5 on the records' count).
 std::vector<RestitutionSummary> summarise_runs(const std::vector<DynamicRun>& runs, const std::vector<double>& e,

@@ -30,9 +30,10 @@ namespace assess {
 
 /// A tie level holding the mechanism in the dynamic analysis (issue 23).
 struct DynamicTie {
-  TieRestraint level;              ///< the whole level on the chain (N, N/m; kinematic result's TieWork::tie)
+  TieRestraint level;              ///< the whole level on the chain (N, N/m; kinematic result's TieWork::tie),
+                                   ///< with its ductility and failure elongation (issue 29)
   double per_tie = 1.0;            ///< factor turning the analysis' forces and energies into one tie's (-)
-  double ultimate_elongation = std::numeric_limits<double>::infinity();  ///< eps_ud L of its rod (m, tie_checks)
+  std::optional<Tie> tie;          ///< the tie of the same name (its components, for the report)
 };
 
 struct MechanismDynamics {
@@ -61,7 +62,8 @@ struct MechanismDynamics {
   /// applies = false, with the reason, when the tied analysis cannot represent
   /// it (two-sided rocking).
   MechanismDynamics with_ties(std::vector<DynamicTie> levels) const;
-  /// True if a tie rod of the analysis broke: its largest elongation beyond eps_ud L.
+  /// True if a tie level of the analysis broke (issue 29): a level that is not
+  /// ductile reached its strength, or a ductile rod its ultimate elongation.
   bool ruptured(const RockingResult& r) const;
 
   bool single_body() const { return body.has_value(); }
@@ -86,8 +88,7 @@ struct MechanismDynamics {
 
 /// The tie levels of a kinematic candidate (`cand.result.ties`) as the model
 /// `md` of its chain holds them: per-tie factors for one body (per metre of
-/// wall) or a chain (whole level), each rod's eps_ud L from the tie of the same
-/// name in `ties` (kinematic/tie_checks.hpp).
+/// wall) or a chain (whole level), with the tie of the same name in `ties`.
 std::vector<DynamicTie> dynamic_ties(const MechanismDynamics& md, const CandidateResult& cand,
                                      const std::vector<Tie>& ties);
 

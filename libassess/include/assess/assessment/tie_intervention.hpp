@@ -1,9 +1,13 @@
-// tie_intervention.hpp: the tie rods of a case (issue 23): the mechanism
-// before and after the ties, side by side, with the checks of every tie
-// level, the force each check of the mechanism needs, and zeta_E before and
-// after; with "design": {"ties": ...}, the smallest commercial rod and plate
-// (kinematic/tie_catalogue.hpp) that make every check pass.
-// docs/theory/ties.md §5.
+// tie_intervention.hpp: the tie rods of a case (issues 23, 29): the stato di
+// fatto (the wall with its existing ties, their checks) and the stato di
+// progetto (with the new ties, given or designed) side by side, with the
+// checks of every tie level (capacity design: ductile or elastic), the force
+// each check of the mechanism needs, zeta_E of each state and the dynamic
+// analyses of both, each tie's outcome per analysis (elastic, yielded,
+// broken and which component). With "design": {"ties": ...}, the smallest
+// commercial rod and plate (kinematic/tie_catalogue.hpp) that make every
+// check pass with a tie that is ductile or stays elastic in every analysis.
+// docs/theory/ties.md §5, §6.
 #pragma once
 
 #include "assess/assessment/case_file.hpp"
@@ -17,22 +21,38 @@
 
 namespace assess {
 
-/// One tied analysis (issue 23): the run of the façade assessment with the same
-/// record, polarity and restitution, now with the tie (dynamics/tied_rocking.hpp).
+/// One tie level in one dynamic analysis (per tie: N, m).
+struct TieLevelRun {
+  std::string name;
+  double max_force = 0.0;         ///< largest force of one tie (N)
+  double max_elongation = 0.0;    ///< m
+  bool yielded = false;           ///< a ductile level yielded (snervata)
+  double plastic_elongation = 0.0;  ///< m
+  bool broken = false;            ///< the level broke (rottura)
+  std::string component;          ///< how: "thread", "punching", ... (not ductile) or "elongation" (ductile)
+  double t_broken = 0.0;          ///< s
+};
+
+/// One analysis of a state (issue 23, 29): the run of the façade's model with
+/// the same record, polarity and restitution, with that state's tie levels.
 struct TieDynamicRun {
   std::size_t run = 0;            ///< index of the analysis (restitution, record, polarity order of FacadeAssessment::runs)
+  std::size_t record = 0;         ///< index in FacadeAssessment::records
+  bool reversed = false;
+  double e = 0.0;                 ///< restitution coefficient
   double theta_max = 0.0;         ///< rad
   double theta_collapse = 0.0;    ///< rad
   bool overturned = false;
-  bool yielded = false;
-  double max_force = 0.0;         ///< per tie (N)
-  double plastic_elongation = 0.0;  ///< m
-  double plastic_energy = 0.0;    ///< per tie (J)
-  double max_elongation = 0.0;    ///< largest elongation of the rod (m)
-  bool ruptured = false;          ///< max_elongation > eps_ud L (tie_checks): the rod breaks [I]
+  bool yielded = false;           ///< a ductile level yielded
+  bool broken = false;            ///< a level broke
+  double max_force = 0.0;         ///< per tie, the largest over the levels (N)
+  double plastic_elongation = 0.0;  ///< the largest over the levels (m)
+  double plastic_energy = 0.0;    ///< one tie of each level, summed (J)
+  double max_elongation = 0.0;    ///< the largest over the levels (m)
   double d_star = 0.0;            ///< peak d* (m)
-  bool collapse = false;          ///< overturned, ruptured or d_control >= d_k0 of the tied mechanism
+  bool collapse = false;          ///< overturned, a level broken, or d_control >= d_k0 of the mechanism
   bool failed = false;            ///< the integration did not complete
+  std::vector<TieLevelRun> levels;
 };
 
 /// The dynamic check (Circ. 2019 C8.7.1.2.1.9) before and after, per restitution value.
@@ -45,72 +65,84 @@ struct TieDynamicSummary {
   double d_SLV_before = 0.0, d_SLV_after = 0.0;        ///< m
   bool collapse_before = false, collapse_after = false;
   bool satisfied_before = false, satisfied_after = false;
-  int yielded = 0;               ///< analyses in which the rod yielded
-  int ruptured = 0;              ///< analyses in which its elongation exceeded eps_ud L
-  double max_plastic_elongation = 0.0;  ///< m
+  int yielded_before = 0, yielded_after = 0;   ///< analyses in which a ductile level yielded (snervata)
+  int broken_before = 0, broken_after = 0;     ///< analyses in which a level broke (rottura)
+  double max_plastic_elongation = 0.0;  ///< after (m)
 };
 
 struct TieDynamicResult {
   bool applies = false;
   std::string note;              ///< why not, or what was done
-  std::vector<TieDynamicRun> runs;
+  std::vector<TieDynamicRun> runs_before;  ///< the stato di fatto's analyses (with its existing ties), if tied
+  std::vector<TieDynamicRun> runs;         ///< the stato di progetto's
   std::vector<TieDynamicSummary> summaries;
 };
 
-/// One tie level after the intervention.
+/// One tie level in one state.
 struct TieLevelResult {
   Tie tie;
   TieResistance resistance;
-  double count = 0.0;  ///< ties on the governing candidate's chain (-)
-  /// Per check of the governing candidate (NTC 2018, else the first code):
-  /// the force this level needs, the other levels as given.
+  double count = 0.0;  ///< ties on the governing candidate's chain (-): count x length / wall length
+  /// Per check of the governing candidate (every code): the force this
+  /// level needs, the other levels as given.
   std::vector<RequiredTieForce> required;
-  double N_Ed = 0.0;   ///< demand on one tie: the largest required force per tie (N)
-  std::optional<double> elongation_demand;  ///< rod elongation at the largest displacement demand (m)
+  TieDemand demand;    ///< what it develops: the checks' force, at the displacement demand, in the dynamics
   std::vector<TieCheckRow> checks;
   bool satisfied = false;
+  int dynamic_runs = 0, dynamic_yielded = 0, dynamic_broken = 0;  ///< its outcome over the analyses
 };
 
 struct TieInterventionResult {
   bool designed = false;      ///< from "design" (else the case's "ties" are assessed)
+  bool intervention = false;  ///< new ties (given or designed) exist: a stato di progetto
   bool found = false;         ///< design: a rod and plate of the lists satisfy every check
   std::string message;        ///< why no design was found
   int tried = 0;              ///< design: combinations analysed
-  CaseFile case_before, case_after;  ///< the case without / with the ties (after: the designed ones)
+  /// The stato di fatto (the case as read: its existing ties) and the stato
+  /// di progetto (with the new ties; the same case without an intervention).
+  CaseFile case_before, case_after;
   KinematicCaseResult before, after;
-  std::vector<TieLevelResult> levels;
+  std::vector<TieLevelResult> levels_before;  ///< the existing ties, in the stato di fatto
+  std::vector<TieLevelResult> levels;         ///< every tie of the stato di progetto (existing first)
   /// zeta_E = PGA capacity / PGA demand (NTC 2018 rows of the adopted
   /// procedure, SLV and SLC, every candidate; the smallest) (-); NaN without NTC 2018.
   double zetaE_before = 0.0, zetaE_after = 0.0;
-  bool passes_before = false, passes_after = false;  ///< every kinematic check satisfied
-  /// The dynamic check before and after (filled by run_tie_dynamics when the
-  /// case has a "dynamic" section; applies = false otherwise).
+  /// Every kinematic check satisfied and every check of the state's ties.
+  bool passes_before = false, passes_after = false;
+  /// The dynamic analyses of both states (filled by run_tie_dynamics when
+  /// the case has a "dynamic" section; applies = false otherwise).
   TieDynamicResult dynamics;
+  /// Design: "ductile" (every level ductile) or "elastic" (a level is not
+  /// ductile: it stays elastic in every analysis); "" otherwise.
+  std::string regime;
 };
 
 /// Every kinematic check of every candidate satisfied (with a verdict): the
 /// reading of passes_before / passes_after.
 bool every_kinematic_check_satisfied(const KinematicCaseResult& r);
 
-/// True when the case has ties or a design of ties.
+/// True when the case has ties (existing or new) or a design of ties.
 bool has_ties(const CaseFile& c);
 
-/// The intervention of the case (has_ties(c) must hold). Needs a site for
-/// the checks; throws InputError otherwise.
+/// The two states of the case (has_ties(c) must hold) from the kinematic
+/// analyses alone. Needs a site for the checks; throws InputError otherwise.
 TieInterventionResult run_tie_intervention(const CaseFile& c);
 
-/// The dynamic check before and after the ties of `t`, per restitution value
-/// (docs/theory/ties.md §6). The façade's analyses are those of its case, with
-/// any given ties already holding the wall (mechanism_dynamics); the other
-/// side is the same model, records, polarities and candidate with the other
-/// tie levels: without the given ties, or with the designed ones. `runs` are
-/// the tied analyses. applies = false, with `note`, when the façade has no
-/// dynamic analysis or the tied model cannot represent it (two-sided rocking).
+/// The same with the dynamic analyses of `a` (its case is `c`): the design
+/// accepts a tie only if no level breaks in any analysis and the dynamic
+/// check is satisfied; the elastic ties' checks take the largest dynamic force.
+TieInterventionResult run_tie_intervention(const CaseFile& c, const FacadeAssessment& a);
+
+/// The dynamic analyses of both states of `t` (docs/theory/ties.md §6): the
+/// façade's analyses are the stato di fatto (its existing ties hold it); the
+/// stato di progetto is the same model, records, polarities and candidate with
+/// every tie of the intervention. applies = false, with `note`, when the
+/// façade has no dynamic analysis or the tied model cannot represent it.
 TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventionResult& t);
 
 /// The tie step of an assessment, as `assess run` and the building case do it:
-/// nothing when the case has no ties (has_ties false); otherwise the
-/// intervention (run_tie_intervention) and its dynamics (run_tie_dynamics).
+/// nothing when the case has no ties (has_ties false); otherwise
+/// run_tie_intervention(a.kase, a).
 std::optional<TieInterventionResult> assess_ties(const FacadeAssessment& a);
 
 /// zeta_E of a kinematic result for the adopted `method` (see above).

@@ -61,9 +61,15 @@ struct RockingHistory {
 struct TiedLevelResult {
   double max_force = 0.0;           ///< largest force (N/m for a body, N for a chain)
   double max_elongation = 0.0;      ///< largest elongation e (m)
-  bool yielded = false;
+  bool yielded = false;             ///< a ductile level yielded (snervata)
   double plastic_elongation = 0.0;  ///< e_p at the end (m)
   double plastic_energy = 0.0;      ///< T_y e_p (J/m for a body, J for a chain)
+  /// Issue 29: the level broke (its force lost from then on): a level that is
+  /// not ductile when its force reached its strength (rottura of its weakest
+  /// component), a ductile one when its elongation reached its ultimate.
+  bool broken = false;
+  bool broken_by_elongation = false;  ///< a ductile rod at its ultimate elongation
+  double t_broken = 0.0;              ///< s
 };
 
 /// Outcome of one analysis (SI units).

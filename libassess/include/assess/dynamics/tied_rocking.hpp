@@ -9,6 +9,12 @@
 //   T = min(max(P0 + k (e - e_p), 0), T_y)    force per unit depth of wall (N/m)
 //   e_p' = e' while yielding (T = T_y and e' > 0), else 0
 //
+// Issue 29: a level that is not ductile breaks when T reaches T_y (its
+// weakest component fails: the force is lost from then on and the wall,
+// held by the levels left, goes on or collapses where their envelope
+// vanishes); a ductile level yields, and breaks when its elongation reaches
+// its ultimate (the rod's eps_ud L).
+//
 // p(theta) is the anchor point rotated by theta about the outer toe; d the
 // unit direction of the pull on the wall. Modes: rest, rocking with the rod
 // elastic (or slack), rocking with the rod yielding; events: lift-off,
@@ -25,6 +31,7 @@
 
 #include <Eigen/Core>
 
+#include <limits>
 #include <vector>
 
 namespace assess {
@@ -37,6 +44,11 @@ struct RockingTie {
   double stiffness = 0.0;   ///< k (N/m per m of wall), > 0
   double capacity = 0.0;    ///< T_y (N/m), > 0
   double pretension = 0.0;  ///< P0 (N/m), 0 <= P0 <= T_y
+  /// Issue 29: a ductile tie yields at T_y and breaks at `ultimate_elongation`
+  /// (m; infinity: never); a tie that is not ductile breaks when its force
+  /// reaches T_y (its force is lost from then on, the wall goes on bare).
+  bool ductile = true;
+  double ultimate_elongation = std::numeric_limits<double>::infinity();
   /// Position of the anchor after a rotation theta about the toe (m).
   Eigen::Vector2d position(double theta) const;
   /// Elongation e(theta) (m) and de/dtheta (m/rad).

@@ -69,6 +69,9 @@ struct Load {
   bool seismic = true;
   /// Force: the force vector (N); Tie: (-T, 0); Friction: (F, 0), F >= 0.
   Eigen::Vector2d force{0.0, 0.0};
+  /// The drawing's label of a force, tie or friction (report/mechanism_drawing;
+  /// issue 29: ties labelled per tie and per level); "": "T = <force> kN".
+  std::string label;
 };
 
 /// The chain. Immutable once built; the constructor validates it.

@@ -47,6 +47,9 @@ struct CheckRow {
   /// `note` says why. A report shows "no verdict", never "satisfied".
   bool no_verdict = false;
   std::string note;             ///< remarks for the reader ("overturned in 1 of 2 analyses" ...)
+  /// Issue 29: a displacement check of a tied mechanism that the wall without
+  /// its tie levels satisfies better (the row is the bare wall's).
+  bool without_ties = false;
   /// Every input of the demand, so that it can be redone by hand (issue 24):
   /// name with its unit ("T1 (s)", "psi(Z) (-)", "gamma (-)", "N (storeys)",
   /// "Se(T1) (m/s2)", "a_Z (m/s2)", "q (-)", "xi (%)", "eta (-)", "T (s)", ...) and value.

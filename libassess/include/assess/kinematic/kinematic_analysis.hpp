@@ -10,6 +10,7 @@
 #include <Eigen/Dense>
 
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -127,6 +128,24 @@ struct KinematicResult {
   // NTC 2018 (Circ. 2019 §C8.7.1.2.1.6, .8).
   double d_SLV = 0.0, a_SLV = 0.0, T_SLV = 0.0;  ///< m, m/s^2, s [C8.7.1.10]
   double d_SLC = 0.0, a_SLC = 0.0, T_SLC = 0.0;  ///< m, m/s^2, s [C8.7.1.11]
+  // Tie levels (issue 29; docs/theory/ties.md §2): the capacity does not rely
+  // on a tie beyond its strength. d*_tie = d* at which the first level reaches
+  // its strength (the end of the elastic tied curve: a tie that is not ductile
+  // breaks there, a ductile one yields) caps du*, d_SLV and d_SLC as the
+  // failure of an element does (Circ. 2019 §C8.7.1.2.1.6); infinity without ties.
+  double d_star_tie_limit = std::numeric_limits<double>::infinity();
+  std::string tie_limit_level;  ///< the level that reaches its strength first ("" if none)
+  /// The plastic reserve, reported apart: the same displacements capped where
+  /// the first level fails instead (a ductile level at its ultimate elongation
+  /// eps_ud L, a level that is not ductile at its strength), with the secant
+  /// periods at them (m, s); equal to the values above without ties.
+  double d_star_tie_failure = std::numeric_limits<double>::infinity();
+  double du_star_plastic = 0.0, d_SLV_plastic = 0.0, d_SLC_plastic = 0.0;
+  double Ts_plastic = 0.0, T_SLV_plastic = 0.0, T_SLC_plastic = 0.0;
+  /// The same chain without its tie levels (issue 29): once they fail the
+  /// wall is bare, so each displacement check takes the better of the two
+  /// (code_checks.cpp). Null without ties.
+  std::shared_ptr<const KinematicResult> without_ties;
 
   bool curve_complete() const { return termination == CurveTermination::Complete; }
 };
@@ -153,8 +172,11 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
 /// with each level at its design strength (rigid-plastic, the practice of
 /// C8A.4), the capacity curve with the elastic-perfectly-plastic law in the
 /// rod's elongation (its first point is then alpha(0) of that law, not alpha0).
-/// Throws InputError for a level on a missing block.
+/// Throws InputError for a level on a missing block. With ties, `without_ties`
+/// is the analysis of the same chain and options without them (computed here
+/// when not given).
 KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& options,
-                                  const std::vector<TieRestraint>& ties);
+                                  const std::vector<TieRestraint>& ties,
+                                  std::shared_ptr<const KinematicResult> without_ties = nullptr);
 
 }  // namespace assess

@@ -13,10 +13,19 @@
 
 #include <Eigen/Core>
 
+#include <limits>
 #include <string>
 #include <vector>
 
 namespace assess {
+
+/// How the rod's ends take the nut (issue 29): threaded on the rod itself
+/// (the default: the thread's stress area is smaller than the rod's), or an
+/// end of larger section, upset (ringrossata: hot-forged to a larger
+/// diameter, then threaded) or welded (a threaded bar of larger diameter
+/// butt-welded to the rod; the weld taken as full strength [I]).
+enum class TieEnds { Threaded, Upset, Welded };
+const char* to_string(TieEnds e);  ///< "threaded", "upset", "welded"
 
 /// The rod (tondo, barra).
 struct TieRod {
@@ -24,8 +33,14 @@ struct TieRod {
   double area = 0.0;       ///< gross area A (m^2), > 0; pi d^2 / 4 when the diameter is given
   std::string grade = "S275";
   double fyk = 275e6;      ///< characteristic yield strength (Pa)
+  double ftk = 430e6;      ///< characteristic tensile strength (Pa)
+  double elongation = 0.23;  ///< minimum elongation of the product standard (fraction; tie_catalogue)
   double gamma_M0 = 1.05;  ///< partial factor (-), NTC 2018 §4.2.4.1.1
   double E = 210e9;        ///< elastic modulus (Pa)
+  TieEnds ends = TieEnds::Threaded;
+  double thread_diameter = 0.0;  ///< nominal diameter of the end's ISO metric thread (m; 0: only its area given)
+  double thread_area = 0.0;      ///< stress area A_res of the end (m^2), > 0
+  double nut_width = 0.0;        ///< width across flats of the end's nut (m), > 0 (tie_catalogue::Thread::s)
 };
 
 enum class AnchorType {
@@ -52,9 +67,21 @@ struct TieMasonry {
   double gamma_M = 2.0;    ///< partial factor (-), >= 1 (tie_catalogue::masonry_gamma_M)
 };
 
-/// One tie level of the mechanism: identical ties at `spacing` along the wall.
+/// The layout of a tie level along its wall (issue 29): `count` ties on a
+/// wall of length `wall_length`, the first and last at `edge_distance` from
+/// the wall's ends, the others evenly spaced between them.
+struct TieLayout {
+  double wall_length = 0.0;    ///< m, > 0
+  int count = 1;               ///< ties on the wall, >= 1
+  double edge_distance = 0.0;  ///< m, > 0 (default wall_length / (2 count))
+  /// Centre-to-centre distance of adjacent ties (m); wall_length for one tie.
+  double centre_spacing() const;
+};
+
+/// One tie level of the mechanism: identical ties laid along the wall.
 struct Tie {
   std::string name;
+  bool existing = false;               ///< part of the building as it is (stato di fatto), not the intervention
   int block = -1;                      ///< block of the chain it holds; -1: the moving block containing `point`
   Eigen::Vector2d point{0.0, 0.0};     ///< anchor point (x, z) (m)
   Eigen::Vector2d direction{-1.0, 0.0};  ///< direction of the pull on the wall (unit after validation)
@@ -62,8 +89,9 @@ struct Tie {
   double free_length = 0.0;            ///< free length of the rod L (m), > 0: stiffness E A / L
   TieAnchor anchor;
   TieMasonry masonry;
-  double spacing = 1.0;                ///< tributary length of each tie along the wall (m), > 0
-  double pretension = 0.0;             ///< pretension of each tie (N), >= 0
+  TieLayout layout;                    ///< how many ties, where
+  double spacing = 1.0;                ///< tributary length of each tie: wall_length / count (m), > 0
+  double pretension = 0.0;             ///< pretension of each tie (N), >= 0, below the tie's strength
   /// Throws InputError naming the field (its unit and the expected range).
   void validate() const;
 };
@@ -79,8 +107,17 @@ struct TieRestraint {
   double stiffness = 0.0;                ///< k = count E A / L (N/m); 0: rigid-plastic
   double capacity = 0.0;                 ///< T_Rd of the level (N) = count x the weakest check
   double pretension = 0.0;               ///< N, level
-  /// Elongation (m) at which the rod yields: (capacity - pretension) / k.
+  /// Issue 29: a ductile tie yields at `capacity` (the rod governs with the
+  /// hierarchy of strengths) and breaks when its elongation reaches
+  /// `ultimate_elongation`; a tie that is not ductile breaks when its force
+  /// reaches `capacity` (its weakest component, `governing`).
+  bool ductile = true;                   ///< default: the elastic-perfectly-plastic restraint of issue 23
+  double ultimate_elongation = std::numeric_limits<double>::infinity();  ///< m (ductile)
+  std::string governing;                 ///< component of the capacity ("rod", "thread", "bearing", ...)
+  /// Elongation (m) at which the level reaches its strength: (capacity - pretension) / k.
   double yield_elongation() const;
+  /// Elongation (m) at which the level fails: ultimate_elongation (ductile), yield_elongation() otherwise.
+  double failure_elongation() const;
 };
 
 /// Force of the level (N, >= 0) at elongation `e` (m): one-sided elastic-

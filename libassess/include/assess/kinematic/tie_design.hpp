@@ -20,6 +20,8 @@ struct RequiredTieForce {
   double per_tie = 0.0;      ///< force of one tie (N): level_force / count
   double per_metre = 0.0;    ///< per metre of wall (N/m): per_tie / spacing
   bool reachable = true;     ///< false: no force up to 100 x the mechanism's weight satisfies it
+                             ///< (the forces are then 0, never printed: "non raggiungibile")
+  std::string reason;        ///< why it is not reachable
   double dc_without = 0.0;   ///< D/C of the check with this level at zero force (-)
 };
 
@@ -46,11 +48,17 @@ namespace assess {
 
 /// What the design of ties searches (case file "design": {"ties": ...}):
 /// tie levels given without rod and anchor (point, direction, free length,
-/// masonry, spacing, pretension), the steel grades allowed and the lists of
-/// kinematic/tie_catalogue.hpp. Every level gets the same rod and plate [I].
+/// masonry, layout, pretension), the steel grades allowed, how the rods' ends
+/// take the nut, the smallest rod, and the lists of kinematic/tie_catalogue.hpp.
+/// Every level gets the same rod and plate [I].
 struct TieDesignSpec {
   std::vector<Tie> levels;                  ///< rod and anchor are filled by the design
   std::vector<std::string> grades{"S275"};  ///< rod and plate grades tried, in order
+  /// Threaded: each rod threaded at its ends (M d); Upset: the ends upset to
+  /// the smallest ISO thread that satisfies the capacity design (a ductile
+  /// rod), at most tie_catalogue::max_upset_ratio times the rod (issue 29).
+  TieEnds ends = TieEnds::Threaded;
+  double min_rod_diameter = 0.016;          ///< m (tie_catalogue::min_rod_diameter; "min_rod_diameter_mm")
 };
 
 }  // namespace assess

@@ -1,7 +1,11 @@
-// tie_report.hpp: text and JSON of the tie rods of a case (issue 23): each
-// level's rod, anchor, design strengths, the force each check of the
-// mechanism needs, the checks of the tie, and the mechanism before and after
-// side by side with zeta_E. The HTML section is in tie_html.cpp.
+// tie_report.hpp: text and JSON of the tie rods of a case (issues 23, 29):
+// the stato di fatto and the stato di progetto, each level's rod, ends,
+// anchor and layout, its strengths and ductility, the force each check of
+// the mechanism needs, the checks of the tie, the mechanism in both states
+// with zeta_E, the dynamic analyses of both states with each tie's outcome
+// per analysis, the detailing; and the readings adopted (the certainty of
+// each formula and constant, for the appendix). The HTML section is in
+// tie_html.cpp; its sentences are in the message catalogue (messages_ties.cpp).
 #pragma once
 
 #include "assess/assessment/tie_intervention.hpp"
@@ -10,24 +14,40 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <vector>
 
 namespace assess {
 
 /// Terminal text (English with the Italian terms of the relazione).
 std::string tie_text(const TieInterventionResult& t);
-/// JSON: "designed", "found", "levels" (rod, anchor, strengths in kN,
-/// required forces in kN and kN/m, checks), "before"/"after" (alpha0, a0*,
-/// d0*, d_SLV ..., zeta_E, every check's D/C, the capacity curve with each
-/// level's force and elongation at each point, the levels on the mechanism),
-/// "dynamic" (summaries and runs); SI except forces in kN and lengths of the
-/// rod and anchor in mm (named in the keys).
+/// JSON: "designed", "intervention", "found", "regime", "levels_before",
+/// "levels" (rod with its ends, anchor, layout, strengths in kN, ductility,
+/// required forces in kN and kN/m, demands, checks), "before"/"after" (alpha0,
+/// a0*, d0*, d_SLV ..., the plastic reserve apart, zeta_E, every check's D/C,
+/// the capacity curve with each level's force and elongation), "dynamic"
+/// (summaries, the runs of both states with each level's outcome), "readings";
+/// SI except forces in kN and lengths of the rod and anchor in mm (named in
+/// the keys). Never a non-finite number: null, with a reason where it matters.
 nlohmann::json tie_json(const TieInterventionResult& t);
+
+/// A reading adopted by the tie section (issue 29): the quantity, the value
+/// or formula adopted, and its basis with its certainty ([V-T], [V-S], [R],
+/// [I] as in docs/theory/ties.md). The signed body of the relazione carries
+/// no tags; these are for an appendix "Ipotesi e letture adottate".
+struct TieReading {
+  std::string quantity, reading, basis;
+};
+std::vector<TieReading> tie_readings(const TieInterventionResult& t, Lang lang);
+
 /// The HTML section of the relazione (tie_html.cpp), below its heading
-/// tie_section_title(): drawing of the ties on the mechanism, each level's
-/// rod and anchor, the checks table, the force each check needs and the
-/// before/after verdicts. Its subheadings are <h`heading_level`>; every id in
-/// it (the section's "ties", the drawing's markers) starts with `id_prefix`
-/// (the building relazione: one section per mechanism, "M3-").
+/// tie_section_title(): the two states, the ties drawn on the mechanism
+/// (labelled in kN per tie and per level), each level's rod, ends, anchor and
+/// layout, the formulas with their sources, the checks, the force each check
+/// needs, the two states side by side, the dynamic analyses (per analysis:
+/// elastic, yielded, broken and which component) and the detailing. Its
+/// subheadings are <h`heading_level`>; every id in it (the section's "ties",
+/// the drawing's markers) starts with `id_prefix` (the building relazione:
+/// one section per mechanism, "M3-"). No certainty tag: tie_readings().
 std::string tie_html_section(const TieInterventionResult& t, Lang lang, const std::string& id_prefix = "",
                              int heading_level = 3);
 std::string tie_section_title(Lang lang);
