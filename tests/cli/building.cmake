@@ -55,7 +55,7 @@ assess_cli_error_test(building_ties_bad_grade
   "ties_bad_grade.json: /walls/1/mechanisms/0/ties/0/rod/grade: \"S420\": expected one of \"S235\", \"S275\", \"S355\", \"B450C\" \\[M2 \"Side overturning\"\\]"
   run tests/cli/building_bad/ties_bad_grade.json)
 assess_cli_error_test(building_ties_wall_design_fm
-  "ties_wall_design_fm.json: /walls/0/design/ties/levels/0/masonry/fm_MPa: value -2 out of range: expected > 0 MPa"
+  "ties_wall_design_fm.json: /walls/0/design/ties/levels/0/masonry/fm_MPa: value -2 out of range: expected in \\[0\\.1, 50\\] MPa"
   run tests/cli/building_bad/ties_wall_design_fm.json)
 assess_cli_error_test(building_ties_point_off_wall
   "ties_point_off_wall.json: /walls/0/mechanisms/0/ties/0/point: the anchor point .* is on no moving block"
@@ -74,9 +74,12 @@ set_tests_properties(cli.building_ties_exit2 PROPERTIES LABELS cli)
 # The summary of a building with ties: each mechanism without and with its ties, the building index before/after,
 # each mechanism's tie section; --mechanism runs the single case with its ties.
 assess_cli_test(building_ties_text ARGS run mechanisms/building-house-ties.json
-  PASS "M1   design diam\\. 12 mm S275, plate 150x150x12 +\\| +0\\.847 +2\\.116 \\| +NO +ok.*M2   given +diam\\. 16 mm S275.*building index \\(the smallest mechanism zetaE\\): 0\\.794 \\(M2\\) without the ties, 1\\.108 \\(M6\\) with them.*M1 Facciata su strada: .*Tie rods \\(catene\\).*design: the smallest rod and plate.*M2 Facciata su strada: .*Tie rods")
+  PASS "stato di fatto.*M1   - +\\| +0\\.847 \\| +NO.*M2   exist\\. 3x diam\\. 16 S275, pl\\. 200x200x15 +\\| +0\\.811 \\| +NO.*building index, stato di fatto \\(the smallest mechanism zetaE\\): 0\\.811 \\(M2\\).*stato di progetto.*M1   new 6x diam\\. 16 S275, pl\\. 400x400x25 +\\| +2\\.700 \\| +ok.*building index, stato di progetto \\(the smallest mechanism zetaE\\): 0\\.811 \\(M2\\).*M1 Facciata su strada: .*Tie rods \\(catene\\).*design: the smallest rod and plate.*M2 Facciata su strada: .*Tie rods")
+# Issue 29: punching governs the house's tie: the first plates break in the dynamics and the design moves on.
+assess_cli_test(building_ties_punching_moves_on ARGS run mechanisms/building-house-ties.json --mechanism M1
+  PASS "tried diam\\. 16 S275 M16, plate 150 x 12: T_Rd 29\\.3 kN \\(punching\\): broken \\(punching\\).*plate 400 x 25: T_Rd 41\\.4 kN \\(punching\\): accepted.*NOT DUCTILE.*each analysis of the stato di progetto")
 assess_cli_test(building_ties_one_mechanism ARGS run mechanisms/building-house-ties.json --mechanism M2
-  PASS "Tie rods \\(catene\\).*level \"catena al sottotetto \\(esistente\\)\": rod diam\\. 16 mm S275" FAIL_REGEX "BUILDING ASSESSMENT")
+  PASS "Tie rods \\(catene\\).*no intervention: the existing ties are part of the stato di fatto.*level \"catena al sottotetto \\(esistente\\)\" \\(existing\\): rod diam\\. 16 mm S275.*BROKEN: catena al sottotetto \\(esistente\\), punching" FAIL_REGEX "BUILDING ASSESSMENT")
 
 assess_cli_error_test(building_expand_single "--mechanism and --expand apply to a building case"
   run mechanisms/gable.json --expand /tmp/never)
@@ -94,11 +97,11 @@ foreach(lang it en)
     ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
 endforeach()
 
-# The relazione of the building with ties (Italian): the summary's before/after table and the building
-# index, each tied mechanism's tie section (ids prefixed by its id, subheadings one level down), 56 figures
-# (the 54 of building-house and the two tie drawings).
+# The relazione of the building with ties (Italian): the stato di fatto's and the stato di progetto's
+# tables with one building index each, each tied mechanism's tie section (ids prefixed by its id,
+# subheadings one level down), 56 figures (the 54 of building-house and the two tie drawings).
 add_test(NAME cli.building_ties_report_browser
-  COMMAND sh -c "\"$1\" run mechanisms/building-house-ties.json --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 56 'id=\"ties-row-M1\"' 'id=\"M1-ties\"' 'id=\"M2-ties\"' '<h4>Verifiche della catena' 'Indicatore di rischio dell.edificio[^<]*: 0\\.794 \\(M2\\) senza le catene, 1\\.108 \\(M6\\) con le catene'"
+  COMMAND sh -c "\"$1\" run mechanisms/building-house-ties.json --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 56 'id=\"ties-row-M1\"' 'id=\"M1-ties\"' 'id=\"M2-ties\"' '<h4>Verifiche della catena' 'id=\"ties-existing-row-M2\"' 'Indicatore di rischio dell.edificio nello stato di fatto[^<]*: 0\\.811 \\(M2\\)' 'Indicatore di rischio dell.edificio nello stato di progetto: 0\\.811 \\(M2\\)'"
           sh $<TARGET_FILE:assess_cli> ${CMAKE_CURRENT_BINARY_DIR}/building-house-ties.it.html
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.building_ties_report_browser PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77 TIMEOUT 300

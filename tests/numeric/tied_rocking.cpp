@@ -16,6 +16,7 @@
 #include <assess/support/units.hpp>
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 using assess::test::abs_tol;
@@ -393,4 +394,193 @@ TEST_CASE("tied envelope: collapse rotation and energy capacity of a rigid block
   CHECK_CLOSE(E.capacity, cap, rel_tol(tol_capacity));
   REQUIRE(E.theta.size() == 201);
   CHECK_CLOSE(E.restoring[100], f(E.theta[100]), rel_tol(1e-12));
+}
+
+// ---- Issue 29: a tie that breaks ---------------------------------------------
+
+namespace {
+
+struct BreakRef {
+  double theta_max = 0.0, t_broken = -1.0, max_force = 0.0;
+  bool broken = false, overturned = false, yielded = false;
+};
+
+// The independent integration of the rigid block held by one tie that breaks:
+// a tie that is not ductile when its force reaches its capacity, a ductile one
+// when its elongation reaches its ultimate (return mapping in between); the
+// instant is located by bisection on the RK4 step, and from then on the tie's
+// force is zero and the wall collapses at its bare rotation alpha.
+BreakRef reference_breaking(const assess::RockingBody& b, const assess::RockingTie& tie, double th_collapse) {
+  const double W = b.W, R = b.R, al = b.alpha, I0 = b.I0, m = W / assess::units::g;
+  auto elong = [&](double th) {
+    const double x = tie.point.x() * std::cos(th) + tie.point.y() * std::sin(th);
+    const double z = -tie.point.x() * std::sin(th) + tie.point.y() * std::cos(th);
+    return -(tie.direction.x() * (x - tie.point.x()) + tie.direction.y() * (z - tie.point.y()));
+  };
+  auto arm = [&](double th) {
+    const double x = tie.point.x() * std::cos(th) + tie.point.y() * std::sin(th);
+    const double z = -tie.point.x() * std::sin(th) + tie.point.y() * std::cos(th);
+    return tie.direction.x() * z - tie.direction.y() * x;
+  };
+  auto ug = [&](double t) {
+    const double x = t / dt;
+    const double i = std::floor(x);
+    return pulse(i * dt) + (x - i) * (pulse((i + 1) * dt) - pulse(i * dt));
+  };
+  BreakRef r;
+  double ep = 0.0;
+  auto force = [&](double th) {
+    if (r.broken) return 0.0;
+    return std::min(std::max(tie.pretension + tie.stiffness * (elong(th) - ep), 0.0), tie.capacity);
+  };
+  auto acc = [&](double t, double th) {
+    return (-W * R * std::sin(al - th) - m * ug(t) * R * std::cos(al - th) + force(th) * arm(th)) / I0;
+  };
+  auto rk4 = [&](double t, double h, double& th, double& om) {
+    const double k1t = om, k1o = acc(t, th);
+    const double k2t = om + 0.5 * h * k1o, k2o = acc(t + 0.5 * h, th + 0.5 * h * k1t);
+    const double k3t = om + 0.5 * h * k2o, k3o = acc(t + 0.5 * h, th + 0.5 * h * k2t);
+    const double k4t = om + h * k3o, k4o = acc(t + h, th + h * k3t);
+    th += h / 6 * (k1t + 2 * k2t + 2 * k3t + k4t);
+    om += h / 6 * (k1o + 2 * k2o + 2 * k3o + k4o);
+  };
+  // The breaking criterion after a step (true: the tie breaks within it).
+  auto breaks = [&](double th) {
+    if (r.broken) return false;
+    if (!tie.ductile) return tie.pretension + tie.stiffness * (elong(th) - ep) >= tie.capacity;
+    return elong(th) >= tie.ultimate_elongation;
+  };
+  double t = 0.0, th = 0.0, om = 0.0;
+  bool rest = true;
+  const double h = 2e-6;
+  double collapse = th_collapse;
+  while (t < t_end - 1e-12) {
+    if (rest) {
+      if (acc(t, 0.0) <= 0.0) {
+        t += h;
+        continue;
+      }
+      rest = false;
+    }
+    double th1 = th, om1 = om;
+    rk4(t, h, th1, om1);
+    if (th1 < 0.0) {  // impact
+      double lo = 0.0, hi = h;
+      for (int i = 0; i < 60; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        double a = th, w = om;
+        rk4(t, mid, a, w);
+        (a > 0.0 ? lo : hi) = mid;
+      }
+      double a = th, w = om;
+      rk4(t, hi, a, w);
+      t += hi;
+      th = 0.0;
+      om = e_rest * w;
+      if (!(om > 1e-9)) {
+        om = 0.0;
+        rest = true;
+      }
+      continue;
+    }
+    if (breaks(th1)) {  // locate the rupture inside the step
+      double lo = 0.0, hi = h;
+      for (int i = 0; i < 60; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        double a = th, w = om;
+        rk4(t, mid, a, w);
+        (breaks(a) ? hi : lo) = mid;
+      }
+      rk4(t, hi, th, om);
+      t += hi;
+      r.max_force = std::max(r.max_force, force(th));
+      r.broken = true;
+      r.t_broken = t;
+      collapse = al;  // the bare rigid block
+      r.theta_max = std::max(r.theta_max, th);
+      if (th >= collapse) {
+        r.overturned = true;
+        break;
+      }
+      continue;
+    }
+    th = th1;
+    om = om1;
+    t += h;
+    if (!r.broken && tie.ductile && tie.pretension + tie.stiffness * (elong(th) - ep) > tie.capacity) {
+      ep = elong(th) - (tie.capacity - tie.pretension) / tie.stiffness;
+      r.yielded = true;
+    }
+    r.max_force = std::max(r.max_force, force(th));
+    r.theta_max = std::max(r.theta_max, th);
+    if (th >= collapse) {
+      r.overturned = true;
+      break;
+    }
+  }
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("tied rocking, issue 29: a tie that is not ductile breaks at its strength and the bare wall goes on") {
+  const auto body = wall();
+  const assess::RockingModel model = one_sided(body);
+  const std::vector<double> ug = pulse_samples();
+  for (double zt : {3.9, 2.5}) {
+    assess::RockingTie tie;
+    tie.point = {0.0, zt};
+    tie.stiffness = 2e5;
+    tie.capacity = 1.2e3;
+    tie.pretension = 200.0;
+    tie.ductile = false;
+    assess::HybridOdeOptions opt;
+    opt.rel_tol = 1e-11;
+    opt.abs_tol = 1e-13;
+    const auto r = assess::analyse_tied_rocking(model, tie, ug, dt, t_end, opt);
+    const BreakRef ref = reference_breaking(body, tie, r.theta_collapse);
+    CAPTURE(zt);
+    REQUIRE(ref.broken);
+    REQUIRE(r.levels.size() == 1);
+    CHECK(r.levels[0].broken);
+    CHECK_FALSE(r.levels[0].broken_by_elongation);
+    CHECK_FALSE(r.yielded);  // never yields: it breaks
+    CHECK_CLOSE(r.levels[0].t_broken, ref.t_broken, abs_tol(1e-5));
+    CHECK_CLOSE(r.max_force, tie.capacity, rel_tol(tol_force));  // it breaks at its strength
+    CHECK(r.overturned == ref.overturned);
+    CHECK_CLOSE(r.theta_max, ref.theta_max, rel_tol(tol_theta));
+    MESSAGE("z_t = " << zt << " m: broken at " << r.levels[0].t_broken << " s (ref " << ref.t_broken << "), theta_max "
+                     << r.theta_max << " rad (ref " << ref.theta_max << "), overturned " << r.overturned);
+  }
+}
+
+TEST_CASE("tied rocking, issue 29: a ductile tie yields, then breaks at its ultimate elongation") {
+  const auto body = wall();
+  const assess::RockingModel model = one_sided(body);
+  const std::vector<double> ug = pulse_samples();
+  assess::RockingTie tie;
+  tie.point = {0.0, 3.9};
+  tie.stiffness = 2e5;
+  tie.capacity = 1.2e3;
+  tie.pretension = 200.0;
+  tie.ductile = true;
+  tie.ultimate_elongation = 0.02;  // m: beyond the yield elongation (1000 / 2e5 = 5 mm)
+  assess::HybridOdeOptions opt;
+  opt.rel_tol = 1e-11;
+  opt.abs_tol = 1e-13;
+  const auto r = assess::analyse_tied_rocking(model, tie, ug, dt, t_end, opt);
+  const BreakRef ref = reference_breaking(body, tie, r.theta_collapse);
+  REQUIRE(ref.broken);
+  CHECK(ref.yielded);
+  CHECK(r.yielded);
+  CHECK(r.levels[0].broken);
+  CHECK(r.levels[0].broken_by_elongation);
+  CHECK_CLOSE(r.levels[0].t_broken, ref.t_broken, abs_tol(1e-5));
+  CHECK_CLOSE(r.levels[0].max_elongation, tie.ultimate_elongation, rel_tol(1e-6));
+  CHECK(r.overturned == ref.overturned);
+  CHECK_CLOSE(r.theta_max, ref.theta_max, rel_tol(tol_theta));
+  // Without the ultimate elongation (infinite) the same tie holds: the issue-23 result.
+  tie.ultimate_elongation = std::numeric_limits<double>::infinity();
+  const auto held = assess::analyse_tied_rocking(model, tie, ug, dt, t_end, opt);
+  CHECK_FALSE(held.levels[0].broken);
 }

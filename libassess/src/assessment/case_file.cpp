@@ -520,8 +520,8 @@ Tie parse_tie(const JsonNode& t, double FC, std::size_t index) {
   } else {
     a.allow_only({"type", "length_mm", "diameter_mm", "grade"});
     tie.anchor.type = AnchorType::Bar;
-    tie.anchor.a = a.number("length_mm", "mm", TB::plate_side_min * 1e3, TB::plate_side_max * 1e3) * 1e-3;
-    tie.anchor.b = a.number("diameter_mm", "mm", TB::plate_side_min * 1e3, TB::plate_side_max * 1e3) * 1e-3;
+    tie.anchor.a = a.number("length_mm", "mm", TB::bar_length_min * 1e3, TB::bar_length_max * 1e3) * 1e-3;
+    tie.anchor.b = a.number("diameter_mm", "mm", TB::bar_diameter_min * 1e3, TB::bar_diameter_max * 1e3) * 1e-3;
   }
   tie.anchor.fyk = grade_of(a, "grade", tie.anchor.grade).fyk;
   try {

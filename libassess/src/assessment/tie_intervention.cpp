@@ -274,6 +274,13 @@ TieInterventionResult intervention(const CaseFile& c, const FacadeAssessment* a)
           ++R.tried;
           const TieResistance res = tie_resistance(levels->front());
           const bool masonry = res.governing == "bearing" || res.governing == "punching";
+          TieTrial trial{d, grade, levels->front().rod.thread_diameter, p.a, p.t, res.design, res.governing,
+                         res.ductile, "", ""};
+          auto log = [&](const char* outcome, const std::string& component = "") {
+            trial.outcome = outcome;
+            trial.component = component;
+            R.trials.push_back(trial);
+          };
           TieInterventionResult T;
           T.designed = T.intervention = true;
           T.case_before = R.case_before;
@@ -288,12 +295,14 @@ TieInterventionResult intervention(const CaseFile& c, const FacadeAssessment* a)
               if ((row.check == "cone spacing" || row.check == "edge distance") && !row.satisfied) layout = false;
           if (!layout) {  // the layout does not depend on the rod: this plate is out for good
             ++n_layout;
+            log("layout");
             dead[ip] = 1;
             continue;
           }
           T.after = run_kinematic_case(T.case_after);
           if (!every_kinematic_check_satisfied(T.after)) {
             ++n_kinematic;
+            log("mechanism");
             if (masonry) dead[ip] = 1;
             consider(T, 1);
             continue;
@@ -301,6 +310,7 @@ TieInterventionResult intervention(const CaseFile& c, const FacadeAssessment* a)
           T.levels = level_results(T.case_after, T.after, n_existing, T.case_after.ties.size(), nullptr, false);
           if (!all_satisfied(T.levels)) {
             ++n_checks;
+            log("tie");
             if (masonry) dead[ip] = 1;
             consider(T, 2);
             continue;
@@ -309,18 +319,22 @@ TieInterventionResult intervention(const CaseFile& c, const FacadeAssessment* a)
           const DynamicVerdict v = dynamic_verdict(T.dynamics);
           if (!v.ok) {
             bool broke = false;
+            std::string comp;
             for (const TieDynamicRun& r : T.dynamics.runs)
               for (const TieLevelRun& l : r.levels)
                 if (l.broken && !broke) {
                   broke = true;
+                  comp = l.component;
                   ++broken_by[l.component];
                 }
             ++(broke ? n_broken : n_dynamic);
+            log(broke ? "broken" : "dynamic", comp);
             if (masonry) dead[ip] = 1;
             consider(T, 3);
             if (v.plate_may_help) continue;
             break;  // the thread, the rod or the wall itself: the next rod or grade
           }
+          log("accepted");
           R.case_after = std::move(T.case_after);
           R.after = std::move(T.after);
           R.dynamics = std::move(T.dynamics);
@@ -522,6 +536,10 @@ TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventi
 
 std::optional<TieInterventionResult> assess_ties(const FacadeAssessment& a) {
   if (!has_ties(a.kase)) return std::nullopt;
+  if (a.dynamic && a.dynamic->options.overturn != OverturnCriterion::theta_u)
+    throw InputError(a.kase.file + ": /dynamic/overturn_at: a wall held by tie rods (\"ties\" or \"design\") "
+                     "collapses where its net restoring moment with the ties at their strength vanishes; \"half_pi\" is "
+                     "not available with ties");
   return run_tie_intervention(a.kase, a);
 }
 

@@ -268,6 +268,7 @@ class TiedSystem : public HybridSystem {
     if (mode != kRest && detail::extremum_in_step(t0, y0, f0, t1, y1, f1, tp, qp)) consider_peak(tp, qp);
     for (std::size_t i = 0; i < lv_.size(); ++i) {
       TiedLevelResult& r = out_.ties[i];
+      if (broken_[i]) continue;  // its outcome is that of the instant it broke
       r.max_force = std::max(r.max_force, force(i, y1, mode));
       r.max_elongation = std::max(r.max_elongation, lv_[i].e(y1[0]));
       r.plastic_elongation = y1[2 + i];

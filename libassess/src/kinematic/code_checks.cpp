@@ -150,15 +150,25 @@ std::vector<CheckRow> run_code_checks(const KinematicResult& r, const CheckInput
   std::vector<CheckRow> rows = checks_of(r, in);
   if (!r.without_ties || !r.without_ties->activates || !r.without_ties->curve_complete()) return rows;
   const std::vector<CheckRow> bare = checks_of(*r.without_ties, in);
-  for (CheckRow& row : rows) {
-    if (row.kind != "displacement") continue;
-    for (const CheckRow& b : bare)
-      if (b.code == row.code && b.limit_state == row.limit_state && b.kind == row.kind && b.location == row.location &&
-          b.dc < row.dc) {
-        row = b;
-        row.without_ties = true;
-        row.note = "satisfied by the wall without its tie levels (their failure leaves it)";
+  for (const CheckRow& b : bare) {
+    if (b.kind != "displacement") continue;
+    bool found = false;
+    for (CheckRow& row : rows)
+      if (b.code == row.code && b.limit_state == row.limit_state && b.kind == row.kind && b.location == row.location) {
+        found = true;
+        if (b.dc < row.dc) {
+          row = b;
+          row.without_ties = true;
+          row.note = "satisfied by the wall without its tie levels (their failure leaves it)";
+        }
       }
+    if (!found && !r.curve_complete()) {
+      // The tied wall has no complete curve (its levels hold it beyond the
+      // explored range): its displacement capacity is the bare wall's.
+      rows.push_back(b);
+      rows.back().without_ties = true;
+      rows.back().note = "the wall without its tie levels (the tied capacity curve is incomplete)";
+    }
   }
   return rows;
 }

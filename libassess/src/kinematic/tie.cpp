@@ -59,8 +59,13 @@ void Tie::validate() const {
   require(in(free_length, B::free_length_min, B::free_length_max),
           t + "free length = " + num(free_length) + " m: expected " + num(B::free_length_min) + " to " +
               num(B::free_length_max) + " m");
-  require(in(anchor.a, B::plate_side_min, B::plate_side_max) && in(anchor.b, B::plate_side_min, B::plate_side_max),
-          t + "anchor size: expected " + num(B::plate_side_min) + " to " + num(B::plate_side_max) + " m");
+  if (anchor.type == AnchorType::Plate)
+    require(in(anchor.a, B::plate_side_min, B::plate_side_max) && in(anchor.b, B::plate_side_min, B::plate_side_max),
+            t + "anchor plate size: expected " + num(B::plate_side_min) + " to " + num(B::plate_side_max) + " m");
+  else
+    require(in(anchor.a, B::bar_length_min, B::bar_length_max) && in(anchor.b, B::bar_diameter_min, B::bar_diameter_max),
+            t + "bar anchor: expected a length of " + num(B::bar_length_min) + " to " + num(B::bar_length_max) +
+                " m and a diameter of " + num(B::bar_diameter_min) + " to " + num(B::bar_diameter_max) + " m");
   require(anchor.type == AnchorType::Bar || in(anchor.t, B::plate_t_min, B::plate_t_max),
           t + "anchor plate thickness = " + num(anchor.t) + " m: expected " + num(B::plate_t_min) + " to " +
               num(B::plate_t_max) + " m");

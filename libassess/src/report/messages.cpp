@@ -561,6 +561,8 @@ const std::vector<std::pair<std::string, std::string>>& phrases_it() {
       {", a rod broken in ", ", catena rotta in "},
       {"satisfied by the wall without its tie levels (their failure leaves it)",
        "soddisfatta dalla parete senza le sue catene (quella che resta se le catene si rompono)"},
+      {"the wall without its tie levels (the tied capacity curve is incomplete)",
+       "la parete senza le sue catene (la curva di capacità con le catene è incompleta)"},
       {" held by ", " trattenuto da "},
       {", held by ", ", trattenuta da "},
       {" tie levels (one-sided elastic-perfectly-plastic restraint, docs/theory/ties.md §6)",

@@ -339,6 +339,12 @@ std::string tie_text(const TieInterventionResult& t) {
     if (t.passes_before)
       s += "  note: the mechanism already satisfies every check without the ties designed here; the smallest tie of the "
            "lists is shown\n";
+    for (const TieTrial& x : t.trials)
+      if (x.outcome != "layout")
+        s += format("    tried diam. %.0f %s M%.0f, plate %.0f x %.0f: T_Rd %.1f kN (%s%s): %s%s\n", x.diameter * 1e3,
+                    x.grade.c_str(), x.thread * 1e3, x.plate * 1e3, x.plate_t * 1e3, x.T_Rd / kN, x.governing.c_str(),
+                    x.ductile ? ", ductile" : "", x.outcome.c_str(),
+                    x.component.empty() ? "" : (" (" + x.component + ")").c_str());
   } else if (!t.intervention) {
     s += "  no intervention: the existing ties are part of the stato di fatto\n";
   }
@@ -396,6 +402,12 @@ nlohmann::json tie_json(const TieInterventionResult& t) {
     j["combinations_analysed"] = t.tried;
     j["regime"] = t.regime;
     if (!t.found) j["message"] = t.message;
+    j["trials"] = nlohmann::json::array();
+    for (const TieTrial& x : t.trials)
+      j["trials"].push_back({{"diameter_mm", x.diameter * 1e3}, {"grade", x.grade}, {"thread_mm", x.thread * 1e3},
+                             {"plate_mm", x.plate * 1e3}, {"plate_t_mm", x.plate_t * 1e3},
+                             {"T_Rd_kN", x.T_Rd / kN}, {"governing", x.governing}, {"ductile", x.ductile},
+                             {"outcome", x.outcome}, {"component", x.component}});
   }
   j["levels_before"] = nlohmann::json::array();
   for (const TieLevelResult& L : t.levels_before) j["levels_before"].push_back(level_json(L));

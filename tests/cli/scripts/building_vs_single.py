@@ -149,12 +149,12 @@ for m in b["mechanisms"]:
         iv = m["intervention"]
         same(iv["zeta_E_before"], s["ties"]["before"]["zeta_E"], f"{m['id']}/intervention/zeta_E_before", f)
         same(iv["zeta_E_after"], s["ties"]["after"]["zeta_E"], f"{m['id']}/intervention/zeta_E_after", f)
-        if iv["ties"] == "given":
-            # Given ties: the mechanism's own displacement (or strength) zetaE is the tied one.
-            approach = "strength" if m["case"].get("method") == "linear" else "displacement"
-            for x in s["safety_indices"]:
-                if x["code"] == "NTC2018" and x["approach"] == approach and x["defined"]:
-                    same(x["zeta_E"], iv["zeta_E_after"], f"{m['id']}/given ties: safety index = zeta_E after", f)
+        # Issue 29: the mechanism's own displacement (or strength) zetaE is its stato di fatto's (with its
+        # existing ties, if any): zeta_E before.
+        approach = "strength" if m["case"].get("method") == "linear" else "displacement"
+        for x in s["safety_indices"]:
+            if x["code"] == "NTC2018" and x["approach"] == approach and x["defined"]:
+                same(x["zeta_E"], iv["zeta_E_before"], f"{m['id']}/ties: safety index = zeta_E before", f)
         ties_note = (f", ties ({iv['ties']}, {len(numbers)} numbers) identical, zetaE {iv['zeta_E_before']:.3f} -> "
                      f"{iv['zeta_E_after']:.3f}")
     k = m["assessment"]["kinematic"]

@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
-"""Issue 23: with tie rods GIVEN in a case, the facade's dynamic check rows
-(which decide the dynamic verdict) are those of the tied analyses, never the
-untied wall against the tied capacity: each governing dynamic row equals the
-tied summary of its restitution value (d* demand, d_SLV of the tied
-mechanism, verdict), and the NTC 2018 dynamic verdict is theirs. The
-analyses listed in the dynamic section are the tied ones too: each run's
-peak rotation and rod outcome equal the ties section's run.
+"""Issues 23, 29: with EXISTING tie rods in a case (the stato di fatto), the
+facade's dynamic check rows (which decide the dynamic verdict) are those of
+the tied analyses, never the untied wall against the tied capacity: each
+governing dynamic row equals the tied summary of its restitution value (d*
+demand, d_SLV of the tied mechanism, verdict), and the NTC 2018 dynamic
+verdict is theirs. The analyses listed in the dynamic section are the tied
+ones too: each run's peak rotation and tie outcome equal the ties section's
+run (the stato di fatto's: no intervention, one state).
 
 Usage: given_ties_dynamic.py ASSESS CASE
 """
@@ -36,6 +37,8 @@ for r, s in zip(rows, tied["summaries"]):
 runs = j["dynamic"]["analyses"]
 if len(runs) != len(tied["runs"]):
     fail.append(f"{len(runs)} runs in the dynamic section, {len(tied['runs'])} tied runs")
+if tied["runs"] != tied["runs_before"]:
+    fail.append("without an intervention the two states' runs differ")
 for r, t in zip(runs, tied["runs"]):
     if abs(r["theta_max"] - t["theta_max"]) > REL_TOL * max(abs(r["theta_max"]), abs(t["theta_max"])):
         fail.append(f"run {t['run']}: theta_max {r['theta_max']} vs tied {t['theta_max']}")

@@ -92,12 +92,30 @@ struct TieLevelResult {
   int dynamic_runs = 0, dynamic_yielded = 0, dynamic_broken = 0;  ///< its outcome over the analyses
 };
 
+/// One combination the design analysed (issue 29), in the order tried.
+struct TieTrial {
+  double diameter = 0.0;       ///< rod (m)
+  std::string grade;
+  double thread = 0.0;         ///< nominal diameter of the ends' thread (m)
+  double plate = 0.0, plate_t = 0.0;  ///< m
+  double T_Rd = 0.0;           ///< per tie (N)
+  std::string governing;       ///< its weakest component
+  bool ductile = false;
+  /// "layout" (punching wedges overlapping or beyond the wall), "mechanism" (a
+  /// check of the mechanism), "tie" (a check of the tie), "broken" (a tie
+  /// broke in a dynamic analysis: `component`), "dynamic" (the dynamic check),
+  /// "accepted".
+  std::string outcome;
+  std::string component;
+};
+
 struct TieInterventionResult {
   bool designed = false;      ///< from "design" (else the case's "ties" are assessed)
   bool intervention = false;  ///< new ties (given or designed) exist: a stato di progetto
   bool found = false;         ///< design: a rod and plate of the lists satisfy every check
   std::string message;        ///< why no design was found
   int tried = 0;              ///< design: combinations analysed
+  std::vector<TieTrial> trials;  ///< design: each combination and why it was rejected or accepted
   /// The stato di fatto (the case as read: its existing ties) and the stato
   /// di progetto (with the new ties; the same case without an intervention).
   CaseFile case_before, case_after;

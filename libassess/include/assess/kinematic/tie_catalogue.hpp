@@ -169,6 +169,8 @@ inline constexpr double rod_area_min = 20e-6, rod_area_max = 8000e-6;        // 
 inline constexpr double fyk_min = 100e6, fyk_max = 1000e6;                   // Pa
 inline constexpr double plate_side_min = 0.05, plate_side_max = 2.0;         // m
 inline constexpr double plate_t_min = 0.003, plate_t_max = 0.1;              // m
+inline constexpr double bar_length_min = 0.1, bar_length_max = 2.0;          // m (paletto)
+inline constexpr double bar_diameter_min = 0.01, bar_diameter_max = 0.2;     // m
 inline constexpr double fm_min = 0.1e6, fm_max = 50e6;                       // Pa
 inline constexpr double tau_min = 1e3, tau_max = 5e6;                        // Pa
 inline constexpr double thickness_min = 0.05, thickness_max = 5.0;           // m
