@@ -255,10 +255,11 @@ TEST_CASE("tie rods in a building: a wall's design reaches its mechanisms, a mec
   d.erase("dynamic");  // kinematic only: no record selection pre-pass
   const json masonry = {{"fm_MPa", 2.0}, {"tau_MPa", 0.035}, {"thickness_m", 0.45}};
   json level = {{"name", "eaves"}, {"point", {0.0, 7.3}}, {"free_length_m", 9.0}, {"masonry", masonry},
-                {"spacing_m", 2.5}};
+                {"wall_length_m", 8.0}, {"spacing_m", 2.5}};
   d["walls"][0]["design"] = {{"ties", {{"levels", {level}}, {"grades", {"S275", "S355"}}}}};
   json given = level;
   given["name"] = "existing";
+  given["existing"] = true;  // issue 29: part of the stato di fatto (it acts in the mechanism's own analyses)
   given["rod"] = {{"diameter_mm", 16}};
   given["anchor"] = {{"type", "plate"}, {"a_mm", 200}, {"t_mm", 15}};
   d["walls"][0]["mechanisms"][1]["design"] = nullptr;
@@ -297,7 +298,8 @@ TEST_CASE("tie rods in a building: a wall's design reaches its mechanisms, a mec
     FAIL("a zero spacing was accepted");
   } catch (const InputError& e) {
     const std::string m = e.what();
-    CHECK(m.find("house.json: /walls/0/design/ties/levels/0/spacing_m: value 0 out of range") != std::string::npos);
+    CHECK(m.find("house.json: /walls/0/design/ties/levels/0/spacing_m: value 0 out of range: expected in [0.1, 500] m") !=
+          std::string::npos);
     CHECK(m.find("[M1 \"ground\"]") != std::string::npos);
   }
 }

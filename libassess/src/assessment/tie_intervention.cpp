@@ -305,6 +305,7 @@ TieInterventionResult intervention(const CaseFile& c, const FacadeAssessment* a)
             log("mechanism");
             if (masonry) dead[ip] = 1;
             consider(T, 1);
+            if (res.governing == "rod" || res.governing == "thread") break;  // a larger plate gives the same T_Rd
             continue;
           }
           T.levels = level_results(T.case_after, T.after, n_existing, T.case_after.ties.size(), nullptr, false);
@@ -313,6 +314,9 @@ TieInterventionResult intervention(const CaseFile& c, const FacadeAssessment* a)
             log("tie");
             if (masonry) dead[ip] = 1;
             consider(T, 2);
+            // The same T_Rd with a larger plate, and no ductility to gain from one (the thread's is fixed).
+            if ((res.governing == "rod" || res.governing == "thread") && (res.ductile || res.thread < res.hierarchy_demand))
+              break;
             continue;
           }
           state_dynamics(T);

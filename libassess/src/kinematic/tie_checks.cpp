@@ -113,7 +113,7 @@ std::vector<TieCheckRow> tie_checks(const Tie& tie, const TieDemand& demand) {
   };
   const char* ntc_rod = "NTC 2018 §4.2.4.1.2 [4.2.6]";
   const char* ntc_thread = "NTC 2018 §4.2.8.1.1";
-  const char* practice = "designer's assumption (practice)";
+  const char* practice = "designer's assumption";
   const char* plate = tie.anchor.type == AnchorType::Plate ? "2 a b t^2 fyk / (4 gamma_M0 c^2), c = (max(a, b) - s_nut) / 2"
                                                            : "8 b^3 fyk / (6 gamma_M0 a)";
   if (!demand.reachable) {
@@ -130,7 +130,7 @@ std::vector<TieCheckRow> tie_checks(const Tie& tie, const TieDemand& demand) {
     // The rod yields first: its static demand, the brittle components against
     // the rod's overstrength (gerarchia delle resistenze), the elongation.
     add("rod yield", ntc_rod, "A fyk / gamma_M0", demand.static_force, r.rod, "kN");
-    const char* capacity_design = "EN 1998-1 §6.5.5, NTC 2018 §7.5.1";
+    const char* capacity_design = "EN 1998-1 §6.5.5";
     add("hierarchy thread", capacity_design, "0.9 ftk A_res / gamma_M2 >= gamma_Rd gamma_ov A fyk", r.hierarchy_demand,
         r.thread, "kN");
     add("hierarchy local compression", capacity_design, "beta fd A_b >= gamma_Rd gamma_ov A fyk", r.hierarchy_demand,

@@ -247,14 +247,18 @@ const std::map<std::string, std::pair<std::string, std::string>>& tie_messages()
        {"d* per cui la prima catena raggiunge la resistenza (m)", "d* at which the first tie reaches its strength (m)"}},
       {"tie.d_SLV_plastic",
        {"d_SLV con la riserva plastica, non adottato (m)", "d_SLV with the plastic reserve, not adopted (m)"}},
+      {"tie.bare_mark", {" (parete senza catene)", " (the wall without its ties)"}},
       {"tie.zeta", {"ζE = PGA capacità / PGA domanda (NTC 2018)", "ζE = PGA capacity / PGA demand (NTC 2018)"}},
       {"tie.all_checks", {"tutte le verifiche", "every check"}},
       {"tie.plastic_note",
        {"Gli spostamenti adottati si fermano dove la prima catena raggiunge la propria resistenza; la riga della "
         "riserva plastica indica quanto si avrebbe contando sull'allungamento plastico delle catene duttili fino a "
-        "ε_ud L, e non entra nelle verifiche.",
+        "ε_ud L, e non entra nelle verifiche. Una verifica di spostamento che la parete senza catene soddisfa meglio "
+        "(quella che resta se le catene si rompono) ne prende il valore, indicato tra parentesi.",
         "The adopted displacements stop where the first tie reaches its strength; the plastic-reserve row shows what "
-        "the plastic elongation of ductile ties up to ε_ud L would give, and does not enter the checks."}},
+        "the plastic elongation of ductile ties up to ε_ud L would give, and does not enter the checks. A "
+        "displacement check that the wall without its ties satisfies better (the wall left if the ties break) "
+        "takes its value, marked in brackets."}},
       // Dynamics.
       {"tie.dyn_title",
        {"Verifica dinamica nello stato di fatto e nello stato di progetto (Circolare 2019 C8.7.1.2.1.9)",
@@ -314,9 +318,9 @@ const std::map<std::string, std::pair<std::string, std::string>>& tie_messages()
         "a bar through the rod's eye, bearing on the masonry over its whole length"}},
       {"tie.det_nut",
        {"Dado esagonale ISO 4032 M{} (chiave {} mm, altezza {} mm) di classe adeguata all'acciaio della barra, con "
-        "rondella ISO 7089 (diametro {} mm, spessore {} mm) e controdado.",
+        "rondella ISO 7089 (diametro × spessore {} mm) e controdado.",
         "Hexagon nut ISO 4032 M{} (across flats {} mm, height {} mm) of a class matched to the rod's steel, with an "
-        "ISO 7089 washer (diameter {} mm, thickness {} mm) and a lock nut."}},
+        "ISO 7089 washer (diameter × thickness {} mm) and a lock nut."}},
       {"tie.det_ends.threaded",
        {"Estremità filettate sulla barra stessa: la sezione resistente è quella della filettatura.",
         "Ends threaded on the rod itself: the resisting section is the thread's."}},

@@ -195,8 +195,9 @@ std::string states_table(const Ctx& c, const TieInterventionResult& t) {
     const CheckRow* r2 = nullptr;
     for (const CheckRow& x : ca.checks)
       if (x.code == r.code && x.limit_state == r.limit_state && x.kind == r.kind && x.location == r.location) r2 = &x;
+    auto mark = [&](const CheckRow* x) { return x && x->without_ties ? c.t("bare_mark") : std::string(); };
     row(r.code + " " + r.limit_state + " " + c.t("kind." + r.kind) + " " + c.t("where." + r.location) + " D/C",
-        fnum(r.dc, "%.3f"), r2 ? fnum(r2->dc, "%.3f") : "–");
+        fnum(r.dc, "%.3f") + mark(&r), r2 ? fnum(r2->dc, "%.3f") + mark(r2) : "–");
   }
   return h + "</table>\n<p>" + c.t("plastic_note") + "</p>\n";
 }
@@ -244,7 +245,7 @@ std::string detailing(const Ctx& c, const TieInterventionResult& t, const std::s
     item += c.f("det_anchor", anchor_cell(c, x), c.t(x.anchor.type == AnchorType::Plate ? "det_plate" : "det_bar"));
     if (th)
       item += " " + c.f("det_nut", format("%.0f", th->d * 1e3), format("%.0f", th->s * 1e3), format("%.1f", th->m * 1e3),
-                        format("%.0f", th->dw * 1e3), format("%.1f", th->hw * 1e3));
+                        format("%.0f × %.1f", th->dw * 1e3, th->hw * 1e3));
     item += " " + c.t("det_ends." + std::string(to_string(x.rod.ends)));
     item += " " + c.f("det_layout", layout_cell(c, x));
     if (x.pretension > 0.0)

@@ -313,14 +313,14 @@ std::string level_text(const TieLevelResult& L) {
                      8) +
            "\n";
   s += "    checks of the tie:\n";
-  s += format("      %-28s %-34s %9s %9s %8s %6s  %s\n", "check", "clause / source", "demand", "capacity", "unit",
+  s += format("      %-28s %-22s %9s %9s %8s %6s  %s\n", "check", "clause / source", "demand", "capacity", "unit",
               "D/C", "verdict");
   for (const TieCheckRow& c : L.checks) {
     const bool count = c.unit == "analyses";
-    s += format("      %-28s %-34s %9s %9s %8s %6s  %s\n", c.check.c_str(), c.clause.c_str(),
+    s += format("      %-28s %-22s %9s %9s %8s %6s  %s\n", c.check.c_str(), c.clause.c_str(),
                 !c.reachable ? "n/r" : count ? format("%.0f", c.demand).c_str() : format("%.2f", c.demand * scale(c)).c_str(),
                 count ? "0" : format("%.2f", c.capacity * scale(c)).c_str(), c.unit.c_str(),
-                c.reachable && !count ? format("%.3f", c.dc).c_str() : "-", verdict(c.satisfied));
+                c.reachable && !count ? format("%.3f", c.dc).c_str() : "-", c.satisfied ? "satisfied" : "NOT satisfied");
   }
   return s;
 }
@@ -330,12 +330,14 @@ std::string level_text(const TieLevelResult& L) {
 std::string tie_text(const TieInterventionResult& t) {
   std::string s = "\nTie rods (catene): stato di fatto and stato di progetto\n";
   if (t.designed) {
-    s += t.found ? format("  design: the smallest rod and plate of the lists that make every check pass (%d combinations "
-                          "analysed); the ties are %s\n",
-                          t.tried,
-                          t.regime == "ductile" ? "DUCTILE (capacity design satisfied)"
-                                                : "NOT ductile and stay ELASTIC in every analysis")
-                 : "  design: NOT FOUND: " + t.message + "; the combination that came closest is shown\n";
+    s += wrap_text(t.found ? format("  design: the smallest rod and plate of the lists that make every check pass (%d "
+                                    "combinations analysed); the ties are %s",
+                                    t.tried,
+                                    t.regime == "ductile" ? "DUCTILE (capacity design satisfied)"
+                                                          : "NOT ductile and stay ELASTIC in every analysis")
+                           : "  design: NOT FOUND: " + t.message + "; the combination that came closest is shown",
+                   4) +
+         "\n";
     if (t.passes_before)
       s += "  note: the mechanism already satisfies every check without the ties designed here; the smallest tie of the "
            "lists is shown\n";
@@ -380,16 +382,18 @@ std::string tie_text(const TieInterventionResult& t) {
   if (t.intervention && std::isfinite(t.zetaE_before) && std::isfinite(t.zetaE_after) && t.zetaE_before > 0.0)
     s += format("      improvement of zeta_E: %+.3f (x %.2f)\n", t.zetaE_after - t.zetaE_before,
                 t.zetaE_after / t.zetaE_before);
-  s += format("      %-8s %-4s %-13s %-8s %12s %12s\n", "code", "LS", "kind", "where", "D/C fatto", "D/C progetto");
+  s += format("      %-8s %-4s %-13s %-8s %14s %14s\n", "code", "LS", "kind", "where", "D/C fatto", "D/C progetto");
   for (const CheckRow& row : b.checks) {
     const CheckRow* r2 = find_row(t.after, row);
-    s += format("      %-8s %-4s %-13s %-8s %12s %12s\n", row.code.c_str(), row.limit_state.c_str(), row.kind.c_str(),
-                row.location.c_str(), num_or_dash(row.dc, "%.3f").c_str(), r2 ? num_or_dash(r2->dc, "%.3f").c_str() : "-");
+    auto dc = [](const CheckRow* x) { return num_or_dash(x->dc, "%.3f") + (x->without_ties ? " (bare)" : ""); };
+    s += format("      %-8s %-4s %-13s %-8s %14s %14s\n", row.code.c_str(), row.limit_state.c_str(), row.kind.c_str(),
+                row.location.c_str(), dc(&row).c_str(), r2 ? dc(r2).c_str() : "-");
   }
+  s += "      (bare): the wall without its ties satisfies that displacement check better (the wall left if they break)\n";
   s += dynamics_text(t);
   s += "  readings adopted (for the appendix):\n";
   for (const TieReading& r : tie_readings(t, Lang::en))
-    s += wrap_text("    - " + r.quantity + ": " + r.reading + " (" + r.basis + ")", 6) + "\n";
+    s += wrap_text("    - " + r.quantity + ": " + r.reading + " (" + r.basis + ")", 6, 100) + "\n";
   return s;
 }
 
