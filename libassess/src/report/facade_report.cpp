@@ -393,7 +393,10 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
                         {"max_elongation_mm", x.max_elongation * 1e3},
                         {"yielded", x.yielded},
                         {"plastic_elongation_mm", x.plastic_elongation * 1e3},
-                        {"plastic_energy_kJ", x.plastic_energy / units::kN}});
+                        {"plastic_energy_kJ", x.plastic_energy / units::kN},
+                        {"broken", x.broken},  // issue 29: the level broke (its force lost from then on)
+                        {"broken_by_elongation", x.broken_by_elongation},
+                        {"t_broken_s", x.broken ? nlohmann::json(x.t_broken) : nlohmann::json(nullptr)}});
         runs.back()["ties"] = lv;
         runs.back()["ties_per"] = a.mechanism_dynamics && a.mechanism_dynamics->single_body() ? "m of wall" : "level";
         runs.back()["rod_broken"] = r.ruptured;
