@@ -16,7 +16,7 @@
 #include <assess/risk/fragility_report.hpp>
 
 #include <filesystem>
-#include <assess/report/pdf.hpp>
+#include <assess/report/report_files.hpp>
 
 #include <fstream>
 #include <iterator>
@@ -32,8 +32,9 @@ namespace {
 std::string wrap(const std::string& line, std::size_t width) { return wrap_text(line, 2, width) + "\n"; }
 
 struct RunArgs {
-  std::string file, html, pdf, lang = "it", fragility, mechanism, expand;
+  std::string file, html, pdf, docx, lang = "it", fragility, mechanism, expand;
   bool json = false, keep_going = false, wide = false;
+  bool wants_report() const { return !html.empty() || !pdf.empty() || !docx.empty(); }
 };
 
 void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_text);
@@ -55,7 +56,7 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
   }
   FacadeOptions opt;
   opt.keep_going = a.keep_going;
-  opt.histories = !a.html.empty() || !a.pdf.empty();
+  opt.histories = a.wants_report();
   const BuildingAssessment res = assess_building(std::move(bc), opt);
   print_warnings(res.warnings);
   if (!a.expand.empty()) {
@@ -67,16 +68,11 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
         throw InputError("--expand " + a.expand + ": cannot write " + path);
     }
   }
-  if (!a.html.empty() || !a.pdf.empty()) {
+  if (a.wants_report()) {
     ReportOptions ro;
     ro.lang = lang;
     ro.case_text = read_text(a.file);
-    const std::string page = building_html(res, ro);
-    if (!a.html.empty()) {
-      std::ofstream out(a.html, std::ios::binary);
-      if (!out || !(out << page)) throw InputError("--html " + a.html + ": cannot write the file");
-    }
-    if (!a.pdf.empty()) html_to_pdf(page, a.pdf);
+    write_report_files(building_document(res, ro), {a.html, a.pdf, a.docx});
   }
   if (a.json) {
     nlohmann::json j = building_json(res);
@@ -85,7 +81,8 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
     std::cout << building_text(res, a.wide ? TextWidth::wide : TextWidth::columns120)
               << (a.expand.empty() ? "" : "\nexpanded single-mechanism cases written to " + a.expand + "/M*.json\n")
               << (a.html.empty() ? "" : "\nHTML report written to " + a.html + "\n")
-              << (a.pdf.empty() ? "" : "PDF report written to " + a.pdf + "\n");
+              << (a.pdf.empty() ? "" : "PDF report written to " + a.pdf + "\n")
+              << (a.docx.empty() ? "" : "Word report written to " + a.docx + "\n");
   }
 }
 
@@ -102,7 +99,7 @@ void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_tex
   const Lang lang = parse_lang(a.lang);
   FacadeOptions opt;
   opt.keep_going = a.keep_going;
-  opt.histories = !a.html.empty() || !a.pdf.empty();
+  opt.histories = a.wants_report();
   FacadeAssessment res = assess_facade(c, opt);
   // Issue 23: the tie rods ("ties" or "design"): before/after and their checks;
   // given ties also decide the dynamic check rows.
@@ -127,18 +124,13 @@ void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_tex
   // The additional probabilistic result of the report (HTML box, JSON).
   std::optional<ProbabilisticResult> prob;
   if (frag) prob = probabilistic_result(*frag, frag_dir + "/summary.json");
-  if (!a.html.empty() || !a.pdf.empty()) {
+  if (a.wants_report()) {
     ReportOptions ro;
     ro.lang = lang;
     ro.fragility = prob;
     if (ties) ro.ties = &*ties;
     ro.case_text = case_text;
-    const std::string page = facade_html(res, ro);
-    if (!a.html.empty()) {
-      std::ofstream out(a.html, std::ios::binary);
-      if (!out || !(out << page)) throw InputError("--html " + a.html + ": cannot write the file");
-    }
-    if (!a.pdf.empty()) html_to_pdf(page, a.pdf);
+    write_report_files(facade_document(res, ro), {a.html, a.pdf, a.docx});
   }
   if (a.json) {
     nlohmann::json j = facade_json(res);
@@ -157,7 +149,8 @@ void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_tex
               << (frag ? (a.wide ? fragility_line(*frag) + "\n" : wrap(fragility_line(*frag), 120)) : "")
               << (ties ? tie_text(*ties) : "")
               << (a.html.empty() ? "" : "\nHTML report written to " + a.html + "\n")
-              << (a.pdf.empty() ? "" : "PDF report written to " + a.pdf + "\n");
+              << (a.pdf.empty() ? "" : "PDF report written to " + a.pdf + "\n")
+              << (a.docx.empty() ? "" : "Word report written to " + a.docx + "\n");
   }
 }
 
@@ -171,8 +164,10 @@ void add_run_command(CLI::App& app) {
   cmd->add_flag("--json", args->json, "print the report as JSON");
   cmd->add_option("--html", args->html, "also write a self-contained HTML report with plots to this file");
   cmd->add_option("--pdf", args->pdf, "also print the same report to a PDF file (A4, headless Chromium)");
+  cmd->add_option("--docx", args->docx,
+                  "also write the same relazione as an editable Word document (pandoc, Debian package pandoc)");
   cmd->add_option("--lang", args->lang,
-                  "language of the HTML/PDF report: it (default: the relazione is filed in Italy) or en");
+                  "language of the HTML/PDF/Word report: it (default: the relazione is filed in Italy) or en");
   cmd->add_flag("--wide", args->wide, "one line per table row however long (default: tables within 120 columns)");
   cmd->add_flag("--keep-going", args->keep_going, "continue with the readable records when some cannot be read");
   cmd->add_option("--mechanism", args->mechanism,

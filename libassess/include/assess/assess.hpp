@@ -50,7 +50,11 @@
 
 // report
 #include <assess/report/facade_report.hpp>
+#include <assess/report/document.hpp>
+#include <assess/report/docx_writer.hpp>
 #include <assess/report/html_report.hpp>
+#include <assess/report/html_writer.hpp>
+#include <assess/report/report_files.hpp>
 #include <assess/report/kinematic_report.hpp>
 #include <assess/report/plot.hpp>
 #include <assess/report/probabilistic_result.hpp>

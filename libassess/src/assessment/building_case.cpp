@@ -130,7 +130,7 @@ BuildingCase parse_building(const nlohmann::json& doc, const std::string& file) 
                       "\" is not a building-wide key: tie anchor points are in each mechanism's own coordinates; give "
                       "it in a wall (its mechanisms) or a mechanism (docs/user/building.md, Tie rods)");
   root.allow_only({"schema_version", "project", "site", "building", "knowledge_level", "FC", "codes", "method",
-                   "check_SLD", "analysis", "dynamic", "walls", "record_selection"});
+                   "check_SLD", "analysis", "dynamic", "walls", "record_selection", "report"});
   if (root.find("schema_version")) root.integer("schema_version", 1, 1);
   b.project = root.find("project") ? root.string("project") : "";
   if (!root.has("site"))
@@ -185,6 +185,7 @@ BuildingCase parse_building(const nlohmann::json& doc, const std::string& file) 
     }
   }
   for (BuildingMechanism& m : b.mechanisms) m.kase = parse_expanded(b, m);
+  b.report = b.mechanisms.front().kase.report;  // "report" is building-wide: every expanded case holds it
 
   // Record sets (docs/theory/building.md §3): mechanisms selecting with the
   // same settings and no range of their own share one selection over the

@@ -490,13 +490,45 @@ void check_ties_hold(const JsonNode& arr, const std::vector<Tie>& ties, const Me
 }
 // ---- end issue 23 -------------------------------------------------------------
 
+// "report" (issue 28, item 7): the relazione's frontespizio and descriptive
+// sections, text as written; masonry parameters in MPa.
+ReportInfo parse_report_info(const JsonNode& r) {
+  r.allow_only({"client", "work", "location", "engineer", "registration", "revision", "place", "description",
+                "investigations", "masonry", "mechanism_criteria", "heritage"});
+  ReportInfo x;
+  auto text = [&](const char* key, std::string& out) {
+    if (r.find(key)) out = r.string(key);
+  };
+  text("client", x.client);
+  text("work", x.work);
+  text("location", x.location);
+  text("engineer", x.engineer);
+  text("registration", x.registration);
+  text("revision", x.revision);
+  text("place", x.place);
+  text("description", x.description);
+  text("investigations", x.investigations);
+  text("mechanism_criteria", x.mechanism_criteria);
+  x.heritage = r.boolean_or("heritage", false);
+  if (const auto m = r.find("masonry")) {
+    m->allow_only({"type", "fm_MPa", "tau0_MPa", "E_MPa", "G_MPa"});
+    if (m->find("type")) x.masonry = m->string("type");
+    // Tab. C8.5.I spans fm 1-8 MPa, tau0 0.02-0.2 MPa, E 700-3000 MPa, G 230-1000 MPa: wide bounds, a unit slip fails.
+    if (m->find("fm_MPa")) x.fm = m->number("fm_MPa", "MPa", 0.1, 100.0);
+    if (m->find("tau0_MPa")) x.tau0 = m->number("tau0_MPa", "MPa", 0.001, 10.0);
+    if (m->find("E_MPa")) x.E = m->number("E_MPa", "MPa", 10.0, 1e5);
+    if (m->find("G_MPa")) x.G = m->number("G_MPa", "MPa", 1.0, 5e4);
+  }
+  return x;
+}
+
 }  // namespace
 
 CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
   const JsonNode root(doc, file);
   root.allow_only({"schema_version", "project", "site", "mechanism", "knowledge_level", "FC", "codes",
                    "building", "analysis", "dynamic", "method", "check_SLD",
-                   "ties", "design"});
+                   "ties", "design", "report"});
   CaseFile c;
   c.file = file;
   if (root.find("schema_version")) root.integer("schema_version", 1, 1);
@@ -539,6 +571,7 @@ CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
       root.at("method").fail("the dynamic procedure (C8.7.1.2.1.9) needs a \"dynamic\" section with its records");
   }
   c.checks.sld = root.find("check_SLD") ? root.boolean_or("check_SLD", false) : false;
+  if (const auto r = root.find("report")) c.report = parse_report_info(*r);
   if (const auto b = root.find("building")) {
     b->allow_only({"height_m", "storeys", "T1_s", "damping_pct", "Z_m"});
     BuildingModel bm;

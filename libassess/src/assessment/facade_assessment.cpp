@@ -25,11 +25,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 
 namespace assess {
 
 namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
 
 std::string directory_of(const std::string& path) {
   const auto p = path.find_last_of('/');
@@ -255,21 +258,31 @@ std::vector<RestitutionSummary> summarise_runs(const std::vector<DynamicRun>& ru
     s.e = e[ie];
     s.min_dc = 1e300;
     std::map<std::size_t, double> envelope;  // record -> peak d* over polarities
+    std::map<std::size_t, bool> spoilt;      // record -> some analysis collapsed or failed
+    int survivors = 0;                       // analyses that neither failed nor overturned
+    double dc_survivors_sum = 0.0;
     for (const DynamicRun& r : runs) {
       if (r.restitution != ie) continue;
       ++s.analyses;
       if (!succeeded(r.result)) {  // its numbers are not results
         ++s.failed;
+        spoilt[r.record] = true;
         continue;
       }
       s.overturned += r.result.overturned ? 1 : 0;
       s.ruptured += r.ruptured ? 1 : 0;
+      s.collapsed += r.collapse ? 1 : 0;
       s.mean_dc += r.result.dc;
       s.min_dc = std::min(s.min_dc, r.result.dc);
       s.max_dc = std::max(s.max_dc, r.result.dc);
       s.mean_theta_ratio += r.theta_ratio;
       s.any_collapse = s.any_collapse || r.collapse;
       envelope[r.record] = std::max(envelope[r.record], r.d_star);
+      spoilt[r.record] = spoilt[r.record] || r.collapse;
+      if (!r.result.overturned) {
+        dc_survivors_sum += r.result.dc;
+        ++survivors;
+      }
     }
     // Failed analyses (step or event limit, integrator error) are left out of
     // the statistics and fail the check (issue 10): their numbers are not results.
@@ -280,12 +293,15 @@ std::vector<RestitutionSummary> summarise_runs(const std::vector<DynamicRun>& ru
     } else {
       s.min_dc = 0.0;
     }
+    if (survivors > 0) s.mean_dc_survivors = dc_survivors_sum / survivors;
+    std::vector<double> kept;  // peak d* of the records none of whose analyses collapsed or failed
     for (const auto& kv : envelope) {
       s.mean_d_star += kv.second;
       s.max_d_star = std::max(s.max_d_star, kv.second);
+      if (!spoilt[kv.first]) kept.push_back(kv.second);
     }
-    s.records = int(envelope.size());
-    if (s.records > 0) s.mean_d_star /= double(envelope.size());
+    s.records = int(spoilt.size());
+    if (!envelope.empty()) s.mean_d_star /= double(envelope.size());
     // NTC 2018 §7.3.5 (docs/theory/facade.md §7): with at least 7 records the
     // mean of the results, with 3 to 6 the most unfavourable, with fewer no
     // verdict. Any collapse fails the check whatever the count (C8.7.1.2.1.9).
@@ -299,9 +315,21 @@ std::vector<RestitutionSummary> summarise_runs(const std::vector<DynamicRun>& ru
       s.rule = "none";
       s.d_demand = s.max_d_star;
     }
+    s.records_survived = int(kept.size());
+    if (!kept.empty()) {
+      double sum = 0.0, top = 0.0;
+      for (double d : kept) sum += d, top = std::max(top, d);
+      s.d_demand_survivors = s.rule == "mean" ? sum / double(kept.size()) : top;
+      s.dc_survivors = kin.d_SLV > 0 ? s.d_demand_survivors / kin.d_SLV : inf;
+    }
+    // Issue 28 (docs/theory/facade.md §6.4): a collapse makes the displacement
+    // demand unbounded and a failed analysis leaves it unknown: D/C = +inf,
+    // so that the D/C printed carries the failure.
+    if (s.any_collapse || s.failed > 0) s.d_demand = inf;
     s.no_verdict = s.rule == "none" && !s.any_collapse && s.failed == 0;
-    s.dc_slv = kin.d_SLV > 0 ? s.d_demand / kin.d_SLV : 0.0;
-    s.slv_satisfied = s.failed == 0 && !s.any_collapse && !s.no_verdict && s.d_demand <= kin.d_SLV;
+    s.dc_slv = kin.d_SLV > 0 ? s.d_demand / kin.d_SLV : inf;
+    s.slv_satisfied = check_satisfied(s.dc_slv, s.no_verdict);
+    s.energy_dc = s.overturned > 0 || s.failed > 0 ? inf : s.mean_dc;
     out.push_back(s);
   }
   return out;
@@ -330,24 +358,29 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   a.periods.insert(a.periods.begin(), 0.0);
   for (const auto& [ls, s] : a.spectra)
     for (double T : a.periods) a.site_Se[ls].push_back(s.Se(T));
-  // ADRS demand curves of the governing candidate's displacement checks, each
-  // at its damping and location (the functions its checks use).
+  // ADRS demand curves of every candidate's displacement checks, each at its
+  // damping and location (the functions its checks use): the relazione
+  // develops each candidate that governs a method (issue 28).
   if (a.kinematic.check_input) {
     CheckInput in = *a.kinematic.check_input;
     a.adrs_periods = log_spaced_periods(0.02, 6.0, 120);
-    const CandidateResult& gc = a.kinematic.candidates[a.kinematic.governing];
-    for (const CheckRow& r : gc.checks) {
-      if (r.kind != "displacement") continue;
-      in.Z = r.location == "height" ? gc.Z : 0.0;
-      AdrsDemand d{r.code, r.limit_state, r.location, r.xi_pct, {}, {}};
-      const double w = 2.0 * units::pi;
-      for (double T : a.adrs_periods) {
-        const double sd = displacement_demand(in, parse_code_edition(r.code), parse_limit_state(r.limit_state), T);
-        d.Sd.push_back(sd);
-        d.Sa.push_back(sd * (w / T) * (w / T));
+    for (const CandidateResult& cr : a.kinematic.candidates) {
+      std::vector<AdrsDemand> curves;
+      for (const CheckRow& r : cr.checks) {
+        if (r.kind != "displacement") continue;
+        in.Z = r.location == "height" ? cr.Z : 0.0;
+        AdrsDemand d{r.code, r.limit_state, r.location, r.xi_pct, {}, {}};
+        const double w = 2.0 * units::pi;
+        for (double T : a.adrs_periods) {
+          const double sd = displacement_demand(in, parse_code_edition(r.code), parse_limit_state(r.limit_state), T);
+          d.Sd.push_back(sd);
+          d.Sa.push_back(sd * (w / T) * (w / T));
+        }
+        curves.push_back(std::move(d));
       }
-      a.adrs.push_back(std::move(d));
+      a.candidate_adrs.push_back(std::move(curves));
     }
+    a.adrs = a.candidate_adrs[a.kinematic.governing];
   }
   if (kase.dynamic.is_null()) return a;
 
@@ -471,8 +504,12 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
     row.capacity = kin.d_SLV;
     row.unit = "m";
     row.dc = s.dc_slv;
-    row.satisfied = s.slv_satisfied;
     row.no_verdict = s.no_verdict;
+    row.analyses = s.analyses;
+    row.collapsed = s.collapsed;
+    row.failed = s.failed;
+    row.dc_survivors = s.dc_survivors;
+    decide(row);
     a.checks.push_back(row);
 
     // The seed paper's energy measure (seed §3.2): the mean over the
@@ -486,19 +523,22 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
     en.clause = "seed §3.2 energy D/C (not a code check), " + e_text +
                 (md.tied() ? ", on the tied wall's restoring moment with the ties at their strength" : "");
     en.formula = "mean over " + std::to_string(s.analyses) + " analyses of the energy demand/capacity";
-    en.demand = s.mean_dc;
+    en.demand = s.energy_dc;
     en.capacity = 1.0;
     en.unit = "-";
-    en.dc = s.mean_dc;
-    en.satisfied = s.overturned == 0 && s.mean_dc <= 1.0;
+    en.dc = s.energy_dc;
+    en.analyses = s.analyses;
+    en.collapsed = s.overturned;
+    en.failed = s.failed;
+    en.dc_survivors = s.mean_dc_survivors;
+    decide(en);
     en.note = "overturned in " + std::to_string(s.overturned) + " of " + std::to_string(s.analyses) + " analyses";
     a.energy_rows.push_back(en);
   }
   // The other candidates that govern a code or fail a kinematic check (issue
   // 24): each analysed as the case restricted to it, as if run alone.
   if (kase.mechanism.candidates.size() > 1) {
-    FacadeOptions sub_opt = opt;
-    sub_opt.histories = false;
+    FacadeOptions sub_opt = opt;  // histories kept as asked: the relazione develops the candidate that governs
     for (std::size_t i : dynamic_candidates(a.kinematic)) {
       CaseFile one = kase;
       one.mechanism.candidates = {kase.mechanism.candidates[i]};

@@ -303,9 +303,14 @@ std::string campaign_index_html(const json& s, const std::vector<std::pair<std::
   h.set_lang(to_string(L));
   h.add_paragraph(msgf(L, "camp.intro", s.value("analyses", 0ull), s.value("analyses_in_campaign", 0ull),
                        s.value("failed", 0ull)));
-  using C = HtmlCell;
+  // A cell: "num" right-aligns a figure.
+  const auto C = [](std::string text, const std::string& cls = "") {
+    Cell c(std::move(text));
+    c.numeric = cls == "num";
+    return c;
+  };
   if (s.contains("by_model")) {
-    std::vector<std::vector<C>> rows;
+    std::vector<std::vector<Cell>> rows;
     for (const auto& [model, m] : s.at("by_model").items())
       rows.push_back({C(model), C(fmt("%.0f", number_at(m, "analyses")), "num"), C(fmt("%.0f", number_at(m, "failed")), "num"),
                       C(fmt("%.0f", number_at(m, "moved")), "num"), C(fmt("%.0f", number_at(m, "overturned")), "num"),
@@ -318,7 +323,7 @@ std::string campaign_index_html(const json& s, const std::vector<std::pair<std::
                      rows, "");
   }
   if (s.contains("by_model_and_scale")) {
-    std::vector<std::vector<C>> rows;
+    std::vector<std::vector<Cell>> rows;
     for (const json& m : s.at("by_model_and_scale"))
       rows.push_back({C(m.value("model", std::string())), C(fmt("%.3f", number_at(m, "scale")), "num"),
                       C(fmt("%.0f", number_at(m, "analyses")), "num"),
@@ -333,7 +338,7 @@ std::string campaign_index_html(const json& s, const std::vector<std::pair<std::
                      rows, "");
   }
   if (s.contains("code_vs_dynamic")) {
-    std::vector<std::vector<C>> rows;
+    std::vector<std::vector<Cell>> rows;
     for (const auto& [model, m] : s.at("code_vs_dynamic").items())
       for (const auto& [kind, k] : m.items())
         rows.push_back({C(model), C(kind), C(fmt("%.0f", number_at(k, "considered")), "num"),

@@ -73,6 +73,7 @@ void KinematicOptions::validate() const {
   if (!(du_cap > 0.0)) throw InputError("du* cap: expected > 0 m");
   if (!(d_SLV_cap > 0.0)) throw InputError("d_SLV cap: expected > 0 m");
   if (!(d_SLC_cap > 0.0)) throw InputError("d_SLC cap: expected > 0 m");
+  if (!(dSLV_over_d0 > 0.0 && dSLV_over_d0 < 1.0)) throw InputError("d_SLV / d0*: expected in (0, 1)");
 }
 
 std::vector<LoadWork> load_works(const Chain& chain, const Eigen::VectorXd& q) {
@@ -296,7 +297,7 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
   R.as_star = a_star_at(R.ds_star);
   R.Ts = 2.0 * units::pi * std::sqrt(R.ds_star / R.as_star);
   // NTC 2018 (Circ. 2019 §C8.7.1.2.1.6, [C8.7.1.10], [C8.7.1.11]).
-  R.d_SLV = std::min(code_rules::dSLV_over_d0_2018 * R.d0_star, opt.d_SLV_cap);
+  R.d_SLV = std::min(opt.dSLV_over_d0 * R.d0_star, opt.d_SLV_cap);
   R.a_SLV = a_star_at(R.d_SLV);
   R.T_SLV = code_rules::T_SLV_factor_of_pi * units::pi * std::sqrt(R.d_SLV / R.a_SLV);
   R.d_SLC = std::min(code_rules::dSLC_over_d0_2018 * R.d0_star, opt.d_SLC_cap);

@@ -97,8 +97,14 @@ nlohmann::json safety_indices_json(const std::vector<SafetyIndex>& indices) {
     j["code"] = s.code;
     j["approach"] = s.approach;
     j["dc"] = num(s.dc);
-    j["satisfied"] = s.satisfied;
+    // No failing check but some without a verdict: no verdict (issue 28).
+    j["satisfied"] = s.failing == 0 && s.no_verdict > 0 ? nlohmann::json(nullptr) : nlohmann::json(s.satisfied);
     j["checks"] = s.checks;
+    if (!s.dc_candidate.empty()) {  // the candidate whose check gives the D/C, and its alpha0 and a0* (issue 28)
+      j["dc_candidate"] = s.dc_candidate;
+      j["dc_alpha0"] = num(s.dc_alpha0);
+      j["dc_a0_star"] = num(s.dc_a0_star);
+    }
     j["failing"] = s.failing;
     j["no_verdict"] = s.no_verdict;
     j["defined"] = s.defined;
@@ -210,6 +216,21 @@ nlohmann::json building_json(const BuildingAssessment& b) {
     gv.push_back(x);
   }
   j["governing"] = gv;
+  // The building's verdict (issue 28): every mechanism by its adopted method.
+  const BuildingVerdict& bv = b.verdict;
+  nlohmann::json vj;
+  vj["satisfied"] = bv.satisfied;
+  vj["mechanisms"] = bv.mechanisms;
+  nlohmann::json failing = nlohmann::json::array(), undecided = nlohmann::json::array();
+  for (int i : bv.failing) failing.push_back(bc.mechanisms[std::size_t(i)].id);
+  for (int i : bv.undecided) undecided.push_back(bc.mechanisms[std::size_t(i)].id);
+  vj["failing"] = failing;
+  vj["undecided"] = undecided;
+  vj["zeta_E"] = num(bv.zeta);
+  vj["zeta_E_mechanism"] = bv.zeta_mechanism >= 0 ? nlohmann::json(bc.mechanisms[std::size_t(bv.zeta_mechanism)].id) : nlohmann::json(nullptr);
+  vj["max_dc"] = num(bv.max_dc);
+  vj["max_dc_mechanism"] = bv.dc_mechanism >= 0 ? nlohmann::json(bc.mechanisms[std::size_t(bv.dc_mechanism)].id) : nlohmann::json(nullptr);
+  j["verdict"] = vj;
   // The building's index before and after the ties (docs/theory/building.md §8).
   const BuildingTieIndex& ti = b.tie_index;
   nlohmann::json tj;

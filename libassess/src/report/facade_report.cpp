@@ -1,6 +1,7 @@
 // facade_report.cpp: text, JSON and HTML reports of a façade assessment.
 #include "assess/report/facade_report.hpp"
 
+#include "report/number_text.hpp"
 #include "report/text_format.hpp"
 
 #include "assess/hazard/comuni.hpp"
@@ -15,6 +16,7 @@ namespace assess {
 namespace {
 
 constexpr double g = units::g;
+using detail::number_text;
 
 const CandidateResult& governing(const FacadeAssessment& a) {
   return a.kinematic.candidates[a.kinematic.governing];
@@ -24,8 +26,23 @@ std::string record_label(const FacadeAssessment& a, const DynamicRun& r) {
   return a.records[r.record].name + (r.reversed ? " (reversed)" : "");
 }
 
-const char* dyn_verdict(const RestitutionSummary& s) {
+// JSON has no infinity: an unbounded or undefined figure is null (its meaning beside it).
+nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+std::string dyn_verdict(const RestitutionSummary& s) {
   return s.no_verdict ? "no verdict" : verdict(s.slv_satisfied);
+}
+
+// Issue 28: beside a D/C of +inf (a collapse or a failed analysis), the
+// figure over the records that neither collapsed nor failed, never the verdict.
+std::string survivors_text(const RestitutionSummary& s) {
+  if (std::isfinite(s.dc_slv)) return "";
+  std::string t = s.collapsed > 0 ? format("; collapse in %d of %d analyses", s.collapsed, s.analyses)
+                                  : format("; %d of %d analyses failed", s.failed, s.analyses);
+  if (std::isfinite(s.dc_survivors))
+    t += format(" (the %d records without a collapse: d* %.4f m, D/C %.3f)", s.records_survived, s.d_demand_survivors,
+                s.dc_survivors);
+  return t;
 }
 
 }  // namespace
@@ -185,19 +202,21 @@ std::string facade_text(const FacadeAssessment& a, TextWidth width) {
                     "mean D/C", "max D/C", "mean th/u", "mean d* (m)", "max d* (m)", "rule (§7.3.5)", "D/C d*",
                     "verdict (C8.7.1.2.1.9)");
         for (const RestitutionSummary& s : a.summaries)
-          o += format("  %-18s %6d %-13s %10.4f %10.4f %10.4f %12.4f %12.4f %-17s %8.3f  %s\n",
+          o += format("  %-18s %6d %-13s %s %10.4f %10.4f %12.4f %12.4f %-17s %s  %s\n",
                       describe(a.dynamic->restitutions[s.restitution]).c_str(), s.analyses,
-                      format("%d of %d", s.overturned, s.analyses).c_str(), s.mean_dc, s.max_dc, s.mean_theta_ratio,
-                      s.mean_d_star, s.max_d_star, s.rule.c_str(), s.dc_slv, dyn_verdict(s));
+                      format("%d of %d", s.overturned, s.analyses).c_str(), number_text(s.energy_dc, "%.4f", 10),
+                      s.max_dc, s.mean_theta_ratio, s.mean_d_star, s.max_d_star, s.rule.c_str(),
+                      number_text(s.dc_slv, "%.3f", 8), dyn_verdict(s) + survivors_text(s));
       } else {  // 120 columns: the verdict on its own line under each row, never cut mid-phrase
         o += format("  %-12s %4s %-10s %8s %8s %9s %9s %9s %-14s %6s\n", "restitution", "runs", "overturned",
                     "mean D/C", "max D/C", "mean th/u", "mean d*", "max d*", "rule (§7.3.5)", "D/C d*");
         o += format("  %-12s %s\n", "", "verdict (C8.7.1.2.1.9)");
         for (const RestitutionSummary& s : a.summaries)
-          o += format("  %-12s %4d %-10s %8.4f %8.4f %9.4f %9.4f %9.4f %-14s %6.3f\n%15s%s\n",
+          o += format("  %-12s %4d %-10s %s %8.4f %9.4f %9.4f %9.4f %-14s %s\n%15s%s\n",
                       describe(a.dynamic->restitutions[s.restitution]).c_str(), s.analyses,
-                      format("%d of %d", s.overturned, s.analyses).c_str(), s.mean_dc, s.max_dc, s.mean_theta_ratio,
-                      s.mean_d_star, s.max_d_star, s.rule.c_str(), s.dc_slv, "", dyn_verdict(s));
+                      format("%d of %d", s.overturned, s.analyses).c_str(), number_text(s.energy_dc, "%.4f", 8),
+                      s.max_dc, s.mean_theta_ratio, s.mean_d_star, s.max_d_star, s.rule.c_str(),
+                      number_text(s.dc_slv, "%.3f", 6), "", dyn_verdict(s) + survivors_text(s));
       }
     }
   }
@@ -223,9 +242,10 @@ std::string facade_text(const FacadeAssessment& a, TextWidth width) {
       for (const RestitutionSummary& x : s.summaries) {
         int collapses = 0;
         for (const DynamicRun& r : s.runs) collapses += r.restitution == x.restitution && r.collapse ? 1 : 0;
-        o += format("    %-14s %9s %10.4f %10.4f %7.3f  %s\n", describe(s.dynamic->restitutions[x.restitution]).c_str(),
-                    format("%d of %d", collapses, x.analyses).c_str(), x.d_demand,
-                    s.kinematic.candidates.front().result.d_SLV, x.dc_slv, dyn_verdict(x));
+        o += format("    %-14s %9s %s %10.4f %s  %s\n", describe(s.dynamic->restitutions[x.restitution]).c_str(),
+                    format("%d of %d", collapses, x.analyses).c_str(), number_text(x.d_demand, "%.4f", 10),
+                    s.kinematic.candidates.front().result.d_SLV, number_text(x.dc_slv, "%.3f", 7),
+                    dyn_verdict(x) + survivors_text(x));
       }
       std::string recs;
       for (const RecordUsed& r : s.records) recs += (recs.empty() ? "" : ", ") + r.name + format(" (%.2f)", r.scale);
@@ -416,8 +436,14 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
                         {"max_d_star", s.max_d_star},
                         {"records", s.records},
                         {"rule", s.rule},
-                        {"d_demand", s.d_demand},
-                        {"dc_slv", s.dc_slv},
+                        {"d_demand", finite_or_null(s.d_demand)},
+                        {"dc_slv", finite_or_null(s.dc_slv)},
+                        {"collapsed", s.collapsed},
+                        {"energy_dc", finite_or_null(s.energy_dc)},
+                        {"mean_dc_survivors", finite_or_null(s.mean_dc_survivors)},
+                        {"records_survived", s.records_survived},
+                        {"d_demand_survivors", finite_or_null(s.d_demand_survivors)},
+                        {"dc_survivors", finite_or_null(s.dc_survivors)},
                         {"any_collapse", s.any_collapse},
                         {"no_verdict", s.no_verdict},
                         {"slv_satisfied", s.no_verdict ? nlohmann::json(nullptr) : nlohmann::json(s.slv_satisfied)}});

@@ -81,7 +81,21 @@ struct RestitutionSummary {
   double d_demand = 0.0;          ///< the demand of the rule: mean or largest peak d* (m)
   bool no_verdict = false;        ///< N < 3 and no collapse: the records cannot support a verdict
   bool slv_satisfied = false;     ///< no failed analysis, no collapse and d_demand <= d_SLV (and a verdict)
-  double dc_slv = 0.0;            ///< d_demand / d_SLV (-)
+  double dc_slv = 0.0;            ///< d_demand / d_SLV (-); +inf with a collapse or a failed analysis
+  /// Issue 28 (docs/theory/facade.md §6.4): with a collapse (d0 exceeded or
+  /// overturned) the displacement demand is unbounded and d_demand = dc_slv =
+  /// +inf; with a failed analysis there is no trustworthy demand and they are
+  /// +inf too. The same figures over the records none of whose analyses
+  /// collapsed or failed are given apart (NaN when there is none):
+  int collapsed = 0;                    ///< analyses with a collapse
+  int records_survived = 0;             ///< records none of whose analyses collapsed or failed
+  double d_demand_survivors = std::numeric_limits<double>::quiet_NaN();  ///< rule's demand over them (m)
+  double dc_survivors = std::numeric_limits<double>::quiet_NaN();        ///< d_demand_survivors / d_SLV (-)
+  /// The seed energy D/C of the check: mean_dc when no analysis overturned or
+  /// failed, else +inf; mean_dc_survivors is the mean over the analyses that
+  /// did not overturn (NaN when none).
+  double energy_dc = 0.0;
+  double mean_dc_survivors = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Compatibility of the records' mean 5 % spectrum with the SLV elastic
@@ -165,6 +179,9 @@ struct FacadeAssessment {
   /// The ADRS demand curves of the governing candidate's displacement checks (issue 24), at adrs_periods (s).
   std::vector<AdrsDemand> adrs;
   std::vector<double> adrs_periods;
+  /// The same for every candidate (index as in kinematic.candidates; issue 28:
+  /// the relazione develops each candidate that governs a method).
+  std::vector<std::vector<AdrsDemand>> candidate_adrs;
 
   /// The dynamic analyses of the other candidates (issue 24; docs/theory/facade.md §6.3):
   /// every candidate besides the governing one that governs a code or fails one of
@@ -173,7 +190,8 @@ struct FacadeAssessment {
   /// candidate: the same code path, and the same numbers, as a run of that
   /// candidate alone. Their dynamic rows are in `checks` and their energy rows
   /// in `energy_rows`, so the dynamic verdict is the worst over all of them.
-  /// Histories are not kept for them.
+  /// Histories are kept when the options ask for them (the relazione shows the
+  /// histories of the candidate that governs the dynamic verdict).
   std::vector<FacadeAssessment> other_dynamics;
   /// The candidate index (in kinematic.candidates) of each of other_dynamics.
   std::vector<std::size_t> other_dynamics_candidate;

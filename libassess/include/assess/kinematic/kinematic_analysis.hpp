@@ -5,6 +5,7 @@
 #pragma once
 
 #include "assess/kinematic/chain.hpp"
+#include "assess/kinematic/code_rules.hpp"
 #include "assess/kinematic/tie.hpp"
 
 #include <Eigen/Dense>
@@ -43,6 +44,9 @@ struct KinematicOptions {
   double du_cap = std::numeric_limits<double>::infinity();
   double d_SLV_cap = std::numeric_limits<double>::infinity();
   double d_SLC_cap = std::numeric_limits<double>::infinity();
+  /// d_SLV / d0* (-): the code's 0.40 (Circ. 2019 C8.7.1.2.1.6); another
+  /// value only for the relazione's sensitivity study (assessment/sensitivity.hpp).
+  double dSLV_over_d0 = code_rules::dSLV_over_d0_2018;
   /// Throws InputError naming the field.
   void validate() const;
 };

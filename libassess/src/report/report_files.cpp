@@ -1,0 +1,119 @@
+// report_files.cpp: a document written to its HTML, PDF and Word files
+// (issue 28): the PDF in two prints (the first gives each heading's page
+// through the PDF's bookmarks, the second prints the contents with them), the
+// Word document beside it while Chromium prints; every file written to a
+// temporary file in its folder and renamed.
+#include "assess/report/report_files.hpp"
+
+#include "report/external_tool.hpp"
+
+#include "assess/report/docx_writer.hpp"
+#include "assess/report/html_writer.hpp"
+#include "assess/report/pdf.hpp"
+#include "assess/support/error.hpp"
+
+#include <unistd.h>
+
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <future>
+
+namespace assess {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string squeeze(const std::string& s) {
+  std::string out;
+  for (unsigned char c : s)
+    if (!std::isspace(c)) out += char(c);
+  return out;
+}
+
+// The page of each heading: the headings in document order matched with the
+// PDF's bookmarks (Chromium makes one per h1-h6, in order) by their text.
+std::map<std::string, int> heading_pages(const Document& d, const std::vector<std::pair<int, std::string>>& outline) {
+  std::map<std::string, int> pages;
+  const std::vector<std::string> numbers = heading_numbers(d);
+  std::size_t j = 0, k = 0;
+  for (const DocBlock& b : d.blocks) {
+    const Heading* h = std::get_if<Heading>(&b.value);
+    if (!h) continue;
+    const std::string& n = numbers[k++];
+    const std::string want = squeeze(n + h->text);
+    for (std::size_t i = j; i < outline.size(); ++i)
+      if (squeeze(outline[i].second) == want) {
+        pages[h->anchor] = outline[i].first;
+        j = i + 1;
+        break;
+      }
+  }
+  return pages;
+}
+
+// `path`'s content replaced by the file `from` (or the text) atomically: a
+// temporary file in the same folder, renamed over it.
+void install(const std::string& option, const std::string& path, const fs::path* from, const std::string* text) {
+  const fs::path target(path);
+  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::string tmpl = (folder / ("." + target.filename().string() + ".XXXXXX")).string();
+  const int fd = ::mkstemp(tmpl.data());
+  if (fd < 0) throw InputError(option + " " + path + ": cannot write in " + folder.string());
+  ::close(fd);
+  try {
+    if (from) {
+      std::error_code ec;
+      fs::copy_file(*from, tmpl, fs::copy_options::overwrite_existing, ec);
+      if (ec) throw InputError(option + " " + path + ": cannot write the file (" + ec.message() + ")");
+    } else {
+      detail::write_file(tmpl, *text, option + " " + path);
+    }
+    std::error_code ec;
+    fs::rename(tmpl, target, ec);
+    if (ec) throw InputError(option + " " + path + ": cannot write the file (" + ec.message() + ")");
+  } catch (...) {
+    std::remove(tmpl.c_str());
+    throw;
+  }
+}
+
+}  // namespace
+
+void write_report_files(const Document& d, const ReportFiles& files) {
+  // The Word document is written by pandoc while Chromium prints.
+  std::future<void> docx;
+  detail::TempDir dir("assess_report_");
+  const fs::path docx_tmp = dir.path() / "report.docx";
+  if (!files.docx.empty()) docx = std::async(std::launch::async, [&] { write_docx(d, docx_tmp.string()); });
+  try {
+    if (!files.pdf.empty()) {
+      HtmlOptions o;
+      o.page_column = true;
+      const fs::path first = dir.path() / "first.pdf", second = dir.path() / "second.pdf";
+      html_to_pdf(to_html(d, o), first.string());
+      o.pages = heading_pages(d, pdf_outline(first.string()));
+      const std::string page = to_html(d, o);
+      if (o.pages.empty()) {
+        install("--pdf", files.pdf, &first, nullptr);
+      } else {
+        html_to_pdf(page, second.string());
+        install("--pdf", files.pdf, &second, nullptr);
+      }
+      if (!files.html.empty()) install("--html", files.html, nullptr, &page);
+    } else if (!files.html.empty()) {
+      const std::string page = to_html(d);
+      install("--html", files.html, nullptr, &page);
+    }
+  } catch (...) {
+    if (docx.valid()) docx.wait();
+    throw;
+  }
+  if (docx.valid()) {
+    docx.get();
+    install("--docx", files.docx, &docx_tmp, nullptr);
+  }
+}
+
+}  // namespace assess
