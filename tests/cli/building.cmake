@@ -82,12 +82,12 @@ assess_cli_error_test(building_expand_single "--mechanism and --expand apply to 
   run mechanisms/gable.json --expand /tmp/never)
 
 # The relazione of the example building in headless Chromium: loads without a
-# console message, 54 figures (the zetaE chart, the site spectra, and each
+# console message, 62 figures (the zetaE chart, the site spectra, and each
 # mechanism's figures with ids prefixed by its id), the summary with a link to
 # every mechanism's section and the sections themselves (Italian and English).
 foreach(lang it en)
   add_test(NAME cli.building_report_browser_${lang}
-    COMMAND sh -c "\"$1\" run mechanisms/building-house.json --lang $3 --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 54 'id=\"summary\"' 'href=\"#M1\"' 'href=\"#M8\"' '<h2 id=\"M1\"' '<h2 id=\"M8\"' 'id=\"fig-zeta\"' 'id=\"M8-fig-adrs\"' 'data-governing=\"true\"' 'class=\"verdict (ok|fail)\"'"
+    COMMAND sh -c "\"$1\" run mechanisms/building-house.json --lang $3 --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 62 'id=\"summary\"' 'href=\"#M1\"' 'href=\"#M8\"' '<h2 id=\"M1\"' '<h2 id=\"M8\"' 'id=\"fig-zeta\"' 'id=\"M8-fig-adrs\"' '★ [0-9]' 'class=\"box verdict (ok|fail)\"' 'data-building=\"verdict\"'"
             sh $<TARGET_FILE:assess_cli> ${CMAKE_CURRENT_BINARY_DIR}/building-house.${lang}.html ${lang}
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
   set_tests_properties(cli.building_report_browser_${lang} PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77 TIMEOUT 300
@@ -96,9 +96,9 @@ endforeach()
 
 # The relazione of the building with ties (Italian): the summary's before/after table and the building
 # index, each tied mechanism's tie section (ids prefixed by its id, subheadings one level down), 56 figures
-# (the 54 of building-house and the two tie drawings).
+# (the 62 of building-house and the two tie drawings).
 add_test(NAME cli.building_ties_report_browser
-  COMMAND sh -c "\"$1\" run mechanisms/building-house-ties.json --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 56 'id=\"ties-row-M1\"' 'id=\"M1-ties\"' 'id=\"M2-ties\"' '<h4>Verifiche della catena' 'Indicatore di rischio dell.edificio[^<]*: 0\\.794 \\(M2\\) senza le catene, 1\\.108 \\(M6\\) con le catene'"
+  COMMAND sh -c "\"$1\" run mechanisms/building-house-ties.json --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 64 'id=\"M1-ties\"' 'id=\"M2-ties\"' '<h4>Verifiche della catena' 'Indicatore di rischio dell.edificio[^<]*: 0[.,]794 \\(M2\\) senza le catene, 1[.,]108 \\(M6\\) con le catene'"
           sh $<TARGET_FILE:assess_cli> ${CMAKE_CURRENT_BINARY_DIR}/building-house-ties.it.html
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.building_ties_report_browser PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77 TIMEOUT 300

@@ -34,7 +34,7 @@ assess_cli_error_test(run_chain_housner "/dynamic/restitution: missing: a chain 
 # A case without a dynamic section: the report still loads, with its 4 figures
 # (spectra, mechanism drawing, ADRS plot, D/C bars) and its verdict box.
 add_test(NAME cli.run_kinematic_only_html_browser
-  COMMAND sh -c "\"$1\" run mechanisms/free_wall_laquila.json --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 4 \"class=.verdict \""
+  COMMAND sh -c "\"$1\" run mechanisms/free_wall_laquila.json --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 4 \"class=.box verdict \""
           sh $<TARGET_FILE:assess_cli> ${CMAKE_CURRENT_BINARY_DIR}/free-wall-report.html
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.run_kinematic_only_html_browser PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77

@@ -83,7 +83,7 @@ TEST_CASE("the report is well-formed HTML5 with one figure per plot and escaped 
   CHECK(html.find("src=") == std::string::npos);
   // Print styles: A4 and a page break before every section but the first.
   CHECK(html.find("size: A4") != std::string::npos);
-  CHECK(count(html, "<h2 class=\"section-break\">") == 1);
+  CHECK(count(html, "class=\"page-break\"") == 1);
 }
 
 TEST_CASE("invalid figures and tables throw InputError") {

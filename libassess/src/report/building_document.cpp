@@ -240,6 +240,13 @@ std::string fx(Lang L, double v, int prec) {
   return s;
 }
 
+// The engineer's own words (names of walls and mechanisms): printed as written.
+Cell user_cell(const std::string& text, const std::string& note = "") {
+  Cell c(text, note);
+  c.user = true;
+  return c;
+}
+
 Cell num(Lang L, double v, int prec) {
   Cell c(fx(L, v, prec));
   c.numeric = true;
@@ -429,7 +436,7 @@ void add_ties_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d) {
       c.strong = true;
       return c;
     };
-    rows.push_back({Cell(m.id), Cell(m.name), Cell(bt(L, !x ? "ties_none" : x->designed ? "ties_design" : "ties_given")),
+    rows.push_back({Cell(m.id), user_cell(m.name), Cell(bt(L, !x ? "ties_none" : x->designed ? "ties_design" : "ties_given")),
                     Cell(x ? tie_label(L, *x) : "—"), z(r.zeta_before), z(r.zeta_after), pass_cell(L, r.passes_before),
                     pass_cell(L, r.passes_after), dyn});
   }
@@ -509,7 +516,9 @@ void add_mechanism_list(Lang L, const BuildingAssessment& b, DocumentBuilder& d)
   std::vector<std::vector<Cell>> rows;
   for (std::size_t i = 0; i < b.building.mechanisms.size(); ++i) {
     const BuildingMechanism& m = b.building.mechanisms[i];
-    rows.push_back({Cell(m.id), Cell(m.wall), Cell(m.name), Cell(mechanism_name(L, m.kase.mechanism.type)),
+    Cell wall(m.wall), name(m.name);
+    wall.user = name.user = true;
+    rows.push_back({Cell(m.id), wall, name, Cell(mechanism_name(L, m.kase.mechanism.type)),
                     Cell(msg(L, "method." + b.results[i].a.verdict.adopted))});
   }
   d.add_cell_table({Cell(bt(L, "id")), Cell(bt(L, "wall_col")), Cell(bt(L, "mech_col")), Cell(bt(L, "mech_type")),
@@ -519,7 +528,7 @@ void add_mechanism_list(Lang L, const BuildingAssessment& b, DocumentBuilder& d)
 
 void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d) {
   const BuildingCase& bc = b.building;
-  d.add_heading(bt(L, "summary"));
+  d.add_heading(bt(L, "summary"), 2, true, true, "summary");
   d.add_paragraph(bt(L, "site_line") + ": " + relazione::decimal_comma(L == Lang::it ? localise(L, b.site_description) : b.site_description) +
                   ". " + bt(L, "slv_line") + " TR = " + fx(L, b.TR_SLV, 0) + " " + bt(L, "years") + ", ag = " +
                   fx(L, b.ag_SLV_g, 4) + " g; VR = " + fx(L, b.VR, 0) + " " + bt(L, "years") + ".");
@@ -531,7 +540,11 @@ void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d) {
   for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
     const BuildingMechanism& m = bc.mechanisms[i];
     const BuildingMechanismResult& r = b.results[i];
-    std::vector<Cell> row{Cell(m.id), Cell(m.name, m.wall)};
+    Cell id(m.id);
+    id.link = m.id;
+    Cell name(m.name, m.wall);
+    name.user = true;
+    std::vector<Cell> row{id, name};
     for (const char* ap : {"strength", "displacement"}) {
       const SafetyIndex* s = r.index("NTC2018", ap);
       if (s && s->has_checks) {
@@ -588,7 +601,7 @@ void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d) {
   if (std::find(b.codes.begin(), b.codes.end(), "NTC2008") != b.codes.end()) {
     std::vector<std::vector<Cell>> rows08;
     for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
-      std::vector<Cell> row{Cell(bc.mechanisms[i].id), Cell(bc.mechanisms[i].name, bc.mechanisms[i].wall)};
+      std::vector<Cell> row{Cell(bc.mechanisms[i].id), user_cell(bc.mechanisms[i].name, bc.mechanisms[i].wall)};
       for (const char* ap : {"strength", "displacement"}) {
         const SafetyIndex* s = b.results[i].index("NTC2008", ap);
         row.push_back(s && s->has_checks ? dc_cell(L, s->dc, s->satisfied, false) : num(L, std::nan(""), 3));
@@ -605,7 +618,7 @@ void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d) {
   d.add_paragraph(bt(L, "sets_text"));
   std::vector<std::vector<Cell>> srows;
   for (std::size_t i = 0; i < bc.mechanisms.size(); ++i)
-    srows.push_back({Cell(bc.mechanisms[i].id), Cell(bc.mechanisms[i].wall + ": " + bc.mechanisms[i].name),
+    srows.push_back({Cell(bc.mechanisms[i].id), user_cell(bc.mechanisms[i].wall + ": " + bc.mechanisms[i].name),
                      Cell(record_set_text(L, b, i))});
   d.add_cell_table({Cell(bt(L, "id")), Cell(bt(L, "wall_mech")), Cell(bt(L, "records"))}, srows, "");
   for (const SharedSelection& s : bc.selections)
@@ -654,7 +667,10 @@ Document building_document(const BuildingAssessment& b, const ReportOptions& opt
   {
     std::vector<std::vector<Cell>> rows;
     auto row = [&](const char* key, const std::string& v) {
-      if (!v.empty()) rows.push_back({Cell(msg(L, key)), Cell(v)});
+      if (v.empty()) return;
+      Cell value(v);
+      value.user = std::string(key) != "front.site" && std::string(key) != "front.date";
+      rows.push_back({Cell(msg(L, key)), value});
     };
     row("front.client", info.client);
     row("front.work", info.work.empty() ? bc.project : info.work);
@@ -703,7 +719,7 @@ Document building_document(const BuildingAssessment& b, const ReportOptions& opt
     const BuildingMechanism& m = bc.mechanisms[i];
     const BuildingMechanismResult& r = b.results[i];
     d.set_id_prefix("");
-    d.add_heading(m.id + " — " + m.wall + ": " + m.name);
+    d.add_heading(m.id + " — " + m.wall + ": " + m.name, 2, true, true, m.id);
     d.add_paragraph(bt(L, "mech_type") + ": " + mechanism_name(L, m.kase.mechanism.type) + ". " + bt(L, "mech_path") +
                     ": " + m.json_path + ". " + bt(L, "mech_records") + ": " + record_set_text(L, b, i) + ".");
     d.set_id_prefix(m.id + "-");

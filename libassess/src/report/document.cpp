@@ -13,14 +13,16 @@ DocumentBuilder::DocumentBuilder(std::string title, std::string lang) {
   doc_.lang = std::move(lang);
 }
 
-std::string DocumentBuilder::add_heading(const std::string& text, int level, bool new_page, bool numbered) {
+std::string DocumentBuilder::add_heading(const std::string& text, int level, bool new_page, bool numbered,
+                                         const std::string& anchor) {
   if (level < 2 || level > 5) throw InputError("report: heading level must be 2..5");
   level += heading_shift_;  // a report nested in another (the building's mechanisms)
   if (level > 6) level = 6;
   Heading h;
   h.level = level;
   h.text = text;
-  h.anchor = id_prefix_ + "sec-" + std::to_string(++anchors_);
+  ++anchors_;
+  h.anchor = anchor.empty() ? id_prefix_ + "sec-" + std::to_string(anchors_) : anchor;
   h.numbered = numbered;
   if (level == 2) {
     h.new_page = has_section_ && new_page;

@@ -212,11 +212,12 @@ std::string facade_text(const FacadeAssessment& a, TextWidth width) {
                     "mean D/C", "max D/C", "mean th/u", "mean d*", "max d*", "rule (§7.3.5)", "D/C d*");
         o += format("  %-12s %s\n", "", "verdict (C8.7.1.2.1.9)");
         for (const RestitutionSummary& s : a.summaries)
-          o += format("  %-12s %4d %-10s %s %8.4f %9.4f %9.4f %9.4f %-14s %s\n%15s%s\n",
+          o += format("  %-12s %4d %-10s %s %8.4f %9.4f %9.4f %9.4f %-14s %s\n",
                       describe(a.dynamic->restitutions[s.restitution]).c_str(), s.analyses,
                       format("%d of %d", s.overturned, s.analyses).c_str(), number_text(s.energy_dc, "%.4f", 8),
                       s.max_dc, s.mean_theta_ratio, s.mean_d_star, s.max_d_star, s.rule.c_str(),
-                      number_text(s.dc_slv, "%.3f", 6), "", dyn_verdict(s) + survivors_text(s));
+                      number_text(s.dc_slv, "%.3f", 6)) +
+               wrap_text(std::string(15, ' ') + dyn_verdict(s) + survivors_text(s), 17) + "\n";
       }
     }
   }
@@ -242,10 +243,12 @@ std::string facade_text(const FacadeAssessment& a, TextWidth width) {
       for (const RestitutionSummary& x : s.summaries) {
         int collapses = 0;
         for (const DynamicRun& r : s.runs) collapses += r.restitution == x.restitution && r.collapse ? 1 : 0;
-        o += format("    %-14s %9s %s %10.4f %s  %s\n", describe(s.dynamic->restitutions[x.restitution]).c_str(),
-                    format("%d of %d", collapses, x.analyses).c_str(), number_text(x.d_demand, "%.4f", 10),
-                    s.kinematic.candidates.front().result.d_SLV, number_text(x.dc_slv, "%.3f", 7),
-                    dyn_verdict(x) + survivors_text(x));
+        o += para(format("    %-14s %9s %s %10.4f %s  %s", describe(s.dynamic->restitutions[x.restitution]).c_str(),
+                         format("%d of %d", collapses, x.analyses).c_str(), number_text(x.d_demand, "%.4f", 10),
+                         s.kinematic.candidates.front().result.d_SLV, number_text(x.dc_slv, "%.3f", 7),
+                         dyn_verdict(x) + survivors_text(x)),
+                  58) +
+             "\n";
       }
       std::string recs;
       for (const RecordUsed& r : s.records) recs += (recs.empty() ? "" : ", ") + r.name + format(" (%.2f)", r.scale);

@@ -91,6 +91,7 @@ std::string inline_html(const Inline& text) {
     if (x.strong) t = "<strong>" + t + "</strong>";
     if (x.tone != Tone::plain) t = std::string("<span class=\"") + tone_class(x.tone) + "\">" + t + "</span>";
     if (!x.link.empty()) t = "<a href=\"#" + xml_escape(x.link) + "\">" + t + "</a>";
+    if (x.user) t = "<span class=\"user\">" + t + "</span>";
     s += t;
   }
   return s;
@@ -120,7 +121,10 @@ std::string cell_class(const Cell& c) {
 
 std::string cell_html(const char* tag, const Cell& c) {
   const std::string cls = cell_class(c);
-  std::string s = std::string("<") + tag + (cls.empty() ? "" : " class=\"" + cls + "\"") + ">" + xml_escape(c.text);
+  std::string text = xml_escape(c.text);
+  if (!c.link.empty()) text = "<a href=\"#" + xml_escape(c.link) + "\">" + text + "</a>";
+  if (c.user) text = "<span class=\"user\">" + text + "</span>";
+  std::string s = std::string("<") + tag + (cls.empty() ? "" : " class=\"" + cls + "\"") + ">" + text;
   if (!c.note.empty()) s += "<span class=\"note\">" + xml_escape(c.note) + "</span>";
   return s + "</" + tag + ">";
 }

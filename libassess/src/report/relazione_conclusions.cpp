@@ -176,7 +176,7 @@ void add_probabilistic(Ctx& c) {
   if (r.has_risk) {
     row(c.t("prob.median"), c.n(r.median_pga / units::g, 3) + " g");
     row(c.t("prob.beta"), c.n(r.beta, 3));
-    row(c.t("prob.lambda"), c.g(r.lambda, 3) + c.t("prob.per_year"));
+    row(c.t("prob.lambda"), c.e(r.lambda, 3) + c.t("prob.per_year"));
     row(c.t("prob.return_period"), c.n(r.return_period, 0) + years);
     row(c.t("prob.p_vn") + " (VN = " + c.n(r.VN, 0) + years + ")", c.n(100.0 * r.p_vn, 1) + " %");
   } else {

@@ -56,6 +56,14 @@ std::string Ctx::n(double v, int prec) const {
   return out;
 }
 
+std::string Ctx::e(double v, int prec) const {
+  std::string s = detail::number_text(v, ("%." + std::to_string(prec) + "e").c_str());
+  if (L == Lang::it)
+    for (char& ch : s)
+      if (ch == '.') ch = ',';
+  return s;
+}
+
 std::string Ctx::g(double v, int digits) const {
   const std::string s = detail::number_text(v, ("%." + std::to_string(digits) + "g").c_str());
   if (L == Lang::en) return s;

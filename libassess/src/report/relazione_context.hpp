@@ -32,6 +32,8 @@ struct Ctx {
   std::string loc(const std::string& text) const;
   /// A number with `prec` decimals in the report's convention ("0,991" in Italian; "∞", "—").
   std::string n(double v, int prec) const;
+  /// A number in scientific notation with `prec` decimals ("1,234e-04" in Italian).
+  std::string e(double v, int prec) const;
   /// A number with %g-like precision (`digits` significant digits).
   std::string g(double v, int digits = 4) const;
   /// A unit as typeset ("m/s2" -> "m/s²").

@@ -38,16 +38,19 @@ void add_front_matter(Ctx& c) {
   c.d.set_subtitle(meta);
   // Frontespizio: who, what, where (the case key "report"; the site as the engine used it).
   std::vector<std::vector<Cell>> rows;
-  auto row = [&](const std::string& key, const std::string& v) {
-    if (!v.empty()) rows.push_back({Cell(c.t(key)), Cell(v)});
+  auto row = [&](const std::string& key, const std::string& v, bool user = true) {
+    if (v.empty()) return;
+    Cell value(v);
+    value.user = user;
+    rows.push_back({Cell(c.t(key)), value});
   };
   row("front.client", r.client);
   row("front.work", r.work.empty() ? a.kase.project : r.work);
   row("front.location", r.location);
-  if (a.kase.site) row("front.site", c.loc(a.site_description));
+  if (a.kase.site) row("front.site", c.loc(a.site_description), false);
   row("front.engineer", r.engineer);
   row("front.registration", r.registration);
-  row("front.date", c.o.date.empty() ? detail::today_utc() : c.o.date);
+  row("front.date", c.o.date.empty() ? detail::today_utc() : c.o.date, false);
   row("front.revision", r.revision.empty() ? "0" : r.revision);
   row("front.case_file", detail::shown_file(a.kase.file));
   c.d.add_cell_table({Cell(c.t("front.item")), Cell(c.t("front.value"))}, rows, "", "front");
@@ -138,20 +141,23 @@ void add_building_description(Ctx& c) {
   const FacadeAssessment& a = c.a;
   const ReportInfo& r = a.kase.report;
   c.d.add_heading(c.t("desc.heading"), 2, false);
-  c.d.add_paragraph(r.description.empty() ? c.t("desc.none") : r.description);
+  if (r.description.empty()) c.d.add_paragraph(c.t("desc.none"));
+  else c.d.add_paragraph(Inline{Span{r.description, false, Tone::plain, "", true}});
   if (a.kase.building) {
     const BuildingModel& b = *a.kase.building;
     c.d.add_paragraph(msgf(c.L, "desc.model", c.n(b.H, 2), b.storeys, c.n(b.T1, 3), c.n(b.damping_pct, 0)));
   }
   c.d.add_heading(c.t("survey.heading"), 2, false);
-  c.d.add_paragraph(r.investigations.empty() ? c.t("survey.none") : r.investigations);
+  if (r.investigations.empty()) c.d.add_paragraph(c.t("survey.none"));
+  else c.d.add_paragraph(Inline{Span{r.investigations, false, Tone::plain, "", true}});
   if (a.kase.knowledge_level == "given")
     c.d.add_paragraph(msgf(c.L, "survey.fc_given", c.n(a.kase.options.FC, 2)));
   else
     c.d.add_paragraph(msgf(c.L, "survey.lc", a.kase.knowledge_level, c.n(a.kase.options.FC, 2)));
   std::vector<std::vector<Cell>> rows;
-  rows.push_back({Cell(c.t("masonry.type")), Cell(r.masonry.empty() ? c.t("masonry.none") : r.masonry), Cell(""),
-                  Cell(c.t("data.case"))});
+  Cell type(r.masonry.empty() ? c.t("masonry.none") : r.masonry);
+  type.user = !r.masonry.empty();
+  rows.push_back({Cell(c.t("masonry.type")), type, Cell(""), Cell(c.t("data.case"))});
   double gamma = 0.0;
   if (!a.kase.mechanism.candidates.empty() && !a.kase.mechanism.candidates.front().chain.blocks().empty())
     gamma = a.kase.mechanism.candidates.front().chain.blocks().front().unit_weight;
@@ -166,7 +172,7 @@ void add_building_description(Ctx& c) {
   c.d.add_cell_table({Cell(c.t("kin.quantity")), Cell(c.t("kin.value")), Cell(c.t("kin.unit")), Cell(c.t("data.source"))},
                      rows, c.t("masonry.caption"));
   c.d.add_heading(c.t("criteria.heading"), 2, false);
-  if (!r.mechanism_criteria.empty()) c.d.add_paragraph(r.mechanism_criteria);
+  if (!r.mechanism_criteria.empty()) c.d.add_paragraph(Inline{Span{r.mechanism_criteria, false, Tone::plain, "", true}});
   const MechanismSet& ms = a.kase.mechanism;
   std::string which = msgf(c.L, "criteria.engine", mechanism_name(c.L, ms.type), a.kinematic.candidates.size());
   if (a.kinematic.candidates.size() > 1) which += " " + msgf(c.L, "criteria.parameter", c.loc(ms.parameter_name));

@@ -103,15 +103,20 @@ for o in others:
 
 # 2. The dynamic verdict is the worst over every candidate analysed.
 summaries = list(dyn["summary"]) + [s for o in others for s in o["dynamic"]["summary"]]
-worst = max(s["dc_slv"] for s in summaries)
+# A collapse is D/C = +inf, null in the JSON (issue 28).
+def dc_of(x):
+    return float("inf") if x is None else x
+
+
+worst = max(dc_of(s["dc_slv"]) for s in summaries)
 failing = sum(1 for s in summaries if s["slv_satisfied"] is False)
 dyn_rows = [c for c in full["checks"] if c["kind"] == "dynamic"]
 check(len(dyn_rows) == len(summaries), f"dynamic rows {len(dyn_rows)} vs summaries {len(summaries)}")
-close(max(c["dc"] for c in dyn_rows), worst, "largest dynamic D/C")
+close(max(dc_of(c["dc"]) for c in dyn_rows), worst, "largest dynamic D/C")
 check(sum(1 for c in dyn_rows if not c["satisfied"]) == failing, "failing dynamic rows")
 overall = {o["code"]: o for o in full["overall"]}
-close(max(c["dc"] for c in full["checks"] + [k for c in cands for k in c["checks"]] if c["code"] == "NTC2018"),
-      overall["NTC2018"]["max_dc"], "NTC 2018 largest D/C over every check")
+close(max(dc_of(c["dc"]) for c in full["checks"] + [k for c in cands for k in c["checks"]] if c["code"] == "NTC2018"),
+      dc_of(overall["NTC2018"]["max_dc"]), "NTC 2018 largest D/C over every check")
 
 # 3. The relazione's checks tables hold exactly the checks the verdict counts.
 text = open(html, encoding="utf-8").read()
@@ -128,7 +133,7 @@ for t in tables:
 for code, o in overall.items():
     check(per_code.get(code, 0) == o["checks"],
           f"{code}: {per_code.get(code, 0)} rows in the checks tables, the verdict counts {o['checks']}")
-check(len(tables) >= 2, f"body and appendix tables expected, got {len(tables)}")
+check(len(tables) >= 1, f"a checks table expected, got {len(tables)}")
 
 if failures:
     print("FAILED:\n  " + "\n  ".join(failures))

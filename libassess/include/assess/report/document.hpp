@@ -22,6 +22,7 @@ struct Span {
   bool strong = false;
   Tone tone = Tone::plain;
   std::string link;
+  bool user = false;  ///< the engineer's own words (project, names, descriptions): any language, printed as written
 };
 using Inline = std::vector<Span>;
 
@@ -35,6 +36,8 @@ struct Cell {
   Tone tone = Tone::plain;
   bool strong = false;
   bool highlight = false;
+  std::string link;        ///< an anchor of the document the text links to ("M3"), or ""
+  bool user = false;       ///< the engineer's own words (Span::user)
   Cell() = default;
   Cell(std::string t) : text(std::move(t)) {}
   Cell(const char* t) : text(t) {}
@@ -133,7 +136,8 @@ class DocumentBuilder {
 
   /// A heading; level 2 opens a section (a new printed page unless new_page is
   /// false), 3-5 subsections. Returns its anchor. InputError outside 2..5.
-  std::string add_heading(const std::string& text, int level = 2, bool new_page = true, bool numbered = true);
+  std::string add_heading(const std::string& text, int level = 2, bool new_page = true, bool numbered = true,
+                          const std::string& anchor = "");
   void add_paragraph(const std::string& text, const std::string& style = "");
   void add_paragraph(Inline text, const std::string& style = "", const std::string& lang = "");
   void add_list(std::vector<Inline> items, const std::string& style = "");
