@@ -35,7 +35,6 @@ nlohmann::json safety_indices_json(const std::vector<SafetyIndex>& indices);
 /// mechanism's section, the governing mechanisms marked, the bar chart of
 /// zetaE against 1), then one section per mechanism (the façade report's
 /// sections, ids prefixed with the mechanism's id), conclusions, the case file.
-/// @throws InputError if gnuplot is missing
 std::string building_html(const BuildingAssessment& b, const ReportOptions& options = {});
 
 }  // namespace assess

@@ -55,8 +55,7 @@ int governing_verdict_row(const Verdict& v, const std::string& code);
 /// checks, the dynamic analysis (compatibility of the records, theta/theta_u
 /// histories, summary), the grouped D/C bars, the additional probabilistic
 /// result when given (options.fragility), the legend of the clause tags
-/// and the case file. Plots are drawn by gnuplot.
-/// @throws InputError if gnuplot is missing (names the package gnuplot-nox)
+/// and the case file. Plots are SVG (render_svg).
 std::string facade_html(const FacadeAssessment& a, const ReportOptions& options = {});
 
 /// The site section of the relazione (site, limit states, spectra), appended
