@@ -443,3 +443,79 @@ TEST_CASE("invalid plots throw InputError") {
   }
   CHECK(msg.find("'rigth' is not a position word") != std::string::npos);
 }
+
+TEST_CASE("hostile sizes: long text is wrapped, cut and capped; the plot area keeps 30 % of the figure") {
+  Plot p;
+  p.title = std::string(500, 'W');
+  p.y_label = std::string(300, 'y');
+  p.width = 200, p.height = 150;
+  p.series.push_back({std::string(400, 'n'), {0.0, 1.0}, {0.0, 1.0}, St::Line, {}, false, ""});
+  const assess::PlotLayout L = assess::plot_layout(p);
+  CHECK(L.right - L.left >= 0.3 * L.width - 1e-9);
+  CHECK(L.bottom - L.top >= 0.3 * L.height - 1e-9);
+  const std::string svg = assess::render_svg(p);
+  std::size_t title_lines = 0;
+  for (auto pos = svg.find("font-size=\"12.1\">W"); pos != std::string::npos; pos = svg.find("font-size=\"12.1\">W", pos + 1)) ++title_lines;
+  CHECK(title_lines == 3);
+  CHECK(svg.find("W…</text>") != std::string::npos);
+  CHECK(svg.find("y…</text>") != std::string::npos);
+}
+
+TEST_CASE("random plots (extreme values, all styles, keys and markers) render well-formed, without nan") {
+  // A deterministic sweep in the spirit of a fuzzer: it must never throw for
+  // a valid plot, never print nan/inf, and always close the document.
+  unsigned long long state = 12345;
+  const auto next = [&]() {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return double(state >> 11) / 9007199254740992.0;  // [0, 1)
+  };
+  const auto pick = [&](int n) { return int(next() * n); };
+  const double special[] = {0.0, -0.0, 1e300, -1e300, 1e-300, 4.9e-324, kNaN, kInf, -kInf, 1e15, -1e-15};
+  const auto value = [&]() {
+    const int k = pick(8);
+    if (k == 0) return special[pick(11)];
+    return (2.0 * next() - 1.0) * (k < 4 ? 1.0 : std::pow(10.0, pick(25) - 12));
+  };
+  const char* keys[] = {"top right", "below", "outside right top", "off", "top left", "bottom center", "above", "outside left"};
+  for (int it = 0; it < 300; ++it) {
+    Plot p;
+    p.title = "random " + std::to_string(it);
+    p.x_label = "x", p.y_label = "y";
+    p.log_x = pick(4) == 0, p.log_y = pick(4) == 0;
+    p.width = 100 + pick(900), p.height = 100 + pick(700), p.font_size = 6 + pick(15);
+    p.key = keys[pick(8)];
+    if (pick(3) == 0) p.x_min = p.log_x ? 1e-3 : -std::fabs(value()), p.x_max = std::fabs(value()) + 1.0;
+    if (pick(3) == 0) p.y_min = p.log_y ? 1e-3 : -std::fabs(value()), p.y_max = std::fabs(value()) + 1.0;
+    if (!std::isfinite(p.x_min) || !std::isfinite(p.x_max)) p.x_min = p.x_max = 0.0;
+    if (!std::isfinite(p.y_min) || !std::isfinite(p.y_max)) p.y_min = p.y_max = 0.0;
+    if (pick(4) == 0) {
+      for (int i = 0, n = 1 + pick(20); i < n; ++i) p.x_tic_labels.push_back({double(i), "category " + std::to_string(i)});
+      p.rotate_x_tic_labels = pick(2) == 0;
+    }
+    for (int s = 0, ns = 1 + pick(5); s < ns; ++s) {
+      PlotSeries q;
+      q.style = St(pick(6));
+      q.name = pick(2) ? "series " + std::to_string(s) : "";
+      const bool smooth = pick(2) == 0;
+      for (int i = 0, n = 1 + pick(pick(8) == 0 ? 2000 : 40); i < n; ++i) {
+        q.x.push_back(smooth ? 0.1 * i : value());
+        q.y.push_back(smooth ? 3.0 * std::sin(0.1 * i) : value());
+        if (q.style == St::Band) q.y_low.push_back(smooth ? q.y.back() - 1.0 : value());
+      }
+      if (pick(4) == 0) q.y_err.assign(q.y.size(), 0.3);
+      // one point positive on both axes, so log axes validate
+      q.x.push_back(1.0), q.y.push_back(1.0);
+      if (!q.y_low.empty()) q.y_low.push_back(0.5);
+      if (!q.y_err.empty()) q.y_err.push_back(0.1);
+      q.point_type = pick(16), q.point_size = 0.1 + 5.0 * next(), q.highlight = pick(2) == 0;
+      p.series.push_back(q);
+    }
+    INFO("iteration " << it);
+    std::string svg;
+    REQUIRE_NOTHROW(svg = assess::render_svg(p));
+    CHECK(svg.size() >= 7);
+    CHECK(svg.compare(svg.size() - 7, 7, "</svg>\n") == 0);
+    CHECK(svg.find("nan") == std::string::npos);
+    CHECK(svg.find("inf") == std::string::npos);
+  }
+}

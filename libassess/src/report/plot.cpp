@@ -132,13 +132,13 @@ double segment_distance(const P& p, const P& a, const P& b) {
   return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
 }
 
-/// Ramer-Douglas-Peucker over chunks of at most 4096 points (their ends
+/// Ramer-Douglas-Peucker over chunks of at most 1024 points (their ends
 /// kept), so the cost stays linear in the number of points.
 std::vector<P> simplify(const std::vector<P>& pts, double eps) {
   const std::size_t n = pts.size();
   if (n <= 2) return pts;
   std::vector<char> keep(n, 0);
-  constexpr std::size_t chunk = 4096;
+  constexpr std::size_t chunk = 1024;
   std::vector<std::pair<std::size_t, std::size_t>> stack;
   for (std::size_t s = 0; s + 1 < n; s += chunk) stack.push_back({s, std::min(n - 1, s + chunk)});
   keep[0] = keep[n - 1] = 1;

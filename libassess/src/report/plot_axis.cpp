@@ -279,6 +279,7 @@ PlotAxis make_plot_axis(double lo, double hi, bool fixed, bool log, double px_lo
     lo = log ? 1.0 : 0.0, hi = log ? 10.0 : 1.0;
     fixed = false;
   }
+  if (log) lo = std::max(lo, 1e-300), hi = std::min(std::max(hi, lo), 1e300);  // whole decades stay normal doubles
   if (fixed && !(lo < hi)) fixed = false;
   // A range wider than doubles can difference is narrowed (never in practice).
   if (!log && !std::isfinite(hi - lo)) lo = -1e300, hi = 1e300;

@@ -94,7 +94,7 @@ void arrange_key(KeyBox& k, const Plot& p, double max_w, bool multi, double fs) 
   const double fixed = (M::sample + M::gap + 2 * M::inner) * fs;
   const double text_max = std::max(4.0 * fs, max_w - fixed);
   for (KeyEntry& e : k.entries) {
-    e.lines = wrap_text(p.series[e.series].name, text_max, fs);
+    e.lines = wrap_text(p.series[e.series].name, text_max, fs, 3);
     double tw = 0.0;
     for (const auto& l : e.lines) tw = std::max(tw, text_width(l, fs));
     e.width = (M::sample + M::gap) * fs + tw;
@@ -154,7 +154,7 @@ std::pair<double, double> rotated_extent(const std::string& label, double fs, bo
 }  // namespace
 
 std::vector<std::string> category_lines(const std::string& label, double fs, bool wrap) {
-  return wrap_text(label, wrap ? 14.0 * fs : std::numeric_limits<double>::infinity(), fs);
+  return wrap_text(label, wrap ? 14.0 * fs : std::numeric_limits<double>::infinity(), fs, 3);
 }
 
 KeySpec parse_key(const std::string& key, const std::string& title) {
@@ -202,8 +202,10 @@ FrameLayout layout(const Plot& plot, bool key_below, bool wrap) {
   const double fs = plot.font_size, W = plot.width, H = plot.height;
   f.fs = fs, f.title_fs = 1.1 * fs, f.pad = 0.6 * fs;
   const double pad = f.pad;
-  f.title_lines = wrap_text(plot.title, W - 2 * pad, f.title_fs);
-  f.x_label_lines = wrap_text(plot.x_label, W - 2 * pad, fs);
+  // Text wraps to the figure; beyond a few lines it is cut with "…" (the
+  // caption and tables carry long text, not the figure).
+  f.title_lines = wrap_text(plot.title, W - 2 * pad, f.title_fs, 3);
+  f.x_label_lines = wrap_text(plot.x_label, W - 2 * pad, fs, 2);
 
   KeyBox& key = f.key;
   key.spec = parse_key(plot.key, plot.title);
@@ -254,12 +256,13 @@ FrameLayout layout(const Plot& plot, bool key_below, bool wrap) {
     if (!e.empty() && !plot.log_x) x_lo = e.lo - 0.6, x_hi = e.hi + 0.6, x_fixed = true;
   }
 
-  double plot_bottom_margin = 0.0, Heff = H;
+  double plot_bottom_margin = 0.0, Heff = H, Wd = W;  // Heff, Wd: grown when text leaves too little room
   for (int pass = 0; pass < 2; ++pass) {
     double band = 1.75 * fs;  // x tick labels: gap, ascent and descent
     if (f.rotate) {
       double need = 0.0;
-      for (const auto& c : plot.x_tic_labels) need = std::max(need, rotated_extent(c.second, fs, wrap).first);
+      for (const auto& c : plot.x_tic_labels)
+        if (!x_fixed || (c.first >= x_lo && c.first <= x_hi)) need = std::max(need, rotated_extent(c.second, fs, wrap).first);
       band = need + 0.6 * fs;
     }
     const double bottom = bottom_base + band;
@@ -272,17 +275,20 @@ FrameLayout layout(const Plot& plot, bool key_below, bool wrap) {
     f.pub.y = make_plot_axis(fy ? plot.y_min : ey.lo, fy ? plot.y_max : ey.hi, fy, plot.log_y, Heff - bottom, top, fs, true);
     double y_label_w = 0.0;
     for (const auto& t : f.pub.y.ticks) y_label_w = std::max(y_label_w, text_width(t.label, fs));
-    f.y_label_lines = wrap_text(plot.y_label, Heff - bottom - top, fs);
+    f.y_label_lines = wrap_text(plot.y_label, Heff - bottom - top, fs, 2);
     double left = left_base + (f.y_label_lines.empty() ? 0.0 : double(f.y_label_lines.size()) * 1.25 * fs + 0.2 * fs) +
                   y_label_w + 0.5 * fs;
     double right_m = right_base;
+    Wd = W;
     for (int it = 0; it < 6; ++it) {
-      f.pub.x = make_plot_axis(x_lo, x_hi, x_fixed, plot.log_x, left, W - right_m, fs, false);
+      // The plot area keeps at least 30 % of the width (the figure grows).
+      Wd = std::max(W, left + right_m + std::max(3.0 * fs, 0.3 * W));
+      f.pub.x = make_plot_axis(x_lo, x_hi, x_fixed, plot.log_x, left, Wd - right_m, fs, false);
       if (f.categories) {
         f.pub.x.ticks.clear();
         for (const auto& c : plot.x_tic_labels) {
           const double px = f.pub.x.to_px(c.first);
-          if (std::isfinite(px) && px >= left - 0.01 && px <= W - right_m + 0.01) f.pub.x.ticks.push_back({c.first, c.second});
+          if (std::isfinite(px) && px >= left - 0.01 && px <= Wd - right_m + 0.01) f.pub.x.ticks.push_back({c.first, c.second});
         }
       }
       double over_l = 0.0, over_r = 0.0;
@@ -293,14 +299,14 @@ FrameLayout layout(const Plot& plot, bool key_below, bool wrap) {
           over_l = std::max(over_l, pad - (px - rotated_extent(t.label, fs, wrap).second));
         } else {
           over_l = std::max(over_l, pad - (px - 0.5 * w));
-          over_r = std::max(over_r, px + 0.5 * w - (W - pad));
+          over_r = std::max(over_r, px + 0.5 * w - (Wd - pad));
         }
       }
       if (over_l <= 0.01 && over_r <= 0.01) break;
       left += std::max(0.0, over_l), right_m += std::max(0.0, over_r);
     }
     plot_bottom_margin = bottom;
-    f.pub.left = left, f.pub.right = W - right_m, f.pub.top = top, f.pub.bottom = Heff - bottom;
+    f.pub.left = left, f.pub.right = Wd - right_m, f.pub.top = top, f.pub.bottom = Heff - bottom;
     if (f.categories && !f.rotate) {  // side by side they would overlap: rotate them
       bool overlap = false;
       const auto& t = f.pub.x.ticks;
@@ -318,20 +324,20 @@ FrameLayout layout(const Plot& plot, bool key_below, bool wrap) {
     const auto& t = f.pub.x.ticks;
     while (f.category_stride < t.size() && !rotated_labels_fit(f.pub.x, f.category_stride, fs, wrap)) ++f.category_stride;
   }
-  f.pub.width = W, f.pub.height = Heff;
+  f.pub.width = Wd, f.pub.height = Heff;
   // x label under the tick labels' band; legends at their places.
   f.x_label_y = f.pub.bottom + (plot_bottom_margin - bottom_base) + 0.95 * fs;
   switch (key.spec.place) {
     case KeyPlace::Below:
-      key.x = std::clamp(0.5 * (f.pub.left + f.pub.right - key.w), pad, std::max(pad, W - pad - key.w));
+      key.x = std::clamp(0.5 * (f.pub.left + f.pub.right - key.w), pad, std::max(pad, Wd - pad - key.w));
       key.y = Heff - pad - key.h;
       break;
     case KeyPlace::Above:
-      key.x = std::clamp(0.5 * (f.pub.left + f.pub.right - key.w), pad, std::max(pad, W - pad - key.w));
+      key.x = std::clamp(0.5 * (f.pub.left + f.pub.right - key.w), pad, std::max(pad, Wd - pad - key.w));
       break;
     case KeyPlace::OutsideRight:
     case KeyPlace::OutsideLeft:
-      key.x = key.spec.place == KeyPlace::OutsideRight ? W - pad - key.w : pad;
+      key.x = key.spec.place == KeyPlace::OutsideRight ? Wd - pad - key.w : pad;
       key.y = key.spec.v == 'b' ? f.pub.bottom - key.h : key.spec.v == 'c' ? 0.5 * (f.pub.top + f.pub.bottom - key.h) : f.pub.top;
       break;
     case KeyPlace::Inside:

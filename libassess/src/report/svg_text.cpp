@@ -137,7 +137,7 @@ double text_width(const std::string& s, double font_size) {
   return font_size * double(units) / 1000.0;
 }
 
-std::vector<std::string> wrap_text(const std::string& s, double max_width, double font_size) {
+std::vector<std::string> wrap_text(const std::string& s, double max_width, double font_size, std::size_t max_lines) {
   std::vector<std::string> words;
   std::string word;
   for (char c : s) {
@@ -148,6 +148,25 @@ std::vector<std::string> wrap_text(const std::string& s, double max_width, doubl
     }
   }
   if (!word.empty()) words.push_back(word);
+  // A word wider than the line is cut between code points.
+  std::vector<std::string> pieces;
+  for (const std::string& w : words) {
+    if (text_width(w, font_size) <= max_width) {
+      pieces.push_back(w);
+      continue;
+    }
+    std::string piece;
+    double pw = 0.0;
+    for (std::size_t i = 0; i < w.size();) {
+      const std::size_t start = i;
+      const double cw = font_size * advance(clean(next_code_point(w, i))) / 1000.0;
+      if (!piece.empty() && pw + cw > max_width) pieces.push_back(piece), piece.clear(), pw = 0.0;
+      piece.append(w, start, i - start);
+      pw += cw;
+    }
+    if (!piece.empty()) pieces.push_back(piece);
+  }
+  words.swap(pieces);
   std::vector<std::string> lines;
   std::string line;
   for (const std::string& w : words) {
@@ -160,6 +179,16 @@ std::vector<std::string> wrap_text(const std::string& s, double max_width, doubl
     }
   }
   if (!line.empty()) lines.push_back(line);
+  if (max_lines > 0 && lines.size() > max_lines) {  // the last line kept ends in an ellipsis
+    lines.resize(max_lines);
+    std::string& last = lines.back();
+    while (!last.empty() && text_width(last + "…", font_size) > max_width) {
+      do last.pop_back();
+      while (!last.empty() && (static_cast<unsigned char>(last.back()) & 0xC0) == 0x80);
+      if (!last.empty() && static_cast<unsigned char>(last.back()) >= 0xC0) last.pop_back();
+    }
+    last += "…";
+  }
   return lines;
 }
 

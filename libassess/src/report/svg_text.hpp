@@ -18,8 +18,9 @@ std::string svg_escape(const std::string& s);
 double text_width(const std::string& s, double font_size);
 
 /// `s` broken at blanks into lines no wider than `max_width` (a word wider
-/// than that stays whole on its line). Empty text: no line.
-std::vector<std::string> wrap_text(const std::string& s, double max_width, double font_size);
+/// than that is cut between code points). Empty text: no line. With
+/// `max_lines` > 0, at most that many lines, the last ending in "…".
+std::vector<std::string> wrap_text(const std::string& s, double max_width, double font_size, std::size_t max_lines = 0);
 
 /// Appends v rounded to 0.01 with trailing zeros dropped ("12.5", "-0.05",
 /// "3"); never "-0".

@@ -43,7 +43,10 @@ PlotAxis make_plot_axis(double lo, double hi, bool fixed, bool log, double px_lo
 
 /// Where render_svg() draws `plot`.
 struct PlotLayout {
-  double width = 0, height = 0;  ///< the SVG's viewBox (height may exceed Plot::height by a legend moved below)
+  /// The SVG's viewBox: Plot::width and height, grown by an inside legend
+  /// moved below, or where the text would leave the plot area less than 30 %
+  /// of the figure's width or height.
+  double width = 0, height = 0;
   double left = 0, top = 0, right = 0, bottom = 0;  ///< the plot area (inside the frame), SVG coordinates
   PlotAxis x, y;  ///< x.px_lo = left, x.px_hi = right, y.px_lo = bottom, y.px_hi = top
 };
