@@ -16,8 +16,9 @@
 #include "assess/support/error.hpp"
 
 #include <algorithm>
-#include <array>
+#include <cctype>
 #include <cmath>
+#include <initializer_list>
 #include <set>
 #include <string>
 #include <utility>
@@ -32,7 +33,6 @@ using detail::coord;
 using detail::FrameLayout;
 using detail::KeyPlace;
 using detail::svg_escape;
-using detail::text_width;
 using St = PlotSeries::Style;
 
 bool is_colour(const std::string& c) {
