@@ -175,10 +175,7 @@ void run(const CampaignArgs& a) {
     merge_campaign_parts(parts, campaign_part_path(a.out, 0, 1));
     for (const auto& p : parts) std::filesystem::remove(p);
   }
-  // The results are complete at this point: a missing gnuplot only skips the plots.
-  const bool plots = !a.no_plots && gnuplot_available();
-  if (!a.no_plots && !plots)
-    std::cerr << "assess: warning: gnuplot not found (Debian package gnuplot-nox): plots skipped\n";
+  const bool plots = !a.no_plots;
   const CampaignReportFiles files = write_campaign_report(campaign, a.out, plots);
   std::printf("campaign '%s': %llu analyses", campaign.spec().name.c_str(),
               (unsigned long long)(a.limit ? std::min<std::uint64_t>(a.limit, campaign.size()) : campaign.size()));

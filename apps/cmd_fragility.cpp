@@ -170,9 +170,7 @@ void run(const FragilityArgs& a) {
     for (const auto& p : parts) std::filesystem::remove(p);
   }
   const FragilityResult result = fit_fragility(study, read_fragility_csv(campaign_part_path(out, 0, 1)));
-  const bool plots = !a.no_plots && gnuplot_available();
-  if (!a.no_plots && !plots)
-    std::cerr << "assess: warning: gnuplot not found (Debian package gnuplot-nox): plots skipped\n";
+  const bool plots = !a.no_plots;
   const FragilityReportFiles files = write_fragility_report(study, result, out, plots);
   if (a.json) {
     std::cout << fragility_to_json(study, result).dump(2) << "\n";

@@ -57,6 +57,7 @@
 #include <assess/report/report_files.hpp>
 #include <assess/report/kinematic_report.hpp>
 #include <assess/report/plot.hpp>
+#include <assess/report/plot_layout.hpp>
 #include <assess/report/probabilistic_result.hpp>
 
 // campaign

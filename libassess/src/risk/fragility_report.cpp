@@ -387,7 +387,7 @@ FragilityReportFiles write_fragility_report(const FragilityStudy& st, const Frag
       }
     }
   } else {
-    html.add_paragraph("Plots skipped (gnuplot not found: Debian package gnuplot-nox).");
+    html.add_paragraph("Plots skipped (--no-plots).");
   }
   f.html = dir + "/report.html";
   write_file(f.html, html.str());
