@@ -142,6 +142,8 @@ std::vector<double> dims(const Svg& s, const std::string& kind) {
     if (t.cls == "dim" && t.kind == kind) {
       std::string num = t.text;
       if (kind == "offset-note") num = std::regex_replace(num, std::regex("^d = | m$"), "");
+      for (char& ch : num)  // the Italian drawing writes the decimal comma (issue 28)
+        if (ch == ',') ch = '.';
       v.push_back(std::stod(num));
     }
   return v;

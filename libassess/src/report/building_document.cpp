@@ -54,7 +54,7 @@ const std::string& bt(Lang L, const std::string& key) {
       {"int_failing", {"I meccanismi seguenti non soddisfano la verifica con il metodo adottato e richiedono un intervento di miglioramento o di riparazione locale (NTC 2018 §8.4): ",
                        "The mechanisms below do not satisfy the check by the adopted method and need an improvement or a local repair (NTC 2018 §8.4): "}},
       {"int_ties", {"{}: catene {} (si veda la sezione del meccanismo)", "{}: ties {} (see the mechanism's section)"}},
-      {"int_no_ties", {"{}: D/C = {}; nessun intervento è dimensionato in questa relazione: il dimensionamento delle catene si ottiene con il progetto delle catene del meccanismo (chiave \"design\")",
+      {"int_no_ties", {"{}: D/C = {}; nessun intervento è dimensionato in questa relazione: le catene si possono dimensionare con il progetto automatico delle catene del meccanismo",
                        "{}: D/C = {}; no intervention is designed in this report: the ties are designed by the mechanism's tie design (key \"design\")"}},
       {"appendix_candidates", {"Appendice — verifiche degli altri cinematismi di ciascun meccanismo", "Appendix — checks of the other candidates of each mechanism"}},
       {"dc_candidate", {"candidato della D/C", "candidate of the D/C"}},
@@ -267,8 +267,7 @@ Cell zeta_cell(Lang L, const SafetyIndex* s, bool governing) {
   if (!s || !s->has_checks || !s->defined) return num(L, std::nan(""), 3);
   Cell c((governing ? "★ " : "") + fx(L, s->zeta, 3));
   c.numeric = true;
-  c.tone = s->zeta >= 1.0 ? Tone::ok : Tone::fail;
-  c.strong = true;
+  c.tone = s->zeta >= 1.0 ? Tone::ok : Tone::fail;  // an index, not a D/C: coloured, not in the D/C classes
   return c;
 }
 
@@ -433,7 +432,6 @@ void add_ties_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d) {
     auto z = [&](double v) {
       Cell c = num(L, v, 3);
       c.tone = v >= 1.0 ? Tone::ok : Tone::fail;
-      c.strong = true;
       return c;
     };
     rows.push_back({Cell(m.id), user_cell(m.name), Cell(bt(L, !x ? "ties_none" : x->designed ? "ties_design" : "ties_given")),

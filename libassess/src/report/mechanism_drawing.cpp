@@ -28,29 +28,31 @@ using V2 = Eigen::Vector2d;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-std::string f1(double v) {
+// The drawing's numbers in its language: the decimal comma in Italian (issue
+// 28), set by mechanism_svg for the drawing it makes (one per thread at a time).
+thread_local bool decimal_comma = false;
+
+// A value printed in a label (the drawing's language); coordinates use f1.
+std::string number(const char* layout, double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, layout, v);
+  if (decimal_comma)
+    for (char* p = b; *p; ++p)
+      if (*p == '.') *p = ',';
+  return b;
+}
+
+std::string f1(double v) {  // an SVG coordinate: always the decimal point
   char b[32];
   std::snprintf(b, sizeof b, "%.1f", v);
   return b;
 }
 
-std::string d2(double v) {  // a dimension value: m, 2 decimals, no unit (the legend says "m")
-  char b[32];
-  std::snprintf(b, sizeof b, "%.2f", v);
-  return b;
-}
+std::string d2(double v) { return number("%.2f", v); }  // a dimension value: m, 2 decimals, no unit (the legend says "m")
 
-std::string kn(double newton) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.2f kN", newton / units::kN);
-  return b;
-}
+std::string kn(double newton) { return number("%.2f kN", newton / units::kN); }
 
-std::string m2(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.2f m", v);
-  return b;
-}
+std::string m2(double v) { return number("%.2f m", v); }
 
 // Strings of the drawing only (kept here, both languages).
 std::string tr(Lang lang, const char* it, const char* en) { return lang == Lang::it ? it : en; }
@@ -333,6 +335,7 @@ long mm(double v) { return std::lround(v * 1000.0); }
 }  // namespace
 
 std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
+  decimal_comma = lang == Lang::it;
   const std::vector<Block>& blocks = chain.blocks();
   // Bounding box of the blocks and of the foundation level z = 0.
   double xmin = kInf, xmax = -kInf, zmin = 0.0, zmax = -kInf;

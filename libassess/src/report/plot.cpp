@@ -585,6 +585,13 @@ void Plot::validate() const {
 PlotLayout plot_layout(const Plot& plot) { return settle(plot).first.pub; }
 
 std::string render_svg(const Plot& plot) {
+  // A tick's number in the plot's convention: the decimal comma of an Italian relazione (issue 28).
+  const auto number_label = [&](std::string label) {
+    if (plot.decimal_comma)
+      for (char& c : label)
+        if (c == '.') c = ',';
+    return label;
+  };
   const auto [f, geo] = settle(plot);
   const PlotLayout& L = f.pub;
   const double fs = f.fs, W = L.width, H = L.height;
@@ -663,14 +670,14 @@ std::string render_svg(const Plot& plot) {
     for (const AxisTick& t : L.x.ticks)
       if (!t.label.empty())
         svg << "<text x=\"" << coord(L.x.to_px(t.value)) << "\" y=\"" << coord(L.bottom + 0.45 * fs + 0.8 * fs) << "\">"
-            << svg_escape(t.label) << "</text>\n";
+            << svg_escape(number_label(t.label)) << "</text>\n";
     svg << "</g>\n";
   }
   svg << "<g text-anchor=\"end\">\n";
   for (const AxisTick& t : L.y.ticks)
     if (!t.label.empty())
       svg << "<text x=\"" << coord(L.left - 0.5 * fs) << "\" y=\"" << coord(L.y.to_px(t.value) + 0.36 * fs) << "\">"
-          << svg_escape(t.label) << "</text>\n";
+          << svg_escape(number_label(t.label)) << "</text>\n";
   svg << "</g>\n";
 
   // Axis labels and title.

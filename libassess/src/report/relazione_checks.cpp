@@ -108,8 +108,7 @@ void add_safety_indices(Ctx& c) {
     const std::string where = s.limit_state + ", " + c.t("where." + s.location) +
                               (s.candidate.empty() ? "" : "; " + c.loc(s.candidate));
     Cell zeta = c.num(s.zeta, 3);
-    zeta.tone = s.zeta >= 1.0 ? Tone::ok : Tone::fail;
-    zeta.strong = true;
+    zeta.tone = s.zeta >= 1.0 ? Tone::ok : Tone::fail;  // an index, not a D/C: coloured, not in the D/C classes
     Cell trc = c.num(s.TR_capacity, 0), ratio = c.num(s.TR_ratio, 2);
     std::string note;
     if (s.TR_extrapolated) {

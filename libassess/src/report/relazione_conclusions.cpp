@@ -50,7 +50,7 @@ void add_comparison(Ctx& c) {
   const Verdict& v = c.a.verdict;
   if (v.rows.empty()) return;
   c.d.add_heading(c.t("cmp.heading"));
-  Plot p;
+  Plot p = c.plot();
   p.title = c.t("cmp.title");
   p.y_label = "D/C (–)";
   p.bar_width = 0.8;

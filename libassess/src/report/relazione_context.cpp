@@ -42,9 +42,48 @@ std::string decimal_comma(const std::string& s) {
   return out;
 }
 
+namespace {
+
+// Greek letters, roots and powers of the engine's ASCII formulas typeset
+// ("Se(T1) psi gamma / q" -> "Se(T1) ψ γ / q"), whole words only.
+std::string typeset(const std::string& text) {
+  static const std::vector<std::pair<std::string, std::string>> words{
+      {"psi", "ψ"}, {"gamma", "γ"}, {"xi", "ξ"}, {"eta", "η"}, {"sqrt", "√"}, {"pi", "π"}, {"eps_ud", "ε_ud"},
+      {"eps_uk", "ε_uk"}, {"alpha0", "α0"}, {"alpha", "α"}, {"theta_u", "θu"}, {"theta", "θ"}};
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    bool hit = false;
+    const bool start = i == 0 || !std::isalpha(static_cast<unsigned char>(text[i - 1]));
+    for (const auto& [w, g] : words) {
+      if (!start || text.compare(i, w.size(), w) != 0) continue;
+      const std::size_t e = i + w.size();
+      if (e < text.size() && std::isalpha(static_cast<unsigned char>(text[e]))) continue;
+      out += g;
+      i = e;
+      hit = true;
+      break;
+    }
+    if (hit) continue;
+    if (text.compare(i, 2, "^2") == 0) {
+      out += "²";
+      i += 2;
+      continue;
+    }
+    if (text.compare(i, 4, "ug''") == 0 || text.compare(i, 4, "ur''") == 0) {
+      out += text[i + 1] == 'g' ? "üg" : "ür";
+      i += 4;
+      continue;
+    }
+    out += text[i++];
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string Ctx::loc(const std::string& text) const {
-  if (L == Lang::en) return text;
-  return decimal_comma(localise(L, text));
+  if (L == Lang::en) return typeset(text);
+  return decimal_comma(typeset(localise(L, text)));
 }
 
 std::string Ctx::n(double v, int prec) const {

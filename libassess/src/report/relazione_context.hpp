@@ -9,6 +9,7 @@
 #include "assess/report/document.hpp"
 #include "assess/report/facade_report.hpp"
 #include "assess/report/messages.hpp"
+#include "assess/report/plot.hpp"
 
 #include <set>
 #include <string>
@@ -36,6 +37,12 @@ struct Ctx {
   std::string e(double v, int prec) const;
   /// A number with %g-like precision (`digits` significant digits).
   std::string g(double v, int digits = 4) const;
+  /// A plot in the report's convention (decimal comma in Italian).
+  Plot plot() const {
+    Plot p;
+    p.decimal_comma = L == Lang::it;
+    return p;
+  }
   /// A unit as typeset ("m/s2" -> "m/s²").
   std::string unit(const std::string& u) const;
   /// A clause as the body cites it: the engine's certainty tags removed and remembered for the appendix.

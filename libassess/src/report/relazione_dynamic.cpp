@@ -93,7 +93,7 @@ void add_model(Ctx& c, const FacadeAssessment& x) {
                      c.t("dyn.params_cap"));
   // The moment-rotation curve.
   if (!x.mr_theta.empty()) {
-    Plot mr;
+    Plot mr = c.plot();
     mr.title = c.t("dyn.mr_title");
     mr.x_label = "θ (rad)";
     mr.y_label = "M (kN m/m)";
@@ -142,7 +142,7 @@ void add_records(Ctx& c, const FacadeAssessment& x) {
 void add_compatibility(Ctx& c, const FacadeAssessment& x) {
   const auto se = x.site_Se.find(LimitState::SLV);
   if (se == x.site_Se.end() || x.record_psa.empty()) return;
-  Plot p;
+  Plot p = c.plot();
   p.title = c.t("dyn.compat_title");
   p.x_label = "T (s)";
   p.y_label = "Se, PSA (g)";
@@ -193,7 +193,7 @@ void add_compatibility(Ctx& c, const FacadeAssessment& x) {
   p.x_max = x.periods.empty() ? 4.0 : x.periods.back();
   c.d.add_svg(render_svg(p), c.t("dyn.compat_fig"), "fig-compatibility");
   if (!x.code_floor_Se.empty()) {
-    Plot fp;
+    Plot fp = c.plot();
     fp.title = c.t("dyn.floor_title");
     fp.x_label = "T (s)";
     fp.y_label = "Sa (g)";
@@ -212,12 +212,12 @@ void add_histories(Ctx& c, const FacadeAssessment& x) {
   std::vector<std::pair<std::string, std::string>> panels;
   static const char* colours[] = {"#1f5fbf", "#d9730d", "#2b7a2b", "#8a3ea8"};
   for (std::size_t ir = 0; ir < x.records.size(); ++ir) {
-    Plot p;
+    Plot p = c.plot();
     p.x_label = "t (s)";
     p.y_label = "θ/θu";
     p.width = 300;
     p.height = 190;
-    p.font_size = 8;
+    p.font_size = 11;  // legible at a third of the page width
     p.key = "off";
     double t_show = 0.0, t_last = 0.0;
     for (const DynamicRun& r : x.runs)

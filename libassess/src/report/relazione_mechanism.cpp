@@ -104,7 +104,7 @@ void add_bodies(Ctx& c, const Chain& chain) {
     std::string name = c.t("data.body") + " " + std::to_string(k + 1);
     if (bodies[k].size() > 1) name += " (" + msgf(c.L, "data.slices", bodies[k].size()) + ")";
     else if (!chain.blocks()[std::size_t(bodies[k].front())].name.empty())
-      name += " (" + c.loc(chain.blocks()[std::size_t(bodies[k].front())].name) + ")";
+      name += " (" + c.loc("P " + chain.blocks()[std::size_t(bodies[k].front())].name).substr(2) + ")";
     rows.push_back({Cell(name), c.num(z0, 3), c.num(z1, 3), c.num(x1 - x0, 3), c.num(A, 4),
                     same_L ? c.num(L0, 3) : Cell(c.t("data.variable_length")), c.num(V, 4),
                     c.num(W / units::kN, 2), c.num(xg, 3), c.num(zg, 3)});
@@ -123,19 +123,68 @@ void add_bodies(Ctx& c, const Chain& chain) {
 // The virtual-work table (C8A.4.1 / C8.7.1.1): every load with its virtual
 // displacements; the sums of the columns add up: the seismic weights' sum is
 // given apart from the loads without seismic mass.
-void add_virtual_work(Ctx& c, const KinematicResult& k) {
+// A load's or block's name in the report's language: the catalogue's names
+// through the phrase table, a bare "tie" or "thrust" by its kind.
+std::string load_name(const Ctx& c, const Load& l) {
+  if (l.name == "tie") return c.t("load.tie");
+  if (l.name == "thrust") return c.t("load.force");
+  return c.loc(l.name);
+}
+
+void add_virtual_work(Ctx& c, const Chain& chain, const KinematicResult& k) {
   std::vector<std::vector<Cell>> rows;
-  double W_other = 0.0, work = 0.0;
-  for (const LoadWork& w : k.loads) {
+  double W_other = 0.0;
+  // The self weights of a body made of several blocks (the gable's
+  // integration slices) in one row: the sums of its blocks, at its centroid
+  // (a rigid body's virtual displacement is linear in the position).
+  const auto bodies = rigid_bodies(chain);
+  std::vector<int> body_of(chain.blocks().size(), -1);
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+    if (bodies[b].size() > 1)
+      for (int i : bodies[b]) body_of[std::size_t(i)] = int(b);
+  std::vector<LoadWork> merged(bodies.size());
+  std::vector<bool> has(bodies.size(), false);
+  auto row_of = [&](const LoadWork& w, const std::string& name) {
     const bool weight = w.load.type == LoadType::Weight || w.load.type == LoadType::SelfWeight;
     const double W = (weight ? w.load.weight : w.load.force.norm()) / units::kN;
     const bool seismic = weight && w.load.seismic;
     if (weight && !seismic) W_other += W;
-    work += w.work / units::kN;
-    rows.push_back({Cell(c.loc(w.load.name)), Cell(c.t("load." + to_string(w.load.type))),
-                    Cell(c.t(seismic ? "vw.yes" : "vw.no")), c.num(w.load.point.x(), 3), c.num(w.load.point.y(), 3),
-                    c.num(W, 2), c.num(w.dx, 4), c.num(w.dz, 4), c.num(w.W_dx / units::kN, 3),
-                    c.num(w.W_dx2 / units::kN, 3), c.num(w.work / units::kN, 3)});
+    rows.push_back({Cell(name), Cell(c.t("load." + to_string(w.load.type))), Cell(c.t(seismic ? "vw.yes" : "vw.no")),
+                    c.num(w.load.point.x(), 3), c.num(w.load.point.y(), 3), c.num(W, 2), c.num(w.dx, 4),
+                    c.num(w.dz, 4), c.num(w.W_dx / units::kN, 3), c.num(w.W_dx2 / units::kN, 3),
+                    c.num(w.work / units::kN, 3)});
+  };
+  for (const LoadWork& w : k.loads) {
+    const int b = w.load.type == LoadType::SelfWeight && w.load.block >= 0 ? body_of[std::size_t(w.load.block)] : -1;
+    if (b < 0) {
+      row_of(w, load_name(c, w.load));
+      continue;
+    }
+    LoadWork& m = merged[std::size_t(b)];
+    if (!has[std::size_t(b)]) {
+      m = w;
+      m.load.weight = 0.0;
+      m.load.point.setZero();
+      m.dx = m.dz = m.W_dx = m.W_dx2 = m.work = 0.0;
+      has[std::size_t(b)] = true;
+    }
+    m.load.weight += w.load.weight;
+    m.load.point += w.load.weight * w.load.point;
+    m.dx += w.load.weight * w.dx;
+    m.dz += w.load.weight * w.dz;
+    m.W_dx += w.W_dx;
+    m.W_dx2 += w.W_dx2;
+    m.work += w.work;
+  }
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    if (!has[b]) continue;
+    LoadWork& m = merged[b];
+    if (m.load.weight > 0.0) {
+      m.load.point /= m.load.weight;
+      m.dx /= m.load.weight;
+      m.dz /= m.load.weight;
+    }
+    row_of(m, "P " + c.t("data.body") + " " + std::to_string(b + 1) + " (" + msgf(c.L, "data.slices", bodies[b].size()) + ")");
   }
   auto sum = [&](double v, int prec) {
     Cell x = c.num(v, prec);
@@ -248,7 +297,7 @@ void add_adrs(Ctx& c, std::size_t ci, const std::string& id) {
   const CandidateResult& cr = c.candidate(ci);
   const KinematicResult& k = cr.result;
   if (!k.curve_complete() || k.curve.empty()) return;
-  Plot p;
+  Plot p = c.plot();
   p.title = c.t("kin.adrs_title");
   p.x_label = c.t("kin.adrs_x");
   p.y_label = c.t("kin.adrs_y");
@@ -329,7 +378,7 @@ void add_candidate(Ctx& c, std::size_t ci, std::size_t k, int level) {
   add_bodies(c, chain);
   c.d.add_svg(mechanism_svg(chain, cr.result, c.L), c.t("mech.fig"), "fig-mechanism" + suffix);
   c.d.add_heading(c.t("mech.vw"), level, false);
-  add_virtual_work(c, cr.result);
+  add_virtual_work(c, chain, cr.result);
   c.d.add_heading(c.t("kin.heading_linear"), level, false);
   add_quantities(c, cr.result);
   if (cr.result.curve_complete()) {

@@ -46,7 +46,7 @@ void add_site(Ctx& c) {
                       h("TC* (s)"), h("SS"), h("CC"), h("ST"), h("S"), h("TB (s)"), h("TC (s)"), h("TD (s)")},
                      rows, c.t("site.table"));
   c.d.add_paragraph(c.t("site.formulas"), "note");
-  Plot p;
+  Plot p = c.plot();
   p.title = c.t("site.fig_title");
   p.x_label = "T (s)";
   p.y_label = "Se, PSA (g)";

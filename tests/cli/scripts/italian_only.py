@@ -39,6 +39,7 @@ def text_of(page):
     page = re.sub(r'<p class="meta">.*?</p>', " ", page, flags=re.S)  # project, file: the user's words
     page = re.sub(r'<(div|p|span)[^>]*lang="en"[^>]*>.*?</\1>', " ", page, flags=re.S)
     page = re.sub(r'<span class="user">.*?</span>', " ", page, flags=re.S)  # the engineer's own words
+    page = re.sub(r'<span class="secno">.*?</span>', " ", page, flags=re.S)  # section numbers "8.1"
     page = re.sub(r"<svg.*?</svg>", " ", page, flags=re.S)  # figures: checked apart
     page = re.sub(r"<title>.*?</title>", " ", page, flags=re.S)
     page = re.sub(r"<[^>]+>", " ", page)

@@ -63,6 +63,8 @@ struct Plot {
   /// columns under the x label / over the plot; "outside" (right unless
   /// "left"; "top", "center", "bottom" align it): beside the plot area.
   std::string key = "top right";
+  /// Tick labels with the decimal comma (the Italian relazione, issue 28).
+  bool decimal_comma = false;
   int font_size = 11;                ///< SVG units (px at 100 %), 6..20 (small multiples use a smaller font)
   std::vector<PlotSeries> series;
 
