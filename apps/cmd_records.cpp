@@ -7,6 +7,8 @@
 #include <assess/hazard/site.hpp>
 #include <assess/records/record_catalogue.hpp>
 #include <assess/records/record_selection.hpp>
+#include <assess/records/record_spectra.hpp>
+#include <assess/support/content_hash.hpp>
 #include <assess/records/response_spectrum.hpp>
 #include <assess/support/error.hpp>
 #include <assess/support/units.hpp>
@@ -91,14 +93,26 @@ CatalogueFilters make_filters(const RecordsArgs& a) {
 
 void run_build(const RecordsArgs& a) {
   const std::string table = a.metadata.empty() ? data_dir() + "/spectra/records/metadata.csv" : a.metadata;
-  const RecordCatalogue cat = build_catalogue(table);
+  RecordCatalogue cat = build_catalogue(table);
   const std::string out = a.output.empty() ? cat.directory + "/catalogue.json" : a.output;
-  std::ofstream os(out, std::ios::binary);
-  if (!os) throw InputError("--output '" + out + "': cannot write");
-  os << catalogue_json(cat);
+  const std::string text = catalogue_json(cat);
+  {
+    std::ofstream os(out, std::ios::binary);
+    if (!os || !(os << text)) throw InputError("--output '" + out + "': cannot write");
+  }
   std::size_t usable = 0;
   for (const auto& e : cat.entries) usable += e.usable_for_design;
   std::cout << "wrote " << out << ": " << cat.entries.size() << " components, " << usable << " usable for design\n";
+  // The precomputed spectra beside it, tied to this text by its hash (record_spectra.hpp).
+  cat.text_hash = content_hash(text);
+  const auto slash = out.find_last_of('/');
+  const std::string spectra = (slash == std::string::npos ? std::string(".") : out.substr(0, slash)) + "/" +
+                              library_spectra_file;
+  const LibrarySpectra s = compute_library_spectra(cat);
+  write_library_spectra(s, spectra);
+  std::cout << "wrote " << spectra << ": 5 % PSA of " << s.ids.size() << " components at " << s.periods.size()
+            << " periods (0, then " << spectra_grid_T_min_s << "-" << spectra_grid_T_max_s << " s, "
+            << spectra_grid_per_decade << " per decade), catalogue hash " << hash_hex(cat.text_hash) << "\n";
 }
 
 void run_list(const RecordsArgs& a) {
