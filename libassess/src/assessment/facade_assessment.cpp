@@ -245,6 +245,33 @@ void load_records(FacadeAssessment& a, const DynamicSpec& d, const FacadeOptions
     throw InputError(a.kase.file + ": /dynamic/select: no compatible set in the catalogue: " + a.selection->message);
 }
 
+// The caveats of each record used (record-selection.md §2.8), computed from
+// its metadata and the selection, shown beside it in every output.
+void flag_records(FacadeAssessment& a) {
+  const std::string soil = a.kase.site ? to_string(a.kase.site->conditions.soil) : "";
+  const double default_cap = SelectionOptions{}.max_scale;
+  for (RecordUsed& r : a.records) {
+    r.flags.clear();
+    if (!r.in_catalogue) {
+      r.flags.push_back("not in the record library: Mw, distance, site class and near-fault status unknown");
+    } else {
+      if (!r.near_fault.empty()) r.flags.push_back(r.near_fault);
+      if (!soil.empty() && !r.site_class.empty() && r.site_class != soil && a.selection)
+        r.flags.push_back("site class " + r.site_class + ", not the site's " + soil + " (class relaxed)");
+      if (r.site_class_basis == "stated" && !r.vs30_class.empty() && r.vs30_class != r.site_class)
+        r.flags.push_back("class " + r.site_class + " as stated by the source; its Vs30 " + fixed3(r.vs30_m_s).substr(0, fixed3(r.vs30_m_s).find('.')) +
+                          " m/s would give " + r.vs30_class);
+    }
+    if (r.misfit_flag)
+      r.flags.push_back("misfit " + fixed3(r.deviation) + " > " + fixed3(a.selection_max_misfit) + " (rank " +
+                        std::to_string(r.rank) + ")");
+    if (r.scale > default_cap * (1.0 + 1e-12))
+      r.flags.push_back("scale " + fixed3(r.scale) + " above " + fixed3(default_cap) + ", the default cap" +
+                        (a.selection ? " (raised in the case: max_scale " + fixed3(a.selection_max_scale) + ")"
+                                     : std::string(" (a listed scale)")));
+  }
+}
+
 // Compatibility of the records' mean scaled 5 % spectrum with the SLV
 // spectrum (NTC 2018 §3.2.3.6: -10 %/+30 % over the period range). Selected
 // records carry it from the selection; listed records are checked here over
@@ -521,6 +548,7 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   std::shared_ptr<const RecordLibrary> lib;
   std::vector<std::optional<CatalogueEntry>> lib_entries;  // the library's entry of each selected record
   load_records(a, d, opt, target, gov.result, recs, lib, lib_entries, shared);
+  flag_records(a);
   for (const RecordUsed& r : a.records)
     if (r.pga / units::g > plausibility::record_pga_max_g)
       a.warnings.push_back(kase.file + ": " + (r.json_path.empty() ? std::string("/dynamic/select") : r.json_path + "/scale") +

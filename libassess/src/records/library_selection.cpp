@@ -23,11 +23,18 @@ namespace {
 
 std::atomic<std::size_t> memo_computed{0}, memo_reused{0};
 
-std::string classes_text(const std::vector<std::string>& c) {
+/// "C, D" (or "any class").
+std::string classes_list(const std::vector<std::string>& c) {
   if (c.empty()) return "any class";
   std::string s;
   for (std::size_t i = 0; i < c.size(); ++i) s += (i ? ", " : "") + c[i];
   return s;
+}
+
+/// "class D", "classes C, D" (or "any class").
+std::string classes_text(const std::vector<std::string>& c) {
+  if (c.empty()) return "any class";
+  return (c.size() == 1 ? "class " : "classes ") + classes_list(c);
 }
 
 bool in_list(const std::vector<std::string>& list, const std::string& v) {
@@ -156,7 +163,7 @@ std::shared_ptr<const LibrarySelection> compute(const RecordLibrary& lib, const 
     SelectionStep step{ladder[s], o.members.size(), SelectionResult::Status::FewerThanRequested, ""};
     if (o.members.empty()) {
       o.result.status = SelectionResult::Status::FewerThanRequested;
-      o.result.message = "no candidate of " + classes_text(ladder[s]);
+      o.result.message = "no candidate of " + classes_text(ladder[s]);  // "no candidate of class D"
     } else {
       o.result = select_records(target, all.subset(o.members), opts);
     }
@@ -183,9 +190,9 @@ std::shared_ptr<const LibrarySelection> compute(const RecordLibrary& lib, const 
   for (std::size_t i : outcomes[used].members) ls.candidates.push_back(pool[i]);
   if (used > 0) {
     const SelectionStep& first = ls.steps.front();
-    ls.warnings.push_back("site class relaxed from " + classes_text(first.site_classes) + " to " +
-                          classes_text(ls.site_classes) + ": the " + std::to_string(first.candidates) + " candidates of " +
-                          classes_text(first.site_classes) + " give no compatible set of " +
+    ls.warnings.push_back("site class relaxed from " + classes_list(first.site_classes) + " to " +
+                          classes_list(ls.site_classes) + ": " + classes_text(first.site_classes) + " alone (" +
+                          std::to_string(first.candidates) + " candidates) gives no compatible set of " +
                           std::to_string(opts.n_records) + " (" + (first.message.empty() ? "none" : first.message) + ")");
   }
   return out;

@@ -506,6 +506,21 @@ SelectionResult select_records(const std::function<double(double)>& target, cons
     chosen = greedy_search(pool, order, k, res.combinations);
     res.exhaustive = false;
   }
+  // Only the best `pool_size` records were combined and the best set leaves
+  // the band: a greedy search with swaps over every eligible record may find
+  // a set inside it (issue 30: tried before the site class is relaxed); the
+  // better of the two by the same score is kept.
+  if (!res.exhaustive && order.size() < eligible.size() && (chosen.empty() || pool.score(chosen).violation > 0.0)) {
+    std::vector<std::size_t> all(eligible.size());
+    for (std::size_t c = 0; c < all.size(); ++c) all[c] = c;
+    double more = 0.0;
+    std::vector<std::size_t> g = greedy_search(pool, all, k, more);
+    res.combinations += more;
+    if (!g.empty() && (chosen.empty() || pool.score(g).better_than(pool.score(chosen)))) {
+      chosen = std::move(g);
+      res.pool = eligible.size();
+    }
+  }
   if (chosen.empty()) {
     res.status = SelectionResult::Status::FewerThanRequested;
     res.message = "no set of " + std::to_string(k) + " of the " + std::to_string(eligible.size()) +

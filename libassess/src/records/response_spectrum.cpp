@@ -178,17 +178,20 @@ void ordinates_lanes(const Record& record, const double* T, int m, const Respons
     const double pa = -acc[i], dp = (acc[i] - acc[i + 1]) / m;
     for (int k = 0; k < m; ++k) {
       const double p0 = pa + k * dp, p1 = pa + (k + 1) * dp;
+      double u1[L], v1[L];
       for (int l = 0; l < L; ++l) {
-        const double u1 = auu[l] * u[l] + auv[l] * v[l] + aup0[l] * p0 + aup1[l] * p1;
-        const double v1 = avu[l] * u[l] + avv[l] * v[l] + avp0[l] * p0 + avp1[l] * p1;
-        sd[l] = std::max(sd[l], std::fabs(u1));
-        if ((v[l] > 0.0 && v1 < 0.0) || (v[l] < 0.0 && v1 > 0.0))
-          sd[l] = std::max(sd[l], hermite_peak(u[l], v[l], u1, v1, h));
-        sv[l] = std::max(sv[l], std::fabs(v1));
-        sa[l] = std::max(sa[l], std::fabs(cv[l] * v1 + w2[l] * u1));
-        u[l] = u1;
-        v[l] = v1;
+        u1[l] = auu[l] * u[l] + auv[l] * v[l] + aup0[l] * p0 + aup1[l] * p1;
+        v1[l] = avu[l] * u[l] + avv[l] * v[l] + avp0[l] * p0 + avp1[l] * p1;
       }
+      for (int l = 0; l < L; ++l) {
+        sd[l] = std::max(sd[l], std::fabs(u1[l]));
+        sv[l] = std::max(sv[l], std::fabs(v1[l]));
+        sa[l] = std::max(sa[l], std::fabs(cv[l] * v1[l] + w2[l] * u1[l]));
+      }
+      for (int l = 0; l < L; ++l)
+        if ((v[l] > 0.0 && v1[l] < 0.0) || (v[l] < 0.0 && v1[l] > 0.0))
+          sd[l] = std::max(sd[l], hermite_peak(u[l], v[l], u1[l], v1[l], h));
+      for (int l = 0; l < L; ++l) u[l] = u1[l], v[l] = v1[l];
     }
   }
   for (int l = 0; l < L; ++l) {

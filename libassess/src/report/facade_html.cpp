@@ -770,23 +770,50 @@ void add_dynamic(const Ctx& c) {
 
   c.h.add_heading(c.t("dyn.records"), 3);
   std::vector<std::vector<HtmlCell>> rrows;
-  // Why each record was chosen (issue 24): magnitude, distance and its kind,
-  // site class, scale, scaled PGA, individual deviation from the target and its rank.
+  // Why each record was chosen (issues 24, 30): event, date, station, country,
+  // magnitude, distance and its kind, site class with its basis (Vs30 or
+  // stated by the source), usable period, scale, scaled PGA, individual misfit
+  // to the target and its rank; "—" where the catalogue says nothing.
   auto opt_num = [](double v, int prec) { return std::isfinite(v) ? num(v, prec) : HtmlCell("—", "num"); };
-  for (const RecordUsed& r : a.records)
-    rrows.push_back({r.name, r.event + " / " + r.station + ", " + r.component, opt_num(r.Mw, 2),
+  auto or_dash = [](const std::string& t) { return t.empty() ? std::string("—") : t; };
+  for (const RecordUsed& r : a.records) {
+    std::string cls = or_dash(r.site_class);
+    if (r.site_class_basis == "Vs30") cls += " (Vs30 " + fixed(r.vs30_m_s, 0) + ")";
+    else if (r.site_class_basis == "stated")
+      cls += " (" + c.t("dyn.class_stated") + (std::isfinite(r.vs30_m_s) ? "; Vs30 " + fixed(r.vs30_m_s, 0) : "") + ")";
+    rrows.push_back({r.name,
+                     or_dash(r.event) + ", " + or_dash(r.date) + " / " + or_dash(r.station) + ", " + or_dash(r.component) +
+                         " — " + or_dash(r.country),
+                     opt_num(r.Mw, 2),
                      std::isfinite(r.distance_km) ? HtmlCell(fixed(r.distance_km, 1) + " " + r.distance_kind, "num")
                                                   : HtmlCell("—", "num"),
-                     r.site_class.empty() ? HtmlCell("—") : HtmlCell(r.site_class), num(r.scale, 3), num(r.pga / g, 4),
+                     HtmlCell(cls), opt_num(r.usable_period_s, 2), num(r.scale, 3), num(r.pga / g, 4),
                      opt_num(r.deviation, 3), r.rank > 0 ? num(r.rank, 0) : HtmlCell("—", "num"),
                      num(r.integrated_s, 1)});
+  }
   c.h.add_cell_table({c.t("dyn.record"), c.t("dyn.event_station"), HtmlCell("Mw", "num"), HtmlCell(c.t("dyn.distance"), "num"),
-                      c.t("dyn.site_class"), HtmlCell(c.t("dyn.scale"), "num"), HtmlCell("PGA (g)", "num"),
-                      HtmlCell(c.t("dyn.deviation"), "num"), HtmlCell(c.t("dyn.rank"), "num"),
+                      c.t("dyn.site_class"), HtmlCell(c.t("dyn.usable"), "num"), HtmlCell(c.t("dyn.scale"), "num"),
+                      HtmlCell("PGA (g)", "num"), HtmlCell(c.t("dyn.deviation"), "num"), HtmlCell(c.t("dyn.rank"), "num"),
                       HtmlCell(c.t("dyn.integrated"), "num")},
                      rrows, c.t("dyn.records_cap"));
   // The selection's caveats (default windows, relaxed site class): what a verificatore asks first.
   for (const std::string& w : a.selection_warnings) c.h.add_paragraph(c.t("dyn.selection_warning") + ": " + c.loc(w));
+  // The flags of each record and the reasons of the period range, computed
+  // (record-selection.md §2.8): the program's sentences, marked lang="en".
+  {
+    std::string html;
+    for (const RecordUsed& r : a.records)
+      for (const std::string& f : r.flags) html += "<p>" + xml_escape(r.name + ": " + f) + "</p>\n";
+    if (a.selection) {
+      html += "<p>" + xml_escape("period range: " + a.selection_range_note) + "</p>\n";
+      if (!a.selection_shared_note.empty()) html += "<p>" + xml_escape("candidates: " + a.selection_shared_note) + "</p>\n";
+      for (const std::string& st : a.selection_steps) html += "<p>" + xml_escape("site classes tried: " + st) + "</p>\n";
+    }
+    if (!html.empty()) {
+      c.h.add_paragraph(c.t("dyn.flags"));
+      c.h.add_raw_html("<div class=\"warnings\" lang=\"en\">\n" + html + "</div>");
+    }
+  }
   for (const std::string& f : a.record_failures) c.h.add_paragraph(c.t("dyn.skipped") + ": " + f);
   if (a.selection)
     c.h.add_paragraph(msgf(c.L, "dyn.selection", fixed(a.selection_range.T_min, 2), fixed(a.selection_range.T_max, 2)) +

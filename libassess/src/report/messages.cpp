@@ -320,17 +320,25 @@ const std::map<std::string, Entry>& catalogue() {
       {"dyn.event_station", {"evento / stazione, componente", "event / station, component"}},
       {"dyn.distance", {"R (km)", "R (km)"}},
       {"dyn.site_class", {"cat. suolo", "site class"}},
-      {"dyn.deviation", {"scarto", "deviation"}},
+      {"dyn.deviation", {"scarto", "misfit"}},
+      {"dyn.class_stated", {"dichiarata dalla fonte", "stated by the source"}},
+      {"dyn.usable", {"periodo utile (s)", "usable to (s)"}},
+      {"dyn.flags", {"Segnalazioni sugli accelerogrammi e sull'intervallo di periodi (frasi del programma, in inglese "
+                     "come nel terminale):",
+                     "Flags on the records and the period range:"}},
       {"dyn.rank", {"posizione", "rank"}},
       {"dyn.integrated", {"integrato (s)", "integrated (s)"}},
       {"dyn.records_cap",
-       {"Accelerogrammi usati: magnitudo Mw, distanza R (Rjb, Rrup o Repi), categoria di sottosuolo della stazione "
-        "(NTC 2018 Tab. 3.2.II da Vs30), fattore di scala, PGA scalata, scarto quadratico medio individuale f·S/Se − 1 "
-        "sull'intervallo di periodi e sua posizione fra gli accelerogrammi ammissibili, durata integrata (l'intero "
-        "accelerogramma).",
-        "Records used: magnitude Mw, distance R (Rjb, Rrup or Repi), the station's site class (NTC 2018 Tab. 3.2.II "
-        "from Vs30), scale factor, scaled PGA, individual RMS deviation f·S/Se − 1 over the period range and its rank "
-        "among the eligible records, duration integrated (the whole record)."}},
+       {"Accelerogrammi usati: evento, data, stazione, componente, paese; magnitudo Mw, distanza R (Rjb, Rrup o "
+        "Repi), categoria di sottosuolo della stazione (dichiarata dalla fonte, altrimenti NTC 2018 Tab. 3.2.II da "
+        "Vs30, in m/s), periodo utile 1/f_min dato dalla fonte, fattore di scala, PGA scalata, scarto quadratico medio "
+        "individuale f·S/Se − 1 sull'intervallo di periodi e sua posizione fra gli accelerogrammi ammissibili, durata "
+        "integrata (l'intero accelerogramma); — dove il catalogo non dice nulla.",
+        "Records used: event, date, station, component, country; magnitude Mw, distance R (Rjb, Rrup or Repi), the "
+        "station's site class (stated by the source, else NTC 2018 Tab. 3.2.II from Vs30, in m/s), usable period "
+        "1/f_low given by the source, scale factor, scaled PGA, individual RMS misfit f·S/Se − 1 over the period range "
+        "and its rank among the eligible records, duration integrated (the whole record); — where the catalogue says "
+        "nothing."}},
       {"dyn.selection_warning", {"Avvertenza sulla selezione", "Selection caveat"}},
       {"dyn.ends", {"Fine delle analisi", "End of the analyses"}},
       {"end.overturned", {"ribaltamento", "overturning"}},
@@ -581,6 +589,12 @@ const std::vector<std::pair<std::string, std::string>>& phrases_it() {
        " usata: le NTC 2018 §3.2.3.6 chiedono accelerogrammi coerenti con la sismogenesi del sito; indicare le "
        "finestre dalla disaggregazione della pericolosità del sito"},
       {"site class relaxed from ", "categoria di sottosuolo estesa da "},
+      // The site-class ladder (records/library_selection.cpp, issue 30).
+      {": class ", ": la categoria "},
+      {": classes ", ": le categorie "},
+      {" alone (", " da sola ("},
+      {" candidates) gives no compatible set of ", " candidati) non dà un insieme compatibile di "},
+      {"no candidate of class ", "nessun candidato di categoria "},
       {": fewer than ", ": meno di "},
       {" candidates of class ", " candidati di categoria "},
       {" pass the other filters", " superano gli altri filtri"},

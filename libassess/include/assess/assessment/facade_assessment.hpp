@@ -52,6 +52,10 @@ struct RecordUsed {
   double deviation = std::numeric_limits<double>::quiet_NaN();  ///< individual misfit: RMS of f S/Se - 1 over the range (-)
   int rank = 0;                  ///< rank of that deviation among the eligible records (1 = best; 0 listed)
   bool misfit_flag = false;      ///< deviation above the selection's max_misfit
+  /// The caveats of this record, computed (record-selection.md §2.8): near-fault
+  /// or pulse-like, misfit above the limit, class other than the site's, a
+  /// stated class its Vs30 contradicts, scale above the default cap, no metadata.
+  std::vector<std::string> flags;
   double duration_s = 0.0;       ///< length of the record file (s)
   double integrated_s = 0.0;     ///< excitation integrated (s): the whole motion at the mechanism's base
 };
