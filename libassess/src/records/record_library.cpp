@@ -6,6 +6,7 @@
 #include "assess/support/content_hash.hpp"
 #include "assess/support/error.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -35,14 +36,30 @@ RecordLibrary::RecordLibrary(RecordCatalogue cat) : cat_(std::move(cat)) {
 }
 
 std::shared_ptr<const RecordLibrary> RecordLibrary::open(const std::string& catalogue_path) {
+  // Per path: the library, and the size and modification time of the file
+  // its text had; an unchanged stat is trusted (no re-read), a changed one
+  // re-reads the text and compares its content hash.
+  struct Cached {
+    std::shared_ptr<const RecordLibrary> lib;
+    std::uintmax_t size = 0;
+    std::filesystem::file_time_type mtime{};
+  };
   static std::mutex mutex;
-  static std::map<std::string, std::shared_ptr<const RecordLibrary>> libraries;
-  const std::uint64_t h = content_hash(read_bytes(catalogue_path, "record catalogue"));
+  static std::map<std::string, Cached> libraries;
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(catalogue_path, ec);
+  const std::filesystem::file_time_type mtime = ec ? std::filesystem::file_time_type{}
+                                                   : std::filesystem::last_write_time(catalogue_path, ec);
   std::lock_guard<std::mutex> lock(mutex);
   auto it = libraries.find(catalogue_path);
-  if (it != libraries.end() && it->second->cat_.text_hash == h) return it->second;
+  if (!ec && it != libraries.end() && it->second.size == size && it->second.mtime == mtime) return it->second.lib;
+  const std::uint64_t h = content_hash(read_bytes(catalogue_path, "record catalogue"));
+  if (it != libraries.end() && it->second.lib->cat_.text_hash == h) {
+    it->second.size = size, it->second.mtime = mtime;
+    return it->second.lib;
+  }
   auto lib = std::make_shared<const RecordLibrary>(read_catalogue(catalogue_path));
-  libraries[catalogue_path] = lib;
+  libraries[catalogue_path] = Cached{lib, ec ? 0 : size, mtime};
   return lib;
 }
 
