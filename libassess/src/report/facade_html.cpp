@@ -781,9 +781,12 @@ void add_dynamic(const Ctx& c) {
     if (r.site_class_basis == "Vs30") cls += " (Vs30 " + fixed(r.vs30_m_s, 0) + ")";
     else if (r.site_class_basis == "stated")
       cls += " (" + c.t("dyn.class_stated") + (std::isfinite(r.vs30_m_s) ? "; Vs30 " + fixed(r.vs30_m_s, 0) : "") + ")";
-    rrows.push_back({r.name,
-                     or_dash(r.event) + ", " + or_dash(r.date) + " / " + or_dash(r.station) + ", " + or_dash(r.component) +
-                         " — " + or_dash(r.country),
+    const std::string what =
+        r.in_catalogue ? or_dash(r.event) + ", " + or_dash(r.date) + " / " + or_dash(r.station) + ", " +
+                             or_dash(r.component) + " — " + or_dash(r.country)
+        : r.event.empty() && r.station.empty() ? std::string("—")
+                                               : or_dash(r.event) + " / " + or_dash(r.station) + ", " + or_dash(r.component);
+    rrows.push_back({r.name, what,
                      opt_num(r.Mw, 2),
                      std::isfinite(r.distance_km) ? HtmlCell(fixed(r.distance_km, 1) + " " + r.distance_kind, "num")
                                                   : HtmlCell("—", "num"),

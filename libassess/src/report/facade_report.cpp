@@ -151,26 +151,32 @@ std::string facade_text(const FacadeAssessment& a, TextWidth width) {
       // Each record: scale, scaled PGA, misfit to the target and its rank, Mw, distance and its kind,
       // site class, seconds integrated; below it the event, date, station, country, Vs30 with the class
       // basis, the usable period and the flags (120 columns). "—" where the catalogue says nothing.
-      auto cell = [](double v, int width, int prec) {
-        if (!std::isfinite(v)) return std::string(std::size_t(std::max(0, width - 1)), ' ') + "\u2014";
-        return format("%*.*f", width, prec, v);
+      // Padding by display width (a dash is one column, three bytes).
+      auto pad = [](const std::string& t, int width, bool left) {
+        int cols = 0;
+        for (unsigned char ch : t) cols += (ch & 0xC0) != 0x80;
+        const std::string fill(std::size_t(std::max(0, width - cols)), ' ');
+        return left ? t + fill : fill + t;
       };
+      const std::string dash = "\u2014";
+      auto cell = [&](double v, int width, int prec) {
+        return pad(std::isfinite(v) ? format("%.*f", prec, v) : dash, width, false);
+      };
+      auto or_dash = [&](const std::string& t) { return t.empty() ? dash : t; };
       o += format("  %-*s %7s %8s %6s %4s %5s %7s %-4s %2s %8s\n", rw, "record", "scale", "PGA (g)", "misfit", "rank",
                   "Mw", "R (km)", "kind", "cl", "used (s)");
       for (const RecordUsed& r : a.records) {
-        o += format("  %-*s %7.3f %8.4f %s %4s %s %s %-4s %2s %8.1f\n", rw, r.name.c_str(), r.scale, r.pga / g,
-                    cell(r.deviation, 6, 3).c_str(), r.rank > 0 ? std::to_string(r.rank).c_str() : "\u2014",
-                    cell(r.Mw, 5, 2).c_str(), cell(r.distance_km, 7, 1).c_str(),
-                    r.distance_kind.empty() ? "\u2014" : r.distance_kind.c_str(),
-                    r.site_class.empty() ? "\u2014" : r.site_class.c_str(), r.integrated_s);
-        const std::string dash = "\u2014";
-        auto or_dash = [&](const std::string& t) { return t.empty() ? dash : t; };
-        o += para(format("    %s, %s / %s%s, %s (+ %s); %s", or_dash(r.event).c_str(), or_dash(r.date).c_str(),
-                         or_dash(r.station).c_str(), r.station_code.empty() ? "" : (" (" + r.station_code + ")").c_str(),
-                         or_dash(r.component).c_str(), or_dash(r.positive_direction).c_str(), or_dash(r.country).c_str()),
-                  6) +
-             "\n";
-        if (r.in_catalogue)
+        o += format("  %-*s %7.3f %8.4f %s %s %s %s %s %s %8.1f\n", rw, r.name.c_str(), r.scale, r.pga / g,
+                    cell(r.deviation, 6, 3).c_str(), pad(r.rank > 0 ? std::to_string(r.rank) : dash, 4, false).c_str(),
+                    cell(r.Mw, 5, 2).c_str(), cell(r.distance_km, 7, 1).c_str(), pad(or_dash(r.distance_kind), 4, true).c_str(),
+                    pad(or_dash(r.site_class), 2, false).c_str(), r.integrated_s);
+        if (r.in_catalogue) {
+          o += para(format("    %s, %s / %s%s, %s (+ %s); %s", or_dash(r.event).c_str(), or_dash(r.date).c_str(),
+                           or_dash(r.station).c_str(), r.station_code.empty() ? "" : (" (" + r.station_code + ")").c_str(),
+                           or_dash(r.component).c_str(), or_dash(r.positive_direction).c_str(),
+                           or_dash(r.country).c_str()),
+                    6) +
+               "\n";
           o += para("    Vs30 " + (std::isfinite(r.vs30_m_s) ? format("%.0f m/s", r.vs30_m_s) : dash) + ", class " +
                         or_dash(r.site_class) +
                         (r.site_class_basis == "stated" ? " (stated by the source)"
@@ -181,6 +187,13 @@ std::string facade_text(const FacadeAssessment& a, TextWidth width) {
                         "; pulse: " + (r.pulse.empty() ? dash + " (not classified)" : r.pulse),
                     6) +
                "\n";
+        } else {
+          // A listed file outside the library: what its header says, if anything.
+          std::string what = r.file;
+          if (!r.event.empty() || !r.station.empty())
+            what += ": " + or_dash(r.event) + " / " + or_dash(r.station) + ", " + or_dash(r.component);
+          o += para("    " + what, 6) + "\n";
+        }
         for (const std::string& f : r.flags) o += para("    FLAG: " + f, 10) + "\n";
       }
       o += para(format("  each record integrated to its last sample, then the free motion until rest, until the "
