@@ -249,6 +249,12 @@ void load_records(FacadeAssessment& a, const DynamicSpec& d, const FacadeOptions
 // its metadata and the selection, shown beside it in every output.
 void flag_records(FacadeAssessment& a) {
   const std::string soil = a.kase.site ? to_string(a.kase.site->conditions.soil) : "";
+  // The classes the selection was asked for: the case's, else the site's soil.
+  std::vector<std::string> asked{soil};
+  if (a.dynamic && a.dynamic->selection && !a.dynamic->selection->site_classes.empty())
+    asked = a.dynamic->selection->site_classes;
+  std::string asked_text;
+  for (const std::string& c : asked) asked_text += (asked_text.empty() ? "" : ", ") + c;
   const double default_cap = SelectionOptions{}.max_scale;
   for (RecordUsed& r : a.records) {
     r.flags.clear();
@@ -256,8 +262,11 @@ void flag_records(FacadeAssessment& a) {
       r.flags.push_back("not in the record library: Mw, distance, site class and near-fault status unknown");
     } else {
       if (!r.near_fault.empty()) r.flags.push_back(r.near_fault);
-      if (!soil.empty() && !r.site_class.empty() && r.site_class != soil && a.selection)
-        r.flags.push_back("site class " + r.site_class + ", not the site's " + soil + " (class relaxed)");
+      if (a.selection && !soil.empty() && !r.site_class.empty() &&
+          std::find(asked.begin(), asked.end(), r.site_class) == asked.end())
+        r.flags.push_back("site class " + r.site_class + ", not the " +
+                          (asked.size() == 1 && asked[0] == soil ? "site's " + soil : "classes asked, " + asked_text) +
+                          " (class relaxed)");
       if (r.site_class_basis == "stated" && !r.vs30_class.empty() && r.vs30_class != r.site_class)
         r.flags.push_back("class " + r.site_class + " as stated by the source; its Vs30 " + fixed3(r.vs30_m_s).substr(0, fixed3(r.vs30_m_s).find('.')) +
                           " m/s would give " + r.vs30_class);
