@@ -33,7 +33,7 @@ set_tests_properties(cli.ties_exit2 PROPERTIES LABELS cli)
 # storey at height (floor motions, a designed roof tie) and vertical flexure (a
 # chain of two blocks, the tied chain model).
 assess_cli_test(ties_dynamic_church ARGS run mechanisms/church-facade-ties.json
-  PASS "dynamic check before and after the tie.*-0\\.480 +7 mean +4 +0 .*NOT satisfied -> satisfied")
+  PASS "dynamic check before and after the tie.*-0\\.480 +7 mean +1 +0 .*NOT satisfied -> satisfied")  # issue 30: the class-C set overturns once before
 assess_cli_test(ties_dynamic_at_height ARGS run tests/cli/ties/upper_storey_tie.json --json
   PASS "\"ties\": {.*\"dynamic\": {[^}]*\"applies\": true")
 assess_cli_test(ties_dynamic_chain ARGS run tests/cli/ties/vertical_flexure_tie.json

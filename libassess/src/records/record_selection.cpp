@@ -345,7 +345,8 @@ std::string fmt(double x, int prec = 3) {
 PeriodRange rocking_period_range(double T_first, double T_last) {
   if (!(T_first > 0.0) || !(T_last >= T_first) || !std::isfinite(T_last))
     throw InputError("rocking_period_range: need 0 < T_first <= T_last (s)");
-  constexpr double lower_factor = 0.5, upper_factor = 1.5, floor_s = 0.1, cap_s = 4.0;
+  constexpr double lower_factor = rocking_range_lower_factor, upper_factor = rocking_range_upper_factor,
+                   floor_s = rocking_range_floor_s, cap_s = rocking_range_cap_s;
   PeriodRange r;
   r.T_min = std::clamp(lower_factor * T_first, floor_s, cap_s);
   r.T_max = std::clamp(upper_factor * T_last, floor_s, cap_s);
@@ -372,6 +373,7 @@ void SelectionOptions::validate() const {
     throw InputError("damping_ratio must be a finite fraction >= 0");
   if (!(max_combinations >= 1.0)) throw InputError("max_combinations must be >= 1");
   if (pool_size < n_records) throw InputError("pool_size must be >= n_records");
+  if (!(max_misfit > 0.0)) throw InputError("max_misfit must be > 0 (-)");
 }
 
 std::string to_string(SelectionResult::Status s) {
@@ -504,6 +506,21 @@ SelectionResult select_records(const std::function<double(double)>& target, cons
     chosen = greedy_search(pool, order, k, res.combinations);
     res.exhaustive = false;
   }
+  // Only the best `pool_size` records were combined and the best set leaves
+  // the band: a greedy search with swaps over every eligible record may find
+  // a set inside it (issue 30: tried before the site class is relaxed); the
+  // better of the two by the same score is kept.
+  if (!res.exhaustive && order.size() < eligible.size() && (chosen.empty() || pool.score(chosen).violation > 0.0)) {
+    std::vector<std::size_t> all(eligible.size());
+    for (std::size_t c = 0; c < all.size(); ++c) all[c] = c;
+    double more = 0.0;
+    std::vector<std::size_t> g = greedy_search(pool, all, k, more);
+    res.combinations += more;
+    if (!g.empty() && (chosen.empty() || pool.score(g).better_than(pool.score(chosen)))) {
+      chosen = std::move(g);
+      res.pool = eligible.size();
+    }
+  }
   if (chosen.empty()) {
     res.status = SelectionResult::Status::FewerThanRequested;
     res.message = "no set of " + std::to_string(k) + " of the " + std::to_string(eligible.size()) +
@@ -515,7 +532,8 @@ SelectionResult select_records(const std::function<double(double)>& target, cons
   res.mean_psa.assign(nT, 0.0);
   for (std::size_t c : chosen) {
     const std::size_t i = eligible[c];
-    res.records.push_back({i, candidates[i].name, scale[c], scale[c] * candidates[i].pga, dev[c], rank_of[c], psa[c]});
+    res.records.push_back({i, candidates[i].name, scale[c], scale[c] * candidates[i].pga, dev[c], rank_of[c],
+                           dev[c] > opts.max_misfit, psa[c]});
     for (std::size_t j = 0; j < nT; ++j) res.mean_psa[j] += psa[c][j] / double(chosen.size());
     res.mean_scale += scale[c] / double(chosen.size());
     res.max_scaled_pga = std::max(res.max_scaled_pga, scale[c] * candidates[i].pga);
@@ -559,6 +577,27 @@ bool in_list(const std::vector<std::string>& list, const std::string& v) {
 
 }  // namespace
 
+std::vector<std::vector<std::string>> site_class_ladder(const std::vector<std::string>& classes, bool relax) {
+  std::vector<std::vector<std::string>> steps;
+  if (classes.empty()) return {{}};
+  steps.push_back(classes);
+  if (!relax) return steps;
+  std::vector<std::string> wide = classes;
+  for (const std::string& c : classes) {
+    const int r = class_rank(c);
+    if (c == "E") wide.push_back("C"), wide.push_back("D");
+    if (r > 0) wide.push_back(std::string(1, "ABCD"[r - 1]));
+    if (r >= 0 && r < 3) wide.push_back(std::string(1, "ABCD"[r + 1]));
+  }
+  std::sort(wide.begin(), wide.end());
+  wide.erase(std::unique(wide.begin(), wide.end()), wide.end());
+  std::vector<std::string> first = classes;
+  std::sort(first.begin(), first.end());
+  if (wide != first) steps.push_back(wide);
+  steps.push_back({});
+  return steps;
+}
+
 CandidateInfo candidate_info(const CatalogueEntry& e) {
   CandidateInfo c;
   c.event = e.event + " " + e.date;
@@ -591,25 +630,7 @@ CatalogueFilterResult filter_catalogue(const std::vector<CatalogueEntry>& entrie
     else out.rejected.push_back({i, e.id, 0.0, why});
   }
   // Site class, relaxed in steps while too few remain.
-  std::vector<std::vector<std::string>> steps;
-  if (!f.site_classes.empty()) {
-    steps.push_back(f.site_classes);
-    if (f.relax_site_class) {
-      std::vector<std::string> wide = f.site_classes;
-      for (const std::string& c : f.site_classes) {
-        const int r = class_rank(c);
-        if (c == "E") wide.push_back("C"), wide.push_back("D");
-        if (r > 0) wide.push_back(std::string(1, "ABCD"[r - 1]));
-        if (r >= 0 && r < 3) wide.push_back(std::string(1, "ABCD"[r + 1]));
-      }
-      std::sort(wide.begin(), wide.end());
-      wide.erase(std::unique(wide.begin(), wide.end()), wide.end());
-      steps.push_back(wide);
-      steps.push_back({});
-    }
-  } else {
-    steps.push_back({});
-  }
+  const std::vector<std::vector<std::string>> steps = site_class_ladder(f.site_classes, f.relax_site_class);
   std::vector<std::size_t> kept;
   for (std::size_t s = 0; s < steps.size(); ++s) {
     kept.clear();

@@ -149,22 +149,69 @@ std::string facade_text(const FacadeAssessment& a, TextWidth width) {
                   10) +
              "\n";
         for (const std::string& w : a.selection_warnings) o += para("  warning: " + w, 11) + "\n";
+        o += para("  range: " + a.selection_range_note, 4) + "\n";
+        if (!a.selection_shared_note.empty()) o += para("  candidates: " + a.selection_shared_note, 4) + "\n";
+        for (const std::string& st : a.selection_steps) o += para("  site classes tried: " + st, 4) + "\n";
+        o += para(format("  rules: site class first (relaxed only without a compatible set); near-fault and pulse-like "
+                         "records %s (%zu left out; distance < %.0f km or pulse-like); misfit flagged above %.2f; "
+                         "candidates' spectra %s",
+                         a.selection_include_near_fault ? "admitted" : "left out", a.selection_near_fault_excluded,
+                         a.selection_near_fault_km, a.selection_max_misfit,
+                         a.selection_spectra == "precomputed" ? "precomputed (spectra.bin, log-log interpolation)"
+                                                              : "integrated"),
+                  4) +
+             "\n";
       }
       if (a.compatibility.computed && !a.selection) o += "records listed in the case: " + a.compatibility.message + "\n";
       for (const std::string& f : a.record_failures) o += para("  record skipped: " + f, 4) + "\n";
       const int rw = wide ? 34 : 32;  // record column
-      // Why each record was chosen: scale, scaled PGA, deviation from the target, rank, Mw, site class,
-      // distance and its kind, seconds integrated; the event/station line below (120 columns).
-      o += format("  %-*s %7s %8s %6s %4s %-5s %2s %7s %4s %8s\n", rw, "record", "scale", "PGA (g)", "dev", "rank", "Mw",
-                  "cl", "R (km)", "kind", "used (s)");
+      // Each record: scale, scaled PGA, misfit to the target and its rank, Mw, distance and its kind,
+      // site class, seconds integrated; below it the event, date, station, country, Vs30 with the class
+      // basis, the usable period and the flags (120 columns). "—" where the catalogue says nothing.
+      // Padding by display width (a dash is one column, three bytes).
+      auto pad = [](const std::string& t, int width, bool left) {
+        int cols = 0;
+        for (unsigned char ch : t) cols += (ch & 0xC0) != 0x80;
+        const std::string fill(std::size_t(std::max(0, width - cols)), ' ');
+        return left ? t + fill : fill + t;
+      };
+      const std::string dash = "\u2014";
+      auto cell = [&](double v, int width, int prec) {
+        return pad(std::isfinite(v) ? format("%.*f", prec, v) : dash, width, false);
+      };
+      auto or_dash = [&](const std::string& t) { return t.empty() ? dash : t; };
+      o += format("  %-*s %7s %8s %6s %4s %5s %7s %-4s %2s %8s\n", rw, "record", "scale", "PGA (g)", "misfit", "rank",
+                  "Mw", "R (km)", "kind", "cl", "used (s)");
       for (const RecordUsed& r : a.records) {
-        o += format("  %-*s %7.3f %8.4f %6.3f %4d %5.2f %2s %7.1f %4s %8.1f\n", rw, r.name.c_str(), r.scale, r.pga / g,
-                    r.deviation, r.rank, r.Mw, r.site_class.c_str(), r.distance_km, r.distance_kind.c_str(),
-                    r.integrated_s);
-        o += para(format("    %s / %s, %s (+ %s)", r.event.c_str(), r.station.c_str(), r.component.c_str(),
-                         r.positive_direction.c_str()),
-                  6) +
-             "\n";
+        o += format("  %-*s %7.3f %8.4f %s %s %s %s %s %s %8.1f\n", rw, r.name.c_str(), r.scale, r.pga / g,
+                    cell(r.deviation, 6, 3).c_str(), pad(r.rank > 0 ? std::to_string(r.rank) : dash, 4, false).c_str(),
+                    cell(r.Mw, 5, 2).c_str(), cell(r.distance_km, 7, 1).c_str(), pad(or_dash(r.distance_kind), 4, true).c_str(),
+                    pad(or_dash(r.site_class), 2, false).c_str(), r.integrated_s);
+        if (r.in_catalogue) {
+          o += para(format("    %s, %s / %s%s, %s (+ %s); %s", or_dash(r.event).c_str(), or_dash(r.date).c_str(),
+                           or_dash(r.station).c_str(), r.station_code.empty() ? "" : (" (" + r.station_code + ")").c_str(),
+                           or_dash(r.component).c_str(), or_dash(r.positive_direction).c_str(),
+                           or_dash(r.country).c_str()),
+                    6) +
+               "\n";
+          o += para("    Vs30 " + (std::isfinite(r.vs30_m_s) ? format("%.0f m/s", r.vs30_m_s) : dash) + ", class " +
+                        or_dash(r.site_class) +
+                        (r.site_class_basis == "stated" ? " (stated by the source)"
+                         : r.site_class_basis == "Vs30" ? " (from Vs30, NTC 2018 Tab. 3.2.II)"
+                                                        : "") +
+                        "; usable to " + (std::isfinite(r.usable_period_s) ? format("%.2f s", r.usable_period_s)
+                                                                           : dash + " (not given by the source)") +
+                        "; pulse: " + (r.pulse.empty() ? dash + " (not classified)" : r.pulse),
+                    6) +
+               "\n";
+        } else {
+          // A listed file outside the library: what its header says, if anything.
+          std::string what = r.file;
+          if (!r.event.empty() || !r.station.empty())
+            what += ": " + or_dash(r.event) + " / " + or_dash(r.station) + ", " + or_dash(r.component);
+          o += para("    " + what, 6) + "\n";
+        }
+        for (const std::string& f : r.flags) o += para("    FLAG: " + f, 10) + "\n";
       }
       o += para(format("  each record integrated to its last sample, then the free motion until rest, until the "
                        "energy after an impact can no longer reach the peak rotation, or for at most %.0f s "
@@ -343,7 +390,15 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
                         {"distance_km", std::isfinite(r.distance_km) ? nlohmann::json(r.distance_km) : nlohmann::json(nullptr)},
                         {"distance_kind", r.distance_kind}, {"site_class", r.site_class},
                         {"deviation", std::isfinite(r.deviation) ? nlohmann::json(r.deviation) : nlohmann::json(nullptr)},
-                        {"rank", r.rank}, {"duration_s", r.duration_s}, {"integrated_s", r.integrated_s}});
+                        {"rank", r.rank}, {"duration_s", r.duration_s}, {"integrated_s", r.integrated_s},
+                        {"in_catalogue", r.in_catalogue}, {"date", r.date}, {"country", r.country},
+                        {"station_code", r.station_code},
+                        {"vs30_m_s", std::isfinite(r.vs30_m_s) ? nlohmann::json(r.vs30_m_s) : nlohmann::json(nullptr)},
+                        {"site_class_basis", r.site_class_basis}, {"vs30_class", r.vs30_class},
+                        {"usable_period_s", std::isfinite(r.usable_period_s) ? nlohmann::json(r.usable_period_s)
+                                                                             : nlohmann::json(nullptr)},
+                        {"pulse", r.pulse}, {"near_fault", r.near_fault}, {"misfit_flag", r.misfit_flag},
+                        {"flags", r.flags}});
       d["records"] = recs;
       d["record_failures"] = a.record_failures;
       if (a.compatibility.computed)
@@ -368,7 +423,17 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
                           {"eligible", a.selection->eligible},
                           {"combinations", a.selection->combinations},
                           {"site_classes", a.selection_site_classes},
+                          {"site_class_steps", a.selection_steps},
                           {"warnings", a.selection_warnings},
+                          {"range_note", a.selection_range_note},
+                          {"shared_note", a.selection_shared_note},
+                          {"spectra", a.selection_spectra},
+                          {"max_scale", a.selection_max_scale},
+                          {"max_mean_scale", a.selection_max_mean_scale},
+                          {"max_misfit", a.selection_max_misfit},
+                          {"include_near_fault", a.selection_include_near_fault},
+                          {"near_fault_km", a.selection_near_fault_km},
+                          {"near_fault_excluded", a.selection_near_fault_excluded},
                           {"mean_scale", a.selection->mean_scale},
                           {"max_scaled_pga_g", a.selection->max_scaled_pga / g},
                           {"max_pga_ratio", a.selection_max_pga_ratio},

@@ -320,17 +320,25 @@ const std::map<std::string, Entry>& catalogue() {
       {"dyn.event_station", {"evento / stazione, componente", "event / station, component"}},
       {"dyn.distance", {"R (km)", "R (km)"}},
       {"dyn.site_class", {"cat. suolo", "site class"}},
-      {"dyn.deviation", {"scarto", "deviation"}},
+      {"dyn.deviation", {"scarto", "misfit"}},
+      {"dyn.class_stated", {"dichiarata dalla fonte", "stated by the source"}},
+      {"dyn.usable", {"periodo utile (s)", "usable to (s)"}},
+      {"dyn.flags", {"Segnalazioni sugli accelerogrammi e sull'intervallo di periodi (frasi del programma, in inglese "
+                     "come nel terminale):",
+                     "Flags on the records and the period range:"}},
       {"dyn.rank", {"posizione", "rank"}},
       {"dyn.integrated", {"integrato (s)", "integrated (s)"}},
       {"dyn.records_cap",
-       {"Accelerogrammi usati: magnitudo Mw, distanza R (Rjb, Rrup o Repi), categoria di sottosuolo della stazione "
-        "(NTC 2018 Tab. 3.2.II da Vs30), fattore di scala, PGA scalata, scarto quadratico medio individuale f·S/Se − 1 "
-        "sull'intervallo di periodi e sua posizione fra gli accelerogrammi ammissibili, durata integrata (l'intero "
-        "accelerogramma).",
-        "Records used: magnitude Mw, distance R (Rjb, Rrup or Repi), the station's site class (NTC 2018 Tab. 3.2.II "
-        "from Vs30), scale factor, scaled PGA, individual RMS deviation f·S/Se − 1 over the period range and its rank "
-        "among the eligible records, duration integrated (the whole record)."}},
+       {"Accelerogrammi usati: evento, data, stazione, componente, paese; magnitudo Mw, distanza R (Rjb, Rrup o "
+        "Repi), categoria di sottosuolo della stazione (dichiarata dalla fonte, altrimenti NTC 2018 Tab. 3.2.II da "
+        "Vs30, in m/s), periodo utile 1/f_min dato dalla fonte, fattore di scala, PGA scalata, scarto quadratico medio "
+        "individuale f·S/Se − 1 sull'intervallo di periodi e sua posizione fra gli accelerogrammi ammissibili, durata "
+        "integrata (l'intero accelerogramma); — dove il catalogo non dice nulla.",
+        "Records used: event, date, station, component, country; magnitude Mw, distance R (Rjb, Rrup or Repi), the "
+        "station's site class (stated by the source, else NTC 2018 Tab. 3.2.II from Vs30, in m/s), usable period "
+        "1/f_low given by the source, scale factor, scaled PGA, individual RMS misfit f·S/Se − 1 over the period range "
+        "and its rank among the eligible records, duration integrated (the whole record); — where the catalogue says "
+        "nothing."}},
       {"dyn.selection_warning", {"Avvertenza sulla selezione", "Selection caveat"}},
       {"dyn.ends", {"Fine delle analisi", "End of the analyses"}},
       {"end.overturned", {"ribaltamento", "overturning"}},
@@ -1010,6 +1018,14 @@ const std::map<std::string, Entry>& catalogue() {
         "Indices for listed buildings"}},
       {"reading.heritage.text", {"I_S,SLV e f_a,SLV secondo le Linee guida del D.P.C.M. 9/2/2011; i numeri di paragrafo sono citati a memoria.",
         "I_S,SLV and f_a,SLV by the D.P.C.M. 9/2/2011 guidelines; the section numbers are quoted from memory."}},
+      {"dyn.flags_cap", {"In rosso il nome di un accelerogramma con segnalazioni, elencate sotto il nome (vicinanza alla faglia o impulso, scarto oltre il limite, categoria diversa da quella del sito, fattore di scala oltre il limite, metadati mancanti).",
+        "In red the name of a record with flags, listed under its name (near-fault or pulse-like, misfit above the limit, class other than the site's, scale above the cap, no metadata)."}},
+      {"dyn.range_why", {"Intervallo di periodi",
+        "Period range"}},
+      {"dyn.shared_why", {"Selezione comune ai cinematismi",
+        "Selection shared by the candidates"}},
+      {"dyn.classes_tried", {"Categorie di sottosuolo provate",
+        "Site classes tried"}},
       // Units in tables.
       {"unit.kN", {"kN", "kN"}},
   };
@@ -1023,6 +1039,44 @@ const std::vector<std::pair<std::string, std::string>>& phrases_it() {
   static const std::vector<std::pair<std::string, std::string>> p{
       // Site description (hazard/site.cpp).
       {" (municipal seat)", " (sede municipale)"},
+      // Record flags and the period range's reasons (assessment/facade_assessment.cpp, issue 30).
+      {"not in the record library: Mw, distance, site class and near-fault status unknown", "non è nella libreria degli accelerogrammi: Mw, distanza, categoria di sottosuolo e vicinanza alla faglia sconosciute"},
+      {"pulse-like (source classification", "con impulso (classificazione della fonte"},
+      {"near-fault: ", "vicino alla faglia: "},
+      {" km < ", " km < "},
+      {"site class ", "categoria di sottosuolo "},
+      {", not the site's ", ", non quella del sito "},
+      {", not the classes asked, ", ", non quelle richieste, "},
+      {" (class relaxed)", " (categoria estesa)"},
+      {" as stated by the source; its Vs30 ", " dichiarata dalla fonte; la sua Vs30 "},
+      {" m/s would give ", " m/s darebbe "},
+      {"misfit ", "scarto "},
+      {" (rank ", " (posizione "},
+      {"scale ", "fattore di scala "},
+      {" above ", " oltre "},
+      {", the default cap", ", il limite predefinito"},
+      {" (raised in the case: max_scale ", " (aumentato nel caso: fattore massimo "},
+      {" (a listed scale)", " (fattore indicato nel caso)"},
+      {"the union of the ranges of the candidates analysed dynamically, ", "l'unione degli intervalli dei cinematismi analizzati dinamicamente, "},
+      {" s (record-selection.md §2.7); this candidate's own: ", " s; quello proprio di questo cinematismo: "},
+      {"given in the case (/dynamic/select/period_range_s: ", "assegnato nel caso ("},
+      {" x min(Ts, T_SLV) = ", " × min(Ts, T_SLV) = "},
+      {" x max(Ts, T_SLV) = ", " × max(Ts, T_SLV) = "},
+      {" s to ", " s a "},
+      {", raised to ", ", portato a "},
+      {", cut at ", ", limitato a "},
+      {" s: beyond it the records' usable period is not known for most of the library (the high-pass filter of analog-era records leaves little reliable content at longer periods)", " s: oltre, il periodo utile degli accelerogrammi non è noto per la maggior parte della libreria (il filtro passa-alto delle registrazioni analogiche lascia poco contenuto affidabile ai periodi lunghi)"},
+      {" lie beyond its end ", " sono oltre il suo estremo "},
+      {" lies beyond its end ", " è oltre il suo estremo "},
+      {" s: the set's mean spectrum is not checked against the target there", " s: lì lo spettro medio dell'insieme non è confrontato con lo spettro obiettivo"},
+      {"one selection for the ", "una sola selezione per i "},
+      {" candidates analysed dynamically (", " cinematismi analizzati dinamicamente ("},
+      {") over the union of their ranges, ", ") sull'unione dei loro intervalli, "},
+      {"the union of the ranges of the ", "l'unione degli intervalli dei "},
+      {") gives no compatible set (", ") non dà un insieme compatibile ("},
+      {"): each candidate selected over its own range", "): ogni cinematismo ha la propria selezione"},
+      {" candidates, ", " candidati, "},
+      {"no selection", "nessuna selezione"},
       // Candidate labels and parameters (kinematic/mechanism_catalogue.cpp).
       {"middle hinge at ", "cerniera intermedia a "},
       {" m above the base (minimum of alpha0)", " m dalla base (minimo di α0)"},
@@ -1097,6 +1151,12 @@ const std::vector<std::pair<std::string, std::string>>& phrases_it() {
        " usata: le NTC 2018 §3.2.3.6 chiedono accelerogrammi coerenti con la sismogenesi del sito; indicare le "
        "finestre dalla disaggregazione della pericolosità del sito"},
       {"site class relaxed from ", "categoria di sottosuolo estesa da "},
+      // The site-class ladder (records/library_selection.cpp, issue 30).
+      {": class ", ": la categoria "},
+      {": classes ", ": le categorie "},
+      {" alone (", " da sola ("},
+      {" candidates) gives no compatible set of ", " candidati) non dà un insieme compatibile di "},
+      {"no candidate of class ", "nessun candidato di categoria "},
       {": fewer than ", ": meno di "},
       {" candidates of class ", " candidati di categoria "},
       {" pass the other filters", " superano gli altri filtri"},

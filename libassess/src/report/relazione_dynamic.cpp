@@ -106,15 +106,32 @@ void add_model(Ctx& c, const FacadeAssessment& x) {
   }
 }
 
+// The records (issues 24, 30): what each is (event, date, station, country,
+// magnitude, distance and its kind, site class with its basis, usable
+// period), why it was chosen (scale, misfit and rank) and its flags; then the
+// selection's caveats, the period range and why, the compatibility, and how
+// the analyses ended. "—" where the catalogue says nothing.
 void add_records(Ctx& c, const FacadeAssessment& x) {
-  c.d.add_heading(c.t("dyn.records"), 4, false);
   std::vector<std::vector<Cell>> rows;
+  auto or_dash = [](const std::string& t) { return t.empty() ? std::string("—") : t; };
   for (const RecordUsed& r : x.records) {
     Cell dist = c.num(r.distance_km, 1);
     if (std::isfinite(r.distance_km)) dist.text += " " + r.distance_kind;
-    rows.push_back({Cell(r.name), Cell(r.event + " / " + r.station + ", " + r.component), c.num(r.Mw, 2), dist,
-                    Cell(r.site_class.empty() ? "—" : r.site_class), c.num(r.scale, 3), c.num(r.pga / g, 4),
-                    c.num(r.deviation, 3), r.rank > 0 ? c.num(r.rank, 0) : c.num(std::nan(""), 0),
+    std::string cls = or_dash(r.site_class);
+    if (r.site_class_basis == "Vs30") cls += " (Vs30 " + c.n(r.vs30_m_s, 0) + ")";
+    else if (r.site_class_basis == "stated")
+      cls += " (" + c.t("dyn.class_stated") + (std::isfinite(r.vs30_m_s) ? "; Vs30 " + c.n(r.vs30_m_s, 0) : "") + ")";
+    const std::string what =
+        r.in_catalogue ? or_dash(r.event) + ", " + or_dash(r.date) + " / " + or_dash(r.station) + ", " +
+                             or_dash(r.component) + " — " + or_dash(r.country)
+        : r.event.empty() && r.station.empty() ? std::string("—")
+                                               : or_dash(r.event) + " / " + or_dash(r.station) + ", " + or_dash(r.component);
+    std::string flags;
+    for (const std::string& f : r.flags) flags += (flags.empty() ? "" : "; ") + c.loc(f);
+    Cell name(r.name, flags);
+    if (!r.flags.empty()) name.tone = Tone::fail;
+    rows.push_back({name, Cell(what), c.num(r.Mw, 2), dist, Cell(cls), c.num(r.usable_period_s, 2), c.num(r.scale, 3),
+                    c.num(r.pga / g, 4), c.num(r.deviation, 3), r.rank > 0 ? c.num(r.rank, 0) : c.num(std::nan(""), 0),
                     c.num(r.integrated_s, 1)});
   }
   auto h = [](const std::string& t) {
@@ -123,14 +140,21 @@ void add_records(Ctx& c, const FacadeAssessment& x) {
     return y;
   };
   c.d.add_cell_table({Cell(c.t("dyn.record")), Cell(c.t("dyn.event_station")), h("Mw"), h(c.t("dyn.distance")),
-                      Cell(c.t("dyn.site_class")), h(c.t("dyn.scale")), h("PGA (g)"), h(c.t("dyn.deviation")),
-                      h(c.t("dyn.rank")), h(c.t("dyn.integrated"))},
-                     rows, c.t("dyn.records_cap"));
+                      Cell(c.t("dyn.site_class")), h(c.t("dyn.usable")), h(c.t("dyn.scale")), h("PGA (g)"),
+                      h(c.t("dyn.deviation")), h(c.t("dyn.rank")), h(c.t("dyn.integrated"))},
+                     rows, c.t("dyn.records_cap") + " " + c.t("dyn.flags_cap"));
   for (const std::string& w : x.selection_warnings) c.d.add_paragraph(c.t("dyn.selection_warning") + ": " + c.loc(w));
   for (const std::string& f : x.record_failures) c.d.add_paragraph(c.t("dyn.skipped") + ": " + f);
-  if (x.selection)
+  if (x.selection) {
     c.d.add_paragraph(msgf(c.L, "dyn.selection", c.n(x.selection_range.T_min, 2), c.n(x.selection_range.T_max, 2)) +
                       c.loc(x.selection->message));
+    std::vector<Inline> why;
+    if (!x.selection_range_note.empty()) why.push_back({Span{c.t("dyn.range_why") + ": ", true}, Span{c.loc(x.selection_range_note)}});
+    if (!x.selection_shared_note.empty())
+      why.push_back({Span{c.t("dyn.shared_why") + ": ", true}, Span{c.loc(x.selection_shared_note)}});
+    for (const std::string& st : x.selection_steps) why.push_back({Span{c.t("dyn.classes_tried") + ": ", true}, Span{c.loc(st)}});
+    if (!why.empty()) c.d.add_list(why);
+  }
   if (x.compatibility.computed) c.d.add_paragraph(c.t("dyn.compat_msg") + ": " + c.loc(x.compatibility.message) + ".");
   std::map<std::string, int> ends;
   for (const DynamicRun& r : x.runs) ++ends[to_string(r.result.end)];

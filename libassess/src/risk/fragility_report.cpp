@@ -3,6 +3,8 @@
 // except the curves' values on the plot grids).
 #include "assess/risk/fragility_report.hpp"
 
+#include "assess/support/content_hash.hpp"
+
 #include "assess/report/html_report.hpp"
 #include "assess/report/plot.hpp"
 #include "assess/risk/collapse_rate.hpp"
@@ -74,20 +76,13 @@ json curve_json(const FragilityStudy& st, const FragilityCurve& c) {
 
 // FNV-1a 64-bit hash of a file's bytes, as 16 hex digits ("" if unreadable):
 // ties a summary to the case file's content, so that a report does not show
-// the fragility of a case edited since (Fowler, Noll, Vo; offset basis
-// 14695981039346656037, prime 1099511628211).
+// the fragility of a case edited since (support/content_hash.hpp).
 std::string file_fnv1a64(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return "";
-  std::uint64_t h = 14695981039346656037ull;
-  char c;
-  while (in.get(c)) {
-    h ^= static_cast<unsigned char>(c);
-    h *= 1099511628211ull;
+  try {
+    return hash_hex(file_content_hash(path));
+  } catch (const InputError&) {
+    return "";
   }
-  char buf[20];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
 }
 
 PlotSeries series(std::string name, PlotSeries::Style style) {

@@ -6,9 +6,11 @@ or fails a kinematic check.
 A two-storey facade (hinge level searched, both levels fail their kinematic
 checks at the site) with a dynamic section and automatic record selection:
   1. each other candidate's dynamic results equal those of a run of the same
-     case with that hinge level given ("hinge_level": i), the way an engineer
-     would run it alone: same records and scales, same d* demand, D/C and
-     verdict per restitution value (relative tolerance 1e-12, or equal);
+     case with that hinge level given ("hinge_level": i) and the period range
+     the candidates share (issue 32: one selection over the union of their
+     ranges, docs/theory/record-selection.md §2.7), the way an engineer would
+     run it alone: same records and scales, same d* demand, D/C and verdict per
+     restitution value (relative tolerance 1e-12, or equal);
   2. the dynamic verdict of the facade is the worst over every candidate
      analysed: the NTC 2018 dynamic method's largest D/C is the largest over the
      governing and the other candidates' summaries, its failing count theirs;
@@ -85,6 +87,12 @@ for o in others:
     i = o["candidate_index"]
     alone_case = copy.deepcopy(CASE)
     alone_case["mechanism"]["hinge_level"] = i
+    # The candidates share one selection over the union of their ranges (issue 32).
+    sel, gsel = o["dynamic"]["selection"], dyn["selection"]
+    check([sel["T_min"], sel["T_max"]] == [gsel["T_min"], gsel["T_max"]], f"{o['candidate']}: the shared range")
+    check(gsel["shared_note"].startswith("one selection for the 2 candidates analysed dynamically"),
+          f"shared note: {gsel['shared_note']}")
+    alone_case["dynamic"]["select"]["period_range_s"] = [sel["T_min"], sel["T_max"]]
     alone = run(alone_case, f"alone_{i}")
     check(alone["kinematic"]["candidates"][0]["label"] == o["candidate"],
           f"candidate label {o['candidate']} vs {alone['kinematic']['candidates'][0]['label']}")

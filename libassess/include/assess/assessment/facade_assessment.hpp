@@ -33,12 +33,29 @@ struct RecordUsed {
   double scale = 1.0;    ///< scale factor applied (-)
   double pga = 0.0;      ///< PGA of the scaled record (m/s^2)
   std::string json_path; ///< where it was listed ("" if selected)
-  // Why it was chosen (selected records; NaN / "" when unknown or listed).
+  // What the record is (the catalogue's metadata: selected records, and listed
+  // records whose file is in the catalogue; NaN / "" when unknown).
+  bool in_catalogue = false;     ///< metadata below come from the record library's catalogue
+  std::string date, country, station_code;
   double Mw = std::numeric_limits<double>::quiet_NaN();
   double distance_km = std::numeric_limits<double>::quiet_NaN();
   std::string distance_kind, site_class, positive_direction;
-  double deviation = std::numeric_limits<double>::quiet_NaN();  ///< individual RMS of f S/Se - 1 over the range (-)
-  int rank = 0;                  ///< rank of that deviation among the eligible records (1 = best)
+  std::string site_class_basis;  ///< "stated" (by the source) or "Vs30" (NTC 2018 Tab. 3.2.II bands)
+  std::string vs30_class;        ///< the class Vs30 implies (may differ from a stated class)
+  double vs30_m_s = std::numeric_limits<double>::quiet_NaN();
+  /// Longest usable period 1/f_low (s) where the source gives f_low; NaN unknown.
+  double usable_period_s = std::numeric_limits<double>::quiet_NaN();
+  std::string pulse;             ///< "pulse-like", "non-pulse" or "" (not classified)
+  /// Why the record is near-fault or pulse-like ("" if its metadata do not say so).
+  std::string near_fault;
+  // Why it was chosen (selected records; NaN when listed).
+  double deviation = std::numeric_limits<double>::quiet_NaN();  ///< individual misfit: RMS of f S/Se - 1 over the range (-)
+  int rank = 0;                  ///< rank of that deviation among the eligible records (1 = best; 0 listed)
+  bool misfit_flag = false;      ///< deviation above the selection's max_misfit
+  /// The caveats of this record, computed (record-selection.md §2.8): near-fault
+  /// or pulse-like, misfit above the limit, class other than the site's, a
+  /// stated class its Vs30 contradicts, scale above the default cap, no metadata.
+  std::vector<std::string> flags;
   double duration_s = 0.0;       ///< length of the record file (s)
   double integrated_s = 0.0;     ///< excitation integrated (s): the whole motion at the mechanism's base
 };
@@ -145,6 +162,19 @@ struct FacadeAssessment {
   std::vector<std::string> selection_site_classes;  ///< classes accepted in the end (empty = any)
   double selection_max_pga_ratio = 0.0;         ///< the PGA guard used (-)
   double selection_max_scale = 0.0, selection_max_mean_scale = 0.0;  ///< scale limits used (-)
+  double selection_max_misfit = 0.0;            ///< misfit above which a record is flagged (-)
+  bool selection_include_near_fault = false;    ///< near-fault / pulse-like records admitted
+  double selection_near_fault_km = 0.0;         ///< distance threshold of the near-fault flag (km)
+  std::size_t selection_near_fault_excluded = 0;  ///< near-fault / pulse-like records left out
+  /// The site-class ladder tried: classes, candidates, outcome (the last is used).
+  std::vector<std::string> selection_steps;
+  std::string selection_spectra;   ///< "precomputed" (interpolated) or "integrated" candidates' spectra
+  /// Why the period range is what it is (computed: the mechanism periods, the
+  /// factors, the cap, and the limit-state periods it does not reach).
+  std::string selection_range_note;
+  /// Several candidates analysed dynamically (issue 24): how their selection
+  /// was shared (one set over the union of their ranges, or each its own).
+  std::string selection_shared_note;
   double free_tail_s = 0.0;   ///< cap on the free motion after each record (s; dynamics/analysis_end.hpp)
   std::vector<std::string> record_failures;  ///< "<path>: <message>" of records skipped (--keep-going)
   std::vector<DynamicRun> runs;
