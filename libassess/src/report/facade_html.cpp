@@ -127,7 +127,11 @@ void add_data(const Ctx& c) {
   };
   const Chain& chain = a.kase.mechanism.candidates.at(a.kinematic.governing).chain;
   row(c.t("data.mechanism"), mechanism_name(c.L, a.kase.mechanism.type), "", c.t("data.case"));
-  for (std::size_t i = 0; i < chain.blocks().size(); ++i) {
+  // Issue 33: a reduced chain (plan, projection) shows the mechanism's own geometry, not its blocks' extents.
+  for (const MechanismQuantity& q : a.kase.mechanism.data)
+    row(c.loc(q.label), q.unit.empty() ? "" : format("%.4g", q.value), q.unit == "-" ? "-" : q.unit,
+        q.source == "input" ? c.t("data.case") : c.loc(q.source));
+  for (std::size_t i = 0; i < chain.blocks().size() && a.kase.mechanism.data.empty(); ++i) {
     const Block& b = chain.blocks()[i];
     double x0 = 1e300, x1 = -1e300, z0 = 1e300, z1 = -1e300;
     for (const Eigen::Vector2d& v : b.polygon) {
@@ -306,6 +310,26 @@ void add_site(const Ctx& c) {
   c.h.add_svg(render_svg(p), c.t("site.fig"), "fig-spectra");
 }
 
+// Issue 33: the quantities of the governing candidate's derivation (arch
+// thrust, roof thrust, side walls' friction, alpha0 with and without a term,
+// the axis of a corner) and the bound on its displacement capacity.
+void add_derivation(const Ctx& c) {
+  const MechanismCandidate& m = c.a.kase.mechanism.candidates.at(c.a.kinematic.governing);
+  if (!m.quantities.empty()) {
+    c.h.add_heading(c.t("mech.derivation"), 3);
+    std::vector<std::vector<HtmlCell>> rows;
+    for (const MechanismQuantity& q : m.quantities)
+      rows.push_back({c.loc(q.label), HtmlCell(q.unit.empty() ? "" : format("%.4g", q.value), "num"),
+                      q.unit == "-" ? "-" : q.unit, q.source == "input" ? c.t("data.case") : c.loc(q.source)});
+    c.h.add_cell_table({c.t("kin.quantity"), HtmlCell(c.t("kin.value"), "num"), c.t("kin.unit"), c.t("data.source")},
+                       rows, c.t("mech.derivation_cap"));
+  }
+  const KinematicResult& k = c.k();
+  if (std::isfinite(k.d0_star_bound) && k.d0_star_bound < k.d0_star)
+    c.h.add_paragraph(msgf(c.L, "mech.bound", format("%.3f", k.d0_star), format("%.3f", k.d0_star_bound),
+                           c.loc(m.rotation_bound_reason)));
+}
+
 void add_mechanism(const Ctx& c) {
   const FacadeAssessment& a = c.a;
   c.h.add_heading(c.t("mech.heading"));
@@ -313,7 +337,8 @@ void add_mechanism(const Ctx& c) {
   c.h.add_paragraph(c.t("mech.type") + ": " + mechanism_name(c.L, a.kase.mechanism.type) + "; " +
                     c.t("mech.governing") + ": " + c.loc(c.gc().label) + " (Z = " + fixed(c.gc().Z, 2) + " m).");
   const Chain& chain = a.kase.mechanism.candidates.at(gi).chain;
-  c.h.add_svg(mechanism_svg(chain, c.k(), c.L), c.t("mech.fig"), "fig-mechanism");
+  c.h.add_svg(mechanism_svg(chain, c.k(), c.L), c.t(chain.plan() ? "mech.fig_plan" : "mech.fig"), "fig-mechanism");
+  add_derivation(c);
 
   // Virtual-work table (C8A.4.1 / C8.7.1.1).
   c.h.add_heading(c.t("mech.vw"), 3);
@@ -333,7 +358,7 @@ void add_mechanism(const Ctx& c) {
                  HtmlCell("W, F (kN)", "num"), HtmlCell("δx (m)", "num"), HtmlCell("δz (m)", "num"),
                  HtmlCell("W·δx (kN m)", "num"), HtmlCell("W·δx² (kN m²)", "num"),
                  HtmlCell(c.t("mech.work") + " (kN m)", "num")},
-                rows, c.t("mech.vw_cap"));
+                rows, c.t(chain.plan() ? "mech.vw_cap_plan" : "mech.vw_cap"));
 
   // Candidates (the governing one of each code: the largest D/C over its checks, Circ. 2019 C8.7.1).
   if (a.kinematic.candidates.size() > 1) {
