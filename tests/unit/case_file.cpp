@@ -223,9 +223,9 @@ TEST_CASE("gable_overturning: 24 slices by default, ridge loads in kN") {
   CHECK(parse(with_mechanism(m)).mechanism.candidates[0].chain.blocks().size() == 10);
 }
 
-TEST_CASE("corner_overturning: beta searched by default, kN to SI, the ties' resultant along the bisector") {
+TEST_CASE("corner_overturning: beta searched by default, kN to SI, the ties' components normal to the axis") {
   json m = json::parse(R"({ "type": "corner_overturning", "height": 7.0, "thickness": 0.5,
-                            "unit_weight": 18.0, "wall_length": 6.0 })");
+                            "unit_weight": 18.0, "wall_length": 6.0, "axis_deg": 45.0 })");
   const auto c = parse(with_mechanism(m));
   CHECK(c.mechanism.type == "corner_overturning");
   CHECK(c.mechanism.searched);
@@ -234,7 +234,7 @@ TEST_CASE("corner_overturning: beta searched by default, kN to SI, the ties' res
   CHECK_CLOSE(c.mechanism.candidates.back().parameter, 60.0, abs_tol(tol_factor));
   CHECK_CLOSE(c.mechanism.candidates[0].Z, 0.0, abs_tol(tol_m));  // base_z defaults to 0
   const auto& ch0 = c.mechanism.candidates[0].chain;
-  CHECK(ch0.loads().size() == 2);  // self weights only: no top weight, thrust or tie by default
+  CHECK(ch0.loads().size() == 3);  // self weights only (pier, two arms): no top weight, thrust or tie by default
   CHECK_CLOSE(ch0.blocks()[0].unit_weight, 18.0 * kN, rel_tol(tol_si));
   m["beta_deg"] = 30.0;
   m["base_z"] = 3.0;
@@ -245,10 +245,12 @@ TEST_CASE("corner_overturning: beta searched by default, kN to SI, the ties' res
   REQUIRE(g.mechanism.candidates.size() == 1);
   CHECK_CLOSE(g.mechanism.candidates[0].Z, 3.0, abs_tol(tol_m));
   const auto& l = g.mechanism.candidates[0].chain.loads();
-  REQUIRE(l.size() == 2 + 3);
-  CHECK_CLOSE(l[2].weight, 20.0 * kN, rel_tol(tol_si));
-  CHECK_CLOSE(l[3].force.x(), 4.0 * kN, rel_tol(tol_si));
-  CHECK_CLOSE(l[4].force.x(), -std::sqrt(2.0) * 6.0 * kN, rel_tol(tol_si));
+  REQUIRE(l.size() == 3 + 4);
+  CHECK_CLOSE(l[3].weight, 20.0 * kN, rel_tol(tol_si));
+  CHECK_CLOSE(l[4].force.x(), 4.0 * kN, rel_tol(tol_si));  // the thrust along the bisector, normal to the 45 deg axis
+  // Each rod along a wall restrains with sin 45 = cos 45 of its force about the 45 deg axis.
+  CHECK_CLOSE(l[5].force.x(), -6.0 * kN / std::sqrt(2.0), rel_tol(tol_si));
+  CHECK_CLOSE(l[6].force.x(), -6.0 * kN / std::sqrt(2.0), rel_tol(tol_si));
   m["beta_deg"] = 0.0;
   CHECK_THROWS_WITH_AS(parse(with_mechanism(m)),
                        doctest::Contains("case.json: /mechanism/beta_deg: value 0 out of range: expected in (0, 90) deg"),

@@ -21,6 +21,7 @@
 #include <map>
 #include <optional>
 #include <sstream>
+#include <tuple>
 
 namespace assess {
 namespace {
@@ -215,11 +216,12 @@ MechanismSet parse_horizontal_flexure(const JsonNode& m, double FC) {
              "\"side_wall_load\" (kN), \"restraint\" (kN): without a restraint no horizontal arch forms");
   p.ring_beam_moment = m.number_or("ring_beam_moment", 0.0, "kN m", 0.0) * kN;
   for (const JsonNode& st : m.array("strips", 1)) {
-    st.allow_only({"base_z", "height", "carried_weight", "openings"});
+    st.allow_only({"base_z", "height", "carried_weight", "openings", "middle_hinge"});
     HorizontalStrip s;
     s.base_z = st.number_or("base_z", 0.0, "m", 0.0);
     s.height = st.positive("height", "m");
     s.carried_weight = st.number_or("carried_weight", 0.0, "kN/m", 0.0) * kN;
+    if (st.find("middle_hinge")) s.middle_hinge = open_interval(st.at("middle_hinge"), "m", 0.0, p.span);
     if (st.find("openings"))
       for (const JsonNode& o : st.array("openings")) {
         o.allow_only({"from", "to", "height"});
@@ -321,6 +323,17 @@ MechanismSet parse_corner(const JsonNode& m) {
         m.fail(std::string("missing \"") + (std::string(k) == "thickness" ? "thickness" : "wall_length") +
                "\" (m): give it for both walls or \"" + k + "\" in \"" + name + "\"");
     }
+  // An opening must lie beyond the corner pier, i.e. beyond the other wall's thickness.
+  for (const auto& [w, other, name] : {std::tuple<const CornerWall*, const CornerWall*, const char*>{&p.wall_a, &p.wall_b, "wall_a"},
+                                       {&p.wall_b, &p.wall_a, "wall_b"}}) {
+    const double t_other = other->thickness.value_or(p.thickness);
+    for (std::size_t i = 0; i < w->openings.size(); ++i)
+      if (w->openings[i].from < t_other)
+        m.at(name).at("openings").at(i).at("from").fail(
+            "the opening starts " + std::to_string(w->openings[i].from) + " m from the corner's outer face, inside the "
+            "corner pier (the other wall's thickness, " + std::to_string(t_other) + " m): no corner mechanism with an "
+            "opening through the pier");
+  }
   if (m.find("axis_deg")) p.axis_deg = m.number("axis_deg", "deg", 0.0, 90.0);
   p.axis_min_deg = m.number_or("axis_min_deg", p.axis_min_deg, "deg", 0.0, 90.0);
   p.axis_max_deg = m.number_or("axis_max_deg", p.axis_max_deg, "deg", 0.0, 90.0);

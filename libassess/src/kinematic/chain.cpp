@@ -247,8 +247,6 @@ Chain::Chain(std::vector<Block> blocks, std::vector<Constraint> constraints, std
     areas_.push_back(std::fabs(a));
     centroids_.push_back(c);
     moments_.push_back(polygon_moments(b.polygon, c));
-    if (!(moments_.back()(0) + moments_.back()(2) + b.extra_gyration_sq > 0.0))
-      throw InputError(block_label(blocks_, i) + ": the extra radius of gyration squared leaves no rotational inertia");
   }
   for (int i = 1; i < nb; ++i)
     if (blocks_[i].weight_in_plane != blocks_[0].weight_in_plane)
@@ -263,6 +261,8 @@ Chain::Chain(std::vector<Block> blocks, std::vector<Constraint> constraints, std
     }
     if (areas_[i] < 1e-12 * (bhi - blo).squaredNorm())
       throw InputError(block_label(blocks_, i) + ": the polygon has zero area");
+    if (!(moments_[i](0) + moments_[i](2) + blocks_[i].extra_gyration_sq > 0.0))
+      throw InputError(block_label(blocks_, i) + ": the extra radius of gyration squared leaves no rotational inertia");
   }
 
   // Constraints: valid blocks, points on their blocks.

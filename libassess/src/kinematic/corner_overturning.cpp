@@ -221,7 +221,7 @@ Wall resolve(const CornerOverturningParams& p, const CornerWall& w, double other
   }
   for (std::size_t i = 0; i < w.openings.size(); ++i) {
     const CornerOpening& o = w.openings[i];
-    const std::string ol = lab + "openings[" + std::to_string(i) + "].";
+    const std::string ol = lab + "openings[" + std::to_string(i) + "]: ";
     if (!(o.from >= other_t && o.to > o.from))
       throw InputError(ol + "expected the other wall's thickness <= from < to (m from the corner's outer face): an "
                        "opening through the corner pier leaves no corner mechanism");

@@ -67,21 +67,19 @@ StripChain strip_chain(const HorizontalFlexureParams& p, const HorizontalStrip& 
   std::vector<Load> loads;
   for (std::size_t i = 0; i < nseg; ++i) {
     Block b;
-    b.name = std::string(i < im ? "left" : "right") + " half, u = " + fmt("%.2f", u[i]) + "-" + fmt("%.2f", u[i + 1]) +
-             " m";
+    b.name = std::string(i < im ? "left" : "right") + " half" + (s.carried_weight > 0.0 ? " with the carried weight" : "") +
+             ", u = " + fmt("%.2f", u[i]) + "-" + fmt("%.2f", u[i + 1]) + " m";
     b.unit_weight = p.unit_weight;
-    b.length = hn[i];
+    // The carried weight n moves with the strip and is spread like it along
+    // the wall: part of the block's mass (an equivalent height n/(gamma t)),
+    // so that its integral of dx^2 dW is exact (C8A.4.2).
+    b.length = hn[i] + s.carried_weight / (p.unit_weight * t);
     b.weight_in_plane = false;
     b.polygon = {V(0.0, u[i]), V(0.0, u[i + 1]), V(-t, u[i + 1]), V(-t, u[i])};
     blocks.push_back(b);
     if (i > 0 && i != im) {  // consecutive segments of one half: welded along their common edge
       cons.push_back(hinge("joint u = " + fmt("%.2f", u[i]) + " m, outer", int(i) - 1, int(i), V(0.0, u[i])));
       cons.push_back(hinge("joint u = " + fmt("%.2f", u[i]) + " m, inner", int(i) - 1, int(i), V(-t, u[i])));
-    }
-    if (s.carried_weight > 0.0) {
-      Load w = weight("carried mass, u = " + fmt("%.2f", u[i]) + "-" + fmt("%.2f", u[i + 1]) + " m", int(i),
-                      V(-0.5 * t, 0.5 * (u[i] + u[i + 1])), s.carried_weight * (u[i + 1] - u[i]), false);
-      loads.push_back(w);
     }
   }
   cons.insert(cons.begin(), ground_hinge("support hinge u = 0", 0, V(-es, 0.0)));
@@ -155,7 +153,11 @@ MechanismSet horizontal_flexure(const HorizontalFlexureParams& p) {
     // alpha0 over a grid and the openings' edges, refined by golden section.
     auto alpha = [&](double um) { return activation_multiplier(strip_chain(p, s, um).chain); };
     double um = 0.5 * p.span;
-    if (!s.openings.empty()) {
+    if (s.middle_hinge) {
+      if (!(*s.middle_hinge > 0.0 && *s.middle_hinge < p.span))
+        throw InputError(sl + "middle_hinge must lie in (0, span) m");
+      um = *s.middle_hinge;
+    } else if (!s.openings.empty()) {
       std::vector<double> grid = edges;
       for (int i = 1; i <= p.search_points; ++i) grid.push_back(p.span * i / (p.search_points + 1));
       std::sort(grid.begin(), grid.end());
@@ -177,7 +179,8 @@ MechanismSet horizontal_flexure(const HorizontalFlexureParams& p) {
     std::vector<MechanismQuantity> q = {
         {"strip: bottom z", s.base_z, "m", "input"},
         {"strip: height h", s.height, "m", "input"},
-        {"middle hinge from the first support u_m", um, "m", s.openings.empty() ? src : "minimum of α0"},
+        {"middle hinge from the first support u_m", um, "m",
+         s.middle_hinge ? "input" : s.openings.empty() ? src : "minimum of α0"},
         {"net height at the supports", sc.h_support, "m", src},
         {"net height at the middle hinge", sc.h_middle, "m", src},
         {"weight of the strip per metre w = γ t h", p.unit_weight * p.thickness * s.height / units::kN, "kN/m", src},

@@ -337,7 +337,10 @@ void add_mechanism(const Ctx& c) {
   c.h.add_paragraph(c.t("mech.type") + ": " + mechanism_name(c.L, a.kase.mechanism.type) + "; " +
                     c.t("mech.governing") + ": " + c.loc(c.gc().label) + " (Z = " + fixed(c.gc().Z, 2) + " m).");
   const Chain& chain = a.kase.mechanism.candidates.at(gi).chain;
-  c.h.add_svg(mechanism_svg(chain, c.k(), c.L), c.t(chain.plan() ? "mech.fig_plan" : "mech.fig"), "fig-mechanism");
+  bool welded = false;  // issue 33: the corner's pieces, projected on the plane normal to the axis
+  for (const Constraint& k : chain.constraints()) welded = welded || k.type == ConstraintType::Weld;
+  c.h.add_svg(mechanism_svg(chain, c.k(), c.L),
+              c.t(chain.plan() ? "mech.fig_plan" : welded ? "mech.fig_projection" : "mech.fig"), "fig-mechanism");
   add_derivation(c);
 
   // Virtual-work table (C8A.4.1 / C8.7.1.1).

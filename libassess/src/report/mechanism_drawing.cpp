@@ -580,7 +580,12 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
   const double s = std::min(240.0 / wx, 440.0 / wz);
   auto X = [&](double x) { return 300.0 + s * (x - xmin); };
   auto Y = [&](double z) { return 80.0 + s * (zmax - z); };
-  const bool many = blocks.size() > 6;  // a sliced body (gable): joints and slice weights not labelled
+  // A projected 3-D body (issue 33: the corner's pieces welded, drawn as
+  // equivalent strips in the plane normal to the axis): one resultant weight,
+  // the pieces translucent, no per-piece widths.
+  bool welded = false;
+  for (const Constraint& c : chain.constraints()) welded = welded || c.type == ConstraintType::Weld;
+  const bool many = blocks.size() > 6 || welded;  // a sliced body (gable): joints and slice weights not labelled
 
   std::string o;   // graphics
   Placer placer;
@@ -636,8 +641,9 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
       px.push_back({X(p.x()), Y(p.y())});
       grow(X(p.x()), Y(p.y()));
     }
-    o += "<polygon points=\"" + pts + "\" fill=\"" + (i % 2 ? "#d9cbb5" : "#e6dcc8") +
-         "\" stroke=\"#5a4a32\" stroke-width=\"" + (many ? "0.6" : "1.2") + "\"/>\n";
+    o += "<polygon points=\"" + pts + "\" fill=\"" + (i % 2 ? "#d9cbb5" : "#e6dcc8") + "\"" +
+         (welded ? " fill-opacity=\"0.55\"" : "") + " stroke=\"#5a4a32\" stroke-width=\"" + (many ? "0.6" : "1.2") +
+         "\"/>\n";
     placer.polygon(std::move(px));
   }
 
@@ -672,6 +678,7 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
   std::vector<HDim> hdims;
   std::set<std::pair<long, long>> hdim_keys;
   for (const Block& b : blocks) {
+    if (welded) break;  // the pieces of a projection: equivalent widths, not dimensions of the wall
     // The block's vertex levels as they are (rounding them to mm would put a
     // cut of a thin slice outside it: the 0.117 m slices of a 2.8 m gable).
     std::vector<double> zv;
@@ -962,7 +969,7 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
   std::set<std::pair<long, long>> drawn;
   for (const Constraint& c : chain.constraints()) {
     const double Xp = X(c.point.x()), Yp = Y(c.point.y());
-    if (c.type == ConstraintType::Hinge && many) continue;  // joints of a sliced body are not drawn
+    if ((c.type == ConstraintType::Hinge && many) || c.type == ConstraintType::Weld) continue;  // joints of a sliced body are not drawn
     if (!drawn.insert({std::lround(Xp), std::lround(Yp)}).second) continue;
     if (c.type == ConstraintType::Slider) {
       circle(Xp + 6, Yp, 4, "fill=\"#fff\" stroke=\"#222\"");

@@ -153,6 +153,17 @@ const std::map<std::string, Entry>& catalogue() {
                          "blocks, the vertical hinges (at the supports on the outer face, in between on the inner "
                          "face), the arch's thrust and the control point; x outward, u along the wall from the first "
                          "support; dimensions in m."}},
+      {"mech.fig_projection",
+       {"Sezione equivalente del cuneo d'angolo nel piano normale all'asse di rotazione, generata dalla catena "
+        "cinematica: ogni parte (pilastro d'angolo, bracci delle pareti, tratti tra le aperture) è una striscia "
+        "centrata alla distanza del suo baricentro dall'asse, con il suo peso e la sua distribuzione in altezza "
+        "(le larghezze sono equivalenti, non dimensioni delle pareti; dati delle pareti nella tabella dei dati); "
+        "carichi, cerniera sull'asse, punto di controllo; x verso l'esterno, normale all'asse; quote in m.",
+        "Equivalent section of the corner wedge in the plane normal to the rotation axis, drawn from the kinematic "
+        "chain: each piece (corner pier, wall arms, stretches between openings) is a strip centred at its "
+        "centroid's distance from the axis, with its weight and its distribution in height (the widths are "
+        "equivalent, not wall dimensions; the walls' data in the data table); loads, the hinge on the axis, the "
+        "control point; x outward, normal to the axis; dimensions in m."}},
       {"mech.vw_cap_plan", {"Spostamenti virtuali con rotazione massima dei blocchi pari a 1 rad, in pianta (x verso "
                             "l'esterno, la coordinata z è la distanza u lungo la parete): i pesi non lavorano, le loro "
                             "masse partecipano, Circ. C8A.4.1 / C8.7.1.1.",
@@ -567,7 +578,8 @@ const std::vector<std::pair<std::string, std::string>>& phrases_it() {
       {"strip mid-height z (m)", "quota media della fascia z (m)"},
       {"left half, u = ", "metà sinistra, u = "},
       {"right half, u = ", "metà destra, u = "},
-      {"carried mass, u = ", "massa portata, u = "},
+      {"left half with the carried weight, u = ", "metà sinistra con il peso portato, u = "},
+      {"right half with the carried weight, u = ", "metà destra con il peso portato, u = "},
       {"arch thrust H = H_c (crushing at the hinges governs)", "spinta dell'arco H = H_c (governa lo schiacciamento alle cerniere)"},
       {"arch thrust H = H_lim (the restraint governs)", "spinta dell'arco H = H_lim (governa il ritegno degli appoggi)"},
       {"arch thrust", "spinta dell'arco"},

@@ -25,6 +25,7 @@
 #include "assess/kinematic/mechanism_catalogue.hpp"
 
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace assess {
@@ -43,6 +44,9 @@ struct HorizontalStrip {
   /// it (a roof or floor on the top strip) (N/m), >= 0.
   double carried_weight = 0.0;
   std::vector<StripOpening> openings;
+  /// The middle hinge's distance from the first support (m), in (0, L);
+  /// none: mid-span for a uniform strip, searched (minimum of alpha0) with openings.
+  std::optional<double> middle_hinge;
 };
 
 enum class StressBlock {
