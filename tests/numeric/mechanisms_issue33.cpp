@@ -402,6 +402,34 @@ TEST_CASE("roof thrust: the capacity curve has the thrust constant (it does not 
   CHECK_CLOSE(r.dk0, rc.x() * (std::cos(thu) - 1.0) + rc.y() * std::sin(thu), abs_tol(2e-6));
 }
 
+TEST_CASE("roof thrust: the chain model's restoring moment is the exact one, P_H (h cos q + e sin q)") {
+  // The rocking body of the one-block fast path holds a constant external
+  // moment P_H h; the chain.s potential V(q) = sum W z - F . x gives, as its
+  // slope dV/dq, the exact M(q) of notes §3.2 at every rotation (docs/theory/mechanisms.md §3.3).
+  assess::SimpleOverturningParams p;
+  assess::Storey s;
+  s.height = 4.0;
+  s.thickness = 0.6;
+  p.storeys = {s};
+  p.unit_weight = 18.0 * kN;
+  p.length = 1.0;
+  assess::RoofSpec roof;
+  roof.load = 1.5 * kN;
+  roof.span = 3.0;
+  roof.pitch_deg = 35.0;
+  roof.seat_from_inner_face = 0.2;
+  p.roof = roof;
+  const auto set = assess::roof_thrust_overturning(p);
+  const assess::ChainDynamics cd(set.candidates[0].chain, assess::Foundation::rigid());
+  const double W = 43.2 * kN, V = 4.5 * kN, PH = assess::roof_loads(roof).H, h = 4.0, t = 0.6, e = 0.4;
+  for (double q : {0.0, 0.005, 0.01, 0.015}) {
+    const double c = std::cos(q), sn = std::sin(q);
+    const double M = W * (t / 2 * c - h / 2 * sn) + V * (e * c - h * sn) - PH * (e * sn + h * c);
+    INFO("q = " << q);
+    CHECK_CLOSE(cd.exact(q).dV, M, abs_tol(1e-9 * W));  // dV/dq: the restoring moment (ChainDynamics::net_restoring)
+  }
+}
+
 // ------------------------------------------------------------------- corner
 namespace {
 // The corner by 3-D integration, independent of the chain: a piece of wall

@@ -156,9 +156,9 @@ MechanismDynamics build_bare(const CaseFile& kase, const CandidateResult& cand, 
   }
   for (const Load& l : chain.loads())
     if (l.type == LoadType::Friction) {
-      m.note = "Coulomb friction (the side walls' interlocking, a floor's seat) dissipates and sticks: it is no "
-               "restoring force of the rocking equation; the dynamic analysis is not run for this candidate (the "
-               "kinematic checks stand)";
+      m.note = "interlocking friction (Coulomb friction: the side walls' interlocking, a floor's seat) dissipates and "
+               "sticks: it is no restoring force of the rocking equation; the dynamic analysis is not run for this "
+               "candidate (the kinematic checks stand)";
       return m;
     }
   // Issue 33: a roof thrust's moment about the hinge varies with the rotation,

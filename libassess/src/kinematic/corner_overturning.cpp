@@ -186,7 +186,7 @@ MechanismCandidate corner_candidate(const CornerOverturningParams& p, const Wall
   for (const Load& l : c.chain.loads())
     if (l.type == LoadType::SelfWeight) W += l.weight;
   const std::string src = "docs/theory/mechanisms.md §4 [D]";
-  c.quantities = {{"axis: angle from wall A (0: action normal to wall A)", psi, "deg", src},
+  c.quantities = {{"axis: angle from wall A (0: action normal to wall A)", psi, "°", src},
                   {"weight of the wedge", W / units::kN, "kN", src},
                   {"corner pier: lever arm of its centroid about the axis", sp, "m", src},
                   {"rotation bound: the pier's weight over the axis", c.rotation_bound, "rad", src}};
@@ -295,8 +295,8 @@ MechanismSet corner_overturning(const CornerOverturningParams& p) {
               {"wall B: thickness", B.t, "m", "input"},
               {"wall A: length beyond wall B's inner face", A.length, "m", "input"},
               {"wall B: length beyond wall A's inner face", B.length, "m", "input"},
-              {"wall A: crack angle from the vertical", std::atan(A.tanb) * deg, "deg", beta_searched ? "searched" : "input"},
-              {"wall B: crack angle from the vertical", std::atan(B.tanb) * deg, "deg", beta_searched ? "searched" : "input"},
+              {"wall A: crack angle from the vertical", std::atan(A.tanb) * deg, "°", beta_searched ? "searched" : "input"},
+              {"wall B: crack angle from the vertical", std::atan(B.tanb) * deg, "°", beta_searched ? "searched" : "input"},
               {"wall A: crack reach at the top", std::min(p.height * A.tanb, A.length), "m", "min(h tan β, length)"},
               {"wall B: crack reach at the top", std::min(p.height * B.tanb, B.length), "m", "min(h tan β, length)"},
               {"openings in wall A / wall B", double(A.openings.size() + B.openings.size()), "-", "input"},

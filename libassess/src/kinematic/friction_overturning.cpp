@@ -161,7 +161,7 @@ MechanismSet friction_overturning(const FrictionOverturningParams& p) {
   const std::string src = "docs/theory/mechanisms.md §2.2 [D]";
   std::vector<MechanismQuantity> q = {
       {"crack angle α_b from the texture, tan α_b = (unit length/2)/(course height)", std::atan(sf.tan_alpha) / units::deg,
-       "deg", "Szabó et al. 2023 eq. (3) [V-p]"},
+       "°", "Szabó et al. 2023 eq. (3) [V-p]"},
       {"crack reach at the top of the side wall", sf.reach, "m", src},
       {"friction coefficient f", p.friction, "-", "input"},
       {"activation κ", p.activation, "-", "input; docs/theory/mechanisms.md §2.2"},

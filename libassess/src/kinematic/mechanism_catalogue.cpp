@@ -141,7 +141,7 @@ MechanismSet roof_thrust_overturning(const SimpleOverturningParams& p) {
     c.quantities = {
         {"roof: load q", p.roof->load / units::kN, "kN/m²", "input"},
         {"roof: span l (plan)", p.roof->span, "m", "input"},
-        {"roof: pitch φ", p.roof->pitch_deg, "deg", "input"},
+        {"roof: pitch φ", p.roof->pitch_deg, "°", "input"},
         {"roof: vertical reaction V per metre", r.V / units::kN, "kN/m", src},
         {"roof: thrust H per metre", r.H / units::kN, "kN/m", src},
         {"roof: thrust over the façade", r.H * p.length / units::kN, "kN", src},

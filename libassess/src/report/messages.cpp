@@ -694,8 +694,9 @@ const std::vector<std::pair<std::string, std::string>>& phrases_it() {
        "limitata dallo schiacciamento alle cerniere, dallo scorrimento delle pareti di spina o da una catena che "
        "snerva, nessuno dei quali restituisce la forma della fascia dopo un'escursione: nessuna equazione del rocking "
        "la descrive (valgono le verifiche cinematiche)"},
-      {"Coulomb friction (the side walls' interlocking, a floor's seat) dissipates and sticks: it is no restoring force "
-       "of the rocking equation; the dynamic analysis is not run for this candidate (the kinematic checks stand)",
+      {"interlocking friction (Coulomb friction: the side walls' interlocking, a floor's seat) dissipates and sticks: it "
+       "is no restoring force of the rocking equation; the dynamic analysis is not run for this candidate (the "
+       "kinematic checks stand)",
        "l'attrito coulombiano (ammorsamento delle pareti di spina, appoggio di un solaio) dissipa e si blocca: non è "
        "una forza di richiamo dell'equazione del rocking; l'analisi dinamica non è svolta per questo candidato "
        "(valgono le verifiche cinematiche)"},

@@ -21,7 +21,10 @@ ENGLISH = ["the", "of", "and", "hinge", "records", "record", "analyses", "mean",
            "level", "body", "rotating", "chain", "floor", "motions", "warning", "relaxed", "default", "used",
            "blocks", "rotation", "result", "results", "band", "wedge", "gable", "crack", "middle", "above",
            "exceeded", "within", "outside", "spectrum", "seed", "over", "largest", "peak", "most", "none",
-           "theory", "one-sided", "two-sided", "filter", "given", "each", "with", "not", "satisfied"]
+           "theory", "one-sided", "two-sided", "filter", "given", "each", "with", "not", "satisfied",
+           # issue 33: the labels of horizontal flexure, the side walls' friction, the roof thrust, the corner
+           "strip", "arch", "thrust", "friction", "roof", "axis", "pier", "arm", "half", "sliding", "walls", "side",
+           "without", "bare", "supports", "crushing", "restraint", "lever", "seat", "deg"]
 
 
 def text_of(page):

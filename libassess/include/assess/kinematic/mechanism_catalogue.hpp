@@ -23,7 +23,7 @@ namespace assess {
 /// A quantity of a mechanism's derivation printed in the reports (issue 33):
 /// the arch thrust and its limit, the roof's thrust, alpha0 without a term,
 /// the friction of the side walls... Report-ready: `value` is in `unit`
-/// ("kN", "kN/m", "m", "deg", "MPa", "rad" or "-"), converted from SI where
+/// ("kN", "kN/m", "m", "°", "MPa", "rad" or "-"), converted from SI where
 /// the row is made (the edge of the library, as CheckRow's values).
 struct MechanismQuantity {
   std::string label;   ///< English; Italian through localise() (report/messages.cpp)
