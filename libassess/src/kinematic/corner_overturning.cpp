@@ -263,7 +263,9 @@ MechanismSet corner_overturning(const CornerOverturningParams& p) {
       axes.push_back(p.axis_min_deg + (p.axis_max_deg - p.axis_min_deg) * i / (p.axis_points - 1));
   }
   set.searched = !p.axis_deg || beta_searched;
-  if (beta_searched) set.parameter_name = "axis angle from wall A (deg); crack angle in the label";
+  if (beta_searched)
+    set.parameter_name = p.axis_deg ? "crack angle beta from the vertical (deg)"
+                                    : "axis angle from wall A (deg); crack angle in the label";
   Wall A, B;
   for (double beta : betas) {
     std::optional<double> tb;
@@ -273,6 +275,7 @@ MechanismSet corner_overturning(const CornerOverturningParams& p) {
     const std::string cl = beta_searched ? ", crack beta = " + fmt("%.1f", beta) + " deg" : "";
     const std::size_t first = set.candidates.size();
     for (double psi : axes) set.candidates.push_back(corner_candidate(p, A, B, psi, cl));
+    if (beta_searched && p.axis_deg) set.candidates.back().parameter = beta;  // the axis given: the crack varies
     if (!p.axis_deg) {
       std::size_t ib = first;
       double best = 1e300;
