@@ -888,8 +888,9 @@ KinematicCaseResult run_kinematic_case(const CaseFile& c) {
   for (CodeEdition code : in.codes) {
     const std::string k = to_string(code);
     std::size_t best = 0;
+    // Ties to rounding (1e-12 relative; a symmetric corner's two end axes) go to the first.
     for (std::size_t i = 1; i < out.candidates.size(); ++i)
-      if (out.candidates[i].max_dc[k] > out.candidates[best].max_dc[k]) best = i;
+      if (out.candidates[i].max_dc[k] > out.candidates[best].max_dc[k] * (1.0 + 1e-12)) best = i;
     out.governing_by_code[k] = best;
     for (const CheckRow& row : out.candidates[best].checks)
       if (row.code == k) out.checks.push_back(row);
