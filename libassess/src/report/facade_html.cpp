@@ -169,7 +169,7 @@ void add_data(const Ctx& c) {
     if (!e.empty()) row(c.t("data.restitution"), e, "-", c.t("data.case"));
   }
   c.h.add_cell_table({c.t("kin.quantity"), HtmlCell(c.t("kin.value"), "num"), c.t("kin.unit"), c.t("data.source")},
-                     rows, c.t("data.caption"));
+                     rows, c.t(a.kase.mechanism.data.empty() ? "data.caption" : "data.caption_mechanism"));
 }
 
 // Conclusioni and the place/date/signature block.

@@ -458,6 +458,12 @@ const std::map<std::string, Entry>& catalogue() {
                      "same row."}},
       // Dati: geometry, materials and parameters (issue 24).
       {"data.heading", {"Dati: geometria, materiali e parametri", "Data: geometry, materials and parameters"}},
+      {"data.caption_mechanism",
+       {"Geometria del meccanismo (i suoi dati, non gli ingombri dei blocchi della catena, che è una pianta o una "
+        "proiezione), materiali e parametri dell'analisi, con le unità; i carichi portati e le forze sono nella "
+        "tabella dei lavori virtuali.",
+        "Geometry of the mechanism (its data, not the extents of the chain's blocks, a plan or a projection), "
+        "materials and analysis parameters, with units; the carried loads and forces are in the virtual-work table."}},
       {"data.caption",
        {"Geometria dei blocchi del meccanismo che governa (dal poligono della sezione), materiali e parametri "
         "dell'analisi, con le unità; i carichi portati e le forze sono nella tabella dei lavori virtuali.",
