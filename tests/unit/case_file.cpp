@@ -780,4 +780,15 @@ TEST_CASE("corner_overturning: walls of their own, the axis scanned by default")
   m["wall_a"]["beta_deg"] = 30.0;  // a second way to give the crack
   CHECK_THROWS_WITH_AS(parse(with_mechanism(m)), doctest::Contains("/mechanism/wall_a: give the crack by one of"),
                        assess::InputError);
+  // Bounded work whatever the input: 21 openings, a searched crack times a fine axis scan.
+  json c2 = json::parse(R"({ "type": "corner_overturning", "height": 6.0, "unit_weight": 18.0, "thickness": 0.5,
+                             "wall_length": 5.0, "search_points": 100, "axis_points": 91 })");
+  CHECK_THROWS_WITH_AS(parse(with_mechanism(c2)), doctest::Contains("make more than 200 candidates"), assess::InputError);
+  c2["beta_deg"] = 30.0;
+  c2["wall_a"] = json::object();
+  c2["wall_a"]["openings"] = json::array();
+  for (int i = 0; i < 21; ++i)
+    c2["wall_a"]["openings"].push_back(json{{"from", 1.0}, {"to", 1.5}, {"bottom", 0.1 * i}, {"top", 0.1 * i + 0.05}});
+  CHECK_THROWS_WITH_AS(parse(with_mechanism(c2)), doctest::Contains("/mechanism/wall_a/openings: at most 20 openings"),
+                       assess::InputError);
 }

@@ -215,8 +215,14 @@ MechanismSet parse_horizontal_flexure(const JsonNode& m, double FC) {
     sup.fail("expected \"rigid\": true or at least one of \"tie\" (kN), \"side_wall_friction\" with "
              "\"side_wall_load\" (kN), \"restraint\" (kN): without a restraint no horizontal arch forms");
   p.ring_beam_moment = m.number_or("ring_beam_moment", 0.0, "kN m", 0.0) * kN;
+  // Bounds that keep a run short whatever the input (docs/reliability.md): each strip is a candidate whose
+  // middle hinge is searched over a chain of 2 blocks per opening.
+  if (m.at("strips").value().is_array() && m.at("strips").value().size() > 50)
+    m.at("strips").fail("at most 50 strips (one candidate each)");
   for (const JsonNode& st : m.array("strips", 1)) {
     st.allow_only({"base_z", "height", "carried_weight", "openings", "middle_hinge"});
+    if (st.find("openings") && st.at("openings").value().is_array() && st.at("openings").value().size() > 20)
+      st.at("openings").fail("at most 20 openings per strip");
     HorizontalStrip s;
     s.base_z = st.number_or("base_z", 0.0, "m", 0.0);
     s.height = st.positive("height", "m");
@@ -284,6 +290,8 @@ CornerWall parse_corner_wall(const JsonNode& w) {
   if (w.find("unit_length")) c.unit_length = w.positive("unit_length", "m");
   if (w.find("course_height")) c.course_height = w.positive("course_height", "m");
   if (w.find("crack_reach")) c.crack_reach = w.positive("crack_reach", "m");
+  if (w.find("openings") && w.at("openings").value().is_array() && w.at("openings").value().size() > 20)
+    w.at("openings").fail("at most 20 openings per wall");
   if (w.find("openings"))
     for (const JsonNode& o : w.array("openings")) {
       o.allow_only({"from", "to", "bottom", "top"});
@@ -338,6 +346,14 @@ MechanismSet parse_corner(const JsonNode& m) {
   p.axis_min_deg = m.number_or("axis_min_deg", p.axis_min_deg, "deg", 0.0, 90.0);
   p.axis_max_deg = m.number_or("axis_max_deg", p.axis_max_deg, "deg", 0.0, 90.0);
   p.axis_points = m.integer_or("axis_points", p.axis_points, 2, 91);
+  // A searched crack angle times a scanned axis: every pair is a candidate.
+  const bool own_a = p.wall_a.beta_deg || p.wall_a.unit_length || p.wall_a.crack_reach;
+  const bool own_b = p.wall_b.beta_deg || p.wall_b.unit_length || p.wall_b.crack_reach;
+  const bool beta_searched = !(own_a && own_b) && !p.beta_deg && !p.unit_length && !p.course_height;
+  if (beta_searched && !p.axis_deg && p.search_points * p.axis_points > 200)
+    m.fail("a searched crack angle (search_points = " + std::to_string(p.search_points) + ") and a scanned axis "
+           "(axis_points = " + std::to_string(p.axis_points) + ") make more than 200 candidates: give the crack "
+           "angle from the texture (unit_length, course_height) or the axis (axis_deg)");
   return corner_overturning(p);
 }
 
