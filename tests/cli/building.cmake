@@ -21,10 +21,10 @@ endforeach()
 
 # The terminal summary: every mechanism, the safety indices and the governing ones.
 assess_cli_test(building_text ARGS run mechanisms/building-house.json
-  PASS "BUILDING ASSESSMENT \\(local mechanisms, 8 mechanisms\\).*comune Norcia \\(PG\\).*S1 = one selection over.*NTC 2018.*M8 .*NTC 2008 \\(for comparison\\).*governing mechanisms.*NTC 2018, linear \\(strength\\): M1 .*zetaE = 0\\.5[0-9]+.*TR_C = ")
+  PASS "BUILDING ASSESSMENT \\(local mechanisms, 10 mechanisms\\).*comune Norcia \\(PG\\).*S1 = one selection over.*NTC 2018.*M10 .*NTC 2008 \\(for comparison\\).*governing mechanisms.*NTC 2018, linear \\(strength\\): M1 .*zetaE = 0\\.5[0-9]+.*TR_C = ")
 assess_cli_test(building_json ARGS run mechanisms/building-house.json --json
   PASS "\"building\".*\"record_sets\".*\"governing\".*\"mechanisms\".*\"assessment\".*\"safety_indices\".*\"zeta_E\"")
-assess_cli_test(building_one_mechanism ARGS run mechanisms/building-house.json --mechanism M4
+assess_cli_test(building_one_mechanism ARGS run mechanisms/building-house.json --mechanism M5
   PASS "gable" FAIL_REGEX "BUILDING ASSESSMENT")
 
 # Hostile input: every error names the file, the path in the building file and the unit; exit 2.
@@ -74,7 +74,7 @@ set_tests_properties(cli.building_ties_exit2 PROPERTIES LABELS cli)
 # The summary of a building with ties: each mechanism without and with its ties, the building index before/after,
 # each mechanism's tie section; --mechanism runs the single case with its ties.
 assess_cli_test(building_ties_text ARGS run mechanisms/building-house-ties.json
-  PASS "M1   design diam\\. 12 mm S275, plate 150x150x12 +\\| +0\\.847 +2\\.116 \\| +NO +ok.*M2   given +diam\\. 16 mm S275.*building index \\(the smallest mechanism zetaE\\): 0\\.794 \\(M2\\) without the ties, 1\\.108 \\(M6\\) with them.*M1 Facciata su strada: .*Tie rods \\(catene\\).*design: the smallest rod and plate.*M2 Facciata su strada: .*Tie rods")
+  PASS "M1   design diam\\. 12 mm S275, plate 150x150x12 +\\| +0\\.847 +2\\.116 \\| +NO +ok.*M2   given +diam\\. 16 mm S275.*building index \\(the smallest mechanism zetaE\\): 0\\.794 \\(M2\\) without the ties, 1\\.108 \\(M7\\) with them.*M1 Facciata su strada: .*Tie rods \\(catene\\).*design: the smallest rod and plate.*M2 Facciata su strada: .*Tie rods")
 assess_cli_test(building_ties_one_mechanism ARGS run mechanisms/building-house-ties.json --mechanism M2
   PASS "Tie rods \\(catene\\).*level \"catena al sottotetto \\(esistente\\)\": rod diam\\. 16 mm S275" FAIL_REGEX "BUILDING ASSESSMENT")
 
@@ -82,12 +82,12 @@ assess_cli_error_test(building_expand_single "--mechanism and --expand apply to 
   run mechanisms/gable.json --expand /tmp/never)
 
 # The relazione of the example building in headless Chromium: loads without a
-# console message, 62 figures (the zetaE chart, the site spectra, and each
+# console message, 72 figures (the zetaE chart, the site spectra, and each
 # mechanism's figures with ids prefixed by its id), the summary with a link to
 # every mechanism's section and the sections themselves (Italian and English).
 foreach(lang it en)
   add_test(NAME cli.building_report_browser_${lang}
-    COMMAND sh -c "\"$1\" run mechanisms/building-house.json --lang $3 --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 62 'id=\"summary\"' 'href=\"#M1\"' 'href=\"#M8\"' '<h2 id=\"M1\"' '<h2 id=\"M8\"' 'id=\"fig-zeta\"' 'id=\"M8-fig-adrs\"' '★ [0-9]' 'class=\"box verdict (ok|fail)\"' 'data-building=\"verdict\"'"
+    COMMAND sh -c "\"$1\" run mechanisms/building-house.json --lang $3 --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 72 'id=\"summary\"' 'href=\"#M1\"' 'href=\"#M10\"' '<h2 id=\"M1\"' '<h2 id=\"M10\"' 'id=\"fig-zeta\"' 'id=\"M10-fig-adrs\"' '★ [0-9]' 'class=\"box verdict (ok|fail)\"' 'data-building=\"verdict\"'"
             sh $<TARGET_FILE:assess_cli> ${CMAKE_CURRENT_BINARY_DIR}/building-house.${lang}.html ${lang}
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
   set_tests_properties(cli.building_report_browser_${lang} PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77 TIMEOUT 300
@@ -96,9 +96,9 @@ endforeach()
 
 # The relazione of the building with ties (Italian): the summary's before/after table and the building
 # index, each tied mechanism's tie section (ids prefixed by its id, subheadings one level down), 56 figures
-# (the 62 of building-house and the two tie drawings).
+# (the 72 of building-house and the two tie drawings).
 add_test(NAME cli.building_ties_report_browser
-  COMMAND sh -c "\"$1\" run mechanisms/building-house-ties.json --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 64 'id=\"M1-ties\"' 'id=\"M2-ties\"' '<h4>Verifiche della catena' 'Indicatore di rischio dell.edificio[^<]*: 0[.,]794 \\(M2\\) senza le catene, 1[.,]108 \\(M6\\) con le catene'"
+  COMMAND sh -c "\"$1\" run mechanisms/building-house-ties.json --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 74 'id=\"M1-ties\"' 'id=\"M2-ties\"' '<h4>Verifiche della catena' 'Indicatore di rischio dell.edificio[^<]*: 0[.,]794 \\(M2\\) senza le catene, 1[.,]108 \\(M7\\) con le catene'"
           sh $<TARGET_FILE:assess_cli> ${CMAKE_CURRENT_BINARY_DIR}/building-house-ties.it.html
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.building_ties_report_browser PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77 TIMEOUT 300
@@ -109,7 +109,7 @@ set_tests_properties(cli.building_ties_report_browser PROPERTIES LABELS "cli;bro
 set(_bfrag ${PROJECT_BINARY_DIR}/tests/building_fragility)
 add_test(NAME cli.building_fragility_mechanism
   COMMAND ${CMAKE_COMMAND} -E env ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}
-          sh -c "rm -rf '${_bfrag}' && A='$<TARGET_FILE:assess_cli>' && F='--stripes 100,475,2475 --records 3 --bootstrap 0 --no-plots --quiet' && \"$A\" run mechanisms/building-house.json --expand '${_bfrag}/cases' > /dev/null && \"$A\" fragility mechanisms/building-house.json --mechanism M4 $F --out '${_bfrag}/b' && \"$A\" fragility '${_bfrag}/cases/M4.json' $F --out '${_bfrag}/s' > /dev/null && cmp '${_bfrag}/b/results.csv' '${_bfrag}/s/results.csv' && echo 'identical results.csv'"
+          sh -c "rm -rf '${_bfrag}' && A='$<TARGET_FILE:assess_cli>' && F='--stripes 100,475,2475 --records 3 --bootstrap 0 --no-plots --quiet' && \"$A\" run mechanisms/building-house.json --expand '${_bfrag}/cases' > /dev/null && \"$A\" fragility mechanisms/building-house.json --mechanism M5 $F --out '${_bfrag}/b' && \"$A\" fragility '${_bfrag}/cases/M5.json' $F --out '${_bfrag}/s' > /dev/null && cmp '${_bfrag}/b/results.csv' '${_bfrag}/s/results.csv' && echo 'identical results.csv'"
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.building_fragility_mechanism PROPERTIES LABELS cli TIMEOUT 300
   PASS_REGULAR_EXPRESSION "fragility of 'gable about its base'.*identical results.csv")

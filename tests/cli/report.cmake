@@ -113,3 +113,40 @@ add_test(NAME cli.every_candidate_checked
   COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/every_candidate.py $<TARGET_FILE:assess_cli>
           ${CMAKE_CURRENT_BINARY_DIR}/every_candidate)
 set_tests_properties(cli.every_candidate_checked PROPERTIES LABELS cli ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+
+# Issue 28, item 1: one verdict everywhere. Every shipped case and generated
+# ones (ground, height, chains, ties, dynamics with and without collapse, too
+# few records, buildings): no JSON object pairs a D/C with a verdict that
+# contradicts it, every D/C cell of the relazione is coloured by its own
+# verdict, and each method's counts in the verdict box are the rows of the
+# checks tables (tests/cli/scripts/one_verdict.py).
+add_test(NAME cli.one_verdict
+  COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/one_verdict.py $<TARGET_FILE:assess_cli>
+          ${CMAKE_CURRENT_BINARY_DIR}/one_verdict
+          mechanisms/church-facade.json mechanisms/church-facade-ties.json mechanisms/gable.json
+          mechanisms/two_storey_facade.json mechanisms/vertical_flexure.json mechanisms/vertical_flexure_dynamic.json
+          mechanisms/upper_storey_dynamic.json mechanisms/composite_wedge.json mechanisms/corner.json
+          mechanisms/free_wall_laquila.json mechanisms/explicit_blocks.json mechanisms/building-house.json
+          mechanisms/building-house-ties.json tests/cli/verdict/overturn_two_records.json
+          tests/cli/verdict/plain_records.json tests/cli/building/chiesa_piccola.json
+  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.one_verdict PROPERTIES LABELS cli TIMEOUT 600 COST 60 ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+
+# Issue 28, items 7, 9, 10: the relazione's files in one run: the PDF (A4,
+# bookmarks, the contents' pages equal to the bookmarks', every table cell's
+# words in the PDF's text, 'pag. x di y' on every page) and the Word document
+# read back with python-docx (numbered headings, every table, every figure,
+# the verdict). Debian's python3 has python3-docx (skipped, exit 77, without
+# it, chromium, poppler-utils or pandoc).
+find_program(ASSESS_DEBIAN_PYTHON3 python3 PATHS /usr/bin NO_DEFAULT_PATH)
+if(NOT ASSESS_DEBIAN_PYTHON3)
+  set(ASSESS_DEBIAN_PYTHON3 python3)
+endif()
+foreach(case church-facade building-house)
+  add_test(NAME cli.report_files_${case}
+    COMMAND ${ASSESS_DEBIAN_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/report_files.py $<TARGET_FILE:assess_cli>
+            ${CMAKE_CURRENT_BINARY_DIR}/report_files mechanisms/${case}.json
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+  set_tests_properties(cli.report_files_${case} PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77 TIMEOUT 600 COST 80
+    ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+endforeach()

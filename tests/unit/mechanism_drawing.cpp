@@ -257,6 +257,14 @@ void check_drawing(const std::string& what, const std::string& svg, const assess
     CHECK((contains(hinge, zh) || contains(reach, zh) || (level.empty() && std::abs(zh - zmax) < tol_dim)));
   }
 
+  // A projected 3-D body (issue 33, the corner's welded pieces): equivalent
+  // widths, no wall dimension to check beyond the heights.
+  bool welded = false;
+  for (const assess::Constraint& c : chain.constraints()) welded = welded || c.type == assess::ConstraintType::Weld;
+  if (welded) {
+    CHECK(dims(s, "thickness").empty());
+    return;
+  }
   // Thicknesses: every band of constant section of every block (distinct values).
   const std::vector<double> thick = dims(s, "thickness");
   std::vector<double> width = dims(s, "width");

@@ -21,7 +21,10 @@
 #include <assess/kinematic/floor_spectrum.hpp>
 #include <assess/kinematic/free_wall_capacity.hpp>
 #include <assess/kinematic/kinematic_analysis.hpp>
+#include <assess/kinematic/friction_overturning.hpp>
+#include <assess/kinematic/horizontal_flexure.hpp>
 #include <assess/kinematic/mechanism_catalogue.hpp>
+#include <assess/kinematic/roof_thrust.hpp>
 
 // records
 #include <assess/records/ground_motion.hpp>

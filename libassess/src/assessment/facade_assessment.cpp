@@ -387,7 +387,7 @@ std::vector<DynamicRun> dynamic_runs(const FacadeAssessment& a, const MechanismD
     run.d_control = md.control_displacement(kin, run.result.theta_max_side * run.result.theta_max);
     run.d_star = run.d_control * kin.d_star_per_dk;
     run.ruptured = md.ruptured(run.result);
-    run.collapse = run.result.overturned || run.d_control >= kin.dk0 || run.ruptured;
+    run.collapse = run.result.overturned || run.d_control >= std::min(kin.dk0, kin.dk0_bound) || run.ruptured;
   });
   return runs;
 }

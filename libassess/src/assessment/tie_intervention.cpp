@@ -53,7 +53,9 @@ std::vector<TieLevelResult> level_results(const CaseFile& c, const KinematicCase
     }
     if (found < ties.size()) {
       L.count = ties[found].count;
-      L.required = required_tie_forces(chain, c.options, in, ties, found, L.tie.spacing);
+      KinematicOptions opt = c.options;  // issue 33: the candidate's own bound on its rotation, as in run_kinematic_case
+      opt.rotation_cap = c.mechanism.candidates[after.governing].rotation_bound;
+      L.required = required_tie_forces(chain, opt, in, ties, found, L.tie.spacing);
       for (const RequiredTieForce& f : L.required) L.N_Ed = std::max(L.N_Ed, f.per_tie);
       if (found < elong.size() && std::isfinite(elong[found])) L.elongation_demand = std::max(0.0, elong[found]);
     }

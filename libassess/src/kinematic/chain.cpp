@@ -186,6 +186,7 @@ SparseMatrix sparse_jacobian(const Chain& chain, const Eigen::VectorXd& q, Eigen
         k += 2;
         break;
       case ConstraintType::Hinge:
+      case ConstraintType::Weld:
         position_entries(chain, c.block, c.point, q, k, 1.0, t);
         position_entries(chain, c.other, c.point, q, k, -1.0, t);
         k += 2;
@@ -238,6 +239,8 @@ Chain::Chain(std::vector<Block> blocks, std::vector<Constraint> constraints, std
       throw InputError(block_label(blocks_, i) + ": unit weight must be >= 0 kN/m^3");
     if (!(b.length > 0.0) || !std::isfinite(b.length))
       throw InputError(block_label(blocks_, i) + ": out-of-plane length must be > 0 m");
+    if (!std::isfinite(b.extra_gyration_sq))
+      throw InputError(block_label(blocks_, i) + ": the extra radius of gyration squared is not finite");
     double a;
     Eigen::Vector2d c;
     polygon_area_centroid(b.polygon, a, c);
@@ -245,6 +248,9 @@ Chain::Chain(std::vector<Block> blocks, std::vector<Constraint> constraints, std
     centroids_.push_back(c);
     moments_.push_back(polygon_moments(b.polygon, c));
   }
+  for (int i = 1; i < nb; ++i)
+    if (blocks_[i].weight_in_plane != blocks_[0].weight_in_plane)
+      throw InputError(block_label(blocks_, i) + ": a chain is drawn either in section or in plan, not both");
   size_ = (hi - lo).norm();
   for (int i = 0; i < nb; ++i) {
     // A degenerate (self-crossing or sliver) polygon: area tiny against its extent.
@@ -255,6 +261,8 @@ Chain::Chain(std::vector<Block> blocks, std::vector<Constraint> constraints, std
     }
     if (areas_[i] < 1e-12 * (bhi - blo).squaredNorm())
       throw InputError(block_label(blocks_, i) + ": the polygon has zero area");
+    if (!(moments_[i](0) + moments_[i](2) + blocks_[i].extra_gyration_sq > 0.0))
+      throw InputError(block_label(blocks_, i) + ": the extra radius of gyration squared leaves no rotational inertia");
   }
 
   // Constraints: valid blocks, points on their blocks.
@@ -264,7 +272,7 @@ Chain::Chain(std::vector<Block> blocks, std::vector<Constraint> constraints, std
     if (c.block < 0 || c.block >= nb)
       throw InputError(lab + ": block index " + std::to_string(c.block) + " does not exist");
     if (!c.point.allFinite()) throw InputError(lab + ": the point is not finite");
-    if (!contains(c.block, c.point))
+    if (c.type != ConstraintType::Weld && !contains(c.block, c.point))
       throw InputError(lab + ": the point " + point_str(c.point) + " is not on " +
                        block_label(blocks_, c.block));
     switch (c.type) {
@@ -276,6 +284,12 @@ Chain::Chain(std::vector<Block> blocks, std::vector<Constraint> constraints, std
         if (!contains(c.other, c.point))
           throw InputError(lab + ": the point " + point_str(c.point) + " is not on " +
                            block_label(blocks_, c.other));
+        n_equations_ += 2;
+        break;
+      case ConstraintType::Weld:
+        if (c.other < 0 || c.other >= nb)
+          throw InputError(lab + ": block index " + std::to_string(c.other) + " does not exist");
+        if (c.other == c.block) throw InputError(lab + ": a weld joins two different blocks");
         n_equations_ += 2;
         break;
       case ConstraintType::Slider:
@@ -296,6 +310,7 @@ Chain::Chain(std::vector<Block> blocks, std::vector<Constraint> constraints, std
     p.block = i;
     p.point = centroids_[i];
     p.weight = W;
+    p.vertical = blocks_[i].weight_in_plane;  // in plan the weight acts normal to the drawing
     loads_.push_back(p);
   }
   for (std::size_t k = 0; k < loads.size(); ++k) {
@@ -316,6 +331,7 @@ Chain::Chain(std::vector<Block> blocks, std::vector<Constraint> constraints, std
       throw InputError(lab + ": a tie force is horizontal and points inward (-x)");
     if (l.type == LoadType::Friction && !(l.force.x() >= 0.0 && l.force.y() == 0.0))
       throw InputError(lab + ": a friction force is a magnitude >= 0 kN");
+    if (!(l.slip_limit > 0.0)) throw InputError(lab + ": the slip limit must be > 0 m");
     loads_.push_back(l);
   }
 
@@ -395,6 +411,8 @@ Chain::Chain(std::vector<Block> blocks, std::vector<Constraint> constraints, std
     throw InputError("the mechanism moves no seismic mass horizontally (sum W dx = 0)");
 }
 
+bool Chain::plan() const { return !blocks_.empty() && !blocks_.front().weight_in_plane; }
+
 Eigen::Vector2d Chain::position(int block, const Eigen::Vector2d& p0,
                                 const Eigen::VectorXd& q) const {
   const Eigen::Vector2d& c = centroids_[block];
@@ -430,6 +448,7 @@ Eigen::VectorXd Chain::residual(const Eigen::VectorXd& q) const {
         k += 2;
         break;
       case ConstraintType::Hinge:
+      case ConstraintType::Weld:
         r.segment<2>(k) = position(c.block, c.point, q) - position(c.other, c.point, q);
         k += 2;
         break;
@@ -454,6 +473,7 @@ Eigen::MatrixXd Chain::jacobian(const Eigen::VectorXd& q) const {
         k += 2;
         break;
       case ConstraintType::Hinge:
+      case ConstraintType::Weld:
         J.middleRows(k, 2) =
             position_jacobian(c.block, c.point, q) - position_jacobian(c.other, c.point, q);
         k += 2;

@@ -74,6 +74,7 @@ void KinematicOptions::validate() const {
   if (!(d_SLV_cap > 0.0)) throw InputError("d_SLV cap: expected > 0 m");
   if (!(d_SLC_cap > 0.0)) throw InputError("d_SLC cap: expected > 0 m");
   if (!(dSLV_over_d0 > 0.0 && dSLV_over_d0 < 1.0)) throw InputError("d_SLV / d0*: expected in (0, 1)");
+  if (!(rotation_cap > 0.0)) throw InputError("rotation cap: expected > 0 rad");
 }
 
 std::vector<LoadWork> load_works(const Chain& chain, const Eigen::VectorXd& q) {
@@ -95,11 +96,15 @@ std::vector<LoadWork> load_works(const Chain& chain, const Eigen::VectorXd& q) {
           const double r2 = l.type == LoadType::SelfWeight ? chain.vertical_gyration_sq(l.block, q) : 0.0;
           w.W_dx2 = l.weight * (w.dx * w.dx + dphi * dphi * r2);
         }
-        if (l.type == LoadType::SelfWeight || l.vertical) w.work = -l.weight * w.dz;
+        if (l.vertical) w.work = -l.weight * w.dz;  // self weights bear unless drawn in plan
         break;
       case LoadType::Force:
       case LoadType::Tie: w.work = l.force.dot(d); break;
-      case LoadType::Friction: w.work = -l.force.x() * std::fabs(w.dx); break;
+      case LoadType::Friction:
+        // Lost once the point has slipped by slip_limit (issue 33).
+        if (!(std::fabs(chain.position(l.block, l.point, q).x() - l.point.x()) >= l.slip_limit))
+          w.work = -l.force.x() * std::fabs(w.dx);
+        break;
     }
     out.push_back(w);
   }
@@ -265,6 +270,33 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
   if (!R.curve_complete()) return R;
   R.d0_star = R.d_star_per_dk * R.dk0;
 
+  // Issue 33: a rotation bound of a one-body mechanism about its ground hinge.
+  KinematicOptions capped = opt;
+  if (std::isfinite(opt.rotation_cap)) {
+    const Constraint* hinge = nullptr;
+    for (const Constraint& c : chain.constraints())
+      if (c.type == ConstraintType::GroundHinge) {
+        if (hinge) throw InputError("rotation cap: the mechanism has more than one ground hinge");
+        hinge = &c;
+      }
+    if (!hinge) throw InputError("rotation cap: the mechanism has no ground hinge");
+    const double phi = v0(3 * hinge->block + 2);
+    for (std::size_t b = 0; b < chain.blocks().size(); ++b)
+      if (std::fabs(v0(Eigen::Index(3 * b + 2)) - phi) > 1e-9 * std::max(1.0, std::fabs(phi)))
+        throw InputError("rotation cap: the mechanism does not turn as one rigid body");
+    // Outward rotation theta of the whole chain about the hinge O (clockwise in
+    // x-z with x outward): x' = O.x + r.x cos(theta) + r.z sin(theta).
+    const Eigen::Vector2d r = R.control_point - hinge->point;
+    const double th = opt.rotation_cap;
+    R.dk0_bound = r.x() * (std::cos(th) - 1.0) + r.y() * std::sin(th);
+    R.d0_star_bound = R.d_star_per_dk * R.dk0_bound;
+    if (R.d0_star_bound < R.d0_star) {
+      capped.du_cap = std::min(opt.du_cap, code_rules::du_over_d0_2008 * R.d0_star_bound);
+      capped.d_SLV_cap = std::min(opt.d_SLV_cap, code_rules::dSLV_over_d0_2018 * R.d0_star_bound);
+      capped.d_SLC_cap = std::min(opt.d_SLC_cap, code_rules::dSLC_over_d0_2018 * R.d0_star_bound);
+    }
+  }
+
   const double a_scale = units::g / (R.e_star * R.FC);
   // a*(d*) (m/s^2) from the chosen curve model.
   auto a_star_at = [&](double d_star) {
@@ -292,15 +324,15 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
   }
 
   // NTC 2008 (C8A.4, §6 of docs/theory/kinematic.md).
-  R.du_star = std::min(code_rules::du_over_d0_2008 * R.d0_star, opt.du_cap);
+  R.du_star = std::min(code_rules::du_over_d0_2008 * R.d0_star, capped.du_cap);
   R.ds_star = code_rules::ds_over_du_2008 * R.du_star;
   R.as_star = a_star_at(R.ds_star);
   R.Ts = 2.0 * units::pi * std::sqrt(R.ds_star / R.as_star);
   // NTC 2018 (Circ. 2019 §C8.7.1.2.1.6, [C8.7.1.10], [C8.7.1.11]).
-  R.d_SLV = std::min(opt.dSLV_over_d0 * R.d0_star, opt.d_SLV_cap);
+  R.d_SLV = std::min(opt.dSLV_over_d0 * R.d0_star, capped.d_SLV_cap);
   R.a_SLV = a_star_at(R.d_SLV);
   R.T_SLV = code_rules::T_SLV_factor_of_pi * units::pi * std::sqrt(R.d_SLV / R.a_SLV);
-  R.d_SLC = std::min(code_rules::dSLC_over_d0_2018 * R.d0_star, opt.d_SLC_cap);
+  R.d_SLC = std::min(code_rules::dSLC_over_d0_2018 * R.d0_star, capped.d_SLC_cap);
   R.a_SLC = a_star_at(R.d_SLC);
   R.T_SLC = code_rules::T_SLC_factor_of_pi * units::pi * std::sqrt(R.d_SLC / R.a_SLC);
   return R;

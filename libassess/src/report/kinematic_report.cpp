@@ -51,6 +51,28 @@ nlohmann::json to_json(const CheckRow& r) {
   return j;
 }
 
+// Issue 33: the rows of a mechanism's data or derivation.
+nlohmann::json quantities_json(const std::vector<MechanismQuantity>& q) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const MechanismQuantity& x : q) {
+    nlohmann::json j{{"label", x.label}, {"unit", x.unit}, {"source", x.source}};
+    j["value"] = x.unit.empty() ? nlohmann::json(nullptr) : nlohmann::json(x.value);
+    a.push_back(j);
+  }
+  return a;
+}
+
+std::string quantities_text(const std::vector<MechanismQuantity>& q, bool wide) {
+  std::string out;
+  for (const MechanismQuantity& x : q) {
+    std::string line = "  " + x.label;
+    if (!x.unit.empty()) line += " = " + format("%.6g", x.value) + (x.unit == "-" ? "" : " " + x.unit);
+    if (!x.source.empty() && x.source != "input") line += " [" + x.source + "]";
+    out += (wide ? line : wrap_text(line, 4)) + "\n";
+  }
+  return out;
+}
+
 nlohmann::json kinematic_json(const CaseFile& c, const KinematicCaseResult& out) {
   const CandidateResult& gc = out.candidates[out.governing];
   const KinematicResult& r = gc.result;
@@ -81,6 +103,13 @@ nlohmann::json kinematic_json(const CaseFile& c, const KinematicCaseResult& out)
   j["a_SLC"] = r.a_SLC;
   j["T_SLC"] = r.T_SLC;
   j["curve_model"] = r.curve_model == CurveModel::Linearised ? "linearised" : "finite_displacement";
+  // Issue 33: a bound on d0* from the mechanism (null without one).
+  const MechanismCandidate& gm = c.mechanism.candidates.at(out.governing);
+  j["d0_star_bound"] = std::isfinite(r.d0_star_bound) ? nlohmann::json(r.d0_star_bound) : nlohmann::json(nullptr);
+  j["dk0_bound"] = std::isfinite(r.dk0_bound) ? nlohmann::json(r.dk0_bound) : nlohmann::json(nullptr);
+  if (std::isfinite(gm.rotation_bound)) j["d0_star_bound_reason"] = gm.rotation_bound_reason;
+  j["data"] = quantities_json(c.mechanism.data);
+  j["quantities"] = quantities_json(gm.quantities);
   nlohmann::json loads = nlohmann::json::array();
   for (const LoadWork& w : r.loads)
     loads.push_back({{"name", w.load.name}, {"type", to_string(w.load.type)}, {"x", w.load.point.x()},
@@ -102,6 +131,7 @@ nlohmann::json kinematic_json(const CaseFile& c, const KinematicCaseResult& out)
       if (gi == i) gov.push_back(code);
     cj["governing_dc"] = dc;
     cj["governing_for"] = gov;
+    cj["quantities"] = quantities_json(c.mechanism.candidates.at(i).quantities);
     if (!cr.checks.empty())
       cj["ag_capacity_min_g"] =
           std::isfinite(cr.ag_capacity_min_g) ? nlohmann::json(cr.ag_capacity_min_g) : nlohmann::json(nullptr);
@@ -255,6 +285,9 @@ std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res, Te
                                  gc.label.c_str(), gc.Z);
     out += (wide ? m : wrap_text(m, 11)) + "\n";
   }
+  if (!c.mechanism.data.empty()) out += "\nmechanism data:\n" + quantities_text(c.mechanism.data, wide);
+  if (!c.mechanism.candidates.at(res.governing).quantities.empty())
+    out += "\nderivation (governing candidate):\n" + quantities_text(c.mechanism.candidates.at(res.governing).quantities, wide);
   if (res.candidates.size() > 1) {
     const bool checked = !res.governing_by_code.empty();
     const std::string head = format("\ncandidates (%s searched; governing = %s):", c.mechanism.parameter_name.c_str(),
@@ -340,6 +373,12 @@ std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res, Te
   out += format("  dk0 (alpha = 0)                        %14.6f m\n", r.dk0);
   out += format("  d*/dk          [C8A.4.5 / C8.7.1.4]    %14.6f -\n", r.d_star_per_dk);
   out += format("  d0*                                    %14.6f m\n", r.d0_star);
+  if (std::isfinite(r.d0_star_bound)) {
+    const std::string b = format("  d0* bound                              %14.6f m (dk = %.6f m): %s; du*, d_SLV, d_SLC "
+                                 "capped at 0.4, 0.4, 0.6 of it", r.d0_star_bound, r.dk0_bound,
+                                 c.mechanism.candidates.at(res.governing).rotation_bound_reason.c_str());
+    out += (wide ? b : wrap_text(b, 4)) + "\n";
+  }
   out += format("  NTC 2008: du* = %.6f m, ds* = %.6f m, as* = %.6f m/s2, Ts = %.6f s\n", r.du_star, r.ds_star,
               r.as_star, r.Ts);
   out += format("  NTC 2018: d_SLV = %.6f m, a(d_SLV) = %.6f m/s2, T_SLV = %.6f s [C8.7.1.10]\n", r.d_SLV, r.a_SLV, r.T_SLV);

@@ -145,6 +145,40 @@ const std::map<std::string, Entry>& catalogue() {
                     "The mechanism drawn from the kinematic chain, to scale: blocks, hinges, loads and thrusts with their "
                     "values (symbols in the legend), ties, control point, storeys and hinge level; dimensions in m "
                     "(level heights, total height, thicknesses, distances of the loads from the inner face). x outward."}},
+      {"mech.fig_plan", {"Pianta della fascia in flessione orizzontale generata dalla catena cinematica, in scala: i due "
+                         "blocchi, le cerniere verticali (agli appoggi sul filo esterno, intermedia sul filo interno), "
+                         "la spinta dell'arco e il punto di controllo; x verso l'esterno, u lungo la parete dal primo "
+                         "appoggio; quote in m.",
+                         "Plan of the strip in horizontal flexure drawn from the kinematic chain, to scale: the two "
+                         "blocks, the vertical hinges (at the supports on the outer face, in between on the inner "
+                         "face), the arch's thrust and the control point; x outward, u along the wall from the first "
+                         "support; dimensions in m."}},
+      {"mech.fig_projection",
+       {"Sezione equivalente del cuneo d'angolo nel piano normale all'asse di rotazione, generata dalla catena "
+        "cinematica: ogni parte (pilastro d'angolo, bracci delle pareti, tratti tra le aperture) è una striscia "
+        "centrata alla distanza del suo baricentro dall'asse, con il suo peso e la sua distribuzione in altezza "
+        "(le larghezze sono equivalenti, non dimensioni delle pareti; dati delle pareti nella tabella dei dati); "
+        "carichi, cerniera sull'asse, punto di controllo; x verso l'esterno, normale all'asse; quote in m.",
+        "Equivalent section of the corner wedge in the plane normal to the rotation axis, drawn from the kinematic "
+        "chain: each piece (corner pier, wall arms, stretches between openings) is a strip centred at its "
+        "centroid's distance from the axis, with its weight and its distribution in height (the widths are "
+        "equivalent, not wall dimensions; the walls' data in the data table); loads, the hinge on the axis, the "
+        "control point; x outward, normal to the axis; dimensions in m."}},
+      {"mech.vw_cap_plan", {"Spostamenti virtuali con rotazione massima dei blocchi pari a 1 rad, in pianta (x verso "
+                            "l'esterno, la coordinata z è la distanza u lungo la parete): i pesi non lavorano, le loro "
+                            "masse partecipano, Circ. C8A.4.1 / C8.7.1.1.",
+                            "Virtual displacements with the largest block rotation equal to 1 rad, in plan (x outward, "
+                            "the z coordinate is the distance u along the wall): the weights do no work, their masses "
+                            "take part, Circ. C8A.4.1 / C8.7.1.1."}},
+      {"mech.derivation", {"Grandezze del meccanismo", "Quantities of the mechanism"}},
+      {"mech.derivation_cap", {"Grandezze della derivazione del candidato che governa, con la formula e la fonte "
+                               "(etichette di certezza come in docs/theory).",
+                               "Quantities of the governing candidate's derivation, with their formula and source "
+                               "(certainty tags as in docs/theory)."}},
+      {"mech.bound", {"Capacità di spostamento limitata: la catena rigida darebbe d0* = {} m; il limite è d0* = {} m "
+                      "({}); du*, d_SLV e d_SLC valgono 0.4, 0.4 e 0.6 del limite (docs/theory/mechanisms.md §4.4).",
+                      "Displacement capacity bounded: the rigid chain would give d0* = {} m; the bound is d0* = {} m "
+                      "({}); du*, d_SLV and d_SLC are 0.4, 0.4 and 0.6 of the bound (docs/theory/mechanisms.md §4.4)."}},
       {"mech.candidates", {"Meccanismi candidati", "Candidate mechanisms"}},
       {"mech.candidates_cap", {"Candidati esaminati (parametro: {}); per ciascuna norma governa il candidato con il D/C "
                                "massimo sulle sue verifiche (Circ. 2019 C8.7.1; C8A.4: il meccanismo più sfavorevole).",
@@ -432,6 +466,12 @@ const std::map<std::string, Entry>& catalogue() {
                      "same row."}},
       // Dati: geometry, materials and parameters (issue 24).
       {"data.heading", {"Dati: geometria, materiali e parametri", "Data: geometry, materials and parameters"}},
+      {"data.caption_mechanism",
+       {"Geometria del meccanismo (i suoi dati, non gli ingombri dei blocchi della catena, che è una pianta o una "
+        "proiezione), materiali e parametri dell'analisi, con le unità; i carichi portati e le forze sono nella "
+        "tabella dei lavori virtuali.",
+        "Geometry of the mechanism (its data, not the extents of the chain's blocks, a plan or a projection), "
+        "materials and analysis parameters, with units; the carried loads and forces are in the virtual-work table."}},
       {"data.caption",
        {"Geometria dei blocchi del meccanismo che governa (dal poligono della sezione), materiali e parametri "
         "dell'analisi, con le unità; i carichi portati e le forze sono nella tabella dei lavori virtuali.",
@@ -1107,6 +1147,143 @@ const std::vector<std::pair<std::string, std::string>>& phrases_it() {
       {"thrust level ", "spinta livello "},
       {"floor level ", "solaio livello "},
       {"tie level ", "tirante livello "},
+      // Issue 33: horizontal flexure, friction overturning, roof thrust, the corner about any axis
+      // (kinematic/horizontal_flexure.cpp, friction_overturning.cpp, mechanism_catalogue.cpp, corner_overturning.cpp).
+      {"strip z = ", "fascia z = "},
+      {", middle hinge at u = ", ", cerniera intermedia a u = "},
+      {"strip mid-height z (m)", "quota media della fascia z (m)"},
+      {"left half, u = ", "metà sinistra, u = "},
+      {"right half, u = ", "metà destra, u = "},
+      {"left half with the carried weight, u = ", "metà sinistra con il peso portato, u = "},
+      {"right half with the carried weight, u = ", "metà destra con il peso portato, u = "},
+      {"arch thrust H = H_c (crushing at the hinges governs)", "spinta dell'arco H = H_c (governa lo schiacciamento alle cerniere)"},
+      {"arch thrust H = H_lim (the restraint governs)", "spinta dell'arco H = H_lim (governa il ritegno degli appoggi)"},
+      {"arch thrust", "spinta dell'arco"},
+      {"ring beam: force at the middle hinge M_Rd L/(u_m (L - u_m))", "cordolo: forza alla cerniera intermedia M_Rd L/(u_m (L - u_m))"},
+      {"ring beam: plastic moment in plan M_Rd", "cordolo: momento plastico nel piano M_Rd"},
+      {"ring beam", "cordolo"},
+      {"strip: bottom z", "fascia: base z"},
+      {"strip: height h", "fascia: altezza h"},
+      {"middle hinge from the first support u_m", "cerniera intermedia dal primo appoggio u_m"},
+      {"net height at the supports", "altezza netta agli appoggi"},
+      {"net height at the middle hinge", "altezza netta alla cerniera intermedia"},
+      {"weight of the strip per metre w = γ t h", "peso della fascia al metro w = γ t h"},
+      {"carried weight per metre n", "peso portato al metro n"},
+      {"crushing thrust H_c (lever arm t/2)", "spinta di schiacciamento H_c (braccio t/2)"},
+      {"restraint of the supports H_lim", "ritegno degli appoggi H_lim"},
+      {"support hinges from the outer face", "cerniere d'appoggio dal filo esterno"},
+      {"middle hinge from the inner face", "cerniera intermedia dal filo interno"},
+      {"lever arm of the arch z", "braccio dell'arco z"},
+      {"span between the transverse walls L", "luce tra i muri trasversali L"},
+      {"thickness t", "spessore t"},
+      {"compressive strength at the hinges f (f_m/FC)", "resistenza a compressione alle cerniere f (f_m/FC)"},
+      {"stress block: rectangular, H = f h a, at a/2", "blocco delle tensioni rettangolare, H = f h a, risultante a a/2"},
+      {"stress block: triangular, H = f h a/2, at a/3", "blocco delle tensioni triangolare, H = f h a/2, risultante a a/3"},
+      {"supports: rigid abutments", "appoggi: spalle rigide"},
+      {"tie across the span (design strength)", "catena lungo la luce (resistenza di progetto)"},
+      {"side walls: friction μ", "pareti di spina: coefficiente d'attrito μ"},
+      {"side walls: normal force N at the strip, each end", "pareti di spina: sforzo normale N alla fascia, a ciascun estremo"},
+      {"given restraint of the supports", "ritegno assegnato degli appoggi"},
+      {"minimum of α0", "minimo di α0"},
+      {"facade sliding out of the side walls (friction)", "facciata che scorre fuori dalle pareti di spina (attrito)"},
+      {"facade with the side walls' wedges", "facciata con i cunei delle pareti di spina"},
+      {"side walls' mechanism (1 friction, 2 wedge)", "meccanismo delle pareti di spina (1 attrito, 2 cuneo)"},
+      {"side walls' friction (masonry)", "attrito delle pareti di spina (muratura)"},
+      {"side walls' friction (load)", "attrito delle pareti di spina (carico)"},
+      {"side walls' load on the wedges", "carico delle pareti di spina sui cunei"},
+      {"supported floor ", "solaio appoggiato "},
+      {"seat friction ", "attrito dell'appoggio "},
+      {"P facade", "P facciata"},
+      {"top load", "carico in sommità"},
+      {"crack angle α_b from the texture, tan α_b = (unit length/2)/(course height)",
+       "angolo α_b della lesione dalla tessitura, tan α_b = (lunghezza del concio/2)/(altezza del corso)"},
+      {"crack reach at the top of the side wall", "estensione della lesione in sommità della parete di spina"},
+      {"friction coefficient f", "coefficiente d'attrito f"},
+      {"activation κ", "attivazione κ"},
+      {"side wall friction F_g (masonry), each", "attrito di ciascuna parete di spina F_g (muratura)"},
+      {"side wall friction F_q (load q), each", "attrito di ciascuna parete di spina F_q (carico q)"},
+      {"its height above the hinge", "sua quota sulla cerniera"},
+      {"slip that disengages the steps (unit length/2)", "scorrimento che disimpegna i gradini (lunghezza del concio/2)"},
+      {"α0 of the bare façade (no interlocking, no seat friction)",
+       "α0 della facciata libera (senza ammorsamento né attrito degli appoggi)"},
+      {"α0 of the façade with the floors' seat friction only", "α0 della facciata con il solo attrito degli appoggi dei solai"},
+      {"α0 with the side walls' friction", "α0 con l'attrito delle pareti di spina"},
+      {"α0 with the side walls' wedges (composite)", "α0 con i cunei delle pareti di spina (ribaltamento composto)"},
+      {"façade height above the hinge", "altezza della facciata sulla cerniera"},
+      {"façade thickness", "spessore della facciata"},
+      {"façade length", "lunghezza della facciata"},
+      {"side wall thickness b", "spessore della parete di spina b"},
+      {"side wall length available", "lunghezza disponibile della parete di spina"},
+      {"unit length", "lunghezza del concio"},
+      {"course height", "altezza del corso"},
+      {"load on each side wall q", "carico su ciascuna parete di spina q"},
+      {"unit weight γ", "peso specifico γ"},
+      {"side walls", "pareti di spina"},
+      {"roof: load q", "copertura: carico q"},
+      {"roof: span l (plan)", "copertura: luce l (in pianta)"},
+      {"roof: pitch φ", "copertura: inclinazione φ"},
+      {"roof: vertical reaction V per metre", "copertura: reazione verticale V al metro"},
+      {"roof: thrust H per metre", "copertura: spinta H al metro"},
+      {"roof: thrust over the façade", "copertura: spinta sulla facciata"},
+      {"α0 with the roof's weight and thrust", "α0 con peso e spinta della copertura"},
+      {"α0 without the roof thrust", "α0 senza la spinta della copertura"},
+      {"α0 without the roof", "α0 senza la copertura"},
+      {"roof weight", "peso della copertura"},
+      {"roof thrust", "spinta della copertura"},
+      {"axis angle from wall A (deg); crack angle in the label", "angolo dell'asse dalla parete A (°); angolo della lesione nell'etichetta"},
+      {"axis angle from wall A (deg)", "angolo dell'asse dalla parete A (°)"},
+      {"axis at ", "asse a "},
+      {" deg from wall A", "° dalla parete A"},
+      {", crack beta = ", ", lesione β = "},
+      {" (minimum of alpha0)", " (minimo di α0)"},
+      {"corner pier", "pilastro d'angolo"},
+      {"wall A arm", "braccio della parete A"},
+      {"wall B arm", "braccio della parete B"},
+      {"hip rafter thrust (normal to the axis)", "spinta del puntone di displuvio (componente normale all'asse)"},
+      {"tie along wall A (normal to the axis)", "catena lungo la parete A (componente normale all'asse)"},
+      {"tie along wall B (normal to the axis)", "catena lungo la parete B (componente normale all'asse)"},
+      {"axis: angle from wall A (0: action normal to wall A)", "asse: angolo dalla parete A (0: azione normale alla parete A)"},
+      {"weight of the wedge", "peso del cuneo"},
+      {"corner pier: lever arm of its centroid about the axis", "pilastro d'angolo: braccio del baricentro rispetto all'asse"},
+      {"rotation bound: the pier's weight over the axis", "limite di rotazione: baricentro del pilastro sulla verticale dell'asse"},
+      {"the corner pier's own overturning about the axis", "il ribaltamento del solo pilastro d'angolo attorno all'asse"},
+      {"wedge height above the hinge", "altezza del cuneo sulla cerniera"},
+      {"wall A: thickness", "parete A: spessore"},
+      {"wall B: thickness", "parete B: spessore"},
+      {"wall A: length beyond wall B's inner face", "parete A: lunghezza oltre il filo interno della parete B"},
+      {"wall B: length beyond wall A's inner face", "parete B: lunghezza oltre il filo interno della parete A"},
+      {"wall A: crack angle from the vertical", "parete A: angolo della lesione dalla verticale"},
+      {"wall B: crack angle from the vertical", "parete B: angolo della lesione dalla verticale"},
+      {"wall A: crack reach at the top", "parete A: estensione della lesione in sommità"},
+      {"wall B: crack reach at the top", "parete B: estensione della lesione in sommità"},
+      {"min(h tan β, length)", "min(h tan β, lunghezza)"},
+      {"openings in wall A / wall B", "aperture nelle pareti A e B"},
+      {"load on the corner", "carico sul cantonale"},
+      {"hip rafter thrust along the bisector", "spinta del puntone di displuvio lungo la bisettrice"},
+      {"tie along each wall", "catena lungo ciascuna parete"},
+      {"searched", "cercato"},
+      // Issue 33: where the rocking equation does not apply (assessment/mechanism_dynamics.cpp).
+      {"horizontal flexure: the strip is restored by the arch's thrust, not by gravity, and that thrust is bounded by "
+       "crushing at the hinges, by the side walls' sliding or by a yielding tie, none of which restores the strip's "
+       "shape after an excursion: no rocking equation describes it (the kinematic checks stand)",
+       "flessione orizzontale: la fascia è richiamata dalla spinta dell'arco, non dalla gravità, e quella spinta è "
+       "limitata dallo schiacciamento alle cerniere, dallo scorrimento delle pareti di spina o da una catena che "
+       "snerva, nessuno dei quali restituisce la forma della fascia dopo un'escursione: nessuna equazione del rocking "
+       "la descrive (valgono le verifiche cinematiche)"},
+      {"interlocking friction (Coulomb friction: the side walls' interlocking, a floor's seat) dissipates and sticks: it "
+       "is no restoring force of the rocking equation; the dynamic analysis is not run for this candidate (the "
+       "kinematic checks stand)",
+       "l'attrito coulombiano (ammorsamento delle pareti di spina, appoggio di un solaio) dissipa e si blocca: non è "
+       "una forza di richiamo dell'equazione del rocking; l'analisi dinamica non è svolta per questo candidato "
+       "(valgono le verifiche cinematiche)"},
+      {"one-sided model of one body rotating about its ground hinge with the roof thrust's moment exact at every "
+       "rotation (Lagrange's equation, docs/theory/chain-dynamics.md), q_u = ",
+       "modello monolatero di un corpo ruotante attorno alla cerniera al piede con il momento della spinta della "
+       "copertura esatto a ogni rotazione (equazione di Lagrange, docs/theory/chain-dynamics.md), q_u = "},
+      {"two-sided model of one body rotating about its ground hinge with the roof thrust's moment exact at every "
+       "rotation (Lagrange's equation, docs/theory/chain-dynamics.md), q_u = ",
+       "modello bilatero di un corpo ruotante attorno alla cerniera al piede con il momento della spinta della "
+       "copertura esatto a ogni rotazione (equazione di Lagrange, docs/theory/chain-dynamics.md), q_u = "},
       // Dynamic check notes (assessment/facade_assessment.cpp).
       {"mean of peak d* over ", "media dei d* di picco su "},
       {"largest peak d* of ", "massimo d* di picco di "},
@@ -1245,6 +1422,10 @@ std::string mechanism_name(Lang lang, const std::string& type) {
       {"composite_overturning", {"ribaltamento composto", "composite overturning"}},
       {"gable_overturning", {"ribaltamento del timpano", "gable overturning"}},
       {"corner_overturning", {"ribaltamento del cantonale", "corner overturning"}},
+      {"horizontal_flexure", {"flessione orizzontale", "horizontal flexure"}},
+      {"friction_overturning", {"ribaltamento con ammorsamento / attrito delle pareti di spina",
+                                "overturning held by the side walls' interlocking and friction"}},
+      {"roof_thrust", {"spinta della copertura (ribaltamento semplice)", "roof thrust (simple overturning)"}},
   };
   const auto it = names.find(type);
   if (it == names.end()) return type;

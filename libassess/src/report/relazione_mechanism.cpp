@@ -202,7 +202,7 @@ void add_virtual_work(Ctx& c, const Chain& chain, const KinematicResult& k) {
     x.numeric = true;
     return x;
   };
-  std::string cap = c.t("mech.vw_cap");
+  std::string cap = c.t(chain.plan() ? "mech.vw_cap_plan" : "mech.vw_cap");
   if (W_other > 0.0) cap += " " + msgf(c.L, "vw.non_seismic", c.n(W_other, 2));
   c.d.add_cell_table({Cell(c.t("mech.load")), Cell(c.t("mech.kind")), Cell(c.t("vw.seismic")), h("x (m)"), h("z (m)"),
                       h("W, F (kN)"), h("δx (m)"), h("δz (m)"), h("W·δx (kN m)"), h("W·δx² (kN m²)"),
@@ -369,14 +369,43 @@ void add_adrs(Ctx& c, std::size_t ci, const std::string& id) {
   c.d.add_svg(render_svg(p), c.t("kin.adrs_fig"), id);
 }
 
-// One candidate developed: bodies, drawing, virtual work, quantities, curve, ADRS.
+// A table of the mechanism's own quantities (issue 33: a chain reduced to a
+// plan or a projection shows the wall's data, not its blocks' extents; the
+// derivation of a candidate: arch thrust, roof thrust, side walls' friction,
+// alpha0 with and without a term, a corner's axis).
+void add_quantity_table(Ctx& c, const std::vector<MechanismQuantity>& qs, const std::string& caption) {
+  std::vector<std::vector<Cell>> rows;
+  for (const MechanismQuantity& q : qs) {
+    Cell v(q.unit.empty() ? "" : c.g(q.value, 4));
+    v.numeric = true;
+    rows.push_back({Cell(c.loc(q.label)), v, Cell(q.unit == "-" ? "–" : c.unit(q.unit)),
+                    Cell(q.source == "input" ? c.t("data.case") : c.loc(q.source))});
+  }
+  Cell hv(c.t("kin.value"));
+  hv.numeric = true;
+  c.d.add_cell_table({Cell(c.t("kin.quantity")), hv, Cell(c.t("kin.unit")), Cell(c.t("data.source"))}, rows, caption);
+}
+
+// One candidate developed: bodies, drawing, derivation, virtual work, quantities, curve, ADRS.
 void add_candidate(Ctx& c, std::size_t ci, std::size_t k, int level) {
   const CandidateResult& cr = c.candidate(ci);
-  const Chain& chain = c.a.kase.mechanism.candidates.at(ci).chain;
+  const MechanismCandidate& mc = c.a.kase.mechanism.candidates.at(ci);
+  const Chain& chain = mc.chain;
   const std::string suffix = k == 0 ? "" : "-" + std::to_string(k + 1);
   c.d.add_heading(c.t("mech.bodies"), level, false);
-  add_bodies(c, chain);
-  c.d.add_svg(mechanism_svg(chain, cr.result, c.L), c.t("mech.fig"), "fig-mechanism" + suffix);
+  if (!c.a.kase.mechanism.data.empty()) add_quantity_table(c, c.a.kase.mechanism.data, c.t("data.caption_mechanism"));
+  else add_bodies(c, chain);
+  bool welded = false;  // issue 33: the corner's pieces, projected on the plane normal to the axis
+  for (const Constraint& x : chain.constraints()) welded = welded || x.type == ConstraintType::Weld;
+  c.d.add_svg(mechanism_svg(chain, cr.result, c.L),
+              c.t(chain.plan() ? "mech.fig_plan" : welded ? "mech.fig_projection" : "mech.fig"), "fig-mechanism" + suffix);
+  if (!mc.quantities.empty()) {
+    c.d.add_heading(c.t("mech.derivation"), level, false);
+    add_quantity_table(c, mc.quantities, c.t("mech.derivation_cap"));
+  }
+  const KinematicResult& kr = cr.result;
+  if (std::isfinite(kr.d0_star_bound) && kr.d0_star_bound < kr.d0_star)
+    c.d.add_paragraph(msgf(c.L, "mech.bound", c.n(kr.d0_star, 3), c.n(kr.d0_star_bound, 3), c.loc(mc.rotation_bound_reason)));
   c.d.add_heading(c.t("mech.vw"), level, false);
   add_virtual_work(c, chain, cr.result);
   c.d.add_heading(c.t("kin.heading_linear"), level, false);

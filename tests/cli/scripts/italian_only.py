@@ -27,7 +27,10 @@ ENGLISH = ["the", "of", "and", "hinge", "records", "record", "analyses", "mean",
            # Issue 28, item 8: load and block names, machine words and code tokens.
            "storeys", "slice", "top load", "wall arms", "corner pillar", "ridge beam", "thrust", "facade",
            "lower", "upper", "n/a", "psi", "gamma", "xi", "eta", "sqrt", "eps_ud", "eps_uk", "m/s2", "ug''",
-           "docs/", "inf", "nan", "design", "tie", "ties", "case", "key", "block", "load", "pulse", "near-fault"]
+           "docs/", "inf", "nan", "design", "tie", "ties", "case", "key", "block", "load", "pulse", "near-fault",
+           # issue 33: the labels of horizontal flexure, the side walls' friction, the roof thrust, the corner
+           "strip", "arch", "thrust", "friction", "roof", "axis", "pier", "arm", "half", "sliding", "walls", "side",
+           "without", "bare", "supports", "crushing", "restraint", "lever", "seat", "deg"]
 # A decimal point: a number "0.991" that is not a clause or section number ("C8.7.1", "§3.2", "[3.2.10]").
 DECIMAL_POINT = re.compile(r"(?<![\w§.\[/-])\d+\.\d+(?![.\d\w])")
 
