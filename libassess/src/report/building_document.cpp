@@ -254,7 +254,7 @@ Cell num(Lang L, double v, int prec) {
 }
 
 Cell dc_cell(Lang L, double dc, bool satisfied, bool undecided) {
-  Cell c(undecided ? "—" : fx(L, dc, 3));
+  Cell c(undecided ? "—" : fx(L, dc, relazione::dc_decimals(dc, satisfied)));
   c.numeric = true;
   if (!undecided) {
     c.tone = satisfied ? Tone::ok : Tone::fail;

@@ -81,6 +81,13 @@ std::string typeset(const std::string& text) {
 
 }  // namespace
 
+int dc_decimals(double dc, bool satisfied) {
+  int prec = 3;
+  if (satisfied || !std::isfinite(dc) || !(dc > 1.0)) return prec;
+  while (prec < 9 && std::round(dc * std::pow(10.0, prec)) <= std::pow(10.0, prec)) ++prec;
+  return prec;
+}
+
 std::string Ctx::loc(const std::string& text) const {
   if (L == Lang::en) return typeset(text);
   return decimal_comma(typeset(localise(L, text)));
@@ -173,7 +180,9 @@ std::string Ctx::verdict_word(bool satisfied, bool no_verdict) const {
 }
 
 Cell Ctx::dc_cell(double dc, bool satisfied, bool no_verdict) const {
-  Cell c(no_verdict ? "—" : n(dc, 3));
+  // The number printed carries the verdict: a failing D/C just above 1 gets the
+  // decimals that show it ("1,0004", never "1,000" beside "non verificato").
+  Cell c(no_verdict ? "—" : n(dc, dc_decimals(dc, satisfied)));
   c.numeric = true;
   if (!no_verdict) {
     c.tone = satisfied ? Tone::ok : Tone::fail;

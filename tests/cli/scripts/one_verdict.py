@@ -65,10 +65,17 @@ class Tables(html.parser.HTMLParser):
         self.tables, self.stack, self.cell, self.methods = [], [], None, []
         self.method = None
 
+    owner = ""  # the mechanism of a building whose section holds the element ("" for a single case)
+
     def handle_starttag(self, tag, attrs):
         a = dict(attrs)
+        m = re.match(r"(M\d+)(?:-|$)", a.get("id", "")) if re.match(r"h[2-6]$", tag) else None
+        if m:
+            self.owner = m.group(1)
+        elif re.match(r"h2$", tag) and "id" in a:
+            self.owner = ""
         if tag == "table":
-            self.tables.append({"class": a.get("class", ""), "rows": []})
+            self.tables.append({"class": a.get("class", ""), "rows": [], "owner": self.owner})
             self.stack.append(self.tables[-1])
         elif tag == "tr" and self.stack:
             self.stack[-1]["rows"].append([])
@@ -77,7 +84,8 @@ class Tables(html.parser.HTMLParser):
         elif tag == "span" and self.cell is not None and "note" in a.get("class", ""):
             self.cell["in_note"] = True
         elif tag == "div" and "method" in a.get("class", "").split() and "data-method" in a:
-            self.method = {"method": a["data-method"], "class": a.get("class", ""), "text": "", "code": self.code}
+            self.method = {"method": a["data-method"], "class": a.get("class", ""), "text": "", "code": self.code,
+                           "owner": self.owner}
             self.methods.append(self.method)
         elif tag == "div" and "verdict" in a.get("class", "").split() and "data-code" in a:
             self.code = a["data-code"]
@@ -121,7 +129,9 @@ def check_html(case, path):
                 if "dc-fail" in c["class"] and v <= 1:
                     defects.append(f"{case}: HTML red D/C {c['text']} <= 1")
             outcome = [c for c in row if c["tag"] == "td" and (c["class"] in ("ok", "fail"))]
-            for c in dc_cells[-1:]:
+            # A row with one D/C and one outcome: the outcome is that check's (the building's summary rows
+            # carry a D/C per approach and the adopted method's outcome: columns of their own).
+            for c in dc_cells if len(dc_cells) == 1 else []:
                 for o in outcome[-1:]:
                     if ("dc-ok" in c["class"]) != (o["class"] == "ok"):
                         defects.append(f"{case}: HTML D/C {c['text']} ({c['class']}) beside outcome '{o['text']}' ({o['class']})")
@@ -135,7 +145,7 @@ def check_html(case, path):
                         kind = KIND_OF[k]
                         break
                 failing = any("dc-fail" in c["class"] for c in row)
-                key = (code, kind)
+                key = (t["owner"], code, kind)
                 n, f = counts.get(key, (0, 0))
                 counts[key] = (n + 1, f + (1 if failing else 0))
     for m in p.methods:
@@ -143,14 +153,16 @@ def check_html(case, path):
         if not nums:
             continue
         n, f = int(nums[0][0]), int(nums[0][1])
-        rows = counts.get((m["code"], m["method"]), (0, 0))
+        rows = counts.get((m["owner"], m["code"], m["method"]), (0, 0))
         if (n, f) != rows:
-            defects.append(f"{case}: HTML verdict box {m['code']} {m['method']}: counts {n}/{f} but the tables show {rows[0]}/{rows[1]}")
+            defects.append(f"{case}: HTML verdict box {m['owner']} {m['code']} {m['method']}: counts {n}/{f} but the tables show {rows[0]}/{rows[1]}")
 
 
 for case in CASES:
     stem = os.path.splitext(os.path.basename(case))[0]
     run = subprocess.run([ASSESS, "run", case, "--json"], capture_output=True, text=True)
+    if run.returncode != 0 and "/site: missing" in run.stderr:
+        continue  # a mechanism without a site: `assess kinematic`'s, no verdict to give
     if run.returncode != 0:
         defects.append(f"{case}: exit {run.returncode}: {run.stderr.strip()[:300]}")
         continue
