@@ -32,9 +32,9 @@ namespace {
 std::string wrap(const std::string& line, std::size_t width) { return wrap_text(line, 2, width) + "\n"; }
 
 struct RunArgs {
-  std::string file, html, pdf, docx, lang = "it", fragility, mechanism, expand;
+  std::string file, html, pdf, docx, txt, lang = "it", fragility, mechanism, expand;
   bool json = false, keep_going = false, wide = false;
-  bool wants_report() const { return !html.empty() || !pdf.empty() || !docx.empty(); }
+  bool wants_report() const { return !html.empty() || !pdf.empty() || !docx.empty() || !txt.empty(); }
 };
 
 void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_text);
@@ -72,7 +72,7 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
     ReportOptions ro;
     ro.lang = lang;
     ro.case_text = read_text(a.file);
-    write_report_files(building_document(res, ro), {a.html, a.pdf, a.docx});
+    write_report_files(building_document(res, ro), {a.html, a.pdf, a.docx, a.txt});
   }
   if (a.json) {
     nlohmann::json j = building_json(res);
@@ -82,7 +82,8 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
               << (a.expand.empty() ? "" : "\nexpanded single-mechanism cases written to " + a.expand + "/M*.json\n")
               << (a.html.empty() ? "" : "\nHTML report written to " + a.html + "\n")
               << (a.pdf.empty() ? "" : "PDF report written to " + a.pdf + "\n")
-              << (a.docx.empty() ? "" : "Word report written to " + a.docx + "\n");
+              << (a.docx.empty() ? "" : "Word report written to " + a.docx + "\n")
+              << (a.txt.empty() ? "" : "text report written to " + a.txt + "\n");
   }
 }
 
@@ -130,7 +131,7 @@ void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_tex
     ro.fragility = prob;
     if (ties) ro.ties = &*ties;
     ro.case_text = case_text;
-    write_report_files(facade_document(res, ro), {a.html, a.pdf, a.docx});
+    write_report_files(facade_document(res, ro), {a.html, a.pdf, a.docx, a.txt});
   }
   if (a.json) {
     nlohmann::json j = facade_json(res);
@@ -150,7 +151,8 @@ void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_tex
               << (ties ? tie_text(*ties) : "")
               << (a.html.empty() ? "" : "\nHTML report written to " + a.html + "\n")
               << (a.pdf.empty() ? "" : "PDF report written to " + a.pdf + "\n")
-              << (a.docx.empty() ? "" : "Word report written to " + a.docx + "\n");
+              << (a.docx.empty() ? "" : "Word report written to " + a.docx + "\n")
+              << (a.txt.empty() ? "" : "text report written to " + a.txt + "\n");
   }
 }
 
@@ -166,6 +168,7 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--pdf", args->pdf, "also print the same report to a PDF file (A4, headless Chromium)");
   cmd->add_option("--docx", args->docx,
                   "also write the same relazione as an editable Word document (pandoc, Debian package pandoc)");
+  cmd->add_option("--txt", args->txt, "also write the same relazione as plain text (120 columns)");
   cmd->add_option("--lang", args->lang,
                   "language of the HTML/PDF/Word report: it (default: the relazione is filed in Italy) or en");
   cmd->add_flag("--wide", args->wide, "one line per table row however long (default: tables within 120 columns)");

@@ -58,6 +58,7 @@
 #include <assess/report/html_report.hpp>
 #include <assess/report/html_writer.hpp>
 #include <assess/report/report_files.hpp>
+#include <assess/report/text_writer.hpp>
 #include <assess/report/kinematic_report.hpp>
 #include <assess/report/plot.hpp>
 #include <assess/report/plot_layout.hpp>

@@ -524,7 +524,7 @@ void add_mechanism_list(Lang L, const BuildingAssessment& b, DocumentBuilder& d)
                    rows, bt(L, "mechanisms_cap"));
 }
 
-void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d) {
+void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d, const ReportOptions& options) {
   const BuildingCase& bc = b.building;
   d.add_heading(bt(L, "summary"), 2, true, true, "summary");
   d.add_paragraph(bt(L, "site_line") + ": " + relazione::decimal_comma(L == Lang::it ? localise(L, b.site_description) : b.site_description) +
@@ -621,6 +621,19 @@ void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d) {
   d.add_cell_table({Cell(bt(L, "id")), Cell(bt(L, "wall_mech")), Cell(bt(L, "records"))}, srows, "");
   for (const SharedSelection& s : bc.selections)
     if (s.fell_back) d.add_paragraph(s.id + ": " + (L == Lang::it ? relazione::decimal_comma(localise(L, s.note)) : s.note));
+  // Each shared set described once (its first member's records, flags, selection and compatibility):
+  // the mechanisms' dynamic sections refer to it (issue 28, item 11).
+  std::set<std::string> shown;
+  for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
+    const BuildingMechanism& m = bc.mechanisms[i];
+    const FacadeAssessment& a = b.results[i].a;
+    if (m.record_set != RecordSetKind::shared || !a.dynamic || !a.dynamic_applies || !shown.insert(m.record_group).second)
+      continue;
+    d.add_heading(bt(L, "set") + " " + m.record_group, 4, false, true, "set-" + m.record_group);
+    ReportOptions ro = options;
+    relazione::Ctx c{a, ro, L, d, nullptr};
+    relazione::add_record_set(c, a, "fig-compatibility-" + m.record_group);
+  }
   if (b.tie_index.any_ties) add_ties_summary(L, b, d);
 }
 
@@ -711,7 +724,7 @@ Document building_document(const BuildingAssessment& b, const ReportOptions& opt
     relazione::Ctx c{a0, mo, L, d, &readings};
     relazione::add_formulas(c);
   }
-  add_summary(L, b, d);
+  add_summary(L, b, d, options);
 
   for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
     const BuildingMechanism& m = bc.mechanisms[i];
@@ -723,11 +736,13 @@ Document building_document(const BuildingAssessment& b, const ReportOptions& opt
     d.set_id_prefix(m.id + "-");
     d.set_heading_shift(1);
     mo.ties = r.ties ? &*r.ties : nullptr;
+    mo.shared_records = m.record_set == RecordSetKind::shared ? m.record_group : "";
     facade_mechanism_sections(r.a, mo, d, &readings);
     d.set_heading_shift(0);
     d.set_id_prefix("");
   }
   mo.ties = nullptr;
+  mo.shared_records.clear();
   add_interventions(L, b, d);
 
   d.add_heading(bt(L, "conclusioni"));

@@ -57,7 +57,7 @@ void facade_mechanism_sections(const FacadeAssessment& a, const ReportOptions& o
   relazione::add_checks(c);
   relazione::add_dynamic(c);
   relazione::add_safety_indices(c);
-  relazione::add_comparison(c);
+  // The methods compared: in the building's summary (one table for every mechanism), not repeated here.
   relazione::add_interventions(c);
   relazione::add_evaluation(c);
   relazione::add_conclusions(c, false);

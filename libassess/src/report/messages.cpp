@@ -1066,6 +1066,8 @@ const std::map<std::string, Entry>& catalogue() {
         "Selection shared by the candidates"}},
       {"dyn.classes_tried", {"Categorie di sottosuolo provate",
         "Site classes tried"}},
+      {"dyn.shared_set", {"Accelerogrammi: l'insieme {} condiviso con gli altri meccanismi della stessa selezione, descritto una volta nella sintesi dell'edificio (metadati, segnalazioni, selezione e compatibilità spettrale); qui con i fattori di scala: {}.",
+        "Records: the set {} shared with the other mechanisms of the same selection, described once in the building's summary (metadata, flags, selection and spectral compatibility); here with the scale factors: {}."}},
       // Units in tables.
       {"unit.kN", {"kN", "kN"}},
   };

@@ -112,6 +112,15 @@ void add_model(Ctx& c, const FacadeAssessment& x) {
 // selection's caveats, the period range and why, the compatibility, and how
 // the analyses ended. "—" where the catalogue says nothing.
 void add_records(Ctx& c, const FacadeAssessment& x) {
+  if (!c.o.shared_records.empty()) {
+    // A building's set shared by several mechanisms: described once in its summary (issue 28, item 11).
+    std::string names;
+    for (const RecordUsed& r : x.records) names += (names.empty() ? "" : ", ") + r.name + " (" + c.n(r.scale, 3) + ")";
+    c.d.add_paragraph(msgf(c.L, "dyn.shared_set", c.o.shared_records, names));
+    if (!x.selection_range_note.empty())
+      c.d.add_list({{Span{c.t("dyn.range_why") + ": ", true}, Span{c.loc(x.selection_range_note)}}});
+    return;
+  }
   std::vector<std::vector<Cell>> rows;
   auto or_dash = [](const std::string& t) { return t.empty() ? std::string("—") : t; };
   for (const RecordUsed& r : x.records) {
@@ -163,7 +172,9 @@ void add_records(Ctx& c, const FacadeAssessment& x) {
   c.d.add_paragraph(c.t("dyn.duration") + " " + c.n(x.free_tail_s, 0) + " s. " + c.t("dyn.ends") + " — " + list + ".");
 }
 
-void add_compatibility(Ctx& c, const FacadeAssessment& x) {
+void add_floor_spectra(Ctx& c, const FacadeAssessment& x);
+
+void add_compatibility(Ctx& c, const FacadeAssessment& x, const std::string& id = "fig-compatibility") {
   const auto se = x.site_Se.find(LimitState::SLV);
   if (se == x.site_Se.end() || x.record_psa.empty()) return;
   Plot p = c.plot();
@@ -215,21 +226,24 @@ void add_compatibility(Ctx& c, const FacadeAssessment& x) {
   p.y_max = 1.25 * top;
   p.x_min = 0.0;
   p.x_max = x.periods.empty() ? 4.0 : x.periods.back();
-  c.d.add_svg(render_svg(p), c.t("dyn.compat_fig"), "fig-compatibility");
-  if (!x.code_floor_Se.empty()) {
-    Plot fp = c.plot();
-    fp.title = c.t("dyn.floor_title");
-    fp.x_label = "T (s)";
-    fp.y_label = "Sa (g)";
-    PlotSeries fm = series(c.t("dyn.floor_series"), PlotSeries::Style::Line, x.periods);
-    for (double v : x.floor_mean_psa) fm.y.push_back(v / g);
-    fm.highlight = true;
-    PlotSeries cf = series("S_eZ [C7.2.6]", PlotSeries::Style::Dashed, x.periods);
-    for (double v : x.code_floor_Se) cf.y.push_back(v / g);
-    fp.series.push_back(fm);
-    fp.series.push_back(cf);
-    c.d.add_svg(render_svg(fp), c.t("dyn.floor_fig"), "fig-floor-spectra");
-  }
+  c.d.add_svg(render_svg(p), c.t("dyn.compat_fig"), id);
+}
+
+// At height: the mean spectrum of the floor motions against the code's floor spectrum.
+void add_floor_spectra(Ctx& c, const FacadeAssessment& x) {
+  if (x.code_floor_Se.empty()) return;
+  Plot fp = c.plot();
+  fp.title = c.t("dyn.floor_title");
+  fp.x_label = "T (s)";
+  fp.y_label = "Sa (g)";
+  PlotSeries fm = series(c.t("dyn.floor_series"), PlotSeries::Style::Line, x.periods);
+  for (double v : x.floor_mean_psa) fm.y.push_back(v / g);
+  fm.highlight = true;
+  PlotSeries cf = series("S_eZ [C7.2.6]", PlotSeries::Style::Dashed, x.periods);
+  for (double v : x.code_floor_Se) cf.y.push_back(v / g);
+  fp.series.push_back(fm);
+  fp.series.push_back(cf);
+  c.d.add_svg(render_svg(fp), c.t("dyn.floor_fig"), "fig-floor-spectra");
 }
 
 void add_histories(Ctx& c, const FacadeAssessment& x) {
@@ -366,6 +380,11 @@ void add_others(Ctx& c, const FacadeAssessment& shown) {
 
 }  // namespace
 
+void add_record_set(Ctx& c, const FacadeAssessment& x, const std::string& id) {
+  add_records(c, x);
+  add_compatibility(c, x, id);
+}
+
 void add_dynamic(Ctx& c) {
   const FacadeAssessment& a = c.a;
   if (!a.dynamic) return;
@@ -381,7 +400,8 @@ void add_dynamic(Ctx& c) {
   add_model(c, x);
   c.d.add_heading(c.t("dyn.input_heading"), 3, false);
   add_records(c, x);
-  add_compatibility(c, x);
+  if (c.o.shared_records.empty()) add_compatibility(c, x);
+  add_floor_spectra(c, x);
   c.d.add_heading(c.t("dyn.results_heading"), 3, false);
   add_histories(c, x);
   add_summary(c, x);

@@ -1,6 +1,7 @@
 // report_files.cpp: a document written to its HTML, PDF and Word files
-// (issue 28): the PDF in two prints (the first gives each heading's page
-// through the PDF's bookmarks, the second prints the contents with them), the
+// (issue 28): the PDF in two prints (the first, of the page laid out with its
+// figures empty, gives each heading's page through the PDF's bookmarks; the
+// second prints the contents with them), the
 // Word document beside it while Chromium prints; every file written to a
 // temporary file in its folder and renamed.
 #include "assess/report/report_files.hpp"
@@ -10,6 +11,7 @@
 #include "assess/report/docx_writer.hpp"
 #include "assess/report/html_writer.hpp"
 #include "assess/report/pdf.hpp"
+#include "assess/report/text_writer.hpp"
 #include "assess/support/error.hpp"
 
 #include <unistd.h>
@@ -91,16 +93,14 @@ void write_report_files(const Document& d, const ReportFiles& files) {
     if (!files.pdf.empty()) {
       HtmlOptions o;
       o.page_column = true;
+      o.layout_only = true;  // the first print only reads where each heading falls
       const fs::path first = dir.path() / "first.pdf", second = dir.path() / "second.pdf";
       html_to_pdf(to_html(d, o), first.string());
       o.pages = heading_pages(d, pdf_outline(first.string()));
+      o.layout_only = false;
       const std::string page = to_html(d, o);
-      if (o.pages.empty()) {
-        install("--pdf", files.pdf, &first, nullptr);
-      } else {
-        html_to_pdf(page, second.string());
-        install("--pdf", files.pdf, &second, nullptr);
-      }
+      html_to_pdf(page, second.string());
+      install("--pdf", files.pdf, &second, nullptr);
       if (!files.html.empty()) install("--html", files.html, nullptr, &page);
     } else if (!files.html.empty()) {
       const std::string page = to_html(d);
@@ -109,6 +109,10 @@ void write_report_files(const Document& d, const ReportFiles& files) {
   } catch (...) {
     if (docx.valid()) docx.wait();
     throw;
+  }
+  if (!files.txt.empty()) {
+    const std::string text = to_text(d);
+    install("--txt", files.txt, nullptr, &text);
   }
   if (docx.valid()) {
     docx.get();

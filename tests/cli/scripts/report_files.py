@@ -92,8 +92,10 @@ squeezed = re.sub(r"[\s-]+", "", text)
 lost = []
 for c in cells.cells:
     for word in c.split():
-        if word.replace("-", "") not in squeezed and word not in lost:
-            lost.append(word)
+        # A word may break at a hyphen, its pieces on two lines (a date in a wrapped cell).
+        for piece in word.split("-"):
+            if piece and piece not in squeezed and word not in lost:
+                lost.append(word)
 if lost:
     errors.append(f"{len(lost)} words of table cells not found in the PDF's text, e.g. {lost[:5]!r}")
 xml = subprocess.run(["pdftohtml", "-xml", "-i", "-q", "-stdout", p], capture_output=True, text=True).stdout

@@ -42,6 +42,10 @@ struct ReportOptions {
   /// Issue 23: the tie rods of the case (assess run with "ties" or "design"):
   /// their section (tie_html.cpp) in the interventions; null: none.
   const TieInterventionResult* ties = nullptr;
+  /// A building's mechanism whose records are a set shared with others (issue
+  /// 28): the set's name ("S1"); its records are described once in the
+  /// building's summary and the mechanism's dynamic section refers to it.
+  std::string shared_records;
 };
 
 /// The relazione of the assessment as a document (issue 28): frontespizio,
@@ -66,7 +70,7 @@ std::string facade_html(const FacadeAssessment& a, const ReportOptions& options 
 void facade_site_section(const FacadeAssessment& a, const ReportOptions& options, DocumentBuilder& d);
 
 /// One mechanism's sections (verdict box, mechanism, checks, dynamic analysis,
-/// safety indices, comparison, interventions, evaluation, conclusions without
+/// safety indices, interventions (the methods compared are in the building's summary), evaluation, conclusions without
 /// signature, warnings), added to `d`: the building relazione nests them
 /// under each mechanism's heading (DocumentBuilder::set_id_prefix and
 /// set_heading_shift). `readings` collects the readings its clauses rely on.

@@ -20,6 +20,10 @@ struct HtmlOptions {
   std::map<std::string, int> pages;
   /// Show the contents' page column (a printed edition): "…" where the page is not known.
   bool page_column = false;
+  /// Each figure's SVG without its content (its root element with the same size and viewBox):
+  /// the same layout and pages, printed in a fraction of the time (the first print of a PDF,
+  /// which only reads where each heading falls).
+  bool layout_only = false;
 };
 
 std::string to_html(const Document& d, const HtmlOptions& options = {});

@@ -2,7 +2,7 @@
 // 11): the HTML page, the PDF printed from it by headless Chromium (A4, PDF
 // bookmarks from the headings, the contents with the page of each section:
 // a first print gives the pages, the second prints them; pdf.hpp), and the
-// Word document (docx_writer.hpp). Every file is written to a temporary file
+// Word document (docx_writer.hpp), and plain text (text_writer.hpp). Every file is written to a temporary file
 // in its folder and renamed, so a file is never left cut.
 #pragma once
 
@@ -16,6 +16,7 @@ struct ReportFiles {
   std::string html;  ///< "" for none
   std::string pdf;
   std::string docx;
+  std::string txt;   ///< the relazione as plain text, 120 columns (text_writer.hpp)
 };
 
 /// Writes the requested files. @throws InputError naming the option (--html,
