@@ -6,6 +6,7 @@
 #include "assess/report/tie_report.hpp"
 
 #include "report/report_heading.hpp"
+#include "report/number_text.hpp"
 #include "report/text_format.hpp"
 
 #include <cmath>
@@ -17,10 +18,17 @@ namespace {
 
 nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
+// A number of the terminal tables: "∞" for an unbounded one (a collapse's D/C, an ag never reached), "-" undefined.
 std::string fx(double v, int prec) {
   if (std::isnan(v)) return "-";
-  if (!std::isfinite(v)) return v > 0 ? "inf" : "-inf";
+  if (!std::isfinite(v)) return v > 0 ? "∞" : "-∞";
   return format("%.*f", prec, v);
+}
+
+// TR_C/TR_D: a return period extrapolated beyond the grid's 30-2475 years is a bound, never a number (issue 28).
+std::string tr_ratio(const SafetyIndex& s) {
+  if (!s.TR_extrapolated) return fx(s.TR_ratio, 2);
+  return s.TR_capacity > 2475.0 ? ">" + fx(2475.0 / s.TR_demand, 1) : "<" + fx(30.0 / s.TR_demand, 2);
 }
 
 std::string rstrip(std::string s) {
@@ -292,6 +300,20 @@ std::string building_text(const BuildingAssessment& b, TextWidth width) {
               r.a.verdict.adopted + ", D/C " + fx(c->max_dc, 3) + ")";
     o += wide ? line + "\n" : wrap(line, 120);
   }
+  // The building's verdict in one sentence (issue 28): every mechanism by its adopted method.
+  {
+    const BuildingVerdict& v = b.verdict;
+    std::string failing;
+    for (int i : v.failing) failing += (failing.empty() ? "" : ", ") + bc.mechanisms[std::size_t(i)].id;
+    std::string line = "\nbuilding: " + std::string(v.satisfied ? "SATISFIED" : "NOT SATISFIED") + ": " +
+                       std::to_string(v.mechanisms - int(v.failing.size()) - int(v.undecided.size())) + " of " +
+                       std::to_string(v.mechanisms) + " mechanisms satisfy their adopted method" +
+                       (failing.empty() ? "" : "; not satisfied: " + failing);
+    if (v.zeta_mechanism >= 0)
+      line += "; zetaE,building = " + fx(v.zeta, 3) + " (" + bc.mechanisms[std::size_t(v.zeta_mechanism)].id +
+              ", the smallest zetaE of the adopted approaches)";
+    o += wide ? line + "\n" : wrap(line, 120);
+  }
   const std::size_t name_w = 0;
   for (const std::string& code : b.codes) {
     const bool y18 = code == "NTC2018";
@@ -314,8 +336,8 @@ std::string building_text(const BuildingAssessment& b, TextWidth width) {
         const BuildingGoverning* g = b.governing_of(code, approach);
         const std::string star = g && g->mechanism == int(i) ? "*" : " ";
         if (!s || !s->has_checks) return format(" %6s %6s %7s", "-", "-", "-");
-        return format(" %6s %6s%s%7s", fx(s->dc, 3), s->defined ? fx(s->zeta, 3) : "n/a", star,
-                      s->defined ? fx(s->TR_ratio, 2) : "n/a");
+        return " " + detail::pad(fx(s->dc, 3), 6) + " " + detail::pad(s->defined ? fx(s->zeta, 3) : "-", 6) + star +
+               detail::pad(s->defined ? tr_ratio(*s) : "-", 7);
       };
       std::string line = format("%-4s ", m.id) + pad("", name_w) +
                          format(" %7.4f %7.4f |", gc.result.alpha0, gc.result.a0_star) + cell("strength") + " |" +
@@ -324,7 +346,7 @@ std::string building_text(const BuildingAssessment& b, TextWidth width) {
         const SafetyIndex* s = r.index(code, "dynamic");
         const BuildingGoverning* g = b.governing_of(code, "dynamic");
         const std::string star = g && g->mechanism == int(i) ? "*" : " ";
-        line += " |" + (s ? format(" %6s%s", fx(s->dc, 3), star) : format(" %6s ", "-")) +
+        line += " |" + (s ? " " + detail::pad(fx(s->dc, 3), 6) + star : format(" %6s ", "-")) +
                 format(" %-6s", record_set_text(b, m));
       }
       o += rstrip(line) + "\n";
@@ -338,8 +360,9 @@ std::string building_text(const BuildingAssessment& b, TextWidth width) {
                        m.name;
     if (s && s->defined)
       line += ", zetaE = " + fx(s->zeta, 3) + " (PGA_C " + fx(s->ag_capacity_g, 4) + " g / PGA_D " +
-              fx(s->ag_demand_g, 4) + " g, " + s->limit_state + "), TR_C = " + fx(s->TR_capacity, 0) + " / TR_D = " +
-              fx(s->TR_demand, 0) + " years" + (s->TR_extrapolated ? " (extrapolated)" : "");
+              fx(s->ag_demand_g, 4) + " g, " + s->limit_state + "), TR_C = " +
+              (s->TR_extrapolated ? (s->TR_capacity > 2475.0 ? "> 2475" : "< 30") : fx(s->TR_capacity, 0)) +
+              " / TR_D = " + fx(s->TR_demand, 0) + " years" + (s->TR_extrapolated ? " (beyond the grid: a bound)" : "");
     else
       line += ", D/C = " + fx(g.dc, 3) + " (no zetaE: no PGA capacity)";
     line += "; " + std::to_string(g.satisfied) + " of " + std::to_string(g.assessed) + " satisfied, " +
