@@ -325,8 +325,10 @@ std::string building_text(const BuildingAssessment& b, TextWidth width) {
     o += rstrip(head) + "\n";
     std::string units = format("%-4s ", "") + pad("", name_w) +
                         format(" %7s %7s | %-20s | %-20s", "-", "m/s2", "linear (strength)", "non-linear (displ.)");
+    // (alpha0, a0*: of the linear D/C's candidate)
     if (y18) units += format(" | %-11s", "dynamic");
     o += rstrip(units) + "\n";
+    std::vector<std::string> others;
     for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
       const BuildingMechanism& m = bc.mechanisms[i];
       const BuildingMechanismResult& r = b.results[i];
@@ -339,9 +341,18 @@ std::string building_text(const BuildingAssessment& b, TextWidth width) {
         return " " + detail::pad(fx(s->dc, 3), 6) + " " + detail::pad(s->defined ? fx(s->zeta, 3) : "-", 6) + star +
                detail::pad(s->defined ? tr_ratio(*s) : "-", 7);
       };
+      // alpha0 and a0* of the candidate whose check gives the linear D/C beside them (issue 28); the
+      // non-linear D/C's candidate named under the table when it is another one.
+      const SafetyIndex* lin = r.index(code, "strength");
+      const SafetyIndex* nl = r.index(code, "displacement");
+      const bool own = lin && !lin->dc_candidate.empty();
       std::string line = format("%-4s ", m.id) + pad("", name_w) +
-                         format(" %7.4f %7.4f |", gc.result.alpha0, gc.result.a0_star) + cell("strength") + " |" +
-                         cell("displacement");
+                         format(" %7.4f %7.4f |", own ? lin->dc_alpha0 : gc.result.alpha0,
+                                own ? lin->dc_a0_star : gc.result.a0_star) +
+                         cell("strength") + " |" + cell("displacement");
+      if (own && nl && !nl->dc_candidate.empty() && nl->dc_candidate != lin->dc_candidate)
+        others.push_back(m.id + ": the non-linear D/C is of " + nl->dc_candidate + " (alpha0 " + fx(nl->dc_alpha0, 4) +
+                         ", a0* " + fx(nl->dc_a0_star, 4) + " m/s2); the linear one of " + lin->dc_candidate);
       if (y18) {
         const SafetyIndex* s = r.index(code, "dynamic");
         const BuildingGoverning* g = b.governing_of(code, "dynamic");
@@ -351,6 +362,7 @@ std::string building_text(const BuildingAssessment& b, TextWidth width) {
       }
       o += rstrip(line) + "\n";
     }
+    for (const std::string& x : others) o += wide ? "  " + x + "\n" : wrap("  " + x, 120);
   }
   o += "\ngoverning mechanisms\n";
   for (const BuildingGoverning& g : b.governing) {

@@ -203,6 +203,7 @@ Cell Ctx::verdict_cell(const CheckRow& r) const {
   Cell c(verdict_word(r.satisfied, r.no_verdict));
   c.tone = r.no_verdict ? Tone::plain : r.satisfied ? Tone::ok : Tone::fail;
   c.note = collapse_text(r);
+  if (r.kind == "dynamic" && r.analyses > 0 && r.dc == 0.0) c.note = t("dyn.no_uplift");  // D/C 0: the wall never lifted
   return c;
 }
 
