@@ -261,7 +261,11 @@ void add_evaluation(Ctx& c) {
     std::vector<std::string> why;
     if (thin) why.push_back(c.t("eval.why_thin"));
     if (!disagree.empty()) why.push_back(c.t("eval.why_disagree"));
-    if (flips) why.push_back(msgf(c.L, "eval.why_flips", join(flipping)));
+    if (flips) {
+      std::string list;
+      for (const std::string& x : flipping) list += (list.empty() ? "" : ", ") + x;
+      why.push_back(msgf(c.L, "eval.why_flips", list));
+    }
     if (!coll.empty() && m->method != "dynamic") why.push_back(c.t("eval.why_collapses"));
     judgement = msgf(c.L, m->satisfied ? "eval.fragile_ok" : "eval.fragile_fail", join(why));
   }
