@@ -23,6 +23,8 @@ struct Span {
   Tone tone = Tone::plain;
   std::string link;
   bool user = false;  ///< the engineer's own words (project, names, descriptions): any language, printed as written
+  Span(std::string t = "", bool strong_ = false, Tone tone_ = Tone::plain, std::string link_ = "", bool user_ = false)
+      : text(std::move(t)), strong(strong_), tone(tone_), link(std::move(link_)), user(user_) {}
 };
 using Inline = std::vector<Span>;
 
