@@ -25,9 +25,7 @@
 #include <sstream>
 #include <string>
 
-#if defined(ASSESS_HAVE_MPI)
-#include <mpi.h>
-#endif
+#include "mpi_session.hpp"
 
 namespace assess::cli {
 
@@ -67,26 +65,10 @@ std::string default_out(const std::string& file) {
   return std::filesystem::path(file).stem().string() + ".fragility";
 }
 
-#if defined(ASSESS_HAVE_MPI)
-bool under_mpi() { return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE"); }
-#endif
-
 void run(const FragilityArgs& a) {
-  int rank = 0, ranks = 1;
-#if defined(ASSESS_HAVE_MPI)
-  const bool mpi = under_mpi();
-  if (mpi) {
-    MPI_Init(nullptr, nullptr);
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  }
-  struct Finalize {
-    bool on;
-    ~Finalize() {
-      if (on) MPI_Finalize();
-    }
-  } finalize{mpi};
-#endif
+  // MPI only when launched by mpirun, loaded at run time (mpi_session.hpp).
+  const MpiSession mpi;
+  const int rank = mpi.rank(), ranks = mpi.size();
   FragilityOptions fo;
   fo.method = a.ida ? FragilityMethod::ida : FragilityMethod::stripes;
   if (!a.stripes.empty()) {
@@ -100,7 +82,7 @@ void run(const FragilityArgs& a) {
   fo.records = a.records;
   fo.bootstrap = a.bootstrap;
   fo.seed = a.seed;
-  const nlohmann::json doc = read_json_file(a.file);
+  const nlohmann::json doc = read_json_file(a.file, input_kinds::case_file);
   CaseFile kase;
   std::string out_default = default_out(a.file);
   if (is_building_document(doc)) {
@@ -144,19 +126,12 @@ void run(const FragilityArgs& a) {
   } catch (const InputError& e) {
     error = e.what();
   }
-#if defined(ASSESS_HAVE_MPI)
-  if (mpi) {
-    int bad = error.empty() ? 0 : 1, any = 0;
-    MPI_Allreduce(&bad, &any, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  if (mpi.active()) {
+    const int any = mpi.max_over_ranks(error.empty() ? 0 : 1);
     if (any && error.empty()) error = "another MPI rank failed (see its message)";
-    int mine = s.interrupted ? 1 : 0, anyi = 0;
-    MPI_Allreduce(&mine, &anyi, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-    s.interrupted = anyi != 0;
-    double slowest = 0.0;
-    MPI_Reduce(&s.seconds, &slowest, 1, MPI_DOUBLE, MPI_MAX, 0, MPI_COMM_WORLD);
-    s.seconds = slowest;
+    s.interrupted = mpi.max_over_ranks(s.interrupted ? 1 : 0) != 0;
+    s.seconds = mpi.max_to_root(s.seconds);
   }
-#endif
   if (!a.quiet && rank == 0) std::cerr << (error.empty() ? ", done in " + std::to_string(s.seconds) + " s\n" : "\n");
   if (!error.empty()) throw InputError(error);
   if (s.interrupted)

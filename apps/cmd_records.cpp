@@ -9,6 +9,7 @@
 #include <assess/records/record_selection.hpp>
 #include <assess/records/response_spectrum.hpp>
 #include <assess/support/error.hpp>
+#include <assess/support/output_file.hpp>
 #include <assess/support/units.hpp>
 #include <assess/hazard/hazard.hpp>
 
@@ -93,9 +94,7 @@ void run_build(const RecordsArgs& a) {
   const std::string table = a.metadata.empty() ? data_dir() + "/spectra/records/metadata.csv" : a.metadata;
   const RecordCatalogue cat = build_catalogue(table);
   const std::string out = a.output.empty() ? cat.directory + "/catalogue.json" : a.output;
-  std::ofstream os(out, std::ios::binary);
-  if (!os) throw InputError("--output '" + out + "': cannot write");
-  os << catalogue_json(cat);
+  write_output_file(out, catalogue_json(cat), "--output");
   std::size_t usable = 0;
   for (const auto& e : cat.entries) usable += e.usable_for_design;
   std::cout << "wrote " << out << ": " << cat.entries.size() << " components, " << usable << " usable for design\n";

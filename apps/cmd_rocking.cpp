@@ -6,6 +6,7 @@
 #include <assess/assessment/case_file.hpp>
 #include <assess/assessment/mechanism_dynamics.hpp>
 #include <assess/support/error.hpp>
+#include <assess/support/output_file.hpp>
 #include <assess/records/record_io.hpp>
 #include <assess/dynamics/analysis_limits.hpp>
 #include <assess/dynamics/rocking_analysis.hpp>
@@ -132,14 +133,14 @@ void run(const RockingArgs& a) {
                      std::to_string(r.t_end) + " s): " + r.message + "; no result is reported");
 
   if (!a.history.empty()) {
-    std::ofstream out(a.history);
-    if (!out) throw InputError("cannot write the history file '" + a.history + "'");
-    out << "t_s,theta_rad,omega_rad_s\n";
+    // Whole or not at all; a full disk (/dev/full) is an error, never exit 0 (output_file.hpp).
+    std::string out = "t_s,theta_rad,omega_rad_s\n";
     char line[96];
     for (std::size_t i = 0; i < r.history.t.size(); ++i) {
       std::snprintf(line, sizeof line, "%.9g,%.9g,%.9g\n", r.history.t[i], r.history.theta[i], r.history.omega[i]);
-      out << line;
+      out += line;
     }
+    write_output_file(a.history, out, "--history");
   }
 
   if (a.json) {
@@ -257,14 +258,14 @@ void run_case(const CaseDynamicArgs& a) {
   const double d_star = d_control * k.d_star_per_dk;
 
   if (!a.history.empty()) {
-    std::ofstream out(a.history);
-    if (!out) throw InputError("cannot write the history file '" + a.history + "'");
-    out << "t_s,q_rad,qdot_rad_s\n";
+    // Whole or not at all; a full disk (/dev/full) is an error, never exit 0 (output_file.hpp).
+    std::string out = "t_s,q_rad,qdot_rad_s\n";
     char line[96];
     for (std::size_t i = 0; i < r.history.t.size(); ++i) {
       std::snprintf(line, sizeof line, "%.9g,%.9g,%.9g\n", r.history.t[i], r.history.theta[i], r.history.omega[i]);
-      out << line;
+      out += line;
     }
+    write_output_file(a.history, out, "--history");
   }
   if (a.json) {
     nlohmann::json j;

@@ -8,6 +8,8 @@
 #include <assess/report/building_report.hpp>
 #include <assess/support/json_input.hpp>
 #include <assess/support/error.hpp>
+#include <assess/support/input_file.hpp>
+#include <assess/support/output_file.hpp>
 #include <assess/assessment/facade_assessment.hpp>
 #include <assess/report/facade_report.hpp>
 #include <assess/report/kinematic_report.hpp>
@@ -38,9 +40,28 @@ struct RunArgs {
 
 void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_text);
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+// The case file's text for the report's appendix (the bounded reader: the
+// file already read once, so the same checks).
+std::string read_text(const std::string& path) { return read_input_file(path, input_kinds::case_file); }
+
+// Refuses the outputs before a long run rather than after it: an --html or
+// --pdf that names an input of the run (the case file itself), a directory,
+// a link out of its folder (output_file.hpp; written the same way at the end).
+void check_outputs(const RunArgs& a) {
+  if (!a.html.empty()) check_output_file(a.html, "--html");
+  if (!a.pdf.empty()) check_output_file(a.pdf, "--pdf");
+  if (!a.html.empty() && a.html == a.pdf) throw InputError("--html and --pdf name the same file '" + a.html + "'");
+}
+
+// --expand DIR: each expanded case as DIR/<id>.json, written whole through
+// write_output_file: never over the building file or another input of the
+// run, never through a link out of DIR.
+void write_expanded(const RunArgs& a, const BuildingCase& b, const std::vector<const BuildingMechanism*>& ms) {
+  make_output_folder(a.expand, "--expand");
+  for (const BuildingMechanism* m : ms) check_output_file(a.expand + "/" + m->id + ".json", "--expand " + a.expand, a.expand);
+  for (const BuildingMechanism* m : ms)
+    write_output_file(a.expand + "/" + m->id + ".json", standalone_case(b, *m).dump(2) + "\n", "--expand " + a.expand,
+                      a.expand);
 }
 
 // A building case (issue 22; docs/user/building.md): every mechanism, the
@@ -50,8 +71,17 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
   BuildingCase bc = parse_building(doc, a.file);
   if (!a.mechanism.empty()) {
     const BuildingMechanism& m = find_mechanism(bc, a.mechanism);
+    // --expand with --mechanism: that mechanism's expanded case only.
+    if (!a.expand.empty()) write_expanded(a, bc, {&m});
     run_single(a, m.kase, standalone_case(bc, m).dump(2) + "\n");
+    if (!a.expand.empty() && !a.json) std::cout << "\nexpanded case written to " << a.expand << "/" << m.id << ".json\n";
     return;
+  }
+  if (!a.expand.empty()) {
+    // Checked before the run, written after it (with the shared selections' ranges).
+    make_output_folder(a.expand, "--expand");
+    for (const BuildingMechanism& m : bc.mechanisms)
+      check_output_file(a.expand + "/" + m.id + ".json", "--expand " + a.expand, a.expand);
   }
   FacadeOptions opt;
   opt.keep_going = a.keep_going;
@@ -59,23 +89,16 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
   const BuildingAssessment res = assess_building(std::move(bc), opt);
   print_warnings(res.warnings);
   if (!a.expand.empty()) {
-    std::filesystem::create_directories(a.expand);
-    for (const BuildingMechanism& m : res.building.mechanisms) {
-      const std::string path = a.expand + "/" + m.id + ".json";
-      std::ofstream out(path, std::ios::binary);
-      if (!out || !(out << standalone_case(res.building, m).dump(2) << "\n"))
-        throw InputError("--expand " + a.expand + ": cannot write " + path);
-    }
+    std::vector<const BuildingMechanism*> all;
+    for (const BuildingMechanism& m : res.building.mechanisms) all.push_back(&m);
+    write_expanded(a, res.building, all);
   }
   if (!a.html.empty() || !a.pdf.empty()) {
     ReportOptions ro;
     ro.lang = lang;
     ro.case_text = read_text(a.file);
     const std::string page = building_html(res, ro);
-    if (!a.html.empty()) {
-      std::ofstream out(a.html, std::ios::binary);
-      if (!out || !(out << page)) throw InputError("--html " + a.html + ": cannot write the file");
-    }
+    if (!a.html.empty()) write_output_file(a.html, page, "--html");
     if (!a.pdf.empty()) html_to_pdf(page, a.pdf);
   }
   if (a.json) {
@@ -90,7 +113,8 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
 }
 
 void run(const RunArgs& a) {
-  const nlohmann::json doc = read_json_file(a.file);
+  const nlohmann::json doc = read_json_file(a.file, input_kinds::case_file);
+  check_outputs(a);
   if (is_building_document(doc)) return run_building(a, doc);
   if (!a.mechanism.empty() || !a.expand.empty())
     throw InputError(a.file + ": --mechanism and --expand apply to a building case (a file with \"walls\"), "
@@ -134,10 +158,7 @@ void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_tex
     if (ties) ro.ties = &*ties;
     ro.case_text = case_text;
     const std::string page = facade_html(res, ro);
-    if (!a.html.empty()) {
-      std::ofstream out(a.html, std::ios::binary);
-      if (!out || !(out << page)) throw InputError("--html " + a.html + ": cannot write the file");
-    }
+    if (!a.html.empty()) write_output_file(a.html, page, "--html");
     if (!a.pdf.empty()) html_to_pdf(page, a.pdf);
   }
   if (a.json) {

@@ -5,6 +5,8 @@
 
 #include <cstdio>
 #include <exception>
+#include <filesystem>
+#include <new>
 #include <iostream>
 #include <map>
 #include <string>
@@ -59,6 +61,19 @@ int main(int argc, char** argv) {
     return rc == 0 ? 0 : assess::cli::exit_input_error;
   } catch (const assess::InputError& e) {
     std::cerr << "assess: error: " << e.what() << "\n";
+    return assess::cli::exit_input_error;
+  } catch (const assess::SystemError& e) {
+    // A failure of the machine (disk full, I/O error): exit status 1.
+    std::cerr << "assess: error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "assess: error: out of memory (the input asks for more memory than the machine has)\n";
+    return 1;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // Every output goes through write_output_file; a file-system call left
+    // elsewhere still names its paths and the system's reason.
+    std::cerr << "assess: error: " << e.path1().string() << (e.path2().empty() ? "" : " -> " + e.path2().string())
+              << ": " << e.code().message() << "\n";
     return assess::cli::exit_input_error;
   } catch (const std::exception& e) {
     std::cerr << "assess: internal error: " << e.what() << "\n";

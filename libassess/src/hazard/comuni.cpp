@@ -3,6 +3,7 @@
 
 #include "assess/hazard/hazard.hpp"
 #include "assess/support/error.hpp"
+#include "assess/support/input_file.hpp"
 #include "assess/support/json_input.hpp"
 
 #include <algorithm>
@@ -102,8 +103,7 @@ std::string comune_note() {
 }
 
 ComuneTable ComuneTable::load(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the list of comuni");
+  std::istringstream in(read_input_file(path, input_kinds::comuni_table));
   ComuneTable t;
   std::string line;
   int n = 0;

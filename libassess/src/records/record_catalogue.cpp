@@ -11,6 +11,8 @@
 #include "assess/records/record_io.hpp"
 #include "assess/records/strong_motion.hpp"
 #include "assess/support/error.hpp"
+#include "assess/support/input_file.hpp"
+#include "assess/support/json_input.hpp"
 #include "assess/support/units.hpp"
 #include "support/parallel_for.hpp"
 
@@ -164,8 +166,7 @@ std::vector<Record> RecordCatalogue::load_all(const std::vector<CatalogueEntry>&
 }
 
 RecordCatalogue build_catalogue(const std::string& table) {
-  std::ifstream in(table, std::ios::binary);
-  if (!in) throw InputError("cannot open record metadata table '" + table + "'");
+  std::istringstream in(read_input_file(table, input_kinds::metadata_table));
   RecordCatalogue cat;
   cat.directory = directory_of(table);
   cat.description =
@@ -302,12 +303,12 @@ std::string catalogue_json(const RecordCatalogue& cat) {
 }
 
 RecordCatalogue read_catalogue(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError("cannot open record catalogue '" + path + "'");
+  // The bounded reader and the JSON parser of case files (depth limit, the
+  // path of a malformed value); a directory or /dev/zero is named.
+  const nlohmann::json j = parse_json_text(read_input_file(path, input_kinds::record_catalogue), path);
   RecordCatalogue cat;
   cat.directory = directory_of(path);
   try {
-    const nlohmann::json j = nlohmann::json::parse(in);
     cat.description = j.value("description", "");
     for (const auto& r : j.at("records")) {
       CatalogueEntry e;

@@ -7,6 +7,7 @@
 #include "assess/records/record_io.hpp"
 
 #include "assess/support/error.hpp"
+#include "assess/support/input_file.hpp"
 #include "assess/support/units.hpp"
 
 #include <algorithm>
@@ -56,16 +57,9 @@ std::vector<std::string> split_lines(std::string text) {
 }
 
 /// The content of a record file.
-std::string read_text(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(path + ": is a directory, expected a record file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot open record file '" + path + "'");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+/// (The bounded reader: a regular file of at most 256 MB; a directory, a
+/// device such as /dev/zero or a FIFO is named, never read.)
+std::string read_text(const std::string& path) { return read_input_file(path, input_kinds::record_file); }
 
 /// Appends the numbers of `line`, times `factor`, to `out`. Numbers may
 /// touch (fixed-width E15.7 fields with no blank before a minus sign).

@@ -4,6 +4,8 @@
 #include "assess/report/pdf.hpp"
 
 #include "assess/support/error.hpp"
+#include "assess/support/input_file.hpp"
+#include "assess/support/output_file.hpp"
 
 #include <sys/wait.h>
 
@@ -64,9 +66,8 @@ void html_to_pdf(const std::string& html, const std::string& pdf_path) {
     throw InputError("--pdf: " + browser + " was not found on PATH: install it (Debian: apt-get install chromium)");
   if (code != 0 || !fs::exists(out) || read_head(out.string(), 4) != "%PDF")
     throw InputError("--pdf: " + browser + " could not print the report (exit " + std::to_string(code) + ")");
-  std::error_code ec;
-  fs::copy_file(out, pdf_path, fs::copy_options::overwrite_existing, ec);
-  if (ec) throw InputError("--pdf " + pdf_path + ": cannot write the file (" + ec.message() + ")");
+  // Whole or not at all, never over an input of the run (output_file.hpp).
+  write_output_file(pdf_path, read_input_file(out.string(), input_kinds::own_output), "--pdf");
 }
 
 }  // namespace assess

@@ -19,6 +19,23 @@ namespace assess {
 
 namespace {
 
+// FNV-1a 64-bit hash of a file's bytes as 16 hex digits ("" if unreadable),
+// as the fragility summary's case_fnv1a64 (fragility_report.cpp).
+std::string content_fnv1a64(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "";
+  std::uint64_t h = 14695981039346656037ull;
+  char c;
+  while (in.get(c)) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 1099511628211ull;
+  }
+  char buf[20];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+
 const char* const kColumns[] = {"id",           "stripe",        "TR_years",        "im_m_s2",   "record",
                                 "scale",        "polarity",      "restitution",     "theta_max_rad",
                                 "theta_u_rad",  "theta_ratio",   "d_star_m",        "dc_energy",
@@ -117,6 +134,10 @@ std::string FragilityJob::inputs_text() const {
   using nlohmann::json;
   json j;
   j["case"] = s_.file;
+  // The case's content, not only its name: a --resume into the output of
+  // another case with the same file name (another folder, or the file edited
+  // since) is refused (issue 31).
+  j["case_fnv1a64"] = content_fnv1a64(s_.file);
   j["project"] = s_.project;
   j["method"] = to_string(s_.options.method);
   j["mechanism"] = s_.mechanism;
