@@ -23,6 +23,7 @@
 #include <filesystem>
 #include <iostream>
 #include <sstream>
+#include <optional>
 #include <string>
 
 #include "mpi_session.hpp"
@@ -84,6 +85,8 @@ void run(const FragilityArgs& a) {
   fo.seed = a.seed;
   const nlohmann::json doc = read_json_file(a.file, input_kinds::case_file);
   CaseFile kase;
+  std::optional<BuildingCase> building;  // a building case: its errors name its paths and the mechanism
+  std::size_t mechanism_index = 0;
   std::string out_default = default_out(a.file);
   if (is_building_document(doc)) {
     // A building case (issue 22): the mechanism named by --mechanism, else the
@@ -98,6 +101,8 @@ void run(const FragilityArgs& a) {
                   << "lowest NTC 2018 zetaE, " << approach << "); --mechanism ID for another\n";
     }
     kase = m->kase;
+    building = bc;
+    mechanism_index = static_cast<std::size_t>(m - bc.mechanisms.data());
     out_default = std::filesystem::path(a.file).stem().string() + "." + m->id + ".fragility";
   } else {
     if (!a.mechanism.empty())
@@ -105,7 +110,14 @@ void run(const FragilityArgs& a) {
                        "single-mechanism case");
     kase = parse_case(doc, a.file);
   }
-  const FragilityStudy study = prepare_fragility(kase, fo);
+  const FragilityStudy study = [&] {
+    try {
+      return prepare_fragility(kase, fo);
+    } catch (const InputError& e) {
+      if (!building) throw;
+      throw InputError(building_path_message(*building, building->mechanisms[mechanism_index], e.what()));
+    }
+  }();
   const FragilityJob job(study);
   const std::string out = a.out.empty() ? out_default : a.out;
 

@@ -10,6 +10,7 @@
 #include <assess/records/response_spectrum.hpp>
 #include <assess/support/error.hpp>
 #include <assess/support/output_file.hpp>
+#include <assess/support/number_rules.hpp>
 #include <assess/support/units.hpp>
 #include <assess/hazard/hazard.hpp>
 
@@ -186,6 +187,9 @@ void run_select(const RecordsArgs& a) {
   } catch (const InputError& e) {
     throw InputError(std::string("--soil/--topography: ") + e.what());
   }
+  // The number rules of the case files (support/number_rules.hpp).
+  check_number_option("--vn", a.vn, rules::nominal_life_years);
+  check_number_option("--cu", a.cu, rules::use_coefficient);
   spec.vn_years = a.vn;
   spec.cu = a.cu;
   const Site site(spec);

@@ -21,6 +21,7 @@
 #include <assess/report/pdf.hpp>
 
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <iostream>
 #include <memory>
@@ -38,7 +39,11 @@ struct RunArgs {
   bool json = false, keep_going = false, wide = false;
 };
 
-void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_text);
+// Rewrites a message of the case (for a building's mechanism: the building's
+// paths and the mechanism's id, building_path_message); identity otherwise.
+using MessageMap = std::function<std::string(const std::string&)>;
+
+void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_text, const MessageMap& map = {});
 
 // The case file's text for the report's appendix (the bounded reader: the
 // file already read once, so the same checks).
@@ -73,7 +78,13 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
     const BuildingMechanism& m = find_mechanism(bc, a.mechanism);
     // --expand with --mechanism: that mechanism's expanded case only.
     if (!a.expand.empty()) write_expanded(a, bc, {&m});
-    run_single(a, m.kase, standalone_case(bc, m).dump(2) + "\n");
+    // Its errors and warnings name the building file's paths and the mechanism.
+    const MessageMap map = [&](const std::string& text) { return building_path_message(bc, m, text); };
+    try {
+      run_single(a, m.kase, standalone_case(bc, m).dump(2) + "\n", map);
+    } catch (const InputError& e) {
+      throw InputError(map(e.what()));
+    }
     if (!a.expand.empty() && !a.json) std::cout << "\nexpanded case written to " << a.expand << "/" << m.id << ".json\n";
     return;
   }
@@ -122,7 +133,7 @@ void run(const RunArgs& a) {
   run_single(a, parse_case(doc, a.file), read_text(a.file));
 }
 
-void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_text) {
+void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_text, const MessageMap& map) {
   const Lang lang = parse_lang(a.lang);
   FacadeOptions opt;
   opt.keep_going = a.keep_going;
@@ -131,7 +142,10 @@ void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_tex
   // Issue 23: the tie rods ("ties" or "design"): before/after and their checks;
   // given ties also decide the dynamic check rows.
   const std::optional<TieInterventionResult> ties = assess_ties(res);
-  print_warnings(res.warnings);
+  std::vector<std::string> warnings = res.warnings;
+  if (map)
+    for (std::string& w : warnings) w = map(w);
+  print_warnings(warnings);
   // A fragility result of this case: --fragility DIR, or the default output
   // directory of `assess fragility` (CASE.fragility) when it holds this case's.
   std::optional<nlohmann::json> frag;

@@ -2,6 +2,12 @@
 #include "commands.hpp"
 
 #include <assess/support/error.hpp>
+#include <assess/support/number_rules.hpp>
+
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
 
 #include <cstdio>
 #include <exception>
@@ -11,6 +17,40 @@
 #include <map>
 #include <string>
 
+
+void assess::cli::require_finite_numbers(CLI::App& app) {
+  const CLI::Validator finite(
+      [](std::string& text) -> std::string {
+        std::string t = text;
+        t.erase(0, t.find_first_not_of(" \t"));
+        const std::string lower = [&] {
+          std::string l;
+          for (char c : t) l += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+          return l;
+        }();
+        char* end = nullptr;
+        const double v = std::strtod(t.c_str(), &end);
+        if (end == t.c_str()) return "";  // not a number at all: CLI11's own message
+        if (lower.find("0x") != std::string::npos)
+          return "must be a decimal number, got '" + text + "' (a hexadecimal float)";
+        if (!std::isfinite(v)) return "must be a finite number, got '" + text + "'";
+        if (assess::is_subnormal(v))
+          return "must be a number of normal size, got '" + text + "' (a subnormal number, |x| < 2.2e-308)";
+        return "";
+      },
+      "FINITE");
+  std::function<void(CLI::App&)> walk = [&](CLI::App& a) {
+    for (CLI::Option* o : a.get_options())
+      if (o->get_type_name() == "FLOAT") o->check(finite);
+    for (CLI::App* sub : a.get_subcommands({})) walk(*sub);
+  };
+  walk(app);
+}
+
+void assess::cli::check_number_option(const char* option, double value, const assess::NumberRule& rule) {
+  const std::string bad = assess::number_rule_violation(value, rule);
+  if (!bad.empty()) throw assess::InputError(std::string(option) + ": " + bad);
+}
 
 void assess::cli::print_warnings(const std::vector<std::string>& warnings) {
   for (const std::string& w : warnings) std::cerr << "assess: warning: " << w << "\n";
@@ -54,6 +94,10 @@ int main(int argc, char** argv) {
     all += "  " + it->second + "\n";
   }
   app.footer(all + "\nReport bugs and read the documentation at docs/README.md (installed in share/doc/assess).");
+  // Every number option of every subcommand: a finite decimal number, never
+  // "nan", "inf", a hexadecimal float or a subnormal (issue 31: --k nan was
+  // taken for "no --k").
+  assess::cli::require_finite_numbers(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

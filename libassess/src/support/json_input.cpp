@@ -6,6 +6,7 @@
 #include "assess/support/input_file.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -160,7 +161,7 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& file)
     if (path.size() > 80) path = path.substr(0, 80) + "...";
     throw InputError(file + ": " + path + ": arrays and objects nested more than " + std::to_string(json_max_depth) +
                      " levels deep (at " + line_column(text, where) +
-                     "): not a case file; a case nests at most about ten levels");
+                     "); a case, building or campaign file nests about ten levels");
   }
   try {
     return nlohmann::json::parse(text);
@@ -277,7 +278,22 @@ Eigen::Vector2d JsonNode::as_point(const NumberRule& rule) const {
 
 std::string JsonNode::as_string() const {
   if (!value_->is_string()) fail(std::string("expected a string, got ") + type_name(*value_));
-  return value_->get<std::string>();
+  const std::string& s = value_->get_ref<const std::string&>();
+  // Names, paths and labels are printed in reports, tables and HTML: no
+  // control characters (U+0000-U+001F, U+007F, U+0080-U+009F), which broke
+  // the text tables and put a NUL byte into the HTML (issue 31).
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    const bool c1 = c == 0xC2 && i + 1 < s.size() && static_cast<unsigned char>(s[i + 1]) >= 0x80 &&
+                    static_cast<unsigned char>(s[i + 1]) <= 0x9F;
+    if (c < 0x20 || c == 0x7F || c1) {
+      char code[16];
+      std::snprintf(code, sizeof code, "U+%04X", c1 ? static_cast<unsigned char>(s[i + 1]) : c);
+      fail(std::string("the text holds a control character (") + code + ") at character " + std::to_string(i + 1) +
+           ": names and file names are printed in the reports; write it without control characters");
+    }
+  }
+  return s;
 }
 
 double JsonNode::number(const std::string& key, const char* unit, double lo, double hi) const {

@@ -114,9 +114,16 @@ std::string resolve_output(const std::string& path, const std::string& what, con
   std::string target = path;
   struct stat lst {};
   if (::lstat(path.c_str(), &lst) == 0 && S_ISLNK(lst.st_mode)) {
-    // A link: followed only when it leads to a file inside the asked folder.
+    // A link: followed only when it leads to a file inside the asked folder
+    // (followed by hand: weakly_canonical stops at a dangling link).
     std::error_code ec;
-    const fs::path to = fs::weakly_canonical(fs::path(path), ec);
+    fs::path to = fs::path(path);
+    for (int hops = 0; hops < 40 && fs::is_symlink(fs::symlink_status(to, ec)); ++hops) {
+      const fs::path next = fs::read_symlink(to, ec);
+      if (ec) break;
+      to = next.is_absolute() ? next : to.parent_path() / next;
+    }
+    to = fs::weakly_canonical(to, ec);
     fs::path parent = folder.empty() ? fs::path(path).parent_path() : fs::path(folder);
     if (parent.empty()) parent = ".";
     const fs::path in = fs::weakly_canonical(parent, ec);
