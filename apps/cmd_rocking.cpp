@@ -105,8 +105,20 @@ void run(const RockingArgs& a) {
   } else if (!a.unit.empty()) {
     // --unit without --dt: a plain file of two columns (time in s,
     // acceleration); the reader names the file, the line and what is wrong
-    // (a decreasing time is the file's fault, not --unit's).
-    record = read_plain_record(a.record, parse_acceleration_unit(a.unit));
+    // (a decreasing time is the file's fault, not --unit's). A record file
+    // with a header (AT2, ESM, .cor.acc) gives its own unit: --unit is wrong.
+    try {
+      record = read_plain_record(a.record, parse_acceleration_unit(a.unit));
+    } catch (const InputError& plain) {
+      std::string format;
+      try {
+        format = read_record(a.record).format;
+      } catch (const InputError&) {
+        throw plain;
+      }
+      throw InputError("--unit applies only to a plain record file: " + a.record + " is a " + format +
+                       " record, whose header gives the unit and the time step (leave --unit out)");
+    }
   } else {
     record = read_record(a.record);
   }

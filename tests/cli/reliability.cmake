@@ -158,5 +158,5 @@ set_tests_properties(cli.rel4_campaign_tiny_scale PROPERTIES LABELS cli TIMEOUT 
   PASS_REGULAR_EXPRESSION "1 analyses \\(0 resumed, 1 run in [0-9.]+ s, 1 failed\\).*events accumulate")
 # A fragility --resume into the output of another case with the same file
 # name (another folder): its content differs, so the inputs do (issue 31).
-rel4_sh_test(rel4_fragility_resume_other_case 2 "cannot resume into .*its fragility.json describes other inputs"
+rel4_sh_test(rel4_fragility_resume_other_case 2 "cannot resume into .*its fragility.json describes a different campaign or fragility study"
   "rm -rf '${_r4}/frag' && mkdir -p '${_r4}/frag/a' '${_r4}/frag/b' && cp tests/data/fragility/free_wall.json '${_r4}/frag/a/case.json' && sed 's/\"thickness\": *0.5/\"thickness\": 0.55/' tests/data/fragility/free_wall.json > '${_r4}/frag/b/case.json' && cd '${_r4}/frag/a' && @EXE@ fragility case.json --stripes 475 --records 3 --bootstrap 0 --out ../out --quiet --no-plots --json > /dev/null && cd ../b && @EXE@ fragility case.json --stripes 475 --records 3 --bootstrap 0 --out ../out --resume --quiet --no-plots")

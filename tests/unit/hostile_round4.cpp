@@ -304,7 +304,7 @@ TEST_CASE("class 1: records: hexadecimal values, dt of 1e-320 and a decreasing t
   const std::string at2 = "PEER\nx\nACCELERATION TIME SERIES IN UNITS OF G\nNPTS=    2, DT=  1E-320 SEC\n0.1 0.2\n";
   CHECK(input_error([&] { parse_record_text(at2, "r.AT2"); }).find("r.AT2: the header gives the time step") == 0);
   const std::string at2hex = "PEER\nx\nACCELERATION TIME SERIES IN UNITS OF G\nNPTS=    2, DT=  0x1p-6 SEC\n0.1 0.2\n";
-  CHECK(input_error([&] { parse_record_text(at2hex, "h.AT2"); }).find("h.AT2: the header gives the time step 0 s") == 0);
+  CHECK(input_error([&] { parse_record_text(at2hex, "h.AT2"); }).find("h.AT2: time step must be positive (s): the header gives the time step 0 s") == 0);
   write(dir + "/down.txt", "0 0.1\n0.01 0.2\n0.02 0.1\n0.01 0.3\n");
   const std::string e = input_error([&] { read_plain_record(dir + "/down.txt", AccelerationUnit::g); });
   CHECK(e.find("down.txt:4: the time column must increase: t = 0.01 s after t = 0.02 s") != std::string::npos);

@@ -297,8 +297,9 @@ CampaignRunSummary run_campaign_job(const CampaignJob& job, const std::string& o
     const std::string old = read_input_file(spec_path, input_kinds::own_output);
     if (old != spec_text)
       throw InputError("cannot resume into '" + out_dir + "': its " + job.inputs_file() +
-                       " describes other inputs (another case or campaign file, or the same file edited since, "
-                       "other records or options): choose another --out, or run without --resume into a new folder");
+                       " describes a different campaign or fragility study (another case or campaign file, or the same "
+                       "file edited since, other records or options): choose another --out, or run without --resume "
+                       "into a new folder");
   } else {
     // Written by every part to a private temporary name and renamed: identical content, atomic replacement.
     write_output_file(spec_path, spec_text, "--out " + out_dir, out_dir);

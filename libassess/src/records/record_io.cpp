@@ -153,6 +153,8 @@ std::string show(double v) {
 /// dt within [record_dt_min_s, record_dt_max_s]; `where` says where it came from.
 void check_dt_range(double dt, const std::string& path, const std::string& where) {
   if (std::isfinite(dt) && dt >= record_dt_min_s && dt <= record_dt_max_s) return;
+  if (!(dt > 0.0))
+    throw InputError(path + ": time step must be positive (s): " + where + " " + show(dt) + " s");
   throw InputError(path + ": " + where + " " + show(dt) + " s: expected a time step in [" + show(record_dt_min_s) +
                    ", " + show(record_dt_max_s) + "] s (strong-motion records are sampled at 0.001-0.04 s)");
 }
