@@ -10,6 +10,8 @@
 
 #include <assess/assessment/building_case.hpp>
 #include <assess/assessment/case_file.hpp>
+#include <assess/campaign/campaign_runner.hpp>
+#include <assess/risk/fragility_job.hpp>
 #include <assess/hazard/comuni.hpp>
 #include <assess/hazard/hazard.hpp>
 #include <assess/kinematic/chain.hpp>
@@ -114,6 +116,9 @@ TEST_CASE("class 1: every input reader refuses a device, a FIFO and a directory 
     CHECK(input_error([&] { ComuneTable::load(path); }).find("expected a list of comuni") != std::string::npos);
   }
   CHECK(input_error([] { read_record("/dev/zero"); }).find("a character device") != std::string::npos);
+  // The tool's own result files read back (--resume, the report) as well.
+  CHECK(input_error([&] { read_campaign_csv(fifo); }).find("a FIFO") != std::string::npos);
+  CHECK(input_error([&] { read_fragility_csv("/dev/zero"); }).find("a character device") != std::string::npos);
   CHECK(input_error([&] { read_record(fifo); }).find("a FIFO") != std::string::npos);
   CHECK(input_error([&] { read_record(dir); }).find("a directory") != std::string::npos);
   CHECK(seconds_since(t0) < 5.0);  // was: reading /dev/zero until 2 GB, 15 s

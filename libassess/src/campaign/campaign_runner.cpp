@@ -181,6 +181,7 @@ AnalysisRow parse_campaign_csv_row(const std::string& line) {
 }
 
 std::vector<AnalysisRow> read_campaign_csv(const std::string& path) {
+  if (!non_regular_file_type(path).empty()) check_input_file(path, input_kinds::own_output);  // not a FIFO, /dev/zero
   std::ifstream in(path);
   if (!in) throw InputError("cannot open campaign results '" + path + "'");
   std::string line;
@@ -203,6 +204,7 @@ namespace {
 // expected id sequence; returns their count and the byte offset after them.
 std::pair<std::uint64_t, std::uint64_t> valid_prefix(const CampaignJob& job, const std::string& path,
                                                      const TaskList& tasks) {
+  if (!non_regular_file_type(path).empty()) check_input_file(path, input_kinds::own_output);  // not a FIFO, /dev/zero
   std::ifstream in(path, std::ios::binary);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::string header = job.csv_header() + "\n";
@@ -419,6 +421,7 @@ void merge_campaign_job_parts(const CampaignJob& job, const std::vector<std::str
     if (!p.in.eof()) throw InputError("cannot read '" + name + "'");
   };
   for (std::size_t i = 0; i < parts.size(); ++i) {
+    if (!non_regular_file_type(part_paths[i]).empty()) check_input_file(part_paths[i], input_kinds::own_output);
     parts[i].in.open(part_paths[i], std::ios::binary);
     std::string header;
     if (!parts[i].in || !std::getline(parts[i].in, header) || header != job.csv_header())

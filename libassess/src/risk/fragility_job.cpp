@@ -6,6 +6,7 @@
 #include "assess/risk/fragility_job.hpp"
 
 #include "assess/support/error.hpp"
+#include "assess/support/input_file.hpp"
 
 #include "campaign/csv_fields.hpp"
 
@@ -113,6 +114,7 @@ FragilityRow parse_fragility_csv_row(const std::string& line) {
 }
 
 std::vector<FragilityRow> read_fragility_csv(const std::string& path) {
+  if (!non_regular_file_type(path).empty()) check_input_file(path, input_kinds::own_output);  // not a FIFO, /dev/zero
   std::ifstream in(path);
   if (!in) throw InputError("cannot open fragility results '" + path + "'");
   std::string line;
