@@ -13,6 +13,8 @@
 #include <assess/support/content_hash.hpp>
 #include <assess/records/response_spectrum.hpp>
 #include <assess/support/error.hpp>
+#include <assess/support/output_file.hpp>
+#include <assess/support/number_rules.hpp>
 #include <assess/support/units.hpp>
 #include <assess/hazard/hazard.hpp>
 
@@ -105,10 +107,7 @@ void run_build(const RecordsArgs& a) {
   RecordCatalogue cat = build_catalogue(table);
   const std::string out = a.output.empty() ? cat.directory + "/catalogue.json" : a.output;
   const std::string text = catalogue_json(cat);
-  {
-    std::ofstream os(out, std::ios::binary);
-    if (!os || !(os << text)) throw InputError("--output '" + out + "': cannot write");
-  }
+  write_output_file(out, text, "--output");
   std::size_t usable = 0;
   for (const auto& e : cat.entries) usable += e.usable_for_design;
   std::cout << "wrote " << out << ": " << cat.entries.size() << " components, " << usable << " usable for design\n";
@@ -223,6 +222,9 @@ void run_select(const RecordsArgs& a) {
   } catch (const InputError& e) {
     throw InputError(std::string("--soil/--topography: ") + e.what());
   }
+  // The number rules of the case files (support/number_rules.hpp).
+  check_number_option("--vn", a.vn, rules::nominal_life_years);
+  check_number_option("--cu", a.cu, rules::use_coefficient);
   spec.vn_years = a.vn;
   spec.cu = a.cu;
   const Site site(spec);

@@ -8,6 +8,8 @@
 #include <assess/report/building_report.hpp>
 #include <assess/support/json_input.hpp>
 #include <assess/support/error.hpp>
+#include <assess/support/input_file.hpp>
+#include <assess/support/output_file.hpp>
 #include <assess/assessment/facade_assessment.hpp>
 #include <assess/report/facade_report.hpp>
 #include <assess/report/kinematic_report.hpp>
@@ -19,6 +21,7 @@
 #include <assess/report/report_files.hpp>
 
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <iostream>
 #include <memory>
@@ -37,11 +40,36 @@ struct RunArgs {
   bool wants_report() const { return !html.empty() || !pdf.empty() || !docx.empty() || !txt.empty(); }
 };
 
-void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_text);
+// Rewrites a message of the case (for a building's mechanism: the building's
+// paths and the mechanism's id, building_path_message); identity otherwise.
+using MessageMap = std::function<std::string(const std::string&)>;
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_text, const MessageMap& map = {});
+
+// The case file's text for the report's appendix (the bounded reader: the
+// file already read once, so the same checks).
+std::string read_text(const std::string& path) { return read_input_file(path, input_kinds::case_file); }
+
+// Refuses the outputs before a long run rather than after it: an --html or
+// --pdf, --docx or --txt that names an input of the run (the case file itself), a directory,
+// a link out of its folder (output_file.hpp; written the same way at the end).
+void check_outputs(const RunArgs& a) {
+  if (!a.html.empty()) check_output_file(a.html, "--html");
+  if (!a.pdf.empty()) check_output_file(a.pdf, "--pdf");
+  if (!a.docx.empty()) check_output_file(a.docx, "--docx");
+  if (!a.txt.empty()) check_output_file(a.txt, "--txt");
+  if (!a.html.empty() && a.html == a.pdf) throw InputError("--html and --pdf name the same file '" + a.html + "'");
+}
+
+// --expand DIR: each expanded case as DIR/<id>.json, written whole through
+// write_output_file: never over the building file or another input of the
+// run, never through a link out of DIR.
+void write_expanded(const RunArgs& a, const BuildingCase& b, const std::vector<const BuildingMechanism*>& ms) {
+  make_output_folder(a.expand, "--expand");
+  for (const BuildingMechanism* m : ms) check_output_file(a.expand + "/" + m->id + ".json", "--expand " + a.expand, a.expand);
+  for (const BuildingMechanism* m : ms)
+    write_output_file(a.expand + "/" + m->id + ".json", standalone_case(b, *m).dump(2) + "\n", "--expand " + a.expand,
+                      a.expand);
 }
 
 // A building case (issue 22; docs/user/building.md): every mechanism, the
@@ -51,8 +79,23 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
   BuildingCase bc = parse_building(doc, a.file);
   if (!a.mechanism.empty()) {
     const BuildingMechanism& m = find_mechanism(bc, a.mechanism);
-    run_single(a, m.kase, standalone_case(bc, m).dump(2) + "\n");
+    // --expand with --mechanism: that mechanism's expanded case only.
+    if (!a.expand.empty()) write_expanded(a, bc, {&m});
+    // Its errors and warnings name the building file's paths and the mechanism.
+    const MessageMap map = [&](const std::string& text) { return building_path_message(bc, m, text); };
+    try {
+      run_single(a, m.kase, standalone_case(bc, m).dump(2) + "\n", map);
+    } catch (const InputError& e) {
+      throw InputError(map(e.what()));
+    }
+    if (!a.expand.empty() && !a.json) std::cout << "\nexpanded case written to " << a.expand << "/" << m.id << ".json\n";
     return;
+  }
+  if (!a.expand.empty()) {
+    // Checked before the run, written after it (with the shared selections' ranges).
+    make_output_folder(a.expand, "--expand");
+    for (const BuildingMechanism& m : bc.mechanisms)
+      check_output_file(a.expand + "/" + m.id + ".json", "--expand " + a.expand, a.expand);
   }
   FacadeOptions opt;
   opt.keep_going = a.keep_going;
@@ -60,13 +103,9 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
   const BuildingAssessment res = assess_building(std::move(bc), opt);
   print_warnings(res.warnings);
   if (!a.expand.empty()) {
-    std::filesystem::create_directories(a.expand);
-    for (const BuildingMechanism& m : res.building.mechanisms) {
-      const std::string path = a.expand + "/" + m.id + ".json";
-      std::ofstream out(path, std::ios::binary);
-      if (!out || !(out << standalone_case(res.building, m).dump(2) << "\n"))
-        throw InputError("--expand " + a.expand + ": cannot write " + path);
-    }
+    std::vector<const BuildingMechanism*> all;
+    for (const BuildingMechanism& m : res.building.mechanisms) all.push_back(&m);
+    write_expanded(a, res.building, all);
   }
   if (a.wants_report()) {
     ReportOptions ro;
@@ -88,7 +127,8 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
 }
 
 void run(const RunArgs& a) {
-  const nlohmann::json doc = read_json_file(a.file);
+  const nlohmann::json doc = read_json_file(a.file, input_kinds::case_file);
+  check_outputs(a);
   if (is_building_document(doc)) return run_building(a, doc);
   if (!a.mechanism.empty() || !a.expand.empty())
     throw InputError(a.file + ": --mechanism and --expand apply to a building case (a file with \"walls\"), "
@@ -96,7 +136,7 @@ void run(const RunArgs& a) {
   run_single(a, parse_case(doc, a.file), read_text(a.file));
 }
 
-void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_text) {
+void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_text, const MessageMap& map) {
   const Lang lang = parse_lang(a.lang);
   FacadeOptions opt;
   opt.keep_going = a.keep_going;
@@ -105,7 +145,10 @@ void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_tex
   // Issue 23: the tie rods ("ties" or "design"): before/after and their checks;
   // given ties also decide the dynamic check rows.
   const std::optional<TieInterventionResult> ties = assess_ties(res);
-  print_warnings(res.warnings);
+  std::vector<std::string> warnings = res.warnings;
+  if (map)
+    for (std::string& w : warnings) w = map(w);
+  print_warnings(warnings);
   // A fragility result of this case: --fragility DIR, or the default output
   // directory of `assess fragility` (CASE.fragility) when it holds this case's.
   std::optional<nlohmann::json> frag;

@@ -55,7 +55,7 @@ assess_cli_error_test(building_ties_bad_grade
   "ties_bad_grade.json: /walls/1/mechanisms/0/ties/0/rod/grade: \"S420\": expected one of \"S235\", \"S275\", \"S355\", \"B450C\" \\[M2 \"Side overturning\"\\]"
   run tests/cli/building_bad/ties_bad_grade.json)
 assess_cli_error_test(building_ties_wall_design_fm
-  "ties_wall_design_fm.json: /walls/0/design/ties/levels/0/masonry/fm_MPa: value -2 out of range: expected > 0 MPa"
+  "ties_wall_design_fm.json: /walls/0/design/ties/levels/0/masonry/fm_MPa: value -2 out of range: expected in \\[0.001, 10000\\] MPa"
   run tests/cli/building_bad/ties_wall_design_fm.json)
 assess_cli_error_test(building_ties_point_off_wall
   "ties_point_off_wall.json: /walls/0/mechanisms/0/ties/0/point: the anchor point .* is on no moving block"

@@ -19,7 +19,7 @@ assess_cli_error_test(kinematic_two_dof "/mechanism: the chain has 4 degrees of 
 assess_cli_error_test(kinematic_zero_dof "0 degrees of freedom" kinematic tests/cli/kinematic_bad/zero_dof.json)
 assess_cli_error_test(kinematic_hinge_off_block "/mechanism/constraints/0/point: the point is not on block \"a\"" kinematic tests/cli/kinematic_bad/hinge_off_block.json)
 assess_cli_error_test(kinematic_load_outside "/mechanism/loads/0/point: the load lies outside every block" kinematic tests/cli/kinematic_bad/load_outside.json)
-assess_cli_error_test(kinematic_negative_thickness "/mechanism/storeys/0/thickness: value -0.4 out of range: expected > 0 m" kinematic tests/cli/kinematic_bad/negative_thickness.json)
+assess_cli_error_test(kinematic_negative_thickness "/mechanism/storeys/0/thickness: value -0.4 out of range: expected in \\[0.001, 1000\\] m" kinematic tests/cli/kinematic_bad/negative_thickness.json)
 assess_cli_error_test(kinematic_not_activated "statically unstable.*alpha0 = -" kinematic tests/cli/kinematic_bad/not_activated.json)
 assess_cli_error_test(kinematic_unknown_key "unknown key \"thicknes\" \\(did you mean \"thickness\"\\?\\)" kinematic tests/cli/kinematic_bad/unknown_key.json)
 assess_cli_error_test(kinematic_missing_file "kinematic|exist" kinematic tests/cli/kinematic_bad/none.json)

@@ -22,7 +22,7 @@ assess_cli_test(records_select_json ARGS records select --ag 0.25 --F0 2.4 --Tc-
 assess_cli_error_test(records_show_unknown "record 'nope' is not in the catalogue" records show nope)
 assess_cli_error_test(records_bad_site_class "--site-class 'Q': expected A, B, C, D or E" records list --site-class Q)
 assess_cli_error_test(records_select_no_site "give the site as --lat/--lon or as --ag" records select)
-assess_cli_error_test(records_build_missing "cannot open record metadata table 'nope.csv'" records build --metadata nope.csv)
+assess_cli_error_test(records_build_missing "nope.csv: cannot open the record metadata table" records build --metadata nope.csv)
 assess_cli_error_test(run_select_bad_class "/dynamic/select/site_classes/0.*expected a site class" run tests/cli/run_bad/select_bad_class.json)
 assess_cli_error_test(run_select_bad_mw "/dynamic/select/Mw.*min <= max" run tests/cli/run_bad/select_bad_mw.json)
 # Issue 30: 7 class-C records, each scale <= 3.00, the range justified, no nan where metadata lack.

@@ -512,12 +512,12 @@ TEST_CASE("out-of-range values name the path, the range and the unit") {
   json m = one_storey();
   m["storeys"][0]["thickness"] = -0.45;
   CHECK_THROWS_WITH_AS(parse(with_mechanism(m)),
-                       doctest::Contains("case.json: /mechanism/storeys/0/thickness: value -0.45 out of range: expected > 0 m"),
+                       doctest::Contains("case.json: /mechanism/storeys/0/thickness: value -0.45 out of range: expected in [0.001, 1000] m (a dimension of a wall: 1 mm to 1 km)"),
                        assess::InputError);
   json v = json::parse(R"({ "type": "vertical_flexure", "height": 4.0, "thickness": -0.4,
                             "unit_weight": 20.0, "length": 1.0 })");
   CHECK_THROWS_WITH_AS(parse(with_mechanism(v)),
-                       doctest::Contains("case.json: /mechanism/thickness: value -0.4 out of range: expected > 0 m"),
+                       doctest::Contains("case.json: /mechanism/thickness: value -0.4 out of range: expected in [0.001, 1000] m (a dimension of a wall: 1 mm to 1 km)"),
                        assess::InputError);
   m = one_storey();
   m["storeys"][0]["floor_distance_from_inner_face"] = 0.6;
@@ -533,7 +533,7 @@ TEST_CASE("out-of-range values name the path, the range and the unit") {
   m = one_storey();
   m["storeys"][0]["floor_weight"] = -3.0;
   CHECK_THROWS_WITH_AS(parse(with_mechanism(m)),
-                       doctest::Contains("case.json: /mechanism/storeys/0/floor_weight: value -3 out of range: expected >= 0 kN"),
+                       doctest::Contains("case.json: /mechanism/storeys/0/floor_weight: value -3 out of range: expected in [0, 1e+06] kN (0 to 1 GN: a weight or a tie force)"),
                        assess::InputError);
   // The middle hinge lies strictly between the restraints.
   v["thickness"] = 0.4;
@@ -672,7 +672,7 @@ TEST_CASE("explicit blocks: geometry errors name the constraint or load") {
   b = wall_blocks();
   b["blocks"][0]["length"] = 0.0;
   CHECK_THROWS_WITH_AS(parse(with_mechanism(b)),
-                       doctest::Contains("case.json: /mechanism/blocks/0/length: value 0 out of range: expected > 0 m"),
+                       doctest::Contains("case.json: /mechanism/blocks/0/length: value 0 out of range: expected in [0.001, 1000] m (a dimension of a wall: 1 mm to 1 km)"),
                        assess::InputError);
 }
 

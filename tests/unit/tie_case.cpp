@@ -92,7 +92,7 @@ TEST_CASE("case file ties: units to SI and defaults") {
 TEST_CASE("case file ties: bad fields name the file, the JSON path, the expected value and unit") {
   auto doc = base_case();
   doc["ties"][0]["rod"]["diameter_mm"] = -20;
-  CHECK(error_of(doc).find("c.json: /ties/0/rod/diameter_mm: value -20 out of range: expected > 0 mm") != std::string::npos);
+  CHECK(error_of(doc).find("c.json: /ties/0/rod/diameter_mm: value -20 out of range: expected in [0.1, 10000] mm") != std::string::npos);
   doc = base_case();
   doc["ties"][1]["free_length_m"] = "8";
   CHECK(error_of(doc).find("/ties/1/free_length_m") != std::string::npos);

@@ -12,6 +12,7 @@
 #include "assessment/plausibility.hpp"
 #include "assess/support/error.hpp"
 #include "assess/support/json_input.hpp"
+#include "assess/support/number_rules.hpp"
 #include "assess/support/units.hpp"
 
 #include <algorithm>
@@ -59,9 +60,11 @@ MechanismSet parse_blocks(const JsonNode& m) {
     b.allow_only({"name", "polygon", "unit_weight", "length"});
     Block blk;
     blk.name = b.find("name") ? b.string("name") : "block " + std::to_string(blocks.size());
-    for (const JsonNode& v : b.array("polygon", 3)) blk.polygon.push_back(v.as_point("m"));
-    blk.unit_weight = b.number("unit_weight", "kN/m^3", 0.0) * kN;
-    blk.length = b.positive("length", "m");
+    for (const JsonNode& v : b.array("polygon", 3)) blk.polygon.push_back(v.as_point(rules::coordinate_m));
+    // Degenerate polygons named as such, with the JSON path (kinematic/chain.hpp).
+    if (const std::string d = polygon_defect(blk.polygon); !d.empty()) b.at("polygon").fail(d);
+    blk.unit_weight = b.number("unit_weight", rules::block_unit_weight_kN_m3) * kN;
+    blk.length = b.number("length", rules::dimension_m);
     names[blk.name] = static_cast<int>(blocks.size());
     blocks.push_back(blk);
   }
@@ -128,15 +131,15 @@ MechanismSet parse_blocks(const JsonNode& m) {
       }
       if (type == "weight") {
         ld.type = LoadType::Weight;
-        ld.weight = l.number("weight", "kN", 0.0) * kN;
+        ld.weight = l.number("weight", rules::weight_kN) * kN;
         ld.vertical = l.boolean_or("bears", true);
         ld.seismic = l.boolean_or("seismic", true);
       } else if (type == "force") {
         ld.type = LoadType::Force;
-        ld.force = l.at("force").as_point("kN") * kN;
+        ld.force = l.at("force").as_point(rules::force_kN) * kN;
       } else {
         ld.type = type == "tie" ? LoadType::Tie : LoadType::Friction;
-        const double F = l.number("force", "kN", 0.0) * kN;
+        const double F = l.number("force", rules::weight_kN) * kN;
         ld.force = Eigen::Vector2d(type == "tie" ? -F : F, 0.0);
       }
       loads.push_back(ld);
@@ -152,7 +155,7 @@ MechanismSet parse_blocks(const JsonNode& m) {
       zs += c.point.y();
       ++nz;
     }
-  const double Zc = m.find("Z_m") ? m.number("Z_m", "m", 0.0) : (nz ? zs / nz : 0.0);
+  const double Zc = m.find("Z_m") ? m.number("Z_m", rules::offset_m) : (nz ? zs / nz : 0.0);
   set.candidates.push_back({"explicit blocks", Chain(blocks, cons, loads), Zc, 0.0});
   return set;
 }
@@ -163,8 +166,8 @@ MechanismSet parse_blocks(const JsonNode& m) {
 template <class Params>
 void parse_crack_angle(const JsonNode& m, Params& p) {
   if (m.find("beta_deg")) p.beta_deg = open_interval(m.at("beta_deg"), "deg", 0.0, 90.0);
-  if (m.find("unit_length")) p.unit_length = m.positive("unit_length", "m");
-  if (m.find("course_height")) p.course_height = m.positive("course_height", "m");
+  if (m.find("unit_length")) p.unit_length = m.number("unit_length", rules::dimension_m);
+  if (m.find("course_height")) p.course_height = m.number("course_height", rules::dimension_m);
   p.beta_min_deg = m.number_or("beta_min_deg", p.beta_min_deg, "deg", 0.0, 90.0);
   p.beta_max_deg = m.number_or("beta_max_deg", p.beta_max_deg, "deg", 0.0, 90.0);
   p.search_points = m.integer_or("search_points", p.search_points, 2, 100);
@@ -371,19 +374,19 @@ MechanismSet parse_mechanism(const JsonNode& m, double FC) {
     for (const JsonNode& s : m.array("storeys", 1)) {
       s.allow_only({"height", "thickness", "floor_weight", "floor_distance_from_inner_face", "floor_bears", "thrust", "tie"});
       Storey st;
-      st.height = s.positive("height", "m");
-      st.thickness = s.positive("thickness", "m");
-      st.floor_weight = s.number_or("floor_weight", 0.0, "kN", 0.0) * kN;
+      st.height = s.number("height", rules::dimension_m);
+      st.thickness = s.number("thickness", rules::dimension_m);
+      st.floor_weight = s.number_or("floor_weight", 0.0, rules::weight_kN) * kN;
       st.floor_distance_from_inner_face = s.number_or("floor_distance_from_inner_face", 0.0, "m", 0.0, st.thickness);
       st.floor_bears = s.boolean_or("floor_bears", true);
-      st.thrust = s.number_or("thrust", 0.0, "kN") * kN;
-      st.tie = s.number_or("tie", 0.0, "kN", 0.0) * kN;
+      st.thrust = s.number_or("thrust", 0.0, rules::force_kN) * kN;
+      st.tie = s.number_or("tie", 0.0, rules::weight_kN) * kN;
       p.storeys.push_back(st);
     }
-    p.unit_weight = m.positive("unit_weight", "kN/m^3") * kN;
-    p.length = m.positive("length", "m");
+    p.unit_weight = m.number("unit_weight", rules::unit_weight_kN_m3) * kN;
+    p.length = m.number("length", rules::dimension_m);
     if (m.find("hinge_level")) p.hinge_level = m.integer("hinge_level", 0, static_cast<int>(p.storeys.size()) - 1);
-    p.hinge_setback = m.number_or("hinge_setback", 0.0, "m", 0.0);
+    p.hinge_setback = m.number_or("hinge_setback", 0.0, rules::offset_m);
     if (type == "roof_thrust") {
       p.roof = parse_roof(m.at("roof"), p.storeys.back().thickness);
       return roof_thrust_overturning(p);
@@ -394,12 +397,12 @@ MechanismSet parse_mechanism(const JsonNode& m, double FC) {
     m.allow_only({"type", "height", "thickness", "unit_weight", "length", "base_z", "top_load",
                   "top_load_distance_from_inner_face", "hinge_height"});
     VerticalFlexureParams p;
-    p.height = m.positive("height", "m");
-    p.thickness = m.positive("thickness", "m");
-    p.unit_weight = m.positive("unit_weight", "kN/m^3") * kN;
-    p.length = m.positive("length", "m");
-    p.base_z = m.number_or("base_z", 0.0, "m", 0.0);
-    p.top_load = m.number_or("top_load", 0.0, "kN", 0.0) * kN;
+    p.height = m.number("height", rules::dimension_m);
+    p.thickness = m.number("thickness", rules::dimension_m);
+    p.unit_weight = m.number("unit_weight", rules::unit_weight_kN_m3) * kN;
+    p.length = m.number("length", rules::dimension_m);
+    p.base_z = m.number_or("base_z", 0.0, rules::offset_m);
+    p.top_load = m.number_or("top_load", 0.0, rules::weight_kN) * kN;
     p.top_load_distance_from_inner_face = m.number_or("top_load_distance_from_inner_face", 0.0, "m", 0.0, p.thickness);
     if (m.find("hinge_height")) p.hinge_height = open_interval(m.at("hinge_height"), "m", 0.0, p.height);
     return vertical_flexure(p);
@@ -409,16 +412,16 @@ MechanismSet parse_mechanism(const JsonNode& m, double FC) {
                   "side_length", "base_z", "top_weight", "tie", "beta_deg", "unit_length", "course_height",
                   "beta_min_deg", "beta_max_deg", "search_points"});
     CompositeOverturningParams p;
-    p.height = m.positive("height", "m");
-    p.thickness = m.positive("thickness", "m");
-    p.length = m.positive("length", "m");
-    p.unit_weight = m.positive("unit_weight", "kN/m^3") * kN;
-    p.side_thickness = m.positive("side_thickness", "m");
+    p.height = m.number("height", rules::dimension_m);
+    p.thickness = m.number("thickness", rules::dimension_m);
+    p.length = m.number("length", rules::dimension_m);
+    p.unit_weight = m.number("unit_weight", rules::unit_weight_kN_m3) * kN;
+    p.side_thickness = m.number("side_thickness", rules::dimension_m);
     p.side_walls = m.integer_or("side_walls", 2, 1, 2);
-    p.side_length = m.positive("side_length", "m");
-    p.base_z = m.number_or("base_z", 0.0, "m", 0.0);
-    p.top_weight = m.number_or("top_weight", 0.0, "kN", 0.0) * kN;
-    p.tie = m.number_or("tie", 0.0, "kN", 0.0) * kN;
+    p.side_length = m.number("side_length", rules::dimension_m);
+    p.base_z = m.number_or("base_z", 0.0, rules::offset_m);
+    p.top_weight = m.number_or("top_weight", 0.0, rules::weight_kN) * kN;
+    p.tie = m.number_or("tie", 0.0, rules::weight_kN) * kN;
     parse_crack_angle(m, p);
     return composite_overturning(p);
   }
@@ -427,14 +430,14 @@ MechanismSet parse_mechanism(const JsonNode& m, double FC) {
   if (type == "friction_overturning") return parse_friction_overturning(m);
   m.allow_only({"type", "width", "height", "thickness", "unit_weight", "base_z", "ridge_weight", "ridge_thrust", "tie", "slices"});
   GableParams p;
-  p.width = m.positive("width", "m");
-  p.height = m.positive("height", "m");
-  p.thickness = m.positive("thickness", "m");
-  p.unit_weight = m.positive("unit_weight", "kN/m^3") * kN;
-  p.base_z = m.number_or("base_z", 0.0, "m", 0.0);
-  p.ridge_weight = m.number_or("ridge_weight", 0.0, "kN", 0.0) * kN;
-  p.ridge_thrust = m.number_or("ridge_thrust", 0.0, "kN") * kN;
-  p.tie = m.number_or("tie", 0.0, "kN", 0.0) * kN;
+  p.width = m.number("width", rules::dimension_m);
+  p.height = m.number("height", rules::dimension_m);
+  p.thickness = m.number("thickness", rules::dimension_m);
+  p.unit_weight = m.number("unit_weight", rules::unit_weight_kN_m3) * kN;
+  p.base_z = m.number_or("base_z", 0.0, rules::offset_m);
+  p.ridge_weight = m.number_or("ridge_weight", 0.0, rules::weight_kN) * kN;
+  p.ridge_thrust = m.number_or("ridge_thrust", 0.0, rules::force_kN) * kN;
+  p.tie = m.number_or("tie", 0.0, rules::weight_kN) * kN;
   p.slices = m.integer_or("slices", p.slices, 2, 200);
   return gable_overturning(p);
 }
@@ -471,8 +474,8 @@ SiteSpec parse_site(const JsonNode& s) {
         HazardParams p;
         p.ag_g = e->number("ag_g", "g", 0.0, 5.0);
         p.F0 = e->number("F0", "-", 1.0, 10.0);
-        p.Tc_star = e->positive("Tc_star", "s");
-        p.TR = e->number_or("TR", 0.0, "years", 0.0);
+        p.Tc_star = e->number("Tc_star", rules::period_s);
+        p.TR = e->number_or("TR", 0.0, rules::return_period_years);
         p.tr_requested = p.TR;
         spec.given[parse_limit_state(ls)] = p;
       }
@@ -480,10 +483,10 @@ SiteSpec parse_site(const JsonNode& s) {
   if (s.has("soil")) spec.conditions.soil = parse_soil_class(s.choice("soil", {"A", "B", "C", "D", "E"}));
   if (s.has("topography")) spec.conditions.topography = parse_topography(s.choice("topography", {"T1", "T2", "T3", "T4"}));
   spec.conditions.h_over_H = s.number_or("h_over_H", 1.0, "-", 0.0, 1.0);
-  spec.vn_years = s.number_or("VN_years", 50.0, "years", 1e-9);
+  spec.vn_years = s.number_or("VN_years", 50.0, rules::nominal_life_years);
   if (s.has("use_class") && s.has("CU")) s.fail("give \"use_class\" or \"CU\", not both");
   if (s.has("use_class")) spec.cu = use_coefficient(parse_use_class(s.choice("use_class", {"I", "II", "III", "IV"})));
-  if (s.has("CU")) spec.cu = s.positive("CU", "-");
+  if (s.has("CU")) spec.cu = s.number("CU", rules::use_coefficient);
   // Hazard availability now (a point outside the grid, an unknown island),
   // with the JSON path in the message.
   try {
@@ -579,16 +582,16 @@ void parse_tie_common(const JsonNode& t, Tie& tie, double FC, std::size_t index)
     if (!(tie.direction.norm() > 0.0)) t.at("direction").fail("expected a non-zero direction [dx, dz] (-), e.g. [-1, 0] inward");
     tie.direction.normalize();
   }
-  tie.free_length = t.positive("free_length_m", "m");
+  tie.free_length = t.number("free_length_m", rules::dimension_m);
   const JsonNode m = t.at("masonry");
   m.allow_only({"fm_MPa", "tau_MPa", "thickness_m", "FC", "gamma_M"});
-  tie.masonry.fm = m.positive("fm_MPa", "MPa") * 1e6;
-  tie.masonry.tau = m.positive("tau_MPa", "MPa") * 1e6;
-  tie.masonry.thickness = m.positive("thickness_m", "m");
+  tie.masonry.fm = m.number("fm_MPa", rules::stress_MPa) * 1e6;
+  tie.masonry.tau = m.number("tau_MPa", rules::stress_MPa) * 1e6;
+  tie.masonry.thickness = m.number("thickness_m", rules::dimension_m);
   tie.masonry.FC = m.number_or("FC", FC, "-", 1.0, 10.0);
   tie.masonry.gamma_M = m.number_or("gamma_M", tie_catalogue::masonry_gamma_M, "-", 1.0, 10.0);
-  tie.spacing = t.positive("spacing_m", "m");
-  tie.pretension = t.number_or("pretension_kN", 0.0, "kN", 0.0) * kN;
+  tie.spacing = t.number("spacing_m", rules::dimension_m);
+  tie.pretension = t.number_or("pretension_kN", 0.0, rules::weight_kN) * kN;
 }
 
 Tie parse_tie(const JsonNode& t, double FC, std::size_t index) {
@@ -600,13 +603,13 @@ Tie parse_tie(const JsonNode& t, double FC, std::size_t index) {
   r.allow_only({"diameter_mm", "area_mm2", "grade", "fyk_MPa", "gamma_M0"});
   if (r.has("diameter_mm") == r.has("area_mm2")) r.fail("give exactly one of \"diameter_mm\" (mm) or \"area_mm2\" (mm^2)");
   if (r.has("diameter_mm")) {
-    tie.rod.diameter = r.positive("diameter_mm", "mm") * 1e-3;
+    tie.rod.diameter = r.number("diameter_mm", rules::steel_mm) * 1e-3;
     tie.rod.area = units::pi * tie.rod.diameter * tie.rod.diameter / 4.0;
   } else {
-    tie.rod.area = r.positive("area_mm2", "mm^2") * 1e-6;
+    tie.rod.area = r.number("area_mm2", rules::area_mm2) * 1e-6;
   }
   tie.rod.fyk = grade_fyk(r, "grade", tie.rod.grade);
-  if (r.find("fyk_MPa")) tie.rod.fyk = r.positive("fyk_MPa", "MPa") * 1e6;
+  if (r.find("fyk_MPa")) tie.rod.fyk = r.number("fyk_MPa", rules::stress_MPa) * 1e6;
   tie.rod.gamma_M0 = r.number_or("gamma_M0", tie_catalogue::gamma_M0, "-", 1.0, 10.0);
   tie.rod.E = tie_catalogue::steel_E;
   const JsonNode a = t.at("anchor");
@@ -614,14 +617,14 @@ Tie parse_tie(const JsonNode& t, double FC, std::size_t index) {
   if (type == "plate") {
     a.allow_only({"type", "a_mm", "b_mm", "t_mm", "grade"});
     tie.anchor.type = AnchorType::Plate;
-    tie.anchor.a = a.positive("a_mm", "mm") * 1e-3;
-    tie.anchor.b = a.find("b_mm") ? a.positive("b_mm", "mm") * 1e-3 : tie.anchor.a;
-    tie.anchor.t = a.positive("t_mm", "mm") * 1e-3;
+    tie.anchor.a = a.number("a_mm", rules::steel_mm) * 1e-3;
+    tie.anchor.b = a.find("b_mm") ? a.number("b_mm", rules::steel_mm) * 1e-3 : tie.anchor.a;
+    tie.anchor.t = a.number("t_mm", rules::steel_mm) * 1e-3;
   } else {
     a.allow_only({"type", "length_mm", "diameter_mm", "grade"});
     tie.anchor.type = AnchorType::Bar;
-    tie.anchor.a = a.positive("length_mm", "mm") * 1e-3;
-    tie.anchor.b = a.positive("diameter_mm", "mm") * 1e-3;
+    tie.anchor.a = a.number("length_mm", rules::steel_mm) * 1e-3;
+    tie.anchor.b = a.number("diameter_mm", rules::steel_mm) * 1e-3;
   }
   tie.anchor.fyk = grade_fyk(a, "grade", tie.anchor.grade);
   try {
@@ -760,13 +763,13 @@ CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
   if (const auto b = root.find("building")) {
     b->allow_only({"height_m", "storeys", "T1_s", "damping_pct", "Z_m"});
     BuildingModel bm;
-    bm.H = b->positive("height_m", "m");
+    bm.H = b->number("height_m", rules::dimension_m);
     bm.storeys = b->integer("storeys", 1, 1000);
-    bm.T1 = b->find("T1_s") ? b->positive("T1_s", "s") : code_rules::T1_simplified(bm.H);
-    bm.damping_pct = b->number_or("damping_pct", code_rules::building_damping_default_pct, "%", 1e-9, 100.0);
+    bm.T1 = b->find("T1_s") ? b->number("T1_s", rules::period_s) : code_rules::T1_simplified(bm.H);
+    bm.damping_pct = b->number_or("damping_pct", code_rules::building_damping_default_pct, rules::damping_pct);
     c.building = bm;
     // Z > H is allowed with a warning (psi = Z/H > 1, run_kinematic_case).
-    if (b->find("Z_m")) c.Z = b->number("Z_m", "m", 0.0);
+    if (b->find("Z_m")) c.Z = b->number("Z_m", rules::offset_m);
   }
   if (const auto a = root.find("analysis")) {
     a->allow_only({"curve_model", "curve_points", "control", "du_cap_m", "d_SLV_cap_m", "d_SLC_cap_m", "q",
@@ -781,12 +784,12 @@ CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
       c.options.control_block = ctl->integer("block", 0, 1000000);
       c.options.control_point = ctl->point("point");
     }
-    c.options.du_cap = a->number_or("du_cap_m", c.options.du_cap, "m", 1e-12);
-    c.options.d_SLV_cap = a->number_or("d_SLV_cap_m", c.options.d_SLV_cap, "m", 1e-12);
-    c.options.d_SLC_cap = a->number_or("d_SLC_cap_m", c.options.d_SLC_cap, "m", 1e-12);
-    c.checks.q = a->number_or("q", code_rules::q_local_mechanism, "-", 1.0);
-    c.checks.damping_SLV_pct = a->number_or("damping_SLV_pct", code_rules::mechanism_damping_SLV_pct, "%", 0.0);
-    c.checks.damping_SLC_pct = a->number_or("damping_SLC_pct", code_rules::mechanism_damping_SLC_pct, "%", 0.0);
+    c.options.du_cap = a->number_or("du_cap_m", c.options.du_cap, rules::displacement_cap_m);
+    c.options.d_SLV_cap = a->number_or("d_SLV_cap_m", c.options.d_SLV_cap, rules::displacement_cap_m);
+    c.options.d_SLC_cap = a->number_or("d_SLC_cap_m", c.options.d_SLC_cap, rules::displacement_cap_m);
+    c.checks.q = a->number_or("q", code_rules::q_local_mechanism, rules::behaviour_factor);
+    c.checks.damping_SLV_pct = a->number_or("damping_SLV_pct", code_rules::mechanism_damping_SLV_pct, rules::damping_or_zero_pct);
+    c.checks.damping_SLC_pct = a->number_or("damping_SLC_pct", code_rules::mechanism_damping_SLC_pct, rules::damping_or_zero_pct);
   }
   // Issue 23: tie levels and the design of ties (after FC, their masonry's default).
   if (root.find("ties")) {

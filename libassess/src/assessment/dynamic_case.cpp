@@ -159,7 +159,7 @@ DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, co
         lr.unit = parse_acceleration_unit(u);
       }
       if (r.has("dt")) {
-        lr.dt = r.number("dt", "s (time step of a plain one-column record)", 1e-6, 10.0);
+        lr.dt = r.number("dt", "s (time step of a plain one-column record)", record_dt_min_s, record_dt_max_s);
         if (!(*lr.dt > 0.0)) r.at("dt").fail("expected a time step > 0 s");
         if (!lr.unit)
           r.fail("a plain record with \"dt\" needs \"unit\": \"g\", \"m/s^2\" or \"cm/s^2\" (the unit of "

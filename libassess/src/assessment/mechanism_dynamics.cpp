@@ -18,6 +18,16 @@
 namespace assess {
 
 namespace {
+
+// Where the sidedness a restitution is checked against comes from (issue 31:
+// a two-sided override in a building's wall was reported at restitution/0
+// alone): "<file>: /dynamic/sidedness" when given, which the building reader
+// maps to the wall or mechanism that wrote it.
+std::string sidedness_note(const std::string& file, const DynamicSpec& d) {
+  if (d.sidedness == Sidedness::two_sided) return " (sidedness two-sided, " + file + ": /dynamic/sidedness)";
+  return " (sidedness one-sided, the default of /dynamic/sidedness)";
+}
+
 std::string fmt(const char* f, double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, f, v);
@@ -208,7 +218,7 @@ MechanismDynamics build_bare(const CaseFile& kase, const CandidateResult& cand, 
       try {
         m.rocking.emplace_back(body->body, found, d.sidedness, d.restitutions[i]);
       } catch (const InputError& e) {
-        throw InputError(file + ": /dynamic/restitution/" + std::to_string(i) + ": " + e.what());
+        throw InputError(file + ": /dynamic/restitution/" + std::to_string(i) + ": " + e.what() + sidedness_note(file, d));
       }
       m.e.push_back(m.rocking.back().restitution());
     }
@@ -236,10 +246,10 @@ MechanismDynamics build_bare(const CaseFile& kase, const CandidateResult& cand, 
                        "\" is derived for one block");
     if (!two && !(r.e >= -1.0 && r.e <= 0.0))
       throw InputError(path + ": expected a coefficient in [-1, 0] (-, one-sided rebound q'+ = e q'-), got " +
-                       fmt("%g", r.e));
+                       fmt("%g", r.e) + sidedness_note(file, d));
     if (two && !(r.e >= 0.0 && r.e <= 1.0))
       throw InputError(path + ": expected a coefficient in [0, 1] (-, two-sided: the chain goes through q = 0 with "
-                       "q'+ = e q'-), got " + fmt("%g", r.e));
+                       "q'+ = e q'-), got " + fmt("%g", r.e) + sidedness_note(file, d));
     m.e.push_back(r.e);
   }
   if (d.options.overturn != OverturnCriterion::theta_u)

@@ -21,6 +21,7 @@
 
 #include "assess/campaign/campaign_runner.hpp"
 #include "assess/support/error.hpp"
+#include "assess/support/output_file.hpp"
 #include "assess/support/units.hpp"
 
 #include <cctype>
@@ -369,22 +370,18 @@ CampaignReportFiles write_campaign_report(const Campaign& campaign, const std::s
   summary["campaign"] = campaign.spec().name;
   summary["analyses_in_campaign"] = campaign.size();
   files.summary = out_dir + "/summary.json";
-  std::ofstream(files.summary) << summary.dump(2) << "\n";
-  if (!std::ifstream(files.summary)) throw InputError("cannot write '" + files.summary + "'");
+  write_output_file(files.summary, summary.dump(2) + "\n", "the campaign summary", out_dir);
   std::vector<std::pair<std::string, std::string>> svgs;  // file name, SVG
   if (plots)
     for (const auto& [name, plot] : campaign_plots(campaign, rows)) {
       const std::string path = out_dir + "/" + name;
       std::string svg = render_svg(plot);
-      std::ofstream out(path);
-      out << svg;
-      if (!out) throw InputError("cannot write '" + path + "'");
+      write_output_file(path, svg, "a campaign plot", out_dir);
       files.plots.push_back(path);
       svgs.emplace_back(name, std::move(svg));
     }
   files.index = out_dir + "/index.html";
-  std::ofstream(files.index) << campaign_index_html(summary, svgs);
-  if (!std::ifstream(files.index)) throw InputError("cannot write '" + files.index + "'");
+  write_output_file(files.index, campaign_index_html(summary, svgs), "the campaign page", out_dir);
   return files;
 }
 

@@ -208,7 +208,92 @@ SparseMatrix sparse_jacobian(const Chain& chain, const Eigen::VectorXd& q, Eigen
   return A;
 }
 
+// True when segments [a, b] and [c, d] share a point (orientation tests;
+// collinear overlaps included).
+bool segments_cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                    const Eigen::Vector2d& d, double tol) {
+  auto orient = [tol](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& r) {
+    const double v = (q.x() - p.x()) * (r.y() - p.y()) - (q.y() - p.y()) * (r.x() - p.x());
+    return v > tol ? 1 : v < -tol ? -1 : 0;
+  };
+  auto on = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& r) {
+    return std::min(p.x(), q.x()) <= r.x() && r.x() <= std::max(p.x(), q.x()) && std::min(p.y(), q.y()) <= r.y() &&
+           r.y() <= std::max(p.y(), q.y());
+  };
+  const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;  // a proper crossing
+  if (o1 == 0 && on(a, b, c)) return true;
+  if (o2 == 0 && on(a, b, d)) return true;
+  if (o3 == 0 && on(c, d, a)) return true;
+  if (o4 == 0 && on(c, d, b)) return true;
+  return false;
+}
+
+std::string num_m(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
 }  // namespace
+
+std::string polygon_defect(const std::vector<Eigen::Vector2d>& polygon, bool repeated_vertices_ok) {
+  std::vector<Eigen::Vector2d> v = polygon;
+  std::size_t n = v.size();
+  if (n < 3) return "the polygon needs at least 3 vertices";
+  Eigen::Vector2d lo = v[0], hi = v[0];
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!v[i].allFinite()) return "vertex " + std::to_string(i) + " is not a finite point";
+    if (v[i].cwiseAbs().maxCoeff() > chain_max_coordinate_m)
+      return "vertex " + std::to_string(i) + " " + point_str(v[i]) + " lies farther than " +
+             num_m(chain_max_coordinate_m) + " m from the origin: coordinates are in m";
+    lo = lo.cwiseMin(v[i]);
+    hi = hi.cwiseMax(v[i]);
+  }
+  const double extent = (hi - lo).norm();
+  if (extent < chain_min_extent_m)
+    return "the polygon is " + num_m(extent) + " m across, less than " + num_m(chain_min_extent_m) +
+           " m: a block is at least 1 mm across (coordinates are in m)";
+  for (std::size_t i = 0; i < n; ++i)
+    if ((v[i] - v[(i + 1) % n]).norm() <= 1e-12 * extent && !repeated_vertices_ok)
+      return "vertices " + std::to_string(i) + " and " + std::to_string((i + 1) % n) + " are the same point " +
+             point_str(v[i]) + ": each vertex once, in order around the block";
+  if (repeated_vertices_ok) {
+    // The polygon without its repeated vertices, for the tests below.
+    std::vector<Eigen::Vector2d> u;
+    for (std::size_t i = 0; i < n; ++i)
+      if ((v[i] - v[(i + 1) % n]).norm() > 1e-12 * extent) u.push_back(v[i]);
+    v = std::move(u);
+    n = v.size();
+    if (n < 3) return "its vertices lie on one line (zero area): a block's polygon encloses an area";
+  }
+  // Collinear: every vertex within a rounding distance of the line through the two farthest apart.
+  std::size_t ia = 0, ib = 1;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      if ((v[i] - v[j]).squaredNorm() > (v[ia] - v[ib]).squaredNorm()) ia = i, ib = j;
+  const Eigen::Vector2d u = (v[ib] - v[ia]).normalized();
+  double off = 0.0;
+  for (const Eigen::Vector2d& p : v) off = std::max(off, std::fabs(u.x() * (p - v[ia]).y() - u.y() * (p - v[ia]).x()));
+  if (off <= 1e-9 * extent)
+    return "its " + std::to_string(n) + " vertices lie on one line (zero area): a block's polygon encloses an area";
+  // Simple polygon: no two non-adjacent edges meet.
+  const double tol = 1e-12 * extent * extent;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      if (j == i + 1 || (i == 0 && j == n - 1)) continue;  // adjacent edges share a vertex
+      if (segments_cross(v[i], v[(i + 1) % n], v[j], v[(j + 1) % n], tol))
+        return "its edges cross: edge " + std::to_string(i) + "-" + std::to_string((i + 1) % n) + " meets edge " +
+               std::to_string(j) + "-" + std::to_string((j + 1) % n) +
+               " (a self-crossing polygon): list the vertices in order around the block";
+    }
+  double a;
+  Eigen::Vector2d c;
+  polygon_area_centroid(v, a, c);
+  if (std::fabs(a) < 1e-12 * (hi - lo).squaredNorm())
+    return "the polygon has zero area (a sliver of its " + num_m(extent) + " m extent)";
+  return "";
+}
 
 std::string to_string(LoadType t) {
   switch (t) {
@@ -228,10 +313,9 @@ Chain::Chain(std::vector<Block> blocks, std::vector<Constraint> constraints, std
   Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
   for (int i = 0; i < nb; ++i) {
     const Block& b = blocks_[i];
-    if (b.polygon.size() < 3)
-      throw InputError(block_label(blocks_, i) + ": the polygon needs at least 3 vertices");
+    if (const std::string d = polygon_defect(b.polygon, true); !d.empty())
+      throw InputError(block_label(blocks_, i) + ": " + d);
     for (const auto& v : b.polygon) {
-      if (!v.allFinite()) throw InputError(block_label(blocks_, i) + ": a vertex is not finite");
       lo = lo.cwiseMin(v);
       hi = hi.cwiseMax(v);
     }
@@ -422,6 +506,11 @@ Eigen::Vector2d Chain::position(int block, const Eigen::Vector2d& p0,
 
 Eigen::MatrixXd Chain::position_jacobian(int block, const Eigen::Vector2d& p0,
                                          const Eigen::VectorXd& q) const {
+  // A block index out of range wrote outside G (issue 31: "free(): invalid
+  // pointer" when no control point was found for coordinates of 1e150 m).
+  if (block < 0 || block >= static_cast<int>(blocks_.size()))
+    throw InputError("block index " + std::to_string(block) + " does not exist (0.." +
+                     std::to_string(blocks_.size() - 1) + ")");
   Eigen::MatrixXd G = Eigen::MatrixXd::Zero(2, static_cast<Eigen::Index>(n_coordinates()));
   const Eigen::Index j = 3 * block;
   G.block<2, 2>(0, j).setIdentity();
@@ -491,6 +580,9 @@ Eigen::MatrixXd Chain::jacobian(const Eigen::VectorXd& q) const {
 Eigen::Vector2d Chain::point_velocity(int block, const Eigen::Vector2d& p0, const Eigen::VectorXd& q,
                                       const Eigen::VectorXd& v) const {
   // d position = (dx, dz) + R'(phi) (p0 - c) dphi: position_jacobian(...) * v without the 2 x n matrix.
+  if (block < 0 || block >= static_cast<int>(blocks_.size()))
+    throw InputError("block index " + std::to_string(block) + " does not exist (0.." +
+                     std::to_string(blocks_.size() - 1) + ")");
   const Eigen::Index j = 3 * block;
   return Eigen::Vector2d(v(j), v(j + 1)) + rotation_derivative(q(j + 2)) * (p0 - centroids_[block]) * v(j + 2);
 }

@@ -180,6 +180,21 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
     R.ties.push_back(tie_work(chain, t, q0, v0, true));
     R.work_other += R.ties.back().work;
   }
+  // Every weight, work and virtual displacement must be a finite number
+  // before anything is divided by them (coordinates of 1e150 m made the
+  // weights infinite and their works not-a-number).
+  if (!std::isfinite(R.sum_W_dx) || !std::isfinite(R.sum_W_dx2) || !std::isfinite(R.work_other) ||
+      !std::isfinite(R.sum_W) || !Wp.allFinite())
+    throw InputError("the weights or virtual displacements of the mechanism are not finite numbers: check the "
+                     "coordinates (m), unit weights (kN/m^3) and loads (kN) for absurd magnitudes");
+  if (!(R.sum_W > 0.0))
+    throw InputError("the mechanism has no seismic weight (weightless blocks and no weight load with \"seismic\": "
+                     "true): alpha0 = -(work of the other loads) / (sum W dx) is undefined [C8A.4.1]");
+  if (!(R.sum_W_dx > 0.0))
+    // (virtual_displacement orients the mechanism so that sum W dx >= 0.)
+    throw InputError("no seismic weight of the mechanism moves horizontally (sum W dx = 0): a horizontal action "
+                     "does no work on it, so alpha0 [C8A.4.1] is undefined; check the constraints (a vertical "
+                     "slider alone, a hinge at every block's centroid)");
   R.alpha0 = -R.work_other / R.sum_W_dx;                        // [C8A.4.1]
   R.M_star = R.sum_W_dx * R.sum_W_dx / (units::g * R.sum_W_dx2); // [C8A.4.2]
   R.e_star = units::g * R.M_star / R.sum_W;                      // [C8A.4.3] = [C8.7.1.5]
@@ -222,6 +237,9 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
         }
     }
   }
+  if (R.control_block < 0)  // (not reached: sum W dx > 0 above; position_jacobian of block -1 wrote outside its matrix)
+    throw InputError("no seismic weight of the mechanism moves outward (sum W dx = " + std::to_string(R.sum_W_dx / units::kN) +
+                     " kN m): no control point; check the constraints and the loads");
   R.dx_k = dx_of(R.control_block, R.control_point);
   R.d_star_per_dk = R.sum_W_dx2 / (R.dx_k * R.sum_W_dx);  // [C8A.4.5] / [C8.7.1.4]
 

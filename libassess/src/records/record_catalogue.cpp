@@ -12,6 +12,8 @@
 #include "assess/records/strong_motion.hpp"
 #include "assess/support/content_hash.hpp"
 #include "assess/support/error.hpp"
+#include "assess/support/input_file.hpp"
+#include "assess/support/json_input.hpp"
 #include "assess/support/units.hpp"
 #include "support/parallel_for.hpp"
 
@@ -177,8 +179,7 @@ std::vector<Record> RecordCatalogue::load_all(const std::vector<CatalogueEntry>&
 }
 
 RecordCatalogue build_catalogue(const std::string& table) {
-  std::ifstream in(table, std::ios::binary);
-  if (!in) throw InputError("cannot open record metadata table '" + table + "'");
+  std::istringstream in(read_input_file(table, input_kinds::metadata_table));
   RecordCatalogue cat;
   cat.directory = directory_of(table);
   cat.description =
@@ -330,15 +331,15 @@ std::string catalogue_json(const RecordCatalogue& cat) {
 }
 
 RecordCatalogue read_catalogue(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot open record catalogue '" + path + "'");
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // The bounded reader and the JSON parser of case files (depth limit, the
+  // path of a malformed value); a directory or /dev/zero is named.
+  const std::string text = read_input_file(path, input_kinds::record_catalogue);
+  const nlohmann::json j = parse_json_text(text, path);
   RecordCatalogue cat;
   cat.directory = directory_of(path);
   cat.path = path;
   cat.text_hash = content_hash(text);
   try {
-    const nlohmann::json j = nlohmann::json::parse(text);
     cat.description = j.value("description", "");
     for (const auto& r : j.at("records")) {
       CatalogueEntry e;

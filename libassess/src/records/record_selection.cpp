@@ -334,6 +334,7 @@ std::vector<std::size_t> exhaustive_search(const Pool& p, const std::vector<std:
 }
 
 std::string fmt(double x, int prec = 3) {
+  if (!std::isfinite(x)) return std::isnan(x) ? "not a number" : (x > 0 ? "infinite" : "minus infinite");
   std::ostringstream os;
   os.precision(prec);
   os << x;
@@ -344,20 +345,22 @@ std::string fmt(double x, int prec = 3) {
 
 PeriodRange rocking_period_range(double T_first, double T_last) {
   if (!(T_first > 0.0) || !(T_last >= T_first) || !std::isfinite(T_last))
-    throw InputError("rocking_period_range: need 0 < T_first <= T_last (s)");
+    throw InputError("the mechanism's periods (Ts, T_SLV) " + fmt(T_first) + "-" + fmt(T_last) +
+                     " s do not give a period range for the record selection: expected 0 < T1 <= T2, finite (s)");
   constexpr double lower_factor = rocking_range_lower_factor, upper_factor = rocking_range_upper_factor,
                    floor_s = rocking_range_floor_s, cap_s = rocking_range_cap_s;
   PeriodRange r;
   r.T_min = std::clamp(lower_factor * T_first, floor_s, cap_s);
   r.T_max = std::clamp(upper_factor * T_last, floor_s, cap_s);
   if (!(r.T_max > r.T_min))
-    throw InputError("rocking_period_range: mechanism periods " + fmt(T_first) + "-" + fmt(T_last) +
-                     " s fall outside [0.1, 4] s");
+    throw InputError("the mechanism's periods (Ts, T_SLV) " + fmt(T_first) + "-" + fmt(T_last) +
+                     " s fall outside [0.1, 4] s, the periods over which records are selected (give the records, "
+                     "or \"period_range_s\" in dynamic/select; docs/theory/record-selection.md)");
   return r;
 }
 
 void SelectionOptions::validate() const {
-  if (n_records < 1) throw InputError("n_records must be >= 1");
+  if (n_records < 1) throw InputError("the number of records (count) must be >= 1");
   if (!(range.T_min > 0.0) || !(range.T_max > range.T_min) || !std::isfinite(range.T_max))
     throw InputError("period range must satisfy 0 < T_min < T_max (s)");
   if (!(lower_tol >= 0.0 && lower_tol < 1.0)) throw InputError("lower_tol must be in [0, 1) (fraction)");
@@ -372,7 +375,10 @@ void SelectionOptions::validate() const {
   if (!(damping_ratio >= 0.0) || !std::isfinite(damping_ratio))
     throw InputError("damping_ratio must be a finite fraction >= 0");
   if (!(max_combinations >= 1.0)) throw InputError("max_combinations must be >= 1");
-  if (pool_size < n_records) throw InputError("pool_size must be >= n_records");
+  if (pool_size < n_records)
+    throw InputError("a set of " + std::to_string(n_records) + " records (count) is more than the " +
+                     std::to_string(pool_size) + " best-ranked candidates the search combines: ask for at most " +
+                     std::to_string(pool_size) + " records");
   if (!(max_misfit > 0.0)) throw InputError("max_misfit must be > 0 (-)");
 }
 

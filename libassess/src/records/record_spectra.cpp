@@ -15,11 +15,14 @@
 #include "assess/records/response_spectrum.hpp"
 #include "assess/support/content_hash.hpp"
 #include "assess/support/error.hpp"
+#include "assess/support/input_file.hpp"
+#include "assess/support/output_file.hpp"
 #include "support/parallel_for.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -122,15 +125,12 @@ void write_library_spectra(const LibrarySpectra& s, const std::string& path) {
   }
   for (double v : s.psa) put(out, v);
   put(out, content_hash(out));
-  std::ofstream f(path, std::ios::binary | std::ios::trunc);
-  if (!f || !f.write(out.data(), std::streamsize(out.size())))
-    throw InputError("cannot write record spectra '" + path + "'");
+  write_output_file(path, out, "the record spectra");  // whole or not at all (output_file.hpp)
 }
 
 LibrarySpectra read_library_spectra(const std::string& path, const RecordCatalogue& cat) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw InputError("record spectra '" + path + "' not found");
-  const std::string bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  if (!std::filesystem::exists(path)) throw InputError("record spectra '" + path + "' not found");
+  const std::string bytes = read_input_file(path, input_kinds::own_output);  // bounded, not a FIFO
   if (bytes.size() < 16 + 8 + 8 + 12 + 8 || bytes.compare(0, 16, magic) != 0)
     throw InputError("record spectra '" + path + "': not a spectra file of this version (" + magic + ")");
   std::uint64_t stored;

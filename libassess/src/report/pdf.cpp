@@ -8,6 +8,8 @@
 #include "report/external_tool.hpp"
 
 #include "assess/support/error.hpp"
+#include "assess/support/input_file.hpp"
+#include "assess/support/output_file.hpp"
 
 #include <cstdlib>
 #include <filesystem>
@@ -43,9 +45,8 @@ void html_to_pdf(const std::string& html, const std::string& pdf_path) {
     throw InputError("--pdf: " + browser + " was not found on PATH: install it (Debian: apt-get install chromium)");
   if (code != 0 || !fs::exists(out) || detail::read_file(out).compare(0, 4, "%PDF") != 0)
     throw InputError("--pdf: " + browser + " could not print the report (exit " + std::to_string(code) + ")");
-  std::error_code ec;
-  fs::copy_file(out, pdf_path, fs::copy_options::overwrite_existing, ec);
-  if (ec) throw InputError("--pdf " + pdf_path + ": cannot write the file (" + ec.message() + ")");
+  // Whole or not at all, never over an input of the run (output_file.hpp).
+  write_output_file(pdf_path, read_input_file(out.string(), input_kinds::own_output), "--pdf");
 }
 
 std::vector<std::pair<int, std::string>> pdf_outline(const std::string& pdf_path) {

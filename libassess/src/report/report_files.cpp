@@ -13,8 +13,9 @@
 #include "assess/report/pdf.hpp"
 #include "assess/report/text_writer.hpp"
 #include "assess/support/error.hpp"
+#include "assess/support/input_file.hpp"
+#include "assess/support/output_file.hpp"
 
-#include <unistd.h>
 
 #include <cctype>
 #include <cstdio>
@@ -55,30 +56,10 @@ std::map<std::string, int> heading_pages(const Document& d, const std::vector<st
   return pages;
 }
 
-// `path`'s content replaced by the file `from` (or the text) atomically: a
-// temporary file in the same folder, renamed over it.
+// `path`'s content replaced by the file `from` (or the text): whole or not at
+// all, never over an input of the run (support/output_file.hpp).
 void install(const std::string& option, const std::string& path, const fs::path* from, const std::string* text) {
-  const fs::path target(path);
-  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  std::string tmpl = (folder / ("." + target.filename().string() + ".XXXXXX")).string();
-  const int fd = ::mkstemp(tmpl.data());
-  if (fd < 0) throw InputError(option + " " + path + ": cannot write in " + folder.string());
-  ::close(fd);
-  try {
-    if (from) {
-      std::error_code ec;
-      fs::copy_file(*from, tmpl, fs::copy_options::overwrite_existing, ec);
-      if (ec) throw InputError(option + " " + path + ": cannot write the file (" + ec.message() + ")");
-    } else {
-      detail::write_file(tmpl, *text, option + " " + path);
-    }
-    std::error_code ec;
-    fs::rename(tmpl, target, ec);
-    if (ec) throw InputError(option + " " + path + ": cannot write the file (" + ec.message() + ")");
-  } catch (...) {
-    std::remove(tmpl.c_str());
-    throw;
-  }
+  write_output_file(path, from ? read_input_file(from->string(), input_kinds::own_output) : *text, option);
 }
 
 }  // namespace

@@ -9,6 +9,9 @@
 #include "assess/report/plot.hpp"
 #include "assess/risk/collapse_rate.hpp"
 #include "assess/support/error.hpp"
+#include "assess/support/input_file.hpp"
+#include "assess/support/json_input.hpp"
+#include "assess/support/output_file.hpp"
 #include "assess/support/units.hpp"
 
 #include <cmath>
@@ -32,11 +35,10 @@ std::string fmt(double v, const char* f = "%.4g") {
 }
 std::string g_units(double a) { return fmt(a / units::g, "%.3f"); }
 
+// Every file of the fragility output: whole or not at all (output_file.hpp).
 void write_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text;
-  out.close();
-  if (!out) throw InputError("cannot write '" + path + "'");
+  const auto slash = path.find_last_of('/');
+  write_output_file(path, text, "the fragility output", slash == std::string::npos ? "." : path.substr(0, slash));
 }
 
 json curve_json(const FragilityStudy& st, const FragilityCurve& c) {
@@ -391,14 +393,9 @@ FragilityReportFiles write_fragility_report(const FragilityStudy& st, const Frag
 
 json read_fragility_summary(const std::string& dir, const std::string& case_file) {
   const std::string path = dir + "/summary.json";
-  std::ifstream in(path);
-  if (!in) throw InputError("--fragility: cannot open '" + path + "' (run `assess fragility CASE.json --out " + dir + "` first)");
-  json j;
-  try {
-    in >> j;
-  } catch (const json::exception& e) {
-    throw InputError("'" + path + "' is not valid JSON: " + e.what());
-  }
+  if (!std::filesystem::exists(path))
+    throw InputError("--fragility: cannot open '" + path + "' (run `assess fragility CASE.json --out " + dir + "` first)");
+  const json j = parse_json_text(read_input_file(path, input_kinds::own_output), path);
   if (!j.is_object() || !j.contains("case") || !j["case"].is_string() || !j.contains("governing"))
     throw InputError("'" + path + "' is not a fragility summary (keys /case and /governing expected)");
   std::error_code ec;

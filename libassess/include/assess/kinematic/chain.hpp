@@ -91,6 +91,26 @@ struct Load {
   double slip_limit = std::numeric_limits<double>::infinity();
 };
 
+/// What makes a block's polygon unusable, or "" for a usable one (issue 31):
+/// fewer than 3 vertices, a vertex not finite or farther than
+/// chain_max_coordinate_m from the origin, two consecutive vertices at the
+/// same point, a polygon smaller than chain_min_extent_m across, every vertex
+/// on one line, edges that cross each other (not a simple polygon), or an
+/// area that is a sliver of its extent. The Chain constructor and the case
+/// file reader (with the JSON path) give the same diagnosis.
+/// `repeated_vertices_ok`: a vertex repeated at once (a catalogue mechanism
+/// whose wedge vanishes) is skipped rather than refused; a case file's
+/// explicit block refuses it.
+std::string polygon_defect(const std::vector<Eigen::Vector2d>& polygon, bool repeated_vertices_ok = false);
+
+/// Coordinates of a chain lie within 1000 km of its origin: products of
+/// coordinates (areas, moments) stay far from overflow (1e150 m made every
+/// weight infinite). The case file's physical bound is tighter (1 km,
+/// support/number_rules.hpp).
+inline constexpr double chain_max_coordinate_m = 1e6;
+/// A block is at least 1 mm across.
+inline constexpr double chain_min_extent_m = 1e-3;
+
 /// The chain. Immutable once built; the constructor validates it.
 class Chain {
  public:
