@@ -22,9 +22,7 @@
 #include <string>
 #include <unistd.h>
 
-#if defined(ASSESS_HAVE_MPI)
-#include <mpi.h>
-#endif
+#include "mpi_session.hpp"
 
 namespace assess::cli {
 
@@ -93,28 +91,10 @@ class Progress {
 std::atomic<bool> g_cancel{false};
 extern "C" void on_signal(int) { g_cancel = true; }
 
-#if defined(ASSESS_HAVE_MPI)
-// MPI is initialised only for the campaign command, and only if launched
-// by mpirun (an MPI launcher sets OMPI_COMM_WORLD_SIZE / PMI_SIZE).
-bool under_mpi() { return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE"); }
-#endif
-
 void run(const CampaignArgs& a) {
-  int rank = 0, ranks = 1;
-#if defined(ASSESS_HAVE_MPI)
-  const bool mpi = under_mpi();
-  if (mpi) {
-    MPI_Init(nullptr, nullptr);
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  }
-  struct Finalize {
-    bool on;
-    ~Finalize() {
-      if (on) MPI_Finalize();
-    }
-  } finalize{mpi};
-#endif
+  // MPI only when launched by mpirun, loaded at run time (mpi_session.hpp).
+  const MpiSession mpi;
+  const int rank = mpi.rank(), ranks = mpi.size();
   if (a.limit_given && a.limit == 0)
     throw InputError("--limit 0 would run no analysis: expected N >= 1 (only ids < N run)");
   const Campaign campaign(read_campaign(a.file));
@@ -143,28 +123,18 @@ void run(const CampaignArgs& a) {
   } catch (const InputError& e) {
     error = e.what();
   }
-#if defined(ASSESS_HAVE_MPI)
-  if (mpi) {
+  if (mpi.active()) {
     // Every rank must finish its part before rank 0 merges; a failure on any rank stops all.
-    int bad = error.empty() ? 0 : 1, any = 0;
-    MPI_Allreduce(&bad, &any, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    const int any = mpi.max_over_ranks(error.empty() ? 0 : 1);
     if (any && error.empty()) error = "another MPI rank failed (see its message)";
     // Counts summed over the ranks; the time is the slowest rank's.
     unsigned long long mine[3] = {s.resumed, s.run, s.failed}, all[3] = {0, 0, 0};
-    MPI_Reduce(mine, all, 3, MPI_UNSIGNED_LONG_LONG, MPI_SUM, 0, MPI_COMM_WORLD);
-    double slowest = 0.0;
-    MPI_Reduce(&s.seconds, &slowest, 1, MPI_DOUBLE, MPI_MAX, 0, MPI_COMM_WORLD);
+    mpi.sum_to_root(mine, all, 3);
+    const double slowest = mpi.max_to_root(s.seconds);
     s.resumed = all[0], s.run = all[1], s.failed = all[2], s.seconds = slowest;
   }
-#endif
   if (!error.empty()) throw InputError(error);
-#if defined(ASSESS_HAVE_MPI)
-  if (mpi) {
-    int mine = s.interrupted ? 1 : 0, any = 0;
-    MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-    s.interrupted = any != 0;
-  }
-#endif
+  if (mpi.active()) s.interrupted = mpi.max_over_ranks(s.interrupted ? 1 : 0) != 0;
   if (s.interrupted)
     throw InputError("campaign interrupted: the finished rows are in " + a.out +
                      "; run the same command with --resume to continue");
@@ -175,10 +145,7 @@ void run(const CampaignArgs& a) {
     merge_campaign_parts(parts, campaign_part_path(a.out, 0, 1));
     for (const auto& p : parts) std::filesystem::remove(p);
   }
-  // The results are complete at this point: a missing gnuplot only skips the plots.
-  const bool plots = !a.no_plots && gnuplot_available();
-  if (!a.no_plots && !plots)
-    std::cerr << "assess: warning: gnuplot not found (Debian package gnuplot-nox): plots skipped\n";
+  const bool plots = !a.no_plots;
   const CampaignReportFiles files = write_campaign_report(campaign, a.out, plots);
   std::printf("campaign '%s': %llu analyses", campaign.spec().name.c_str(),
               (unsigned long long)(a.limit ? std::min<std::uint64_t>(a.limit, campaign.size()) : campaign.size()));

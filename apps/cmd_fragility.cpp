@@ -23,11 +23,10 @@
 #include <filesystem>
 #include <iostream>
 #include <sstream>
+#include <optional>
 #include <string>
 
-#if defined(ASSESS_HAVE_MPI)
-#include <mpi.h>
-#endif
+#include "mpi_session.hpp"
 
 namespace assess::cli {
 
@@ -67,26 +66,10 @@ std::string default_out(const std::string& file) {
   return std::filesystem::path(file).stem().string() + ".fragility";
 }
 
-#if defined(ASSESS_HAVE_MPI)
-bool under_mpi() { return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE"); }
-#endif
-
 void run(const FragilityArgs& a) {
-  int rank = 0, ranks = 1;
-#if defined(ASSESS_HAVE_MPI)
-  const bool mpi = under_mpi();
-  if (mpi) {
-    MPI_Init(nullptr, nullptr);
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &ranks);
-  }
-  struct Finalize {
-    bool on;
-    ~Finalize() {
-      if (on) MPI_Finalize();
-    }
-  } finalize{mpi};
-#endif
+  // MPI only when launched by mpirun, loaded at run time (mpi_session.hpp).
+  const MpiSession mpi;
+  const int rank = mpi.rank(), ranks = mpi.size();
   FragilityOptions fo;
   fo.method = a.ida ? FragilityMethod::ida : FragilityMethod::stripes;
   if (!a.stripes.empty()) {
@@ -100,8 +83,10 @@ void run(const FragilityArgs& a) {
   fo.records = a.records;
   fo.bootstrap = a.bootstrap;
   fo.seed = a.seed;
-  const nlohmann::json doc = read_json_file(a.file);
+  const nlohmann::json doc = read_json_file(a.file, input_kinds::case_file);
   CaseFile kase;
+  std::optional<BuildingCase> building;  // a building case: its errors name its paths and the mechanism
+  std::size_t mechanism_index = 0;
   std::string out_default = default_out(a.file);
   if (is_building_document(doc)) {
     // A building case (issue 22): the mechanism named by --mechanism, else the
@@ -116,6 +101,8 @@ void run(const FragilityArgs& a) {
                   << "lowest NTC 2018 zetaE, " << approach << "); --mechanism ID for another\n";
     }
     kase = m->kase;
+    building = bc;
+    mechanism_index = static_cast<std::size_t>(m - bc.mechanisms.data());
     out_default = std::filesystem::path(a.file).stem().string() + "." + m->id + ".fragility";
   } else {
     if (!a.mechanism.empty())
@@ -123,7 +110,14 @@ void run(const FragilityArgs& a) {
                        "single-mechanism case");
     kase = parse_case(doc, a.file);
   }
-  const FragilityStudy study = prepare_fragility(kase, fo);
+  const FragilityStudy study = [&] {
+    try {
+      return prepare_fragility(kase, fo);
+    } catch (const InputError& e) {
+      if (!building) throw;
+      throw InputError(building_path_message(*building, building->mechanisms[mechanism_index], e.what()));
+    }
+  }();
   const FragilityJob job(study);
   const std::string out = a.out.empty() ? out_default : a.out;
 
@@ -144,19 +138,12 @@ void run(const FragilityArgs& a) {
   } catch (const InputError& e) {
     error = e.what();
   }
-#if defined(ASSESS_HAVE_MPI)
-  if (mpi) {
-    int bad = error.empty() ? 0 : 1, any = 0;
-    MPI_Allreduce(&bad, &any, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  if (mpi.active()) {
+    const int any = mpi.max_over_ranks(error.empty() ? 0 : 1);
     if (any && error.empty()) error = "another MPI rank failed (see its message)";
-    int mine = s.interrupted ? 1 : 0, anyi = 0;
-    MPI_Allreduce(&mine, &anyi, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-    s.interrupted = anyi != 0;
-    double slowest = 0.0;
-    MPI_Reduce(&s.seconds, &slowest, 1, MPI_DOUBLE, MPI_MAX, 0, MPI_COMM_WORLD);
-    s.seconds = slowest;
+    s.interrupted = mpi.max_over_ranks(s.interrupted ? 1 : 0) != 0;
+    s.seconds = mpi.max_to_root(s.seconds);
   }
-#endif
   if (!a.quiet && rank == 0) std::cerr << (error.empty() ? ", done in " + std::to_string(s.seconds) + " s\n" : "\n");
   if (!error.empty()) throw InputError(error);
   if (s.interrupted)
@@ -170,9 +157,7 @@ void run(const FragilityArgs& a) {
     for (const auto& p : parts) std::filesystem::remove(p);
   }
   const FragilityResult result = fit_fragility(study, read_fragility_csv(campaign_part_path(out, 0, 1)));
-  const bool plots = !a.no_plots && gnuplot_available();
-  if (!a.no_plots && !plots)
-    std::cerr << "assess: warning: gnuplot not found (Debian package gnuplot-nox): plots skipped\n";
+  const bool plots = !a.no_plots;
   const FragilityReportFiles files = write_fragility_report(study, result, out, plots);
   if (a.json) {
     std::cout << fragility_to_json(study, result).dump(2) << "\n";

@@ -29,7 +29,7 @@ struct KinematicArgs {
 };
 
 void run(const KinematicArgs& a) {
-  const nlohmann::json doc = read_json_file(a.file);
+  const nlohmann::json doc = read_json_file(a.file, input_kinds::case_file);
   if (is_building_document(doc))
     throw InputError(a.file + ": a building case (key \"walls\"): `assess run " + a.file +
                      "` analyses and checks its mechanisms; `assess kinematic` takes a single-mechanism case "

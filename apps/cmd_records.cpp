@@ -5,10 +5,16 @@
 #include "commands.hpp"
 
 #include <assess/hazard/site.hpp>
+#include <assess/records/library_selection.hpp>
 #include <assess/records/record_catalogue.hpp>
+#include <assess/records/record_library.hpp>
 #include <assess/records/record_selection.hpp>
+#include <assess/records/record_spectra.hpp>
+#include <assess/support/content_hash.hpp>
 #include <assess/records/response_spectrum.hpp>
 #include <assess/support/error.hpp>
+#include <assess/support/output_file.hpp>
+#include <assess/support/number_rules.hpp>
 #include <assess/support/units.hpp>
 #include <assess/hazard/hazard.hpp>
 
@@ -36,7 +42,8 @@ struct RecordsArgs {
   std::string soil = "A", topography = "T1", limit_state = "SLV";
   double vn = 50.0, cu = 1.0;
   int count = 7, per_event = 3, per_station = 1;
-  double max_scale = 4.0, max_mean_scale = 2.0, max_pga_ratio = 2.5;
+  double max_scale = 3.0, max_mean_scale = 2.0, max_pga_ratio = 2.5, max_misfit = 0.5, near_fault_km = 10.0;
+  std::string near_fault = "exclude";
 };
 
 std::string default_catalogue() { return data_dir() + "/spectra/records/catalogue.json"; }
@@ -66,7 +73,13 @@ nlohmann::ordered_json entry_json(const CatalogueEntry& e) {
   j["distance_kind"] = e.distance_kind;
   j["vs30_m_s"] = jnum(e.vs30_m_s);
   j["site_class"] = e.site_class;
+  j["site_class_basis"] = e.site_class_basis;
+  j["vs30_class"] = e.vs30_class;
   j["country"] = e.country;
+  j["lowest_usable_hz"] = jnum(e.lowest_usable_hz);
+  j["pulse"] = e.pulse;
+  j["pulse_period_s"] = jnum(e.pulse_period_s);
+  j["near_fault"] = near_fault_reason(e);
   j["pga_g"] = e.pga_g;
   j["significant_duration_s"] = e.significant_duration_s;
   j["usable_for_design"] = e.usable_for_design;
@@ -91,14 +104,23 @@ CatalogueFilters make_filters(const RecordsArgs& a) {
 
 void run_build(const RecordsArgs& a) {
   const std::string table = a.metadata.empty() ? data_dir() + "/spectra/records/metadata.csv" : a.metadata;
-  const RecordCatalogue cat = build_catalogue(table);
+  RecordCatalogue cat = build_catalogue(table);
   const std::string out = a.output.empty() ? cat.directory + "/catalogue.json" : a.output;
-  std::ofstream os(out, std::ios::binary);
-  if (!os) throw InputError("--output '" + out + "': cannot write");
-  os << catalogue_json(cat);
+  const std::string text = catalogue_json(cat);
+  write_output_file(out, text, "--output");
   std::size_t usable = 0;
   for (const auto& e : cat.entries) usable += e.usable_for_design;
   std::cout << "wrote " << out << ": " << cat.entries.size() << " components, " << usable << " usable for design\n";
+  // The precomputed spectra beside it, tied to this text by its hash (record_spectra.hpp).
+  cat.text_hash = content_hash(text);
+  const auto slash = out.find_last_of('/');
+  const std::string spectra = (slash == std::string::npos ? std::string(".") : out.substr(0, slash)) + "/" +
+                              library_spectra_file;
+  const LibrarySpectra s = compute_library_spectra(cat);
+  write_library_spectra(s, spectra);
+  std::cout << "wrote " << spectra << ": 5 % PSA of " << s.ids.size() << " components at " << s.periods.size()
+            << " periods (0, then " << spectra_grid_T_min_s << "-" << spectra_grid_T_max_s << " s, "
+            << spectra_grid_per_decade << " per decade), catalogue hash " << hash_hex(cat.text_hash) << "\n";
 }
 
 void run_list(const RecordsArgs& a) {
@@ -122,14 +144,15 @@ void run_list(const RecordsArgs& a) {
     std::cout << j.dump(1) << "\n";
     return;
   }
-  std::printf("%-34s %-38s %4s %-24s %-5s %7s %-4s %6s %2s %7s %6s %s\n", "id", "event", "Mw", "station", "comp",
-              "R (km)", "kind", "Vs30", "cl", "PGA (g)", "D5-95", "usable");
+  std::printf("%-34s %-38s %4s %-24s %-5s %7s %-4s %6s %2s %-6s %7s %6s %-6s %s\n", "id", "event", "Mw", "station",
+              "comp", "R (km)", "kind", "Vs30", "cl", "basis", "PGA (g)", "D5-95", "usable", "near-fault");
   for (const auto& e : shown)
-    std::printf("%-34s %-38.38s %4s %-24.24s %-5.5s %7s %-4s %6s %2s %7s %6s %s\n", e.id.c_str(), e.event.c_str(),
-                num(e.Mw, "%.2f").c_str(), e.station.c_str(), e.component.c_str(), num(e.distance_km, "%.1f").c_str(),
-                e.distance_kind.c_str(), num(e.vs30_m_s, "%.0f").c_str(), e.site_class.c_str(),
-                num(e.pga_g, "%.4f").c_str(), num(e.significant_duration_s, "%.1f").c_str(),
-                e.usable_for_design ? "yes" : "no");
+    std::printf("%-34s %-38.38s %4s %-24.24s %-5.5s %7s %-4s %6s %2s %-6s %7s %6s %-6s %s\n", e.id.c_str(),
+                e.event.c_str(), num(e.Mw, "%.2f").c_str(), e.station.c_str(), e.component.c_str(),
+                num(e.distance_km, "%.1f").c_str(), e.distance_kind.c_str(), num(e.vs30_m_s, "%.0f").c_str(),
+                e.site_class.c_str(), e.site_class_basis.c_str(), num(e.pga_g, "%.4f").c_str(),
+                num(e.significant_duration_s, "%.1f").c_str(), e.usable_for_design ? "yes" : "no",
+                near_fault_reason(e).empty() ? "-" : "yes");
   std::printf("%zu of %zu components%s\n", shown.size(), cat.entries.size(),
               a.all ? "" : " (usable for design; --all lists every file)");
 }
@@ -159,7 +182,19 @@ void run_show(const RecordsArgs& a) {
             << "  component  " << e->component << ", positive toward " << e->positive_direction << "\n"
             << "  distance   " << num(e->distance_km, "%.1f") << " km (" << e->distance_kind << ")\n"
             << "  site       Vs30 " << num(e->vs30_m_s, "%.0f") << " m/s, class " << e->site_class << " ("
-            << e->site_class_basis << ")\n"
+            << (e->site_class_basis == "stated" ? "stated by the source" + (e->vs30_class.empty() ? std::string()
+                                                                             : "; Vs30 gives " + e->vs30_class)
+                : e->site_class_basis == "Vs30" ? std::string("from Vs30, NTC 2018 Tab. 3.2.II")
+                                                : std::string("unknown"))
+            << ")\n"
+            << "  usable to  " << (std::isfinite(e->lowest_usable_hz) && e->lowest_usable_hz > 0
+                                       ? num(1.0 / e->lowest_usable_hz, "%.2f") + " s (1/lowest usable frequency)"
+                                       : std::string("not given by the source"))
+            << "\n"
+            << "  pulse      " << (e->pulse.empty() ? std::string("not classified") : e->pulse)
+            << (std::isfinite(e->pulse_period_s) ? ", Tp = " + num(e->pulse_period_s, "%.2f") + " s" : std::string())
+            << "\n"
+            << "  near-fault " << (near_fault_reason(*e).empty() ? std::string("no") : near_fault_reason(*e)) << "\n"
             << "  samples    " << e->npts << " x " << e->dt_s << " s, PGA " << num(e->pga_g, "%.4f")
             << " g, D5-95 " << num(e->significant_duration_s, "%.1f") << " s\n"
             << "  usable     " << (e->usable_for_design ? "yes" : "no") << (e->note.empty() ? "" : ": " + e->note) << "\n"
@@ -187,6 +222,9 @@ void run_select(const RecordsArgs& a) {
   } catch (const InputError& e) {
     throw InputError(std::string("--soil/--topography: ") + e.what());
   }
+  // The number rules of the case files (support/number_rules.hpp).
+  check_number_option("--vn", a.vn, rules::nominal_life_years);
+  check_number_option("--cu", a.cu, rules::use_coefficient);
   spec.vn_years = a.vn;
   spec.cu = a.cu;
   const Site site(spec);
@@ -196,19 +234,15 @@ void run_select(const RecordsArgs& a) {
     if (to_string(l) == a.limit_state) ls = l, found = true;
   if (!found) throw InputError("--limit-state '" + a.limit_state + "': expected SLO, SLD, SLV or SLC");
   const ElasticSpectrum target = site.spectrum(ls);
-  const RecordCatalogue cat = read_catalogue(a.catalogue.empty() ? default_catalogue() : a.catalogue);
-  CatalogueFilters f = make_filters(a);
-  if (f.site_classes.empty()) f.site_classes = {to_string(spec.conditions.soil)};
-  f.min_candidates = std::size_t(3 * a.count);
-  const CatalogueFilterResult fr = filter_catalogue(cat.entries, f);
-  std::vector<Record> cands;
-  std::vector<CandidateInfo> info;
-  std::vector<std::string> errors;
-  cands = cat.load_all(fr.kept, errors);
-  for (std::size_t i = 0; i < errors.size(); ++i)
-    if (!errors[i].empty()) throw InputError(errors[i]);
-  for (const auto& e : fr.kept) info.push_back(candidate_info(e));
-  if (cands.empty()) throw InputError("no record of the catalogue passes the filters (see `assess records list`)");
+  const std::shared_ptr<const RecordLibrary> lib =
+      RecordLibrary::open(a.catalogue.empty() ? default_catalogue() : a.catalogue);
+  LibrarySelectionRules rules;
+  rules.filters = make_filters(a);
+  if (rules.filters.site_classes.empty()) rules.filters.site_classes = {to_string(spec.conditions.soil)};
+  if (a.near_fault != "exclude" && a.near_fault != "include")
+    throw InputError("--near-fault '" + a.near_fault + "': expected exclude or include");
+  rules.include_near_fault = a.near_fault == "include";
+  rules.near_fault_km = a.near_fault_km;
   SelectionOptions so;
   so.n_records = a.count;
   so.range = PeriodRange{a.t_min.value_or(0.15), a.t_max.value_or(2.0)};
@@ -217,7 +251,21 @@ void run_select(const RecordsArgs& a) {
   so.max_pga_ratio = a.max_pga_ratio;
   so.max_per_event = a.per_event;
   so.max_per_station = a.per_station;
-  const SelectionResult res = select_records([&](double T) { return target.Se(T); }, cands, info, so);
+  so.max_misfit = a.max_misfit;
+  const std::shared_ptr<const LibrarySelection> sel =
+      select_from_library(*lib, rules, [&](double T) { return target.Se(T); }, so);
+  const SelectionResult& res = sel->result;
+  if (sel->candidates.empty()) throw InputError("no record of the catalogue passes the filters (see `assess records list`)");
+  auto flags_of = [&](const SelectedRecord& s) {
+    const CatalogueEntry& e = sel->candidates[s.index];
+    std::vector<std::string> f;
+    const std::string nf = near_fault_reason(e, rules.near_fault_km);
+    if (!nf.empty()) f.push_back(nf);
+    if (s.misfit_flag) f.push_back("misfit " + num(s.deviation, "%.3f") + " > " + num(so.max_misfit, "%.2f"));
+    if (e.site_class != to_string(spec.conditions.soil))
+      f.push_back("site class " + e.site_class + ", not the site's " + to_string(spec.conditions.soil));
+    return f;
+  };
   if (a.json) {
     nlohmann::ordered_json j;
     j["limit_state"] = to_string(ls);
@@ -225,29 +273,33 @@ void run_select(const RecordsArgs& a) {
     j["ag_S_g"] = target.Se(0.0) / units::g_n;
     j["status"] = to_string(res.status);
     j["message"] = res.message;
-    j["warnings"] = fr.warnings;
+    j["warnings"] = sel->warnings;
+    j["site_classes"] = sel->site_classes;
+    j["spectra"] = sel->spectra_source;
+    j["near_fault_excluded"] = sel->near_fault_excluded;
     j["period_range_s"] = {so.range.T_min, so.range.T_max};
     j["band"] = {1.0 - so.lower_tol, 1.0 + so.upper_tol};
     j["min_ratio"] = res.min_ratio;
     j["max_ratio"] = res.max_ratio;
     j["mean_scale"] = res.mean_scale;
-    j["candidates"] = cands.size();
+    j["candidates"] = sel->candidates.size();
     j["eligible"] = res.eligible;
     j["combinations"] = res.combinations;
     j["records"] = nlohmann::ordered_json::array();
     for (const auto& s : res.records) {
-      const CatalogueEntry& e = fr.kept[s.index];
+      const CatalogueEntry& e = sel->candidates[s.index];
       nlohmann::ordered_json r = entry_json(e);
       r["scale"] = s.scale;
       r["scaled_pga_g"] = s.scaled_pga / units::g_n;
       r["deviation"] = s.deviation;
       r["rank"] = s.rank;
+      r["flags"] = flags_of(s);
       j["records"].push_back(r);
     }
     j["rejected"] = nlohmann::ordered_json::array();
-    for (const auto& r : fr.rejected) j["rejected"].push_back({{"id", r.name}, {"reason", r.reason}});
+    for (const auto& r : sel->excluded) j["rejected"].push_back({{"id", r.name}, {"reason", r.reason}});
     for (const auto& r : res.rejected)
-      j["rejected"].push_back({{"id", fr.kept[r.index].id}, {"scale", r.scale}, {"reason", r.reason}});
+      j["rejected"].push_back({{"id", sel->candidates[r.index].id}, {"scale", r.scale}, {"reason", r.reason}});
     j["periods_s"] = res.periods;
     j["target_m_s2"] = res.target;
     j["mean_psa_m_s2"] = res.mean_psa;
@@ -256,16 +308,18 @@ void run_select(const RecordsArgs& a) {
   }
   std::cout << "Target: " << to_string(ls) << " spectrum, " << site.describe() << ", soil " << a.soil
             << ", ag S = " << num(target.Se(0.0) / units::g_n, "%.3f") << " g\n";
-  for (const auto& w : fr.warnings) std::cout << "warning: " << w << "\n";
-  std::cout << cands.size() << " candidates after the filters, " << res.eligible << " within the per-record limits; "
+  for (const auto& w : sel->warnings) std::cout << "warning: " << w << "\n";
+  std::cout << sel->candidates.size() << " candidates after the filters (" << sel->near_fault_excluded
+            << " near-fault or pulse-like left out), " << res.eligible << " within the per-record limits; "
             << res.message << "\n";
-  std::printf("%-30s %-34s %4s %-20s %6s %2s %6s %8s %6s %4s\n", "record", "event", "Mw", "station", "R (km)",
-              "cl", "scale", "PGA (g)", "dev", "rank");
+  std::printf("%-30s %-34s %4s %-20s %6s %-4s %2s %6s %8s %6s %4s\n", "record", "event", "Mw", "station", "R (km)",
+              "kind", "cl", "scale", "PGA (g)", "misfit", "rank");
   for (const auto& s : res.records) {
-    const CatalogueEntry& e = fr.kept[s.index];
-    std::printf("%-30s %-34.34s %4s %-20.20s %6s %2s %6.3f %8.3f %6.3f %4d\n", e.id.c_str(), e.event.c_str(),
+    const CatalogueEntry& e = sel->candidates[s.index];
+    std::printf("%-30s %-34.34s %4s %-20.20s %6s %-4s %2s %6.3f %8.3f %6.3f %4d\n", e.id.c_str(), e.event.c_str(),
                 num(e.Mw, "%.2f").c_str(), e.station.c_str(), num(e.distance_km, "%.1f").c_str(),
-                e.site_class.c_str(), s.scale, s.scaled_pga / units::g_n, s.deviation, s.rank);
+                e.distance_kind.c_str(), e.site_class.c_str(), s.scale, s.scaled_pga / units::g_n, s.deviation, s.rank);
+    for (const std::string& f : flags_of(s)) std::printf("  FLAG: %s\n", f.c_str());
   }
   std::printf("mean scale %.3f; largest scaled PGA %.3f g (guard %.2f ag S = %.3f g)\n", res.mean_scale,
               res.max_scaled_pga / units::g_n, so.max_pga_ratio, so.max_pga_ratio * target.Se(0.0) / units::g_n);
@@ -315,12 +369,15 @@ void add_records_command(CLI::App& app) {
   sel->add_option("--count", a->count, "number of records N (default 7)")->check(CLI::Range(1, 50));
   sel->add_option("--t-min", a->t_min, "shortest period of the range (s, default 0.15)");
   sel->add_option("--t-max", a->t_max, "longest period of the range (s, default 2.0)");
-  sel->add_option("--max-scale", a->max_scale, "largest scale factor of a record (default 4)");
+  sel->add_option("--max-scale", a->max_scale, "largest scale factor of a record (default 3)");
+  sel->add_option("--max-misfit", a->max_misfit, "individual misfit flagged above it (default 0.5)");
+  sel->add_option("--near-fault", a->near_fault, "exclude (default) or include near-fault and pulse-like records");
+  sel->add_option("--near-fault-km", a->near_fault_km, "distance below which a record is near-fault (km, default 10)");
   sel->add_option("--max-mean-scale", a->max_mean_scale, "largest mean scale factor (default 2)");
   sel->add_option("--max-pga-ratio", a->max_pga_ratio, "guard: scaled PGA <= ratio * ag S (default 2.5)");
   sel->add_option("--per-event", a->per_event, "components per event (default 3)")->check(CLI::Range(1, 50));
   sel->add_option("--per-station", a->per_station, "components per station (default 1)")->check(CLI::Range(1, 50));
-  sel->add_flag("--no-relax", a->no_relax, "do not widen the site classes when too few candidates remain");
+  sel->add_flag("--no-relax", a->no_relax, "do not widen the site classes when they give no compatible set");
   sel->callback([a] { run_select(*a); });
 }
 

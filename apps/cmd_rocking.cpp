@@ -6,6 +6,7 @@
 #include <assess/assessment/case_file.hpp>
 #include <assess/assessment/mechanism_dynamics.hpp>
 #include <assess/support/error.hpp>
+#include <assess/support/output_file.hpp>
 #include <assess/records/record_io.hpp>
 #include <assess/dynamics/analysis_limits.hpp>
 #include <assess/dynamics/rocking_analysis.hpp>
@@ -102,11 +103,21 @@ void run(const RockingArgs& a) {
   if (a.dt_given) {
     record = read_plain_record(a.record, a.dt, parse_acceleration_unit(a.unit.empty() ? "g" : a.unit));
   } else if (!a.unit.empty()) {
+    // --unit without --dt: a plain file of two columns (time in s,
+    // acceleration); the reader names the file, the line and what is wrong
+    // (a decreasing time is the file's fault, not --unit's). A record file
+    // with a header (AT2, ESM, .cor.acc) gives its own unit: --unit is wrong.
     try {
       record = read_plain_record(a.record, parse_acceleration_unit(a.unit));
-    } catch (const InputError& e) {
-      throw InputError(std::string("--unit applies only to a plain record file: without --dt, a plain file of two "
-                                   "columns (time in s, acceleration): ") + e.what());
+    } catch (const InputError& plain) {
+      std::string format;
+      try {
+        format = read_record(a.record).format;
+      } catch (const InputError&) {
+        throw plain;
+      }
+      throw InputError("--unit applies only to a plain record file: " + a.record + " is a " + format +
+                       " record, whose header gives the unit and the time step (leave --unit out)");
     }
   } else {
     record = read_record(a.record);
@@ -132,14 +143,14 @@ void run(const RockingArgs& a) {
                      std::to_string(r.t_end) + " s): " + r.message + "; no result is reported");
 
   if (!a.history.empty()) {
-    std::ofstream out(a.history);
-    if (!out) throw InputError("cannot write the history file '" + a.history + "'");
-    out << "t_s,theta_rad,omega_rad_s\n";
+    // Whole or not at all; a full disk (/dev/full) is an error, never exit 0 (output_file.hpp).
+    std::string out = "t_s,theta_rad,omega_rad_s\n";
     char line[96];
     for (std::size_t i = 0; i < r.history.t.size(); ++i) {
       std::snprintf(line, sizeof line, "%.9g,%.9g,%.9g\n", r.history.t[i], r.history.theta[i], r.history.omega[i]);
-      out << line;
+      out += line;
     }
+    write_output_file(a.history, out, "--history");
   }
 
   if (a.json) {
@@ -257,14 +268,14 @@ void run_case(const CaseDynamicArgs& a) {
   const double d_star = d_control * k.d_star_per_dk;
 
   if (!a.history.empty()) {
-    std::ofstream out(a.history);
-    if (!out) throw InputError("cannot write the history file '" + a.history + "'");
-    out << "t_s,q_rad,qdot_rad_s\n";
+    // Whole or not at all; a full disk (/dev/full) is an error, never exit 0 (output_file.hpp).
+    std::string out = "t_s,q_rad,qdot_rad_s\n";
     char line[96];
     for (std::size_t i = 0; i < r.history.t.size(); ++i) {
       std::snprintf(line, sizeof line, "%.9g,%.9g,%.9g\n", r.history.t[i], r.history.theta[i], r.history.omega[i]);
-      out << line;
+      out += line;
     }
+    write_output_file(a.history, out, "--history");
   }
   if (a.json) {
     nlohmann::json j;

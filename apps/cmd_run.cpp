@@ -8,6 +8,8 @@
 #include <assess/report/building_report.hpp>
 #include <assess/support/json_input.hpp>
 #include <assess/support/error.hpp>
+#include <assess/support/input_file.hpp>
+#include <assess/support/output_file.hpp>
 #include <assess/assessment/facade_assessment.hpp>
 #include <assess/report/facade_report.hpp>
 #include <assess/report/kinematic_report.hpp>
@@ -16,9 +18,10 @@
 #include <assess/risk/fragility_report.hpp>
 
 #include <filesystem>
-#include <assess/report/pdf.hpp>
+#include <assess/report/report_files.hpp>
 
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <iostream>
 #include <memory>
@@ -32,15 +35,41 @@ namespace {
 std::string wrap(const std::string& line, std::size_t width) { return wrap_text(line, 2, width) + "\n"; }
 
 struct RunArgs {
-  std::string file, html, pdf, lang = "it", fragility, mechanism, expand;
+  std::string file, html, pdf, docx, txt, lang = "it", fragility, mechanism, expand;
   bool json = false, keep_going = false, wide = false;
+  bool wants_report() const { return !html.empty() || !pdf.empty() || !docx.empty() || !txt.empty(); }
 };
 
-void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_text);
+// Rewrites a message of the case (for a building's mechanism: the building's
+// paths and the mechanism's id, building_path_message); identity otherwise.
+using MessageMap = std::function<std::string(const std::string&)>;
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_text, const MessageMap& map = {});
+
+// The case file's text for the report's appendix (the bounded reader: the
+// file already read once, so the same checks).
+std::string read_text(const std::string& path) { return read_input_file(path, input_kinds::case_file); }
+
+// Refuses the outputs before a long run rather than after it: an --html or
+// --pdf, --docx or --txt that names an input of the run (the case file itself), a directory,
+// a link out of its folder (output_file.hpp; written the same way at the end).
+void check_outputs(const RunArgs& a) {
+  if (!a.html.empty()) check_output_file(a.html, "--html");
+  if (!a.pdf.empty()) check_output_file(a.pdf, "--pdf");
+  if (!a.docx.empty()) check_output_file(a.docx, "--docx");
+  if (!a.txt.empty()) check_output_file(a.txt, "--txt");
+  if (!a.html.empty() && a.html == a.pdf) throw InputError("--html and --pdf name the same file '" + a.html + "'");
+}
+
+// --expand DIR: each expanded case as DIR/<id>.json, written whole through
+// write_output_file: never over the building file or another input of the
+// run, never through a link out of DIR.
+void write_expanded(const RunArgs& a, const BuildingCase& b, const std::vector<const BuildingMechanism*>& ms) {
+  make_output_folder(a.expand, "--expand");
+  for (const BuildingMechanism* m : ms) check_output_file(a.expand + "/" + m->id + ".json", "--expand " + a.expand, a.expand);
+  for (const BuildingMechanism* m : ms)
+    write_output_file(a.expand + "/" + m->id + ".json", standalone_case(b, *m).dump(2) + "\n", "--expand " + a.expand,
+                      a.expand);
 }
 
 // A building case (issue 22; docs/user/building.md): every mechanism, the
@@ -50,33 +79,39 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
   BuildingCase bc = parse_building(doc, a.file);
   if (!a.mechanism.empty()) {
     const BuildingMechanism& m = find_mechanism(bc, a.mechanism);
-    run_single(a, m.kase, standalone_case(bc, m).dump(2) + "\n");
+    // --expand with --mechanism: that mechanism's expanded case only.
+    if (!a.expand.empty()) write_expanded(a, bc, {&m});
+    // Its errors and warnings name the building file's paths and the mechanism.
+    const MessageMap map = [&](const std::string& text) { return building_path_message(bc, m, text); };
+    try {
+      run_single(a, m.kase, standalone_case(bc, m).dump(2) + "\n", map);
+    } catch (const InputError& e) {
+      throw InputError(map(e.what()));
+    }
+    if (!a.expand.empty() && !a.json) std::cout << "\nexpanded case written to " << a.expand << "/" << m.id << ".json\n";
     return;
+  }
+  if (!a.expand.empty()) {
+    // Checked before the run, written after it (with the shared selections' ranges).
+    make_output_folder(a.expand, "--expand");
+    for (const BuildingMechanism& m : bc.mechanisms)
+      check_output_file(a.expand + "/" + m.id + ".json", "--expand " + a.expand, a.expand);
   }
   FacadeOptions opt;
   opt.keep_going = a.keep_going;
-  opt.histories = !a.html.empty() || !a.pdf.empty();
+  opt.histories = a.wants_report();
   const BuildingAssessment res = assess_building(std::move(bc), opt);
   print_warnings(res.warnings);
   if (!a.expand.empty()) {
-    std::filesystem::create_directories(a.expand);
-    for (const BuildingMechanism& m : res.building.mechanisms) {
-      const std::string path = a.expand + "/" + m.id + ".json";
-      std::ofstream out(path, std::ios::binary);
-      if (!out || !(out << standalone_case(res.building, m).dump(2) << "\n"))
-        throw InputError("--expand " + a.expand + ": cannot write " + path);
-    }
+    std::vector<const BuildingMechanism*> all;
+    for (const BuildingMechanism& m : res.building.mechanisms) all.push_back(&m);
+    write_expanded(a, res.building, all);
   }
-  if (!a.html.empty() || !a.pdf.empty()) {
+  if (a.wants_report()) {
     ReportOptions ro;
     ro.lang = lang;
     ro.case_text = read_text(a.file);
-    const std::string page = building_html(res, ro);
-    if (!a.html.empty()) {
-      std::ofstream out(a.html, std::ios::binary);
-      if (!out || !(out << page)) throw InputError("--html " + a.html + ": cannot write the file");
-    }
-    if (!a.pdf.empty()) html_to_pdf(page, a.pdf);
+    write_report_files(building_document(res, ro), {a.html, a.pdf, a.docx, a.txt});
   }
   if (a.json) {
     nlohmann::json j = building_json(res);
@@ -85,12 +120,15 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
     std::cout << building_text(res, a.wide ? TextWidth::wide : TextWidth::columns120)
               << (a.expand.empty() ? "" : "\nexpanded single-mechanism cases written to " + a.expand + "/M*.json\n")
               << (a.html.empty() ? "" : "\nHTML report written to " + a.html + "\n")
-              << (a.pdf.empty() ? "" : "PDF report written to " + a.pdf + "\n");
+              << (a.pdf.empty() ? "" : "PDF report written to " + a.pdf + "\n")
+              << (a.docx.empty() ? "" : "Word report written to " + a.docx + "\n")
+              << (a.txt.empty() ? "" : "text report written to " + a.txt + "\n");
   }
 }
 
 void run(const RunArgs& a) {
-  const nlohmann::json doc = read_json_file(a.file);
+  const nlohmann::json doc = read_json_file(a.file, input_kinds::case_file);
+  check_outputs(a);
   if (is_building_document(doc)) return run_building(a, doc);
   if (!a.mechanism.empty() || !a.expand.empty())
     throw InputError(a.file + ": --mechanism and --expand apply to a building case (a file with \"walls\"), "
@@ -98,16 +136,19 @@ void run(const RunArgs& a) {
   run_single(a, parse_case(doc, a.file), read_text(a.file));
 }
 
-void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_text) {
+void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_text, const MessageMap& map) {
   const Lang lang = parse_lang(a.lang);
   FacadeOptions opt;
   opt.keep_going = a.keep_going;
-  opt.histories = !a.html.empty() || !a.pdf.empty();
+  opt.histories = a.wants_report();
   FacadeAssessment res = assess_facade(c, opt);
   // Issue 23: the tie rods ("ties" or "design"): before/after and their checks;
   // given ties also decide the dynamic check rows.
   const std::optional<TieInterventionResult> ties = assess_ties(res);
-  print_warnings(res.warnings);
+  std::vector<std::string> warnings = res.warnings;
+  if (map)
+    for (std::string& w : warnings) w = map(w);
+  print_warnings(warnings);
   // A fragility result of this case: --fragility DIR, or the default output
   // directory of `assess fragility` (CASE.fragility) when it holds this case's.
   std::optional<nlohmann::json> frag;
@@ -127,18 +168,13 @@ void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_tex
   // The additional probabilistic result of the report (HTML box, JSON).
   std::optional<ProbabilisticResult> prob;
   if (frag) prob = probabilistic_result(*frag, frag_dir + "/summary.json");
-  if (!a.html.empty() || !a.pdf.empty()) {
+  if (a.wants_report()) {
     ReportOptions ro;
     ro.lang = lang;
     ro.fragility = prob;
     if (ties) ro.ties = &*ties;
     ro.case_text = case_text;
-    const std::string page = facade_html(res, ro);
-    if (!a.html.empty()) {
-      std::ofstream out(a.html, std::ios::binary);
-      if (!out || !(out << page)) throw InputError("--html " + a.html + ": cannot write the file");
-    }
-    if (!a.pdf.empty()) html_to_pdf(page, a.pdf);
+    write_report_files(facade_document(res, ro), {a.html, a.pdf, a.docx, a.txt});
   }
   if (a.json) {
     nlohmann::json j = facade_json(res);
@@ -157,7 +193,9 @@ void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_tex
               << (frag ? (a.wide ? fragility_line(*frag) + "\n" : wrap(fragility_line(*frag), 120)) : "")
               << (ties ? tie_text(*ties) : "")
               << (a.html.empty() ? "" : "\nHTML report written to " + a.html + "\n")
-              << (a.pdf.empty() ? "" : "PDF report written to " + a.pdf + "\n");
+              << (a.pdf.empty() ? "" : "PDF report written to " + a.pdf + "\n")
+              << (a.docx.empty() ? "" : "Word report written to " + a.docx + "\n")
+              << (a.txt.empty() ? "" : "text report written to " + a.txt + "\n");
   }
 }
 
@@ -171,8 +209,11 @@ void add_run_command(CLI::App& app) {
   cmd->add_flag("--json", args->json, "print the report as JSON");
   cmd->add_option("--html", args->html, "also write a self-contained HTML report with plots to this file");
   cmd->add_option("--pdf", args->pdf, "also print the same report to a PDF file (A4, headless Chromium)");
+  cmd->add_option("--docx", args->docx,
+                  "also write the same relazione as an editable Word document (pandoc, Debian package pandoc)");
+  cmd->add_option("--txt", args->txt, "also write the same relazione as plain text (120 columns)");
   cmd->add_option("--lang", args->lang,
-                  "language of the HTML/PDF report: it (default: the relazione is filed in Italy) or en");
+                  "language of the HTML/PDF/Word report: it (default: the relazione is filed in Italy) or en");
   cmd->add_flag("--wide", args->wide, "one line per table row however long (default: tables within 120 columns)");
   cmd->add_flag("--keep-going", args->keep_going, "continue with the readable records when some cannot be read");
   cmd->add_option("--mechanism", args->mechanism,

@@ -3,6 +3,7 @@
 #include "commands.hpp"
 
 #include <assess/support/error.hpp>
+#include <assess/support/number_rules.hpp>
 #include <assess/hazard/comuni.hpp>
 #include <assess/hazard/site.hpp>
 #include <assess/support/units.hpp>
@@ -24,7 +25,7 @@ struct SpectrumArgs {
   std::optional<std::string> island, use_class, limit_state, comune, province;
   std::string soil = "A", topography = "T1", periods, grid, islands;
   double h_over_H = 1.0, vn = 50.0, damping = 5.0;
-  bool json = false;
+  bool json = false, periods_given = false;
 };
 
 std::vector<double> parse_periods(const std::string& list) {
@@ -292,10 +293,18 @@ void print_table(const Site& site, const std::vector<Column>& cols, const std::v
 }
 
 void run(const SpectrumArgs& a) {
+  // The number rules of the case files (support/number_rules.hpp): TR, VN,
+  // damping and CU of 1e308 made "TR = inf" and an infinite spectrum.
+  if (a.tr) check_number_option("--tr", *a.tr, rules::return_period_years);
+  check_number_option("--vn", a.vn, rules::nominal_life_years);
+  check_number_option("--damping", a.damping, rules::damping_or_zero_pct);
+  if (a.cu) check_number_option("--cu", *a.cu, rules::use_coefficient);
+  if (a.q) check_number_option("--q", *a.q, rules::behaviour_factor);
   const SiteSpec spec = make_spec(a);
+  if (a.periods_given && a.periods.find_first_not_of(" ,") == std::string::npos)
+    throw InputError("--periods '" + a.periods + "': expected a comma-separated list of periods >= 0 s, e.g. 0,0.5,1 "
+                     "(leave the option out for the default periods)");
   const std::vector<double> periods = parse_periods(a.periods);
-  if (!(a.damping >= 0.0) || !std::isfinite(a.damping))
-    throw InputError("--damping " + std::to_string(a.damping) + ": expected a viscous damping ratio in percent >= 0");
   if (a.q && !(*a.q >= 1.0)) throw InputError("--q " + std::to_string(*a.q) + ": expected a behaviour factor q >= 1");
   const Site site(spec);
   const std::vector<Column> cols = evaluate(a, site);
@@ -356,7 +365,8 @@ void add_spectrum_command(CLI::App& app) {
   cmd->add_option("--tr", a->tr, "return period (years) instead of a limit state");
   cmd->add_option("--damping", a->damping, "viscous damping (%, default 5)");
   cmd->add_option("--q", a->q, "behaviour factor: also print the design spectrum Sd");
-  cmd->add_option("--periods", a->periods, "comma-separated periods (s), e.g. 0,0.5,1");
+  cmd->add_option("--periods", a->periods, "comma-separated periods (s), e.g. 0,0.5,1")
+      ->each([a](const std::string&) { a->periods_given = true; });
   cmd->add_option("--grid", a->grid, "hazard grid CSV (default: the shipped spectra/ntc2008_hazard_grid.csv)");
   cmd->add_option("--islands-table", a->islands, "islands CSV (default: the shipped table)");
   cmd->add_flag("--json", a->json, "print JSON (one object for one limit state)");

@@ -9,6 +9,10 @@
 #include <string>
 #include <vector>
 
+namespace assess {
+struct NumberRule;
+}
+
 namespace assess::cli {
 
 void add_spectrum_command(CLI::App& app);   // cmd_spectrum.cpp
@@ -37,5 +41,16 @@ inline nlohmann::json& stamp_version(nlohmann::json& j) {
 
 /// Prints warnings on stderr, one per line ("assess: warning: ...").
 void print_warnings(const std::vector<std::string>& warnings);
+
+/// Adds to every floating-point option of `app` and its subcommands (CLI11
+/// type name FLOAT) a check that its value is a finite decimal number: "nan",
+/// "inf", "0x1p-3" and subnormals (1e-320) are refused with the option's
+/// name ("--k: must be a finite number, got 'nan'"), exit status 2 (main.cpp).
+void require_finite_numbers(CLI::App& app);
+
+/// InputError "<option>: <what is wrong>" when `value` breaks `rule`
+/// (support/number_rules.hpp), e.g. "--tr: value 1e+308 out of range:
+/// expected in [1, 1e+06] years".
+void check_number_option(const char* option, double value, const NumberRule& rule);
 
 }  // namespace assess::cli

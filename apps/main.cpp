@@ -2,16 +2,86 @@
 #include "commands.hpp"
 
 #include <assess/support/error.hpp>
+#include <assess/support/number_rules.hpp>
+
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
 
 #include <cstdio>
 #include <exception>
+#include <filesystem>
+#include <new>
 #include <iostream>
 #include <map>
 #include <string>
 
 
+void assess::cli::require_finite_numbers(CLI::App& app) {
+  const CLI::Validator finite(
+      [](std::string& text) -> std::string {
+        std::string t = text;
+        t.erase(0, t.find_first_not_of(" \t"));
+        const std::string lower = [&] {
+          std::string l;
+          for (char c : t) l += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+          return l;
+        }();
+        char* end = nullptr;
+        const double v = std::strtod(t.c_str(), &end);
+        if (end == t.c_str()) return "";  // not a number at all: CLI11's own message
+        if (lower.find("0x") != std::string::npos)
+          return "must be a decimal number, got '" + text + "' (a hexadecimal float)";
+        if (!std::isfinite(v)) return "must be a finite number, got '" + text + "'";
+        if (assess::is_subnormal(v))
+          return "must be a number of normal size, got '" + text + "' (a subnormal number, |x| < 2.2e-308)";
+        return "";
+      },
+      "FINITE");
+  std::function<void(CLI::App&)> walk = [&](CLI::App& a) {
+    for (CLI::Option* o : a.get_options())
+      if (o->get_type_name() == "FLOAT") o->check(finite);
+    for (CLI::App* sub : a.get_subcommands({})) walk(*sub);
+  };
+  walk(app);
+}
+
+void assess::cli::check_number_option(const char* option, double value, const assess::NumberRule& rule) {
+  const std::string bad = assess::number_rule_violation(value, rule);
+  if (!bad.empty()) throw assess::InputError(std::string(option) + ": " + bad);
+}
+
+namespace {
+
+// The last guard on a message (issue 31: "-nan" and "TR = inf" in messages):
+// a word inf, -inf, nan or -nan, as std::to_string and iostreams print a
+// number that is not finite, reads "infinite" / "not a number". The messages
+// format their numbers with number_for_message; this catches one that did not.
+std::string plain_numbers(const std::string& m) {
+  std::string out;
+  auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '/' || c == '\''; };
+  for (std::size_t i = 0; i < m.size();) {
+    const bool start = i == 0 || !word(m[i - 1]);
+    const std::size_t sign = (m[i] == '-') ? 1 : 0;
+    if (start && i + sign + 3 <= m.size()) {
+      const std::string w = m.substr(i + sign, 3);
+      const bool end = i + sign + 3 == m.size() || !word(m[i + sign + 3]);
+      if (end && (w == "inf" || w == "nan")) {
+        out += w == "nan" ? "not a number" : (sign ? "minus infinite" : "infinite");
+        i += sign + 3;
+        continue;
+      }
+    }
+    out += m[i++];
+  }
+  return out;
+}
+
+}  // namespace
+
 void assess::cli::print_warnings(const std::vector<std::string>& warnings) {
-  for (const std::string& w : warnings) std::cerr << "assess: warning: " << w << "\n";
+  for (const std::string& w : warnings) std::cerr << "assess: warning: " << plain_numbers(w) << "\n";
 }
 
 int main(int argc, char** argv) {
@@ -52,13 +122,30 @@ int main(int argc, char** argv) {
     all += "  " + it->second + "\n";
   }
   app.footer(all + "\nReport bugs and read the documentation at docs/README.md (installed in share/doc/assess).");
+  // Every number option of every subcommand: a finite decimal number, never
+  // "nan", "inf", a hexadecimal float or a subnormal (issue 31: --k nan was
+  // taken for "no --k").
+  assess::cli::require_finite_numbers(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int rc = app.exit(e);
     return rc == 0 ? 0 : assess::cli::exit_input_error;
   } catch (const assess::InputError& e) {
-    std::cerr << "assess: error: " << e.what() << "\n";
+    std::cerr << "assess: error: " << plain_numbers(e.what()) << "\n";
+    return assess::cli::exit_input_error;
+  } catch (const assess::SystemError& e) {
+    // A failure of the machine (disk full, I/O error): exit status 1.
+    std::cerr << "assess: error: " << plain_numbers(e.what()) << "\n";
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "assess: error: out of memory (the input asks for more memory than the machine has)\n";
+    return 1;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // Every output goes through write_output_file; a file-system call left
+    // elsewhere still names its paths and the system's reason.
+    std::cerr << "assess: error: " << e.path1().string() << (e.path2().empty() ? "" : " -> " + e.path2().string())
+              << ": " << e.code().message() << "\n";
     return assess::cli::exit_input_error;
   } catch (const std::exception& e) {
     std::cerr << "assess: internal error: " << e.what() << "\n";

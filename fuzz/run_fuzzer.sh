@@ -2,21 +2,24 @@
 # Runs one libFuzzer harness for a bounded time on a seed corpus made from the
 # project's shipped files, and prints its figures (executions, time, crashes).
 #   fuzz/run_fuzzer.sh EXE NAME SECONDS SOURCE_DIR WORK_DIR [libFuzzer options...]
-# NAME: records | case_file | campaign. Exit status: libFuzzer's (non-zero on a
+# NAME: records | case_file | campaign | building | ties. Exit status: libFuzzer's (non-zero on a
 # crash, a leak, a sanitizer report or a timeout; the input is kept in WORK_DIR).
 set -eu
 exe=$1 name=$2 secs=$3 src=$4 work=$5
 shift 5
 rm -rf "$work"
 mkdir -p "$work/seeds" "$work/corpus"
-# Seeds: the shipped files, each at most 8 KB (the fuzzer's -max_len).
+# Seeds: the shipped files, each at most max_len bytes (8 KB; building
+# files 16 KB, so that the shipped buildings are whole, valid seeds).
+max_len=8192
+[ "$name" = building ] && max_len=16384
 seed() { # seed PREFIX_BYTE FILE...
   prefix=$1; shift
   for f in "$@"; do
     [ -f "$f" ] || continue
     out="$work/seeds/$(basename "$f")"
     if [ -n "$prefix" ]; then printf "$prefix" > "$out"; else : > "$out"; fi
-    head -c 8192 "$f" >> "$out"
+    head -c "$max_len" "$f" >> "$out"
   done
 }
 case "$name" in
@@ -31,11 +34,17 @@ case "$name" in
             "$src"/tests/data/hostile/*.json ;;
   campaign)
     seed '' "$src"/tests/data/campaign/*.json "$src"/mechanisms/campaign-*.json ;;
+  building)
+    seed '' "$src"/mechanisms/building-*.json "$src"/tests/cli/building/*.json "$src"/tests/cli/building_bad/*.json \
+            "$src"/tests/data/hostile/building_*.json ;;
+  ties)
+    seed '' "$src"/mechanisms/*-ties.json "$src"/tests/cli/ties/*.json "$src"/tests/cli/ties_bad/*.json \
+            "$src"/tests/data/hostile/ties_*.json ;;
   *) echo "unknown fuzzer '$name'" >&2; exit 2 ;;
 esac
 echo "fuzz $name: $(ls "$work/seeds" | wc -l) seed files, ${secs} s"
 set +e
-"$exe" "$work/corpus" "$work/seeds" -max_total_time="$secs" -max_len=8192 -timeout=20 -rss_limit_mb=2560 \
+"$exe" "$work/corpus" "$work/seeds" -max_total_time="$secs" -max_len="$max_len" -timeout=20 -rss_limit_mb=2560 \
   -print_final_stats=1 -artifact_prefix="$work/" "$@" > "$work/log.txt" 2>&1
 rc=$?
 set -e

@@ -21,10 +21,10 @@ endforeach()
 
 # The terminal summary: every mechanism, the safety indices and the governing ones.
 assess_cli_test(building_text ARGS run mechanisms/building-house.json
-  PASS "BUILDING ASSESSMENT \\(local mechanisms, 8 mechanisms\\).*comune Norcia \\(PG\\).*S1 = one selection over.*NTC 2018.*M8 .*NTC 2008 \\(for comparison\\).*governing mechanisms.*NTC 2018, linear \\(strength\\): M1 .*zetaE = 0\\.5[0-9]+.*TR_C = ")
+  PASS "BUILDING ASSESSMENT \\(local mechanisms, 10 mechanisms\\).*comune Norcia \\(PG\\).*S1 = one selection over.*NTC 2018.*M10 .*NTC 2008 \\(for comparison\\).*governing mechanisms.*NTC 2018, linear \\(strength\\): M1 .*zetaE = 0\\.5[0-9]+.*TR_C = ")
 assess_cli_test(building_json ARGS run mechanisms/building-house.json --json
   PASS "\"building\".*\"record_sets\".*\"governing\".*\"mechanisms\".*\"assessment\".*\"safety_indices\".*\"zeta_E\"")
-assess_cli_test(building_one_mechanism ARGS run mechanisms/building-house.json --mechanism M4
+assess_cli_test(building_one_mechanism ARGS run mechanisms/building-house.json --mechanism M5
   PASS "gable" FAIL_REGEX "BUILDING ASSESSMENT")
 
 # Hostile input: every error names the file, the path in the building file and the unit; exit 2.
@@ -85,12 +85,12 @@ assess_cli_error_test(building_expand_single "--mechanism and --expand apply to 
   run mechanisms/gable.json --expand /tmp/never)
 
 # The relazione of the example building in headless Chromium: loads without a
-# console message, 54 figures (the zetaE chart, the site spectra, and each
+# console message, 55 figures (the zetaE chart, the site spectra, and each
 # mechanism's figures with ids prefixed by its id), the summary with a link to
 # every mechanism's section and the sections themselves (Italian and English).
 foreach(lang it en)
   add_test(NAME cli.building_report_browser_${lang}
-    COMMAND sh -c "\"$1\" run mechanisms/building-house.json --lang $3 --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 54 'id=\"summary\"' 'href=\"#M1\"' 'href=\"#M8\"' '<h2 id=\"M1\"' '<h2 id=\"M8\"' 'id=\"fig-zeta\"' 'id=\"M8-fig-adrs\"' 'data-governing=\"true\"' 'class=\"verdict (ok|fail)\"'"
+    COMMAND sh -c "\"$1\" run mechanisms/building-house.json --lang $3 --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 55 'id=\"summary\"' 'href=\"#M1\"' 'href=\"#M10\"' '<h2 id=\"M1\"' '<h2 id=\"M10\"' 'id=\"fig-zeta\"' 'id=\"M10-fig-adrs\"' '★ [0-9]' 'class=\"box verdict (ok|fail)\"' 'data-building=\"verdict\"'"
             sh $<TARGET_FILE:assess_cli> ${CMAKE_CURRENT_BINARY_DIR}/building-house.${lang}.html ${lang}
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
   set_tests_properties(cli.building_report_browser_${lang} PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77 TIMEOUT 300
@@ -112,7 +112,7 @@ set_tests_properties(cli.building_ties_report_browser PROPERTIES LABELS "cli;bro
 set(_bfrag ${PROJECT_BINARY_DIR}/tests/building_fragility)
 add_test(NAME cli.building_fragility_mechanism
   COMMAND ${CMAKE_COMMAND} -E env ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}
-          sh -c "rm -rf '${_bfrag}' && A='$<TARGET_FILE:assess_cli>' && F='--stripes 100,475,2475 --records 3 --bootstrap 0 --no-plots --quiet' && \"$A\" run mechanisms/building-house.json --expand '${_bfrag}/cases' > /dev/null && \"$A\" fragility mechanisms/building-house.json --mechanism M4 $F --out '${_bfrag}/b' && \"$A\" fragility '${_bfrag}/cases/M4.json' $F --out '${_bfrag}/s' > /dev/null && cmp '${_bfrag}/b/results.csv' '${_bfrag}/s/results.csv' && echo 'identical results.csv'"
+          sh -c "rm -rf '${_bfrag}' && A='$<TARGET_FILE:assess_cli>' && F='--stripes 100,475,2475 --records 3 --bootstrap 0 --no-plots --quiet' && \"$A\" run mechanisms/building-house.json --expand '${_bfrag}/cases' > /dev/null && \"$A\" fragility mechanisms/building-house.json --mechanism M5 $F --out '${_bfrag}/b' && \"$A\" fragility '${_bfrag}/cases/M5.json' $F --out '${_bfrag}/s' > /dev/null && cmp '${_bfrag}/b/results.csv' '${_bfrag}/s/results.csv' && echo 'identical results.csv'"
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.building_fragility_mechanism PROPERTIES LABELS cli TIMEOUT 300
   PASS_REGULAR_EXPRESSION "fragility of 'gable about its base'.*identical results.csv")
@@ -129,7 +129,7 @@ assess_cli_error_test(building_kinematic "a building case \\(key \"walls\"\\): `
 
 # The relazione printed to PDF (A4): summary and one section per mechanism.
 add_test(NAME cli.building_report_pdf
-  COMMAND sh -c "command -v chromium >/dev/null && command -v pdfinfo >/dev/null || exit 77; \"$1\" run mechanisms/building-house.json --pdf \"$2\" > /dev/null || exit 1; p=$(pdfinfo \"$2\" | sed -n 's/^Pages: *//p'); echo pages=$p; [ \"$p\" -ge 30 ] && [ \"$p\" -le 90 ] && pdfinfo \"$2\" | grep -q 'Page size:.*(A4)' "
+  COMMAND sh -c "command -v chromium >/dev/null && command -v pdfinfo >/dev/null || exit 77; \"$1\" run mechanisms/building-house.json --pdf \"$2\" > /dev/null || exit 1; p=$(pdfinfo \"$2\" | sed -n 's/^Pages: *//p'); echo pages=$p; [ \"$p\" -ge 30 ] && [ \"$p\" -le 120 ] && pdfinfo \"$2\" | grep -q 'Page size:.*(A4)' "
           sh $<TARGET_FILE:assess_cli> ${CMAKE_CURRENT_BINARY_DIR}/building-house.pdf
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.building_report_pdf PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77 TIMEOUT 300

@@ -16,7 +16,7 @@ set_tests_properties(cli.campaign_threads_identical PROPERTIES LABELS cli PASS_R
 
 assess_cli_error_test(campaign_missing_record "/records/1/file: record file 'no_such_record.AT2' not found"
   campaign tests/data/campaign/missing_record.json --out ${_campaign_out}/missing)
-assess_cli_error_test(campaign_no_file "cannot open campaign file" campaign tests/data/campaign/nonexistent.json --out ${_campaign_out}/none)
+assess_cli_error_test(campaign_no_file "nonexistent.json: cannot open the campaign file: No such file" campaign tests/data/campaign/nonexistent.json --out ${_campaign_out}/none)
 
 # With MPI: 2 ranks on one machine write the same results.csv as one process.
 # (Registered only when assess was built with MPI and mpirun exists; as root,

@@ -201,6 +201,7 @@ TEST_CASE("corner overturning: alpha0 and e* of the 3-D wedge by hand, about the
   p.wall_length = 20.0;  // longer than h tan(beta): triangular arms
   p.base_z = 2.0;
   p.beta_deg = beta;
+  p.axis_deg = 45.0;  // the axis normal to the bisector (issue 33: scanned by default)
   {
     const auto set = assess::corner_overturning(p);
     REQUIRE(set.candidates.size() == 1);

@@ -4,6 +4,19 @@ execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "install failed")
 endif()
+# Issue 31: the installed executable and MPI plugin have no RUNPATH that is
+# empty (the current directory), relative or into the build tree.
+find_program(READELF readelf)
+if(READELF)
+  file(GLOB installed ${WORK_DIR}/prefix/bin/assess ${WORK_DIR}/prefix/lib*/assess/assess_mpi.so)
+  execute_process(COMMAND ${CMAKE_COMMAND} -DREADELF=${READELF} "-DFILES=${installed}" -DBUILD_DIR=${BUILD_DIR}
+                  -P ${CMAKE_CURRENT_LIST_DIR}/../support/check_runpath.cmake RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                  ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "installed binaries: ${out}${err}")
+  endif()
+  message(STATUS "${out}")
+endif()
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/build
                 -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)

@@ -1,16 +1,27 @@
-# Runs EXE with ARGS (a ;-list); passes only if the exit code is non-zero and
-# stderr+stdout match REGEX, and the output has no "nan".
+# Runs EXE with ARGS (a ;-list); passes only if the exit code is non-zero (EXIT
+# when given) and stderr+stdout match REGEX, and the output has no "nan",
+# "inf", "internal error" or sign of a crash (issue 31).
 execute_process(COMMAND ${EXE} ${ARGS} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 set(all "${out}${err}")
 if(rc EQUAL 0)
   message(FATAL_ERROR "expected a non-zero exit, got 0; output:\n${all}")
 endif()
+if(DEFINED EXIT AND NOT rc EQUAL EXIT)
+  message(FATAL_ERROR "expected exit status ${EXIT}, got ${rc}; output:\n${all}")
+endif()
 if(NOT all MATCHES "${REGEX}")
   message(FATAL_ERROR "output does not match '${REGEX}':\n${all}")
 endif()
 string(TOLOWER "${all}" lower)
-if(lower MATCHES "[^a-z]nan[^a-z]")
+# (A value the user wrote, quoted back in the message: 'nan', is not a result.)
+if(lower MATCHES "(^|[^a-z_./'])-?nan([^a-z_./']|$)")
   message(FATAL_ERROR "output contains NaN:\n${all}")
+endif()
+if(lower MATCHES "(^|[^a-z_./'])-?inf([^a-z_./']|$)")
+  message(FATAL_ERROR "output contains inf:\n${all}")
+endif()
+if(lower MATCHES "internal error")
+  message(FATAL_ERROR "internal error:\n${all}")
 endif()
 if(lower MATCHES "terminate called|segmentation fault|core dumped")
   message(FATAL_ERROR "crash:\n${all}")

@@ -223,9 +223,9 @@ TEST_CASE("gable_overturning: 24 slices by default, ridge loads in kN") {
   CHECK(parse(with_mechanism(m)).mechanism.candidates[0].chain.blocks().size() == 10);
 }
 
-TEST_CASE("corner_overturning: beta searched by default, kN to SI, the ties' resultant along the bisector") {
+TEST_CASE("corner_overturning: beta searched by default, kN to SI, the ties' components normal to the axis") {
   json m = json::parse(R"({ "type": "corner_overturning", "height": 7.0, "thickness": 0.5,
-                            "unit_weight": 18.0, "wall_length": 6.0 })");
+                            "unit_weight": 18.0, "wall_length": 6.0, "axis_deg": 45.0 })");
   const auto c = parse(with_mechanism(m));
   CHECK(c.mechanism.type == "corner_overturning");
   CHECK(c.mechanism.searched);
@@ -234,7 +234,7 @@ TEST_CASE("corner_overturning: beta searched by default, kN to SI, the ties' res
   CHECK_CLOSE(c.mechanism.candidates.back().parameter, 60.0, abs_tol(tol_factor));
   CHECK_CLOSE(c.mechanism.candidates[0].Z, 0.0, abs_tol(tol_m));  // base_z defaults to 0
   const auto& ch0 = c.mechanism.candidates[0].chain;
-  CHECK(ch0.loads().size() == 2);  // self weights only: no top weight, thrust or tie by default
+  CHECK(ch0.loads().size() == 3);  // self weights only (pier, two arms): no top weight, thrust or tie by default
   CHECK_CLOSE(ch0.blocks()[0].unit_weight, 18.0 * kN, rel_tol(tol_si));
   m["beta_deg"] = 30.0;
   m["base_z"] = 3.0;
@@ -245,10 +245,12 @@ TEST_CASE("corner_overturning: beta searched by default, kN to SI, the ties' res
   REQUIRE(g.mechanism.candidates.size() == 1);
   CHECK_CLOSE(g.mechanism.candidates[0].Z, 3.0, abs_tol(tol_m));
   const auto& l = g.mechanism.candidates[0].chain.loads();
-  REQUIRE(l.size() == 2 + 3);
-  CHECK_CLOSE(l[2].weight, 20.0 * kN, rel_tol(tol_si));
-  CHECK_CLOSE(l[3].force.x(), 4.0 * kN, rel_tol(tol_si));
-  CHECK_CLOSE(l[4].force.x(), -std::sqrt(2.0) * 6.0 * kN, rel_tol(tol_si));
+  REQUIRE(l.size() == 3 + 4);
+  CHECK_CLOSE(l[3].weight, 20.0 * kN, rel_tol(tol_si));
+  CHECK_CLOSE(l[4].force.x(), 4.0 * kN, rel_tol(tol_si));  // the thrust along the bisector, normal to the 45 deg axis
+  // Each rod along a wall restrains with sin 45 = cos 45 of its force about the 45 deg axis.
+  CHECK_CLOSE(l[5].force.x(), -6.0 * kN / std::sqrt(2.0), rel_tol(tol_si));
+  CHECK_CLOSE(l[6].force.x(), -6.0 * kN / std::sqrt(2.0), rel_tol(tol_si));
   m["beta_deg"] = 0.0;
   CHECK_THROWS_WITH_AS(parse(with_mechanism(m)),
                        doctest::Contains("case.json: /mechanism/beta_deg: value 0 out of range: expected in (0, 90) deg"),
@@ -510,12 +512,12 @@ TEST_CASE("out-of-range values name the path, the range and the unit") {
   json m = one_storey();
   m["storeys"][0]["thickness"] = -0.45;
   CHECK_THROWS_WITH_AS(parse(with_mechanism(m)),
-                       doctest::Contains("case.json: /mechanism/storeys/0/thickness: value -0.45 out of range: expected > 0 m"),
+                       doctest::Contains("case.json: /mechanism/storeys/0/thickness: value -0.45 out of range: expected in [0.001, 1000] m (a dimension of a wall: 1 mm to 1 km)"),
                        assess::InputError);
   json v = json::parse(R"({ "type": "vertical_flexure", "height": 4.0, "thickness": -0.4,
                             "unit_weight": 20.0, "length": 1.0 })");
   CHECK_THROWS_WITH_AS(parse(with_mechanism(v)),
-                       doctest::Contains("case.json: /mechanism/thickness: value -0.4 out of range: expected > 0 m"),
+                       doctest::Contains("case.json: /mechanism/thickness: value -0.4 out of range: expected in [0.001, 1000] m (a dimension of a wall: 1 mm to 1 km)"),
                        assess::InputError);
   m = one_storey();
   m["storeys"][0]["floor_distance_from_inner_face"] = 0.6;
@@ -531,7 +533,7 @@ TEST_CASE("out-of-range values name the path, the range and the unit") {
   m = one_storey();
   m["storeys"][0]["floor_weight"] = -3.0;
   CHECK_THROWS_WITH_AS(parse(with_mechanism(m)),
-                       doctest::Contains("case.json: /mechanism/storeys/0/floor_weight: value -3 out of range: expected >= 0 kN"),
+                       doctest::Contains("case.json: /mechanism/storeys/0/floor_weight: value -3 out of range: expected in [0, 1e+06] kN (0 to 1 GN: a weight or a tie force)"),
                        assess::InputError);
   // The middle hinge lies strictly between the restraints.
   v["thickness"] = 0.4;
@@ -670,7 +672,7 @@ TEST_CASE("explicit blocks: geometry errors name the constraint or load") {
   b = wall_blocks();
   b["blocks"][0]["length"] = 0.0;
   CHECK_THROWS_WITH_AS(parse(with_mechanism(b)),
-                       doctest::Contains("case.json: /mechanism/blocks/0/length: value 0 out of range: expected > 0 m"),
+                       doctest::Contains("case.json: /mechanism/blocks/0/length: value 0 out of range: expected in [0.001, 1000] m (a dimension of a wall: 1 mm to 1 km)"),
                        assess::InputError);
 }
 
@@ -685,5 +687,108 @@ TEST_CASE("explicit blocks: a chain with 0 or 2 degrees of freedom is not a mech
   h["constraints"].erase(2);  // no top restraint: two blocks, one hinge each
   CHECK_THROWS_WITH_AS(parse(with_mechanism(h)),
                        doctest::Contains("case.json: /mechanism: the chain has 2 degrees of freedom, a mechanism needs exactly 1"),
+                       assess::InputError);
+}
+
+// Issue 33: the readers of horizontal flexure, friction overturning, roof thrust and the corner's new keys.
+TEST_CASE("horizontal_flexure: fm/FC at the hinges, kN to SI, strips and openings, named errors") {
+  json m = json::parse(R"({ "type": "horizontal_flexure", "span": 5.0, "thickness": 0.5, "unit_weight": 18.0,
+                            "fm_MPa": 1.8, "supports": { "side_wall_friction": 0.4, "side_wall_load": 50.0 },
+                            "strips": [ { "base_z": 6.5, "height": 1.0, "carried_weight": 3.0 } ] })");
+  json doc = with_mechanism(m);
+  doc["knowledge_level"] = "LC2";  // FC = 1.2: f = 1.8/1.2 = 1.5 MPa
+  const auto c = parse(doc);
+  CHECK(c.mechanism.type == "horizontal_flexure");
+  REQUIRE(c.mechanism.candidates.size() == 1);
+  CHECK_CLOSE(c.mechanism.candidates[0].Z, 7.0, abs_tol(tol_m));
+  // alpha0 = 8 H (t - H/(f h))/((w + n) L^2), H = 0.4 * 50 kN, f = 1.5 MPa, n = 3 kN/m.
+  const double H = 20.0 * kN, w = 9.0 * kN, n = 3.0 * kN;
+  CHECK_CLOSE(assess::activation_multiplier(c.mechanism.candidates[0].chain),
+              8.0 * H * (0.5 - H / 1.5e6) / ((w + n) * 25.0), abs_tol(1e-12));
+  m["supports"] = json::parse(R"({ "side_wall_friction": 0.4 })");
+  CHECK_THROWS_WITH_AS(parse(with_mechanism(m)), doctest::Contains("case.json: /mechanism/supports: the side walls' restraint needs both"),
+                       assess::InputError);
+  m["supports"] = json::parse(R"({ "rigid": true, "tie": 10.0 })");
+  CHECK_THROWS_WITH_AS(parse(with_mechanism(m)), doctest::Contains("/mechanism/supports: give \"rigid\": true or"),
+                       assess::InputError);
+  m["supports"] = json::parse(R"({ "tie": 10.0 })");
+  m["strips"][0]["openings"] = json::parse(R"([ { "from": 1.0, "to": 2.0, "height": 1.0 } ])");
+  CHECK_THROWS_WITH_AS(parse(with_mechanism(m)),
+                       doctest::Contains("/mechanism/strips/0/openings/0/height: value 1 out of range: expected in (0, 1) m"),
+                       assess::InputError);
+}
+
+TEST_CASE("friction_overturning and roof_thrust: kN to SI, defaults, named errors") {
+  json f = json::parse(R"({ "type": "friction_overturning", "height": 6.0, "thickness": 0.5, "length": 5.0,
+                            "unit_weight": 18.0, "side_thickness": 0.4, "side_length": 6.0, "unit_length": 0.4,
+                            "course_height": 0.2, "friction": 0.6, "side_load": 10.0,
+                            "floors": [ { "weight": 50.0, "z": 6.0, "friction": 0.5 } ] })");
+  const auto c = parse(with_mechanism(f));
+  REQUIRE(c.mechanism.candidates.size() == 2);
+  // The floor held by default, its reaction at mid-thickness: its seat friction mu_s P_s.
+  bool seat = false;
+  for (const assess::Load& l : c.mechanism.candidates[0].chain.loads())
+    if (l.type == assess::LoadType::Friction && l.name.rfind("seat friction", 0) == 0) {
+      seat = true;
+      CHECK_CLOSE(l.force.x(), 0.5 * 50.0 * kN, rel_tol(tol_si));
+      CHECK_CLOSE(l.point.x(), -0.25, abs_tol(tol_m));
+    }
+  CHECK(seat);
+  f["floors"][0]["z"] = 7.0;  // above the façade
+  CHECK_THROWS_WITH_AS(parse(with_mechanism(f)), doctest::Contains("/mechanism/floors/0/z: value 7 out of range"),
+                       assess::InputError);
+  json r = json::parse(R"({ "type": "roof_thrust", "storeys": [ { "height": 4.0, "thickness": 0.6 } ],
+                            "unit_weight": 18.0, "length": 2.0,
+                            "roof": { "scheme": "a_frame", "load": 1.5, "span": 3.0, "pitch_deg": 35.0 } })");
+  const auto g = parse(with_mechanism(r));
+  CHECK(g.mechanism.type == "roof_thrust");
+  // Totals over the length (2 m); the seat by default at mid-thickness.
+  int found = 0;
+  for (const assess::Load& l : g.mechanism.candidates[0].chain.loads()) {
+    if (l.name == "roof weight") {
+      ++found;
+      CHECK_CLOSE(l.weight, 2.0 * 4.5 * kN, rel_tol(tol_si));
+    }
+    if (l.name == "roof thrust") {
+      ++found;
+      CHECK_CLOSE(l.force.x(), 2.0 * 4.5 * kN / (2.0 * std::tan(35.0 * 3.14159265358979323846 / 180.0)), rel_tol(tol_si));
+      CHECK_CLOSE(l.point.x(), -0.3, abs_tol(tol_m));
+    }
+  }
+  CHECK(found == 2);
+  r["roof"]["scheme"] = "rafters";
+  CHECK_THROWS_WITH_AS(parse(with_mechanism(r)), doctest::Contains("/mechanism/roof/scheme"), assess::InputError);
+  r["roof"]["scheme"] = "strut";
+  r["roof"].erase("pitch_deg");
+  CHECK_THROWS_WITH_AS(parse(with_mechanism(r)), doctest::Contains("/mechanism/roof: missing required key \"pitch_deg\""),
+                       assess::InputError);
+}
+
+TEST_CASE("corner_overturning: walls of their own, the axis scanned by default") {
+  json m = json::parse(R"({ "type": "corner_overturning", "height": 6.0, "unit_weight": 18.0,
+                            "wall_a": { "thickness": 0.6, "length": 5.0, "crack_reach": 2.0 },
+                            "wall_b": { "thickness": 0.45, "length": 5.0, "beta_deg": 20.0 } })");
+  const auto c = parse(with_mechanism(m));
+  CHECK(c.mechanism.searched);
+  REQUIRE(c.mechanism.candidates.size() >= 7);
+  CHECK_CLOSE(c.mechanism.candidates.front().parameter, 0.0, abs_tol(tol_factor));
+  CHECK_CLOSE(c.mechanism.candidates[6].parameter, 90.0, abs_tol(tol_factor));
+  m["wall_b"].erase("thickness");
+  CHECK_THROWS_WITH_AS(parse(with_mechanism(m)), doctest::Contains("/mechanism: missing \"thickness\" (m)"),
+                       assess::InputError);
+  m["wall_b"]["thickness"] = 0.45;
+  m["wall_a"]["beta_deg"] = 30.0;  // a second way to give the crack
+  CHECK_THROWS_WITH_AS(parse(with_mechanism(m)), doctest::Contains("/mechanism/wall_a: give the crack by one of"),
+                       assess::InputError);
+  // Bounded work whatever the input: 21 openings, a searched crack times a fine axis scan.
+  json c2 = json::parse(R"({ "type": "corner_overturning", "height": 6.0, "unit_weight": 18.0, "thickness": 0.5,
+                             "wall_length": 5.0, "search_points": 100, "axis_points": 91 })");
+  CHECK_THROWS_WITH_AS(parse(with_mechanism(c2)), doctest::Contains("make more than 200 candidates"), assess::InputError);
+  c2["beta_deg"] = 30.0;
+  c2["wall_a"] = json::object();
+  c2["wall_a"]["openings"] = json::array();
+  for (int i = 0; i < 21; ++i)
+    c2["wall_a"]["openings"].push_back(json{{"from", 1.0}, {"to", 1.5}, {"bottom", 0.1 * i}, {"top", 0.1 * i + 0.05}});
+  CHECK_THROWS_WITH_AS(parse(with_mechanism(c2)), doctest::Contains("/mechanism/wall_a/openings: at most 20 openings"),
                        assess::InputError);
 }

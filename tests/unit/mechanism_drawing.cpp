@@ -142,6 +142,8 @@ std::vector<double> dims(const Svg& s, const std::string& kind) {
     if (t.cls == "dim" && t.kind == kind) {
       std::string num = t.text;
       if (kind == "offset-note") num = std::regex_replace(num, std::regex("^d = | m$"), "");
+      for (char& ch : num)  // the Italian drawing writes the decimal comma (issue 28)
+        if (ch == ',') ch = '.';
       v.push_back(std::stod(num));
     }
   return v;
@@ -255,6 +257,14 @@ void check_drawing(const std::string& what, const std::string& svg, const assess
     CHECK((contains(hinge, zh) || contains(reach, zh) || (level.empty() && std::abs(zh - zmax) < tol_dim)));
   }
 
+  // A projected 3-D body (issue 33, the corner's welded pieces): equivalent
+  // widths, no wall dimension to check beyond the heights.
+  bool welded = false;
+  for (const assess::Constraint& c : chain.constraints()) welded = welded || c.type == assess::ConstraintType::Weld;
+  if (welded) {
+    CHECK(dims(s, "thickness").empty());
+    return;
+  }
   // Thicknesses: every band of constant section of every block (distinct values).
   const std::vector<double> thick = dims(s, "thickness");
   std::vector<double> width = dims(s, "width");

@@ -1,10 +1,12 @@
-// The report's verdict box (governing_verdict_row over the assessment's
-// summary rows) and message catalogue: the worst row of each code governs, at
-// height as well as at ground level; a failing row is never hidden; a row that
-// cannot be trusted (no verdict, D/C not finite) governs; every catalogue
-// entry exists in Italian and English.
+// One verdict everywhere (issue 28): the single rule of a check
+// (check_satisfied: a verdict and a finite D/C <= 1), a collapse carried by its
+// D/C (+inf), a method's governing check the worst of its rows (a failing row
+// is never hidden; a row that cannot be trusted governs), a method with a
+// check without a verdict and none failing has no verdict; and the message
+// catalogue: every entry exists in Italian and English.
 #include <doctest/doctest.h>
 
+#include "assess/assessment/verdict.hpp"
 #include "assess/report/facade_report.hpp"
 #include "assess/report/messages.hpp"
 #include "assess/support/error.hpp"
@@ -18,42 +20,75 @@
 using namespace assess;
 
 namespace {
-VerdictRow row(const std::string& code, const std::string& approach, const std::string& where, double dc,
-               bool satisfied, bool no_verdict = false) {
-  VerdictRow r;
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+CheckRow row(const std::string& code, const std::string& kind, const std::string& where, double dc,
+             bool no_verdict = false) {
+  CheckRow r;
   r.code = code;
-  r.approach = approach;
+  r.kind = kind;
   r.limit_state = "SLV";
   r.location = where;
   r.dc = dc;
-  r.satisfied = satisfied;
   r.no_verdict = no_verdict;
+  decide(r);
   return r;
+}
+
+const VerdictRow& governing(const Verdict& v, const std::string& code, const std::string& method) {
+  for (const MethodVerdict& m : v.methods)
+    if (m.code == code && m.method == method) {
+      REQUIRE(m.governing >= 0);
+      return v.rows[std::size_t(m.governing)];
+    }
+  FAIL("no method " << code << " " << method);
+  return v.rows.front();
 }
 }  // namespace
 
-TEST_CASE("verdict box: the largest D/C of the code governs, at height as well as at ground level") {
-  Verdict v;
-  v.rows = {row("NTC2008", "strength", "ground", 0.50, true), row("NTC2008", "displacement", "height", 1.40, false),
-            row("NTC2018", "strength", "ground", 0.80, true), row("NTC2018", "displacement", "ground", 0.95, true)};
-  CHECK(governing_verdict_row(v, "NTC2008") == 1);
-  CHECK(governing_verdict_row(v, "NTC2018") == 3);
-  CHECK(governing_verdict_row(v, "NTC2025") == -1);
+TEST_CASE("the one rule of a check: satisfied iff a verdict and a finite D/C <= 1") {
+  CHECK(check_satisfied(1.0, false));
+  CHECK(check_satisfied(0.0, false));
+  CHECK_FALSE(check_satisfied(1.0 + 1e-12, false));
+  CHECK_FALSE(check_satisfied(inf, false));
+  CHECK_FALSE(check_satisfied(std::numeric_limits<double>::quiet_NaN(), false));
+  CHECK_FALSE(check_satisfied(0.5, true));
+  // Every row decided by it: a collapse is D/C = +inf, never "not satisfied" beside D/C < 1.
+  CHECK_FALSE(row("NTC2018", "dynamic", "ground", inf).satisfied);
+  CHECK(row("NTC2018", "dynamic", "ground", 0.486).satisfied);
 }
 
-TEST_CASE("verdict box: a failing row with D/C < 1 (d0 exceeded) governs over a larger satisfied D/C") {
-  Verdict v;
-  v.rows = {row("NTC2018", "strength", "ground", 0.90, true), row("NTC2018", "dynamic", "ground", 0.60, false)};
-  CHECK(governing_verdict_row(v, "NTC2018") == 1);
+TEST_CASE("a method's governing check: the largest D/C, at height as well as at ground level") {
+  const Verdict v = build_verdict({row("NTC2008", "strength", "ground", 0.50), row("NTC2008", "displacement", "height", 1.40),
+                                   row("NTC2018", "strength", "ground", 0.80), row("NTC2018", "displacement", "ground", 0.95),
+                                   row("NTC2018", "displacement", "height", 0.97)});
+  CHECK(governing(v, "NTC2008", "nonlinear").dc == 1.40);
+  CHECK(governing(v, "NTC2008", "nonlinear").location == "height");
+  CHECK(governing(v, "NTC2018", "nonlinear").dc == 0.97);
+  CHECK(governing(v, "NTC2018", "linear").dc == 0.80);
 }
 
-TEST_CASE("verdict box: a row without a verdict or with a D/C that is not finite cannot be trusted and governs") {
-  Verdict v;
-  v.rows = {row("NTC2018", "strength", "ground", 3.0, false),
-            row("NTC2018", "displacement", "ground", std::numeric_limits<double>::quiet_NaN(), false)};
-  CHECK(governing_verdict_row(v, "NTC2018") == 1);
-  v.rows[1] = row("NTC2018", "dynamic", "ground", 0.5, false, true);
-  CHECK(governing_verdict_row(v, "NTC2018") == 1);
+TEST_CASE("a collapse (D/C = +inf) governs its method and makes it fail; its D/C is +inf, never a number below 1") {
+  const Verdict v = build_verdict({row("NTC2018", "strength", "ground", 0.90), row("NTC2018", "dynamic", "ground", inf),
+                                   row("NTC2018", "dynamic", "ground", 0.40)},
+                                  "dynamic");
+  const VerdictRow& g = governing(v, "NTC2018", "dynamic");
+  CHECK(std::isinf(g.dc));
+  CHECK_FALSE(g.satisfied);
+  REQUIRE(v.conclusion() != nullptr);
+  CHECK_FALSE(v.conclusion()->satisfied);
+  CHECK(std::isinf(v.conclusion()->max_dc));
+  CHECK(v.conclusion()->failing == 1);
+}
+
+TEST_CASE("a check without a verdict: the method has no verdict when nothing fails, and fails when something does") {
+  Verdict v = build_verdict({row("NTC2018", "dynamic", "ground", 0.50, true)}, "dynamic");
+  REQUIRE(v.conclusion() != nullptr);
+  CHECK(v.conclusion()->undecided());
+  CHECK_FALSE(v.conclusion()->satisfied);
+  v = build_verdict({row("NTC2018", "dynamic", "ground", 0.50, true), row("NTC2018", "dynamic", "ground", 1.5)}, "dynamic");
+  CHECK_FALSE(v.conclusion()->undecided());
+  CHECK_FALSE(v.conclusion()->satisfied);
 }
 
 TEST_CASE("message catalogue: every key in both languages, Italian code terms") {

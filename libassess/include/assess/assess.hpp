@@ -21,7 +21,10 @@
 #include <assess/kinematic/floor_spectrum.hpp>
 #include <assess/kinematic/free_wall_capacity.hpp>
 #include <assess/kinematic/kinematic_analysis.hpp>
+#include <assess/kinematic/friction_overturning.hpp>
+#include <assess/kinematic/horizontal_flexure.hpp>
 #include <assess/kinematic/mechanism_catalogue.hpp>
+#include <assess/kinematic/roof_thrust.hpp>
 
 // records
 #include <assess/records/ground_motion.hpp>
@@ -50,9 +53,15 @@
 
 // report
 #include <assess/report/facade_report.hpp>
+#include <assess/report/document.hpp>
+#include <assess/report/docx_writer.hpp>
 #include <assess/report/html_report.hpp>
+#include <assess/report/html_writer.hpp>
+#include <assess/report/report_files.hpp>
+#include <assess/report/text_writer.hpp>
 #include <assess/report/kinematic_report.hpp>
 #include <assess/report/plot.hpp>
+#include <assess/report/plot_layout.hpp>
 #include <assess/report/probabilistic_result.hpp>
 
 // campaign

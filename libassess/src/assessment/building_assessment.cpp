@@ -108,6 +108,14 @@ std::vector<SafetyIndex> safety_indices(const FacadeAssessment& a) {
           s.checks = m.checks;
           s.failing = m.failing;
           s.no_verdict = m.no_verdict;
+          if (m.governing >= 0) {
+            s.dc_candidate = a.verdict.rows[std::size_t(m.governing)].candidate;
+            for (const CandidateResult& cr : a.kinematic.candidates)
+              if (cr.label == s.dc_candidate) {
+                s.dc_alpha0 = cr.result.alpha0;
+                s.dc_a0_star = cr.result.a0_star;
+              }
+          }
         }
       if (s.approach == "dynamic") {
         if (!s.has_checks) continue;
@@ -282,7 +290,7 @@ BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& o
         if (!s || !s->has_checks) continue;
         ++g.assessed;
         if (s->satisfied) ++g.satisfied;
-        else if (s->no_verdict > 0 && s->failing <= s->no_verdict) ++g.no_verdict;
+        else if (s->failing == 0 && s->no_verdict > 0) ++g.no_verdict;
         else ++g.failing;
         // Lowest zetaE (strength, displacement); largest D/C (dynamic; or
         // when no zetaE is defined). Ties: the first in the file.
@@ -319,7 +327,31 @@ BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& o
       t.mechanism_after = int(i);
     }
   }
+  out.verdict = building_verdict(out);
   return out;
+}
+
+BuildingVerdict building_verdict(const BuildingAssessment& b) {
+  BuildingVerdict v;
+  for (std::size_t i = 0; i < b.results.size(); ++i) {
+    const BuildingMechanismResult& r = b.results[i];
+    const MethodVerdict* m = r.a.verdict.conclusion();
+    if (!m) continue;
+    ++v.mechanisms;
+    if (m->undecided()) v.undecided.push_back(int(i));
+    else if (!m->satisfied) v.failing.push_back(int(i));
+    const double dc = std::isfinite(m->max_dc) ? m->max_dc : inf;
+    if (v.dc_mechanism < 0 || dc > v.max_dc) {
+      v.max_dc = dc;
+      v.dc_mechanism = int(i);
+    }
+    if (!std::isnan(r.zeta_before) && (v.zeta_mechanism < 0 || r.zeta_before < v.zeta)) {
+      v.zeta = r.zeta_before;
+      v.zeta_mechanism = int(i);
+    }
+  }
+  v.satisfied = v.mechanisms > 0 && v.failing.empty() && v.undecided.empty();
+  return v;
 }
 
 }  // namespace assess

@@ -83,6 +83,12 @@ CaseFile parse_expanded(const BuildingCase& b, const BuildingMechanism& m) {
   }
 }
 
+// "M" followed by decimal digits (the form of a mechanism id).
+bool is_mechanism_id(const std::string& s) {
+  if (s.size() < 2 || s[0] != 'M') return false;
+  return std::all_of(s.begin() + 1, s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
 }  // namespace
 
 bool is_building_document(const nlohmann::json& doc) { return doc.is_object() && doc.contains("walls"); }
@@ -110,7 +116,12 @@ std::string building_path_message(const BuildingCase& b, const BuildingMechanism
                                     message[end] == '_'))
       ++end;
     const std::string path = message.substr(at + b.file.size() + 2, end - (at + b.file.size() + 2));
-    out += message.substr(pos, at - pos) + b.file + ": " + origin(b, m, path);
+    const std::string where = origin(b, m, path);
+    out += message.substr(pos, at - pos) + b.file + ": " + where;
+    // A key the building gives but this wall or mechanism sets to null
+    // (RFC 7386: null removes it): say so, or "/dynamic: missing" reads as false.
+    if (contains_pointer(b.doc, where) && b.doc.at(nlohmann::json::json_pointer(where)).is_null())
+      out += " (set to null there, which removes the building's value for this mechanism)";
     pos = end;
   }
   out += message.substr(pos);
@@ -130,7 +141,7 @@ BuildingCase parse_building(const nlohmann::json& doc, const std::string& file) 
                       "\" is not a building-wide key: tie anchor points are in each mechanism's own coordinates; give "
                       "it in a wall (its mechanisms) or a mechanism (docs/user/building.md, Tie rods)");
   root.allow_only({"schema_version", "project", "site", "building", "knowledge_level", "FC", "codes", "method",
-                   "check_SLD", "analysis", "dynamic", "walls", "record_selection"});
+                   "check_SLD", "analysis", "dynamic", "walls", "record_selection", "report"});
   if (root.find("schema_version")) root.integer("schema_version", 1, 1);
   b.project = root.find("project") ? root.string("project") : "";
   if (!root.has("site"))
@@ -167,6 +178,14 @@ BuildingCase parse_building(const nlohmann::json& doc, const std::string& file) 
       if (m.name.empty()) e.at("name").fail("expected a non-empty name");
       if (!names.insert(m.name).second)
         e.at("name").fail("\"" + m.name + "\": another mechanism of the building has this name (names must be unique)");
+      // A name that reads as another mechanism's id (M1, M2, ... in the file's
+      // order) would make `--mechanism M2` ambiguous: ids win, so such a name
+      // is refused rather than silently shadowed.
+      if (is_mechanism_id(m.name) && m.name != "M" + std::to_string(b.mechanisms.size() + 1))
+        e.at("name").fail("\"" + m.name + "\" reads as the id of another mechanism (this is mechanism M" +
+                          std::to_string(b.mechanisms.size() + 1) +
+                          "; ids M1, M2, ... number the mechanisms in the file's order and --mechanism matches "
+                          "an id first): choose a descriptive name");
       if (!e.at("mechanism").is_object()) e.at("mechanism").fail("expected an object (a mechanism, docs/catalogue.md)");
       if (e.find("FC") && e.find("knowledge_level")) e.fail("give \"knowledge_level\" or \"FC\", not both");
       m.wall = wall_name;
@@ -185,6 +204,7 @@ BuildingCase parse_building(const nlohmann::json& doc, const std::string& file) 
     }
   }
   for (BuildingMechanism& m : b.mechanisms) m.kase = parse_expanded(b, m);
+  b.report = b.mechanisms.front().kase.report;  // "report" is building-wide: every expanded case holds it
 
   // Record sets (docs/theory/building.md §3): mechanisms selecting with the
   // same settings and no range of their own share one selection over the
@@ -213,8 +233,15 @@ BuildingCase parse_building(const nlohmann::json& doc, const std::string& file) 
       throw InputError(building_path_message(b, m, err.what()));
     }
     const CandidateResult& gov = kr.candidates[kr.governing];
-    const MechanismDynamics md =
-        build_mechanism_dynamics(m.kase, gov, m.kase.mechanism.candidates[kr.governing].chain, d);
+    // Its errors (a restitution against the sidedness, a Winkler modulus)
+    // name the building's paths and the mechanism, as every other error.
+    const MechanismDynamics md = [&] {
+      try {
+        return build_mechanism_dynamics(m.kase, gov, m.kase.mechanism.candidates[kr.governing].chain, d);
+      } catch (const InputError& err) {
+        throw InputError(building_path_message(b, m, err.what()));
+      }
+    }();
     if (!md.applies) continue;  // reported by the run ("not applicable")
     const double T1 = std::min(gov.result.Ts, gov.result.T_SLV), T2 = std::max(gov.result.Ts, gov.result.T_SLV);
     const PeriodRange r = rocking_period_range(T1, T2);
@@ -286,8 +313,13 @@ nlohmann::json standalone_case(const BuildingCase& b, const BuildingMechanism& m
 }
 
 const BuildingMechanism& find_mechanism(const BuildingCase& b, const std::string& id_or_name) {
+  // An id first (M1, M2, ... in the file's order), then a name: a name of
+  // the form of another mechanism's id is refused by parse_building, so
+  // `--mechanism M2` always means the second mechanism (issue 31).
   for (const BuildingMechanism& m : b.mechanisms)
-    if (m.id == id_or_name || m.name == id_or_name) return m;
+    if (m.id == id_or_name) return m;
+  for (const BuildingMechanism& m : b.mechanisms)
+    if (m.name == id_or_name) return m;
   std::string names;
   for (const BuildingMechanism& m : b.mechanisms) names += (names.empty() ? "" : ", ") + m.id + " \"" + m.name + "\"";
   throw InputError(b.file + ": no mechanism \"" + id_or_name + "\" in the building (its mechanisms: " + names + ")");

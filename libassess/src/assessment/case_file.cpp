@@ -5,11 +5,14 @@
 #include "assess/hazard/comuni.hpp"
 #include "assess/dynamics/analysis_limits.hpp"
 #include "assess/kinematic/code_rules.hpp"
+#include "assess/kinematic/friction_overturning.hpp"
+#include "assess/kinematic/horizontal_flexure.hpp"
 #include "assess/kinematic/tie_catalogue.hpp"
 #include "assess/kinematic/tie_checks.hpp"
 #include "assessment/plausibility.hpp"
 #include "assess/support/error.hpp"
 #include "assess/support/json_input.hpp"
+#include "assess/support/number_rules.hpp"
 #include "assess/support/units.hpp"
 
 #include <algorithm>
@@ -19,6 +22,7 @@
 #include <map>
 #include <optional>
 #include <sstream>
+#include <tuple>
 
 namespace assess {
 namespace {
@@ -56,9 +60,11 @@ MechanismSet parse_blocks(const JsonNode& m) {
     b.allow_only({"name", "polygon", "unit_weight", "length"});
     Block blk;
     blk.name = b.find("name") ? b.string("name") : "block " + std::to_string(blocks.size());
-    for (const JsonNode& v : b.array("polygon", 3)) blk.polygon.push_back(v.as_point("m"));
-    blk.unit_weight = b.number("unit_weight", "kN/m^3", 0.0) * kN;
-    blk.length = b.positive("length", "m");
+    for (const JsonNode& v : b.array("polygon", 3)) blk.polygon.push_back(v.as_point(rules::coordinate_m));
+    // Degenerate polygons named as such, with the JSON path (kinematic/chain.hpp).
+    if (const std::string d = polygon_defect(blk.polygon); !d.empty()) b.at("polygon").fail(d);
+    blk.unit_weight = b.number("unit_weight", rules::block_unit_weight_kN_m3) * kN;
+    blk.length = b.number("length", rules::dimension_m);
     names[blk.name] = static_cast<int>(blocks.size());
     blocks.push_back(blk);
   }
@@ -125,15 +131,15 @@ MechanismSet parse_blocks(const JsonNode& m) {
       }
       if (type == "weight") {
         ld.type = LoadType::Weight;
-        ld.weight = l.number("weight", "kN", 0.0) * kN;
+        ld.weight = l.number("weight", rules::weight_kN) * kN;
         ld.vertical = l.boolean_or("bears", true);
         ld.seismic = l.boolean_or("seismic", true);
       } else if (type == "force") {
         ld.type = LoadType::Force;
-        ld.force = l.at("force").as_point("kN") * kN;
+        ld.force = l.at("force").as_point(rules::force_kN) * kN;
       } else {
         ld.type = type == "tie" ? LoadType::Tie : LoadType::Friction;
-        const double F = l.number("force", "kN", 0.0) * kN;
+        const double F = l.number("force", rules::weight_kN) * kN;
         ld.force = Eigen::Vector2d(type == "tie" ? -F : F, 0.0);
       }
       loads.push_back(ld);
@@ -149,7 +155,7 @@ MechanismSet parse_blocks(const JsonNode& m) {
       zs += c.point.y();
       ++nz;
     }
-  const double Zc = m.find("Z_m") ? m.number("Z_m", "m", 0.0) : (nz ? zs / nz : 0.0);
+  const double Zc = m.find("Z_m") ? m.number("Z_m", rules::offset_m) : (nz ? zs / nz : 0.0);
   set.candidates.push_back({"explicit blocks", Chain(blocks, cons, loads), Zc, 0.0});
   return set;
 }
@@ -160,49 +166,243 @@ MechanismSet parse_blocks(const JsonNode& m) {
 template <class Params>
 void parse_crack_angle(const JsonNode& m, Params& p) {
   if (m.find("beta_deg")) p.beta_deg = open_interval(m.at("beta_deg"), "deg", 0.0, 90.0);
-  if (m.find("unit_length")) p.unit_length = m.positive("unit_length", "m");
-  if (m.find("course_height")) p.course_height = m.positive("course_height", "m");
+  if (m.find("unit_length")) p.unit_length = m.number("unit_length", rules::dimension_m);
+  if (m.find("course_height")) p.course_height = m.number("course_height", rules::dimension_m);
   p.beta_min_deg = m.number_or("beta_min_deg", p.beta_min_deg, "deg", 0.0, 90.0);
   p.beta_max_deg = m.number_or("beta_max_deg", p.beta_max_deg, "deg", 0.0, 90.0);
   p.search_points = m.integer_or("search_points", p.search_points, 2, 100);
 }
 
-MechanismSet parse_mechanism(const JsonNode& m) {
+// ---- Issue 33: horizontal flexure, friction overturning, roof thrust, the
+// corner about any axis (m, kN, kN/m, kN m, MPa at the file's edge) --------
+
+RoofSpec parse_roof(const JsonNode& r, double top_thickness) {
+  r.allow_only({"scheme", "load", "span", "pitch_deg", "seat_from_inner_face"});
+  RoofSpec roof;
+  const std::string scheme = r.choice("scheme", {"a_frame", "strut", "ridge_beam", "truss"});
+  roof.scheme = scheme == "a_frame"  ? RoofScheme::AFrame
+                : scheme == "strut"  ? RoofScheme::Strut
+                : scheme == "truss"  ? RoofScheme::Truss
+                                     : RoofScheme::RidgeBeam;
+  roof.load = r.number("load", "kN/m^2", 0.0) * kN;
+  roof.span = r.positive("span", "m");
+  roof.pitch_deg = open_interval(r.at("pitch_deg"), "deg", 0.0, 90.0);
+  roof.seat_from_inner_face = r.number_or("seat_from_inner_face", 0.5 * top_thickness, "m", 0.0, top_thickness);
+  return roof;
+}
+
+MechanismSet parse_horizontal_flexure(const JsonNode& m, double FC) {
+  m.allow_only({"type", "span", "thickness", "unit_weight", "fm_MPa", "stress_block", "supports", "ring_beam_moment",
+                "strips", "search_points"});
+  HorizontalFlexureParams p;
+  p.span = m.positive("span", "m");
+  p.thickness = m.positive("thickness", "m");
+  p.unit_weight = m.positive("unit_weight", "kN/m^3") * kN;
+  // The strength at the hinges: the mean strength divided by FC (C8.5.4, C8.7.1.2.1 d)).
+  p.strength = m.positive("fm_MPa", "MPa") * 1e6 / FC;
+  if (m.find("stress_block"))
+    p.stress_block = m.choice("stress_block", {"rectangular", "triangular"}) == "triangular" ? StressBlock::Triangular
+                                                                                            : StressBlock::Rectangular;
+  const JsonNode sup = m.at("supports");
+  sup.allow_only({"rigid", "tie", "side_wall_friction", "side_wall_load", "restraint"});
+  p.rigid_supports = sup.boolean_or("rigid", false);
+  p.tie = sup.number_or("tie", 0.0, "kN", 0.0) * kN;
+  p.side_wall_friction = sup.number_or("side_wall_friction", 0.0, "-", 0.0, 2.0);
+  p.side_wall_load = sup.number_or("side_wall_load", 0.0, "kN", 0.0) * kN;
+  if ((p.side_wall_friction > 0.0) != (p.side_wall_load > 0.0))
+    sup.fail("the side walls' restraint needs both \"side_wall_friction\" (-) and \"side_wall_load\" (kN)");
+  p.restraint = sup.number_or("restraint", 0.0, "kN", 0.0) * kN;
+  if (p.rigid_supports && (p.tie > 0.0 || p.side_wall_load > 0.0 || p.restraint > 0.0))
+    sup.fail("give \"rigid\": true or the restraint's parts (tie, side walls, restraint), not both");
+  if (!p.rigid_supports && !(p.tie > 0.0 || p.side_wall_load > 0.0 || p.restraint > 0.0))
+    sup.fail("expected \"rigid\": true or at least one of \"tie\" (kN), \"side_wall_friction\" with "
+             "\"side_wall_load\" (kN), \"restraint\" (kN): without a restraint no horizontal arch forms");
+  p.ring_beam_moment = m.number_or("ring_beam_moment", 0.0, "kN m", 0.0) * kN;
+  // Bounds that keep a run short whatever the input (docs/reliability.md): each strip is a candidate whose
+  // middle hinge is searched over a chain of 2 blocks per opening.
+  if (m.at("strips").value().is_array() && m.at("strips").value().size() > 50)
+    m.at("strips").fail("at most 50 strips (one candidate each)");
+  for (const JsonNode& st : m.array("strips", 1)) {
+    st.allow_only({"base_z", "height", "carried_weight", "openings", "middle_hinge"});
+    if (st.find("openings") && st.at("openings").value().is_array() && st.at("openings").value().size() > 20)
+      st.at("openings").fail("at most 20 openings per strip");
+    HorizontalStrip s;
+    s.base_z = st.number_or("base_z", 0.0, "m", 0.0);
+    s.height = st.positive("height", "m");
+    s.carried_weight = st.number_or("carried_weight", 0.0, "kN/m", 0.0) * kN;
+    if (st.find("middle_hinge")) s.middle_hinge = open_interval(st.at("middle_hinge"), "m", 0.0, p.span);
+    if (st.find("openings"))
+      for (const JsonNode& o : st.array("openings")) {
+        o.allow_only({"from", "to", "height"});
+        StripOpening op;
+        op.from = o.number("from", "m", 0.0, p.span);
+        op.to = o.number("to", "m", 0.0, p.span);
+        if (!(op.to > op.from)) o.at("to").fail("expected to > from (m along the wall from the first support)");
+        op.height = open_interval(o.at("height"), "m", 0.0, s.height);
+        s.openings.push_back(op);
+      }
+    p.strips.push_back(s);
+  }
+  p.search_points = m.integer_or("search_points", p.search_points, 3, 200);
+  return horizontal_flexure(p);
+}
+
+MechanismSet parse_friction_overturning(const JsonNode& m) {
+  m.allow_only({"type", "height", "thickness", "length", "unit_weight", "base_z", "side_walls", "side_thickness",
+                "side_length", "unit_length", "course_height", "friction", "activation", "side_load", "top_weight", "tie",
+                "floors"});
+  FrictionOverturningParams p;
+  p.height = m.positive("height", "m");
+  p.thickness = m.positive("thickness", "m");
+  p.length = m.positive("length", "m");
+  p.unit_weight = m.positive("unit_weight", "kN/m^3") * kN;
+  p.base_z = m.number_or("base_z", 0.0, "m", 0.0);
+  p.side_walls = m.integer_or("side_walls", 2, 1, 2);
+  p.side_thickness = m.positive("side_thickness", "m");
+  p.side_length = m.positive("side_length", "m");
+  p.unit_length = m.positive("unit_length", "m");
+  p.course_height = m.positive("course_height", "m");
+  p.friction = m.number("friction", "-", 1e-6, 2.0);
+  p.activation = m.number_or("activation", 1.0, "-", 0.0, 1.0);
+  p.side_load = m.number_or("side_load", 0.0, "kN/m", 0.0) * kN;
+  p.top_weight = m.number_or("top_weight", 0.0, "kN", 0.0) * kN;
+  p.tie = m.number_or("tie", 0.0, "kN", 0.0) * kN;
+  if (m.find("floors"))
+    for (const JsonNode& f : m.array("floors")) {
+      f.allow_only({"weight", "z", "distance_from_inner_face", "friction", "held", "seat_length"});
+      SupportedFloor fl;
+      fl.weight = f.number("weight", "kN", 0.0) * kN;
+      fl.z = open_interval(f.at("z"), "m", p.base_z, p.base_z + p.height + 1e-9);
+      fl.distance_from_inner_face = f.number_or("distance_from_inner_face", 0.5 * p.thickness, "m", 0.0, p.thickness);
+      fl.friction = f.number_or("friction", 0.0, "-", 0.0, 2.0);
+      fl.held = f.boolean_or("held", true);
+      if (f.find("seat_length")) fl.seat_length = f.positive("seat_length", "m");
+      p.floors.push_back(fl);
+    }
+  return friction_overturning(p);
+}
+
+CornerWall parse_corner_wall(const JsonNode& w) {
+  w.allow_only({"thickness", "length", "beta_deg", "unit_length", "course_height", "crack_reach", "openings"});
+  CornerWall c;
+  if (w.find("thickness")) c.thickness = w.positive("thickness", "m");
+  if (w.find("length")) c.length = w.positive("length", "m");
+  const int ways = w.has("beta_deg") + (w.has("unit_length") || w.has("course_height")) + w.has("crack_reach");
+  if (ways > 1) w.fail("give the crack by one of \"beta_deg\", the texture (\"unit_length\", \"course_height\") or \"crack_reach\"");
+  if (w.find("beta_deg")) c.beta_deg = open_interval(w.at("beta_deg"), "deg", 0.0, 90.0);
+  if (w.find("unit_length")) c.unit_length = w.positive("unit_length", "m");
+  if (w.find("course_height")) c.course_height = w.positive("course_height", "m");
+  if (w.find("crack_reach")) c.crack_reach = w.positive("crack_reach", "m");
+  if (w.find("openings") && w.at("openings").value().is_array() && w.at("openings").value().size() > 20)
+    w.at("openings").fail("at most 20 openings per wall");
+  if (w.find("openings"))
+    for (const JsonNode& o : w.array("openings")) {
+      o.allow_only({"from", "to", "bottom", "top"});
+      CornerOpening op;
+      op.from = o.number("from", "m", 0.0);
+      op.to = o.number("to", "m", 0.0);
+      op.bottom = o.number("bottom", "m", 0.0);
+      op.top = o.number("top", "m", 0.0);
+      if (!(op.to > op.from)) o.at("to").fail("expected to > from (m along the wall from the corner's outer face)");
+      if (!(op.top > op.bottom)) o.at("top").fail("expected top > bottom (m above the foundation)");
+      c.openings.push_back(op);
+    }
+  return c;
+}
+
+MechanismSet parse_corner(const JsonNode& m) {
+  m.allow_only({"type", "height", "thickness", "unit_weight", "wall_length", "base_z", "top_weight", "thrust", "tie",
+                "beta_deg", "unit_length", "course_height", "beta_min_deg", "beta_max_deg", "search_points", "wall_a",
+                "wall_b", "axis_deg", "axis_min_deg", "axis_max_deg", "axis_points"});
+  CornerOverturningParams p;
+  p.height = m.positive("height", "m");
+  if (m.find("thickness")) p.thickness = m.positive("thickness", "m");
+  p.unit_weight = m.positive("unit_weight", "kN/m^3") * kN;
+  if (m.find("wall_length")) p.wall_length = m.positive("wall_length", "m");
+  p.base_z = m.number_or("base_z", 0.0, "m", 0.0);
+  p.top_weight = m.number_or("top_weight", 0.0, "kN", 0.0) * kN;
+  p.thrust = m.number_or("thrust", 0.0, "kN") * kN;
+  p.tie = m.number_or("tie", 0.0, "kN", 0.0) * kN;
+  parse_crack_angle(m, p);
+  if (m.find("wall_a")) p.wall_a = parse_corner_wall(m.at("wall_a"));
+  if (m.find("wall_b")) p.wall_b = parse_corner_wall(m.at("wall_b"));
+  for (const char* k : {"thickness", "length"})
+    for (const auto& [w, name] : {std::pair<const CornerWall*, const char*>{&p.wall_a, "wall_a"}, {&p.wall_b, "wall_b"}}) {
+      const bool given = std::string(k) == "thickness" ? w->thickness.has_value() : w->length.has_value();
+      const bool common = std::string(k) == "thickness" ? m.has("thickness") : m.has("wall_length");
+      if (!given && !common)
+        m.fail(std::string("missing \"") + (std::string(k) == "thickness" ? "thickness" : "wall_length") +
+               "\" (m): give it for both walls or \"" + k + "\" in \"" + name + "\"");
+    }
+  // An opening must lie beyond the corner pier, i.e. beyond the other wall's thickness.
+  for (const auto& [w, other, name] : {std::tuple<const CornerWall*, const CornerWall*, const char*>{&p.wall_a, &p.wall_b, "wall_a"},
+                                       {&p.wall_b, &p.wall_a, "wall_b"}}) {
+    const double t_other = other->thickness.value_or(p.thickness);
+    for (std::size_t i = 0; i < w->openings.size(); ++i)
+      if (w->openings[i].from < t_other)
+        m.at(name).at("openings").at(i).at("from").fail(
+            "the opening starts " + std::to_string(w->openings[i].from) + " m from the corner's outer face, inside the "
+            "corner pier (the other wall's thickness, " + std::to_string(t_other) + " m): no corner mechanism with an "
+            "opening through the pier");
+  }
+  if (m.find("axis_deg")) p.axis_deg = m.number("axis_deg", "deg", 0.0, 90.0);
+  p.axis_min_deg = m.number_or("axis_min_deg", p.axis_min_deg, "deg", 0.0, 90.0);
+  p.axis_max_deg = m.number_or("axis_max_deg", p.axis_max_deg, "deg", 0.0, 90.0);
+  p.axis_points = m.integer_or("axis_points", p.axis_points, 2, 91);
+  // A searched crack angle times a scanned axis: every pair is a candidate.
+  const bool own_a = p.wall_a.beta_deg || p.wall_a.unit_length || p.wall_a.crack_reach;
+  const bool own_b = p.wall_b.beta_deg || p.wall_b.unit_length || p.wall_b.crack_reach;
+  const bool beta_searched = !(own_a && own_b) && !p.beta_deg && !p.unit_length && !p.course_height;
+  if (beta_searched && !p.axis_deg && p.search_points * p.axis_points > 200)
+    m.fail("a searched crack angle (search_points = " + std::to_string(p.search_points) + ") and a scanned axis "
+           "(axis_points = " + std::to_string(p.axis_points) + ") make more than 200 candidates: give the crack "
+           "angle from the texture (unit_length, course_height) or the axis (axis_deg)");
+  return corner_overturning(p);
+}
+
+MechanismSet parse_mechanism(const JsonNode& m, double FC) {
   const std::string type =
       m.choice("type", {"blocks", "simple_overturning", "vertical_flexure", "composite_overturning", "gable_overturning",
-                        "corner_overturning"});
+                        "corner_overturning", "horizontal_flexure", "friction_overturning", "roof_thrust"});
   if (type == "blocks") return parse_blocks(m);
-  if (type == "simple_overturning") {
-    m.allow_only({"type", "storeys", "unit_weight", "length", "hinge_level", "hinge_setback"});
+  if (type == "simple_overturning" || type == "roof_thrust") {
+    if (type == "roof_thrust")
+      m.allow_only({"type", "storeys", "unit_weight", "length", "hinge_level", "hinge_setback", "roof"});
+    else
+      m.allow_only({"type", "storeys", "unit_weight", "length", "hinge_level", "hinge_setback"});
     SimpleOverturningParams p;
     for (const JsonNode& s : m.array("storeys", 1)) {
       s.allow_only({"height", "thickness", "floor_weight", "floor_distance_from_inner_face", "floor_bears", "thrust", "tie"});
       Storey st;
-      st.height = s.positive("height", "m");
-      st.thickness = s.positive("thickness", "m");
-      st.floor_weight = s.number_or("floor_weight", 0.0, "kN", 0.0) * kN;
+      st.height = s.number("height", rules::dimension_m);
+      st.thickness = s.number("thickness", rules::dimension_m);
+      st.floor_weight = s.number_or("floor_weight", 0.0, rules::weight_kN) * kN;
       st.floor_distance_from_inner_face = s.number_or("floor_distance_from_inner_face", 0.0, "m", 0.0, st.thickness);
       st.floor_bears = s.boolean_or("floor_bears", true);
-      st.thrust = s.number_or("thrust", 0.0, "kN") * kN;
-      st.tie = s.number_or("tie", 0.0, "kN", 0.0) * kN;
+      st.thrust = s.number_or("thrust", 0.0, rules::force_kN) * kN;
+      st.tie = s.number_or("tie", 0.0, rules::weight_kN) * kN;
       p.storeys.push_back(st);
     }
-    p.unit_weight = m.positive("unit_weight", "kN/m^3") * kN;
-    p.length = m.positive("length", "m");
+    p.unit_weight = m.number("unit_weight", rules::unit_weight_kN_m3) * kN;
+    p.length = m.number("length", rules::dimension_m);
     if (m.find("hinge_level")) p.hinge_level = m.integer("hinge_level", 0, static_cast<int>(p.storeys.size()) - 1);
-    p.hinge_setback = m.number_or("hinge_setback", 0.0, "m", 0.0);
+    p.hinge_setback = m.number_or("hinge_setback", 0.0, rules::offset_m);
+    if (type == "roof_thrust") {
+      p.roof = parse_roof(m.at("roof"), p.storeys.back().thickness);
+      return roof_thrust_overturning(p);
+    }
     return simple_overturning(p);
   }
   if (type == "vertical_flexure") {
     m.allow_only({"type", "height", "thickness", "unit_weight", "length", "base_z", "top_load",
                   "top_load_distance_from_inner_face", "hinge_height"});
     VerticalFlexureParams p;
-    p.height = m.positive("height", "m");
-    p.thickness = m.positive("thickness", "m");
-    p.unit_weight = m.positive("unit_weight", "kN/m^3") * kN;
-    p.length = m.positive("length", "m");
-    p.base_z = m.number_or("base_z", 0.0, "m", 0.0);
-    p.top_load = m.number_or("top_load", 0.0, "kN", 0.0) * kN;
+    p.height = m.number("height", rules::dimension_m);
+    p.thickness = m.number("thickness", rules::dimension_m);
+    p.unit_weight = m.number("unit_weight", rules::unit_weight_kN_m3) * kN;
+    p.length = m.number("length", rules::dimension_m);
+    p.base_z = m.number_or("base_z", 0.0, rules::offset_m);
+    p.top_load = m.number_or("top_load", 0.0, rules::weight_kN) * kN;
     p.top_load_distance_from_inner_face = m.number_or("top_load_distance_from_inner_face", 0.0, "m", 0.0, p.thickness);
     if (m.find("hinge_height")) p.hinge_height = open_interval(m.at("hinge_height"), "m", 0.0, p.height);
     return vertical_flexure(p);
@@ -212,44 +412,32 @@ MechanismSet parse_mechanism(const JsonNode& m) {
                   "side_length", "base_z", "top_weight", "tie", "beta_deg", "unit_length", "course_height",
                   "beta_min_deg", "beta_max_deg", "search_points"});
     CompositeOverturningParams p;
-    p.height = m.positive("height", "m");
-    p.thickness = m.positive("thickness", "m");
-    p.length = m.positive("length", "m");
-    p.unit_weight = m.positive("unit_weight", "kN/m^3") * kN;
-    p.side_thickness = m.positive("side_thickness", "m");
+    p.height = m.number("height", rules::dimension_m);
+    p.thickness = m.number("thickness", rules::dimension_m);
+    p.length = m.number("length", rules::dimension_m);
+    p.unit_weight = m.number("unit_weight", rules::unit_weight_kN_m3) * kN;
+    p.side_thickness = m.number("side_thickness", rules::dimension_m);
     p.side_walls = m.integer_or("side_walls", 2, 1, 2);
-    p.side_length = m.positive("side_length", "m");
-    p.base_z = m.number_or("base_z", 0.0, "m", 0.0);
-    p.top_weight = m.number_or("top_weight", 0.0, "kN", 0.0) * kN;
-    p.tie = m.number_or("tie", 0.0, "kN", 0.0) * kN;
+    p.side_length = m.number("side_length", rules::dimension_m);
+    p.base_z = m.number_or("base_z", 0.0, rules::offset_m);
+    p.top_weight = m.number_or("top_weight", 0.0, rules::weight_kN) * kN;
+    p.tie = m.number_or("tie", 0.0, rules::weight_kN) * kN;
     parse_crack_angle(m, p);
     return composite_overturning(p);
   }
-  if (type == "corner_overturning") {
-    m.allow_only({"type", "height", "thickness", "unit_weight", "wall_length", "base_z", "top_weight", "thrust", "tie",
-                  "beta_deg", "unit_length", "course_height", "beta_min_deg", "beta_max_deg", "search_points"});
-    CornerOverturningParams p;
-    p.height = m.positive("height", "m");
-    p.thickness = m.positive("thickness", "m");
-    p.unit_weight = m.positive("unit_weight", "kN/m^3") * kN;
-    p.wall_length = m.positive("wall_length", "m");
-    p.base_z = m.number_or("base_z", 0.0, "m", 0.0);
-    p.top_weight = m.number_or("top_weight", 0.0, "kN", 0.0) * kN;
-    p.thrust = m.number_or("thrust", 0.0, "kN") * kN;
-    p.tie = m.number_or("tie", 0.0, "kN", 0.0) * kN;
-    parse_crack_angle(m, p);
-    return corner_overturning(p);
-  }
+  if (type == "corner_overturning") return parse_corner(m);
+  if (type == "horizontal_flexure") return parse_horizontal_flexure(m, FC);
+  if (type == "friction_overturning") return parse_friction_overturning(m);
   m.allow_only({"type", "width", "height", "thickness", "unit_weight", "base_z", "ridge_weight", "ridge_thrust", "tie", "slices"});
   GableParams p;
-  p.width = m.positive("width", "m");
-  p.height = m.positive("height", "m");
-  p.thickness = m.positive("thickness", "m");
-  p.unit_weight = m.positive("unit_weight", "kN/m^3") * kN;
-  p.base_z = m.number_or("base_z", 0.0, "m", 0.0);
-  p.ridge_weight = m.number_or("ridge_weight", 0.0, "kN", 0.0) * kN;
-  p.ridge_thrust = m.number_or("ridge_thrust", 0.0, "kN") * kN;
-  p.tie = m.number_or("tie", 0.0, "kN", 0.0) * kN;
+  p.width = m.number("width", rules::dimension_m);
+  p.height = m.number("height", rules::dimension_m);
+  p.thickness = m.number("thickness", rules::dimension_m);
+  p.unit_weight = m.number("unit_weight", rules::unit_weight_kN_m3) * kN;
+  p.base_z = m.number_or("base_z", 0.0, rules::offset_m);
+  p.ridge_weight = m.number_or("ridge_weight", 0.0, rules::weight_kN) * kN;
+  p.ridge_thrust = m.number_or("ridge_thrust", 0.0, rules::force_kN) * kN;
+  p.tie = m.number_or("tie", 0.0, rules::weight_kN) * kN;
   p.slices = m.integer_or("slices", p.slices, 2, 200);
   return gable_overturning(p);
 }
@@ -286,8 +474,8 @@ SiteSpec parse_site(const JsonNode& s) {
         HazardParams p;
         p.ag_g = e->number("ag_g", "g", 0.0, 5.0);
         p.F0 = e->number("F0", "-", 1.0, 10.0);
-        p.Tc_star = e->positive("Tc_star", "s");
-        p.TR = e->number_or("TR", 0.0, "years", 0.0);
+        p.Tc_star = e->number("Tc_star", rules::period_s);
+        p.TR = e->number_or("TR", 0.0, rules::return_period_years);
         p.tr_requested = p.TR;
         spec.given[parse_limit_state(ls)] = p;
       }
@@ -295,10 +483,10 @@ SiteSpec parse_site(const JsonNode& s) {
   if (s.has("soil")) spec.conditions.soil = parse_soil_class(s.choice("soil", {"A", "B", "C", "D", "E"}));
   if (s.has("topography")) spec.conditions.topography = parse_topography(s.choice("topography", {"T1", "T2", "T3", "T4"}));
   spec.conditions.h_over_H = s.number_or("h_over_H", 1.0, "-", 0.0, 1.0);
-  spec.vn_years = s.number_or("VN_years", 50.0, "years", 1e-9);
+  spec.vn_years = s.number_or("VN_years", 50.0, rules::nominal_life_years);
   if (s.has("use_class") && s.has("CU")) s.fail("give \"use_class\" or \"CU\", not both");
   if (s.has("use_class")) spec.cu = use_coefficient(parse_use_class(s.choice("use_class", {"I", "II", "III", "IV"})));
-  if (s.has("CU")) spec.cu = s.positive("CU", "-");
+  if (s.has("CU")) spec.cu = s.number("CU", rules::use_coefficient);
   // Hazard availability now (a point outside the grid, an unknown island),
   // with the JSON path in the message.
   try {
@@ -595,28 +783,50 @@ void check_ties_hold(const JsonNode& arr, const std::vector<Tie>& ties, const st
 }
 // ---- end issue 23 -------------------------------------------------------------
 
+// "report" (issue 28, item 7): the relazione's frontespizio and descriptive
+// sections, text as written; masonry parameters in MPa.
+ReportInfo parse_report_info(const JsonNode& r) {
+  r.allow_only({"client", "work", "location", "engineer", "registration", "revision", "place", "description",
+                "investigations", "masonry", "mechanism_criteria", "heritage"});
+  ReportInfo x;
+  auto text = [&](const char* key, std::string& out) {
+    if (r.find(key)) out = r.string(key);
+  };
+  text("client", x.client);
+  text("work", x.work);
+  text("location", x.location);
+  text("engineer", x.engineer);
+  text("registration", x.registration);
+  text("revision", x.revision);
+  text("place", x.place);
+  text("description", x.description);
+  text("investigations", x.investigations);
+  text("mechanism_criteria", x.mechanism_criteria);
+  x.heritage = r.boolean_or("heritage", false);
+  if (const auto m = r.find("masonry")) {
+    m->allow_only({"type", "fm_MPa", "tau0_MPa", "E_MPa", "G_MPa"});
+    if (m->find("type")) x.masonry = m->string("type");
+    // Tab. C8.5.I spans fm 1-8 MPa, tau0 0.02-0.2 MPa, E 700-3000 MPa, G 230-1000 MPa: wide bounds, a unit slip fails.
+    if (m->find("fm_MPa")) x.fm = m->number("fm_MPa", "MPa", 0.1, 100.0);
+    if (m->find("tau0_MPa")) x.tau0 = m->number("tau0_MPa", "MPa", 0.001, 10.0);
+    if (m->find("E_MPa")) x.E = m->number("E_MPa", "MPa", 10.0, 1e5);
+    if (m->find("G_MPa")) x.G = m->number("G_MPa", "MPa", 1.0, 5e4);
+  }
+  return x;
+}
+
 }  // namespace
 
 CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
   const JsonNode root(doc, file);
   root.allow_only({"schema_version", "project", "site", "mechanism", "knowledge_level", "FC", "codes",
                    "building", "analysis", "dynamic", "method", "check_SLD",
-                   "ties", "design"});
+                   "ties", "design", "report"});
   CaseFile c;
   c.file = file;
   if (root.find("schema_version")) root.integer("schema_version", 1, 1);
   c.project = root.find("project") ? root.string("project") : "";
   if (const auto s = root.find("site")) c.site = parse_site(*s);
-  const JsonNode mech = root.at("mechanism");
-  check_unit_weights(mech);
-  try {
-    c.mechanism = parse_mechanism(mech);
-  } catch (const InputError& e) {
-    // Errors of the model (degrees of freedom ...) get the file and path too.
-    if (std::string(e.what()).rfind(file + ":", 0) == 0) throw;
-    mech.fail(e.what());
-  }
-
   // Confidence factor: FC given, else from the knowledge level (default LC1).
   if (root.find("FC")) {
     c.options.FC = root.number("FC", "-", 1.0, 10.0);
@@ -629,6 +839,16 @@ CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
                                                                        : code_rules::KnowledgeLevel::LC3;
     c.options.FC = code_rules::confidence_factor(lc);
   }
+  const JsonNode mech = root.at("mechanism");
+  check_unit_weights(mech);
+  try {
+    c.mechanism = parse_mechanism(mech, c.options.FC);
+  } catch (const InputError& e) {
+    // Errors of the model (degrees of freedom ...) get the file and path too.
+    if (std::string(e.what()).rfind(file + ":", 0) == 0) throw;
+    mech.fail(e.what());
+  }
+
   if (const auto codes = root.find("codes")) {
     c.checks.codes.clear();
     for (const JsonNode& e : root.array("codes", 1)) {
@@ -644,16 +864,17 @@ CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
       root.at("method").fail("the dynamic procedure (C8.7.1.2.1.9) needs a \"dynamic\" section with its records");
   }
   c.checks.sld = root.find("check_SLD") ? root.boolean_or("check_SLD", false) : false;
+  if (const auto r = root.find("report")) c.report = parse_report_info(*r);
   if (const auto b = root.find("building")) {
     b->allow_only({"height_m", "storeys", "T1_s", "damping_pct", "Z_m"});
     BuildingModel bm;
-    bm.H = b->positive("height_m", "m");
+    bm.H = b->number("height_m", rules::dimension_m);
     bm.storeys = b->integer("storeys", 1, 1000);
-    bm.T1 = b->find("T1_s") ? b->positive("T1_s", "s") : code_rules::T1_simplified(bm.H);
-    bm.damping_pct = b->number_or("damping_pct", code_rules::building_damping_default_pct, "%", 1e-9, 100.0);
+    bm.T1 = b->find("T1_s") ? b->number("T1_s", rules::period_s) : code_rules::T1_simplified(bm.H);
+    bm.damping_pct = b->number_or("damping_pct", code_rules::building_damping_default_pct, rules::damping_pct);
     c.building = bm;
     // Z > H is allowed with a warning (psi = Z/H > 1, run_kinematic_case).
-    if (b->find("Z_m")) c.Z = b->number("Z_m", "m", 0.0);
+    if (b->find("Z_m")) c.Z = b->number("Z_m", rules::offset_m);
   }
   if (const auto a = root.find("analysis")) {
     a->allow_only({"curve_model", "curve_points", "control", "du_cap_m", "d_SLV_cap_m", "d_SLC_cap_m", "q",
@@ -668,12 +889,12 @@ CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
       c.options.control_block = ctl->integer("block", 0, 1000000);
       c.options.control_point = ctl->point("point");
     }
-    c.options.du_cap = a->number_or("du_cap_m", c.options.du_cap, "m", 1e-12);
-    c.options.d_SLV_cap = a->number_or("d_SLV_cap_m", c.options.d_SLV_cap, "m", 1e-12);
-    c.options.d_SLC_cap = a->number_or("d_SLC_cap_m", c.options.d_SLC_cap, "m", 1e-12);
-    c.checks.q = a->number_or("q", code_rules::q_local_mechanism, "-", 1.0);
-    c.checks.damping_SLV_pct = a->number_or("damping_SLV_pct", code_rules::mechanism_damping_SLV_pct, "%", 0.0);
-    c.checks.damping_SLC_pct = a->number_or("damping_SLC_pct", code_rules::mechanism_damping_SLC_pct, "%", 0.0);
+    c.options.du_cap = a->number_or("du_cap_m", c.options.du_cap, rules::displacement_cap_m);
+    c.options.d_SLV_cap = a->number_or("d_SLV_cap_m", c.options.d_SLV_cap, rules::displacement_cap_m);
+    c.options.d_SLC_cap = a->number_or("d_SLC_cap_m", c.options.d_SLC_cap, rules::displacement_cap_m);
+    c.checks.q = a->number_or("q", code_rules::q_local_mechanism, rules::behaviour_factor);
+    c.checks.damping_SLV_pct = a->number_or("damping_SLV_pct", code_rules::mechanism_damping_SLV_pct, rules::damping_or_zero_pct);
+    c.checks.damping_SLC_pct = a->number_or("damping_SLC_pct", code_rules::mechanism_damping_SLC_pct, rules::damping_or_zero_pct);
   }
   // Issues 23, 29: tie levels (after FC, their masonry's default): those marked
   // "existing" act in every analysis of the case (stato di fatto); the others,
@@ -780,9 +1001,12 @@ std::vector<TieRestraint> case_tie_restraints(const CaseFile& c, const Chain& ch
 KinematicCaseResult run_kinematic_case(const CaseFile& c) {
   KinematicCaseResult out;
   out.warnings = c.warnings;
-  for (const MechanismCandidate& m : c.mechanism.candidates)
+  for (const MechanismCandidate& m : c.mechanism.candidates) {
+    KinematicOptions opt = c.options;
+    opt.rotation_cap = m.rotation_bound;  // issue 33: the mechanism's own bound on its rotation
     out.candidates.push_back(
-        {m.label, m.parameter, c.Z.value_or(m.Z), analyse_kinematic(m.chain, c.options, case_tie_restraints(c, m.chain)), {}, {}, 0.0});
+        {m.label, m.parameter, c.Z.value_or(m.Z), analyse_kinematic(m.chain, opt, case_tie_restraints(c, m.chain)), {}, {}, 0.0});
+  }
   for (const CandidateResult& cr : out.candidates)
     if (!cr.result.activates) statically_unstable(c, cr);
   // alpha0 > 1 of the governing candidate(s) (searched candidates far from
@@ -852,8 +1076,9 @@ KinematicCaseResult run_kinematic_case(const CaseFile& c) {
   for (CodeEdition code : in.codes) {
     const std::string k = to_string(code);
     std::size_t best = 0;
+    // Ties to rounding (1e-12 relative; a symmetric corner's two end axes) go to the first.
     for (std::size_t i = 1; i < out.candidates.size(); ++i)
-      if (out.candidates[i].max_dc[k] > out.candidates[best].max_dc[k]) best = i;
+      if (out.candidates[i].max_dc[k] > out.candidates[best].max_dc[k] * (1.0 + 1e-12)) best = i;
     out.governing_by_code[k] = best;
     for (const CheckRow& row : out.candidates[best].checks)
       if (row.code == k) out.checks.push_back(row);

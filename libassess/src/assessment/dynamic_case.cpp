@@ -159,7 +159,7 @@ DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, co
         lr.unit = parse_acceleration_unit(u);
       }
       if (r.has("dt")) {
-        lr.dt = r.number("dt", "s (time step of a plain one-column record)", 1e-6, 10.0);
+        lr.dt = r.number("dt", "s (time step of a plain one-column record)", record_dt_min_s, record_dt_max_s);
         if (!(*lr.dt > 0.0)) r.at("dt").fail("expected a time step > 0 s");
         if (!lr.unit)
           r.fail("a plain record with \"dt\" needs \"unit\": \"g\", \"m/s^2\" or \"cm/s^2\" (the unit of "
@@ -174,7 +174,7 @@ DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, co
     const JsonNode sel = d.at("select");
     sel.allow_only({"count", "period_range_s", "max_scale", "max_mean_scale", "max_pga_ratio", "per_event",
                     "per_station", "Mw", "distance_km", "site_classes", "relax_site_class", "countries",
-                    "catalogue"});
+                    "catalogue", "near_fault", "near_fault_km", "max_misfit"});
     RecordSelectionSpec rs;
     rs.count = sel.integer_or("count", 7, 1, 50);
     rs.max_scale = sel.number_or("max_scale", rs.max_scale, "(-)", 1.0, 100.0);
@@ -201,6 +201,9 @@ DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, co
         rs.site_classes.push_back(v);
       }
     rs.relax_site_class = sel.boolean_or("relax_site_class", true);
+    if (sel.has("near_fault")) rs.include_near_fault = sel.choice("near_fault", {"exclude", "include"}) == "include";
+    rs.near_fault_km = sel.number_or("near_fault_km", rs.near_fault_km, "km", 0.0, 100.0);
+    rs.max_misfit = sel.number_or("max_misfit", rs.max_misfit, "(-, RMS of f S/Se - 1)", 0.01, 10.0);
     if (sel.has("countries"))
       for (const JsonNode& c : sel.array("countries", 1)) rs.countries.push_back(c.as_string());
     if (sel.has("period_range_s")) {

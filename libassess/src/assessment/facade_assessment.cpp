@@ -13,7 +13,9 @@
 #include "assess/assessment/facade_assessment.hpp"
 
 #include "assess/support/error.hpp"
+#include "assess/records/library_selection.hpp"
 #include "assess/records/record_catalogue.hpp"
+#include "assess/records/record_library.hpp"
 #include "assess/records/record_io.hpp"
 #include "assess/records/response_spectrum.hpp"
 #include "assess/records/strong_motion.hpp"
@@ -23,13 +25,17 @@
 #include "assess/kinematic/code_rules.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 
 namespace assess {
 
 namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
 
 std::string directory_of(const std::string& path) {
   const auto p = path.find_last_of('/');
@@ -50,16 +56,130 @@ RecordUsed record_used(const Record& r, const std::string& file, double scale) {
   return u;
 }
 
+std::string classes_text(const std::vector<std::string>& c) {
+  if (c.empty()) return "any class";
+  std::string s = "class ";
+  for (std::size_t i = 0; i < c.size(); ++i) s += (i ? ", " : "") + c[i];
+  return s;
+}
+
+// The catalogue's metadata of a record (selected, or listed from the library).
+void describe_from_catalogue(RecordUsed& u, const CatalogueEntry& e, double near_fault_km) {
+  u.in_catalogue = true;
+  u.event = e.event;  // the catalogue's names
+  u.station = e.station;
+  u.component = e.component;
+  u.date = e.date;
+  u.country = e.country;
+  u.station_code = e.station_code;
+  u.Mw = e.Mw;
+  u.distance_km = e.distance_km;
+  u.distance_kind = e.distance_kind;
+  u.site_class = e.site_class;
+  u.site_class_basis = e.site_class_basis;
+  u.vs30_class = e.vs30_class;
+  u.vs30_m_s = e.vs30_m_s;
+  u.positive_direction = e.positive_direction;
+  u.pulse = e.pulse;
+  u.near_fault = near_fault_reason(e, near_fault_km);
+  if (std::isfinite(e.lowest_usable_hz) && e.lowest_usable_hz > 0.0) u.usable_period_s = 1.0 / e.lowest_usable_hz;
+}
+
+std::string fixed3(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f", v);
+  return buf;
+}
+
+// Why the period range of the selection is what it is (record-selection.md
+// §2.3), with the limit-state periods it does not reach.
+std::string range_note(const RecordSelectionSpec& rs, const KinematicResult& kin, const PeriodRange& r, double T1,
+                       double T2, bool shared_union) {
+  std::string n;
+  if (shared_union) {
+    n = "the union of the ranges of the candidates analysed dynamically, " + fixed3(r.T_min) + "-" + fixed3(r.T_max) +
+        " s (record-selection.md §2.7); this candidate's own: ";
+    const double lo = rocking_range_lower_factor * T1, hi = rocking_range_upper_factor * T2;
+    n += fixed3(lo) + "-" + fixed3(hi) + " s (Ts = " + fixed3(kin.Ts) + " s, T_SLV = " + fixed3(kin.T_SLV) + " s)";
+  } else if (rs.T_min && rs.T_max) {
+    n = "given in the case (/dynamic/select/period_range_s: " + fixed3(r.T_min) + "-" + fixed3(r.T_max) + " s)";
+  } else {
+    const double lo = rocking_range_lower_factor * T1, hi = rocking_range_upper_factor * T2;
+    n = fixed3(rocking_range_lower_factor) + " x min(Ts, T_SLV) = " + fixed3(lo) + " s to " +
+        fixed3(rocking_range_upper_factor) + " x max(Ts, T_SLV) = " + fixed3(hi) + " s (Ts = " + fixed3(kin.Ts) +
+        " s, T_SLV = " + fixed3(kin.T_SLV) + " s)";
+    if (lo < rocking_range_floor_s) n += ", raised to " + fixed3(rocking_range_floor_s) + " s";
+    if (hi > rocking_range_cap_s)
+      n += ", cut at " + fixed3(rocking_range_cap_s) +
+           " s: beyond it the records' usable period is not known for most of the library (the high-pass "
+           "filter of analog-era records leaves little reliable content at longer periods)";
+  }
+  std::vector<std::string> beyond;
+  if (kin.T_SLV > r.T_max) beyond.push_back("T_SLV = " + fixed3(kin.T_SLV) + " s");
+  if (kin.T_SLC > r.T_max) beyond.push_back("T_SLC = " + fixed3(kin.T_SLC) + " s");
+  if (!beyond.empty())
+    n += "; " + beyond[0] + (beyond.size() > 1 ? " and " + beyond[1] + " lie" : " lies") + " beyond its end " +
+         fixed3(r.T_max) + " s: the set's mean spectrum is not checked against the target there";
+  return n;
+}
+
+// What a selection asks the record library (records/library_selection.hpp):
+// the case's rules and limits over `range`.
+struct SelectionRequest {
+  std::shared_ptr<const RecordLibrary> lib;
+  LibrarySelectionRules rules;
+  SelectionOptions so;
+};
+
+SelectionRequest selection_request(const CaseFile& kase, const RecordSelectionSpec& rs, const PeriodRange& range) {
+  SelectionRequest q;
+  // The process's record library: catalogue, precomputed spectra, records
+  // parsed once (records/record_library.hpp); the selection with its rules is
+  // computed once for every mechanism and candidate that asks the same.
+  q.lib = RecordLibrary::open(rs.catalogue);
+  q.rules.filters = catalogue_filters(rs, to_string(kase.site->conditions.soil), rs.count);
+  q.rules.include_near_fault = rs.include_near_fault;
+  q.rules.near_fault_km = rs.near_fault_km;
+  q.so.n_records = rs.count;
+  q.so.max_scale = rs.max_scale;
+  q.so.max_mean_scale = rs.max_mean_scale;
+  q.so.max_pga_ratio = rs.max_pga_ratio;
+  q.so.max_per_event = rs.max_per_event;
+  q.so.max_per_station = rs.max_per_station;
+  q.so.max_misfit = rs.max_misfit;
+  q.so.range = range;
+  return q;
+}
+
 void load_records(FacadeAssessment& a, const DynamicSpec& d, const FacadeOptions& opt,
-                  const ElasticSpectrum& target, const KinematicResult& kin, std::vector<Record>& recs) {
+                  const ElasticSpectrum& target, const KinematicResult& kin, std::vector<Record>& recs,
+                  std::shared_ptr<const RecordLibrary>& lib_used, std::vector<std::optional<CatalogueEntry>>& entries,
+                  const std::optional<PeriodRange>& shared = std::nullopt) {
   if (!d.selection) {
+    // A listed file of the shipped record library carries the catalogue's
+    // metadata and flags (the library is optional here: without it, none).
+    std::shared_ptr<const RecordLibrary> lib;
+    std::string lib_dir;
+    try {
+      lib = RecordLibrary::open(data_dir() + "/spectra/records/catalogue.json");
+      lib_dir = std::filesystem::weakly_canonical(lib->catalogue().directory).string();
+    } catch (const std::exception&) {
+      lib.reset();
+    }
     for (const ListedRecord& lr : d.records) {
       try {
         Record r = read_listed_record(lr);
         RecordUsed u = record_used(r, lr.file, lr.scale);
         u.json_path = lr.json_path;
+        if (lib && !lr.unit) {
+          std::error_code ec;
+          const std::string p = std::filesystem::weakly_canonical(lr.file, ec).string();
+          for (const CatalogueEntry& e : lib->catalogue().entries)
+            if (!ec && p == lib_dir + "/" + e.file) describe_from_catalogue(u, e, near_fault_distance_km);
+        }
         a.records.push_back(u);
         recs.push_back(std::move(r));
+        entries.emplace_back();
       } catch (const InputError& e) {
         std::string msg = e.what();
         if (msg.find("for a plain file") != std::string::npos)
@@ -73,69 +193,95 @@ void load_records(FacadeAssessment& a, const DynamicSpec& d, const FacadeOptions
     return;
   }
   const RecordSelectionSpec& rs = *d.selection;
-  const RecordCatalogue cat = read_catalogue(rs.catalogue);
-  const CatalogueFilters filters = catalogue_filters(rs, to_string(a.kase.site->conditions.soil), rs.count);
-  const CatalogueFilterResult fr = filter_catalogue(cat.entries, filters);
-  a.selection_warnings = fr.warnings;
-  a.selection_site_classes = fr.site_classes;
-  std::vector<Record> candidates;
-  std::vector<CatalogueEntry> entries;
-  std::vector<CandidateInfo> info;
-  std::vector<std::string> errors;
-  std::vector<Record> loaded = cat.load_all(fr.kept, errors);
-  for (std::size_t i = 0; i < fr.kept.size(); ++i) {
-    const CatalogueEntry& e = fr.kept[i];
-    if (!errors[i].empty()) {
-      if (!opt.keep_going) throw InputError(a.kase.file + ": /dynamic/select: catalogue record " + e.file + ": " + errors[i]);
-      a.record_failures.push_back(e.file + ": " + errors[i]);
-      continue;
-    }
-    candidates.push_back(std::move(loaded[i]));
-    entries.push_back(e);
-    info.push_back(candidate_info(e));
-  }
-  a.selection_candidates = candidates.size();
-  if (candidates.empty())
-    throw InputError(a.kase.file + ": /dynamic/select: no record of the catalogue passes the filters");
-  SelectionOptions so;
-  so.n_records = rs.count;
-  so.max_scale = rs.max_scale;
-  so.max_mean_scale = rs.max_mean_scale;
-  so.max_pga_ratio = rs.max_pga_ratio;
-  so.max_per_event = rs.max_per_event;
-  so.max_per_station = rs.max_per_station;
-  a.selection_max_pga_ratio = rs.max_pga_ratio;
-  a.selection_max_scale = rs.max_scale;
-  a.selection_max_mean_scale = rs.max_mean_scale;
   // Range of the SLV check: the secant periods the mechanism passes through
   // up to its SLV displacement, Ts [C8.7.1.2.1.7] to T_SLV [C8.7.1.10]
-  // (docs/theory/record-selection.md §2.3).
+  // (docs/theory/record-selection.md §2.3); or the range shared by the
+  // candidates of the mechanism (record-selection.md §2.7).
   const double T1 = std::min(kin.Ts, kin.T_SLV), T2 = std::max(kin.Ts, kin.T_SLV);
   a.selection_T_first = T1;
   a.selection_T_last = T2;
-  so.range = (rs.T_min && rs.T_max) ? PeriodRange{*rs.T_min, *rs.T_max} : rocking_period_range(T1, T2);
-  a.selection_range = so.range;
-  SelectionResult sel = select_records([&target](double T) { return target.Se(T); }, candidates, info, so);
-  for (const SelectedRecord& s : sel.records) {
-    const CatalogueEntry& e = entries[s.index];
-    Record r = candidates[s.index];
-    RecordUsed u = record_used(r, cat.directory + "/" + e.file, s.scale);
-    u.event = e.event;  // the catalogue's names
-    u.station = e.station;
-    u.component = e.component;
-    u.Mw = e.Mw;
-    u.distance_km = e.distance_km;
-    u.distance_kind = e.distance_kind;
-    u.site_class = e.site_class;
-    u.positive_direction = e.positive_direction;
+  const PeriodRange range = shared ? *shared
+                            : (rs.T_min && rs.T_max) ? PeriodRange{*rs.T_min, *rs.T_max}
+                                                     : rocking_period_range(T1, T2);
+  a.selection_range = range;
+  a.selection_range_note = range_note(rs, kin, range, T1, T2, shared.has_value());
+  const SelectionRequest req = selection_request(a.kase, rs, range);
+  const std::shared_ptr<const RecordLibrary>& lib = req.lib;
+  a.selection_max_pga_ratio = rs.max_pga_ratio;
+  a.selection_max_scale = rs.max_scale;
+  a.selection_max_mean_scale = rs.max_mean_scale;
+  a.selection_max_misfit = rs.max_misfit;
+  a.selection_include_near_fault = rs.include_near_fault;
+  a.selection_near_fault_km = rs.near_fault_km;
+  const std::shared_ptr<const LibrarySelection> ls =
+      select_from_library(*lib, req.rules, [&target](double T) { return target.Se(T); }, req.so);
+  a.selection_warnings = ls->warnings;
+  a.selection_site_classes = ls->site_classes;
+  a.selection_candidates = ls->candidates.size();
+  a.selection_near_fault_excluded = ls->near_fault_excluded;
+  a.selection_spectra = ls->spectra_source;
+  for (const SelectionStep& st : ls->steps)
+    a.selection_steps.push_back(classes_text(st.site_classes) + ": " + std::to_string(st.candidates) + " candidates, " +
+                                (st.message.empty() ? std::string("no selection") : st.message));
+  for (const SelectedRecord& s : ls->result.records) {
+    const CatalogueEntry& e = ls->candidates[s.index];
+    Record r;
+    try {
+      r = *lib->record(e);
+    } catch (const InputError& err) {
+      if (!opt.keep_going) throw InputError(a.kase.file + ": /dynamic/select: catalogue record " + e.file + ": " + err.what());
+      a.record_failures.push_back(e.file + ": " + err.what());
+      continue;
+    }
+    RecordUsed u = record_used(r, lib->catalogue().directory + "/" + e.file, s.scale);
+    describe_from_catalogue(u, e, rs.near_fault_km);
     u.deviation = s.deviation;
     u.rank = s.rank;
+    u.misfit_flag = s.misfit_flag;
     a.records.push_back(u);
     recs.push_back(std::move(r));
+    entries.push_back(e);
   }
-  a.selection = std::move(sel);
+  lib_used = lib;
+  a.selection = ls->result;
   if (recs.empty())
     throw InputError(a.kase.file + ": /dynamic/select: no compatible set in the catalogue: " + a.selection->message);
+}
+
+// The caveats of each record used (record-selection.md §2.8), computed from
+// its metadata and the selection, shown beside it in every output.
+void flag_records(FacadeAssessment& a) {
+  const std::string soil = a.kase.site ? to_string(a.kase.site->conditions.soil) : "";
+  // The classes the selection was asked for: the case's, else the site's soil.
+  std::vector<std::string> asked{soil};
+  if (a.dynamic && a.dynamic->selection && !a.dynamic->selection->site_classes.empty())
+    asked = a.dynamic->selection->site_classes;
+  std::string asked_text;
+  for (const std::string& c : asked) asked_text += (asked_text.empty() ? "" : ", ") + c;
+  const double default_cap = SelectionOptions{}.max_scale;
+  for (RecordUsed& r : a.records) {
+    r.flags.clear();
+    if (!r.in_catalogue) {
+      r.flags.push_back("not in the record library: Mw, distance, site class and near-fault status unknown");
+    } else {
+      if (!r.near_fault.empty()) r.flags.push_back(r.near_fault);
+      if (a.selection && !soil.empty() && !r.site_class.empty() &&
+          std::find(asked.begin(), asked.end(), r.site_class) == asked.end())
+        r.flags.push_back("site class " + r.site_class + ", not the " +
+                          (asked.size() == 1 && asked[0] == soil ? "site's " + soil : "classes asked, " + asked_text) +
+                          " (class relaxed)");
+      if (r.site_class_basis == "stated" && !r.vs30_class.empty() && r.vs30_class != r.site_class)
+        r.flags.push_back("class " + r.site_class + " as stated by the source; its Vs30 " + fixed3(r.vs30_m_s).substr(0, fixed3(r.vs30_m_s).find('.')) +
+                          " m/s would give " + r.vs30_class);
+    }
+    if (r.misfit_flag)
+      r.flags.push_back("misfit " + fixed3(r.deviation) + " > " + fixed3(a.selection_max_misfit) + " (rank " +
+                        std::to_string(r.rank) + ")");
+    if (r.scale > default_cap * (1.0 + 1e-12))
+      r.flags.push_back("scale " + fixed3(r.scale) + " above " + fixed3(default_cap) + ", the default cap" +
+                        (a.selection ? " (raised in the case: max_scale " + fixed3(a.selection_max_scale) + ")"
+                                     : std::string(" (a listed scale)")));
+  }
 }
 
 // Compatibility of the records' mean scaled 5 % spectrum with the SLV
@@ -245,7 +391,7 @@ std::vector<DynamicRun> dynamic_runs(const FacadeAssessment& a, const MechanismD
     // checks fail on it (tie_intervention.cpp), the wall's check on its motion.
     run.ruptured = md.ruptured(run.result);
     const double dk0 = run.ruptured && kin.without_ties ? std::min(kin.dk0, kin.without_ties->dk0) : kin.dk0;
-    run.collapse = run.result.overturned || run.d_control >= dk0;
+    run.collapse = run.result.overturned || run.d_control >= std::min(dk0, kin.dk0_bound);
   });
   return runs;
 }
@@ -263,21 +409,31 @@ std::vector<RestitutionSummary> summarise_runs(const std::vector<DynamicRun>& ru
     s.e = e[ie];
     s.min_dc = 1e300;
     std::map<std::size_t, double> envelope;  // record -> peak d* over polarities
+    std::map<std::size_t, bool> spoilt;      // record -> some analysis collapsed or failed
+    int survivors = 0;                       // analyses that neither failed nor overturned
+    double dc_survivors_sum = 0.0;
     for (const DynamicRun& r : runs) {
       if (r.restitution != ie) continue;
       ++s.analyses;
       if (!succeeded(r.result)) {  // its numbers are not results
         ++s.failed;
+        spoilt[r.record] = true;
         continue;
       }
       s.overturned += r.result.overturned ? 1 : 0;
       s.ruptured += r.ruptured ? 1 : 0;
+      s.collapsed += r.collapse ? 1 : 0;
       s.mean_dc += r.result.dc;
       s.min_dc = std::min(s.min_dc, r.result.dc);
       s.max_dc = std::max(s.max_dc, r.result.dc);
       s.mean_theta_ratio += r.theta_ratio;
       s.any_collapse = s.any_collapse || r.collapse;
       envelope[r.record] = std::max(envelope[r.record], r.d_star);
+      spoilt[r.record] = spoilt[r.record] || r.collapse;
+      if (!r.result.overturned) {
+        dc_survivors_sum += r.result.dc;
+        ++survivors;
+      }
     }
     // Failed analyses (step or event limit, integrator error) are left out of
     // the statistics and fail the check (issue 10): their numbers are not results.
@@ -288,12 +444,15 @@ std::vector<RestitutionSummary> summarise_runs(const std::vector<DynamicRun>& ru
     } else {
       s.min_dc = 0.0;
     }
+    if (survivors > 0) s.mean_dc_survivors = dc_survivors_sum / survivors;
+    std::vector<double> kept;  // peak d* of the records none of whose analyses collapsed or failed
     for (const auto& kv : envelope) {
       s.mean_d_star += kv.second;
       s.max_d_star = std::max(s.max_d_star, kv.second);
+      if (!spoilt[kv.first]) kept.push_back(kv.second);
     }
-    s.records = int(envelope.size());
-    if (s.records > 0) s.mean_d_star /= double(envelope.size());
+    s.records = int(spoilt.size());
+    if (!envelope.empty()) s.mean_d_star /= double(envelope.size());
     // NTC 2018 §7.3.5 (docs/theory/facade.md §7): with at least 7 records the
     // mean of the results, with 3 to 6 the most unfavourable, with fewer no
     // verdict. Any collapse fails the check whatever the count (C8.7.1.2.1.9).
@@ -307,10 +466,22 @@ std::vector<RestitutionSummary> summarise_runs(const std::vector<DynamicRun>& ru
       s.rule = "none";
       s.d_demand = s.max_d_star;
     }
+    s.records_survived = int(kept.size());
+    if (!kept.empty()) {
+      double sum = 0.0, top = 0.0;
+      for (double d : kept) sum += d, top = std::max(top, d);
+      s.d_demand_survivors = s.rule == "mean" ? sum / double(kept.size()) : top;
+      s.dc_survivors = dynamic_d_SLV(kin) > 0 ? s.d_demand_survivors / dynamic_d_SLV(kin) : inf;
+    }
+    // Issue 28 (docs/theory/facade.md §6.4): a collapse makes the displacement
+    // demand unbounded and a failed analysis leaves it unknown: D/C = +inf,
+    // so that the D/C printed carries the failure.
+    if (s.any_collapse || s.failed > 0) s.d_demand = inf;
     s.no_verdict = s.rule == "none" && !s.any_collapse && s.failed == 0;
     const double d_SLV = dynamic_d_SLV(kin);
-    s.dc_slv = d_SLV > 0 ? s.d_demand / d_SLV : 0.0;
-    s.slv_satisfied = s.failed == 0 && !s.any_collapse && !s.no_verdict && s.d_demand <= d_SLV;
+    s.dc_slv = d_SLV > 0 ? s.d_demand / d_SLV : inf;
+    s.slv_satisfied = check_satisfied(s.dc_slv, s.no_verdict);
+    s.energy_dc = s.overturned > 0 || s.failed > 0 ? inf : s.mean_dc;
     out.push_back(s);
   }
   return out;
@@ -339,24 +510,29 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   a.periods.insert(a.periods.begin(), 0.0);
   for (const auto& [ls, s] : a.spectra)
     for (double T : a.periods) a.site_Se[ls].push_back(s.Se(T));
-  // ADRS demand curves of the governing candidate's displacement checks, each
-  // at its damping and location (the functions its checks use).
+  // ADRS demand curves of every candidate's displacement checks, each at its
+  // damping and location (the functions its checks use): the relazione
+  // develops each candidate that governs a method (issue 28).
   if (a.kinematic.check_input) {
     CheckInput in = *a.kinematic.check_input;
     a.adrs_periods = log_spaced_periods(0.02, 6.0, 120);
-    const CandidateResult& gc = a.kinematic.candidates[a.kinematic.governing];
-    for (const CheckRow& r : gc.checks) {
-      if (r.kind != "displacement") continue;
-      in.Z = r.location == "height" ? gc.Z : 0.0;
-      AdrsDemand d{r.code, r.limit_state, r.location, r.xi_pct, {}, {}};
-      const double w = 2.0 * units::pi;
-      for (double T : a.adrs_periods) {
-        const double sd = displacement_demand(in, parse_code_edition(r.code), parse_limit_state(r.limit_state), T);
-        d.Sd.push_back(sd);
-        d.Sa.push_back(sd * (w / T) * (w / T));
+    for (const CandidateResult& cr : a.kinematic.candidates) {
+      std::vector<AdrsDemand> curves;
+      for (const CheckRow& r : cr.checks) {
+        if (r.kind != "displacement") continue;
+        in.Z = r.location == "height" ? cr.Z : 0.0;
+        AdrsDemand d{r.code, r.limit_state, r.location, r.xi_pct, {}, {}};
+        const double w = 2.0 * units::pi;
+        for (double T : a.adrs_periods) {
+          const double sd = displacement_demand(in, parse_code_edition(r.code), parse_limit_state(r.limit_state), T);
+          d.Sd.push_back(sd);
+          d.Sa.push_back(sd * (w / T) * (w / T));
+        }
+        curves.push_back(std::move(d));
       }
-      a.adrs.push_back(std::move(d));
+      a.candidate_adrs.push_back(std::move(curves));
     }
+    a.adrs = a.candidate_adrs[a.kinematic.governing];
   }
   if (kase.dynamic.is_null()) return a;
 
@@ -388,7 +564,42 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   a.mechanism_dynamics = md;
   const ElasticSpectrum& target = a.spectra.at(LimitState::SLV);
   std::vector<Record> recs;
-  load_records(a, d, opt, target, gov.result, recs);
+  // The candidates analysed dynamically besides the governing one (issue 24)
+  // share one selection over the union of their ranges when it gives a
+  // compatible set, as the mechanisms of a building do (record-selection.md §2.7).
+  const std::vector<std::size_t> others =
+      kase.mechanism.candidates.size() > 1 ? dynamic_candidates(a.kinematic) : std::vector<std::size_t>{};
+  std::optional<PeriodRange> shared;
+  if (d.selection && !(d.selection->T_min && d.selection->T_max) && !others.empty()) {
+    double lo = std::min(gov.result.Ts, gov.result.T_SLV), hi = std::max(gov.result.Ts, gov.result.T_SLV);
+    std::string who = gov.label;
+    for (std::size_t i : others) {
+      const KinematicResult& k = a.kinematic.candidates[i].result;
+      const double t1 = std::min(k.Ts, k.T_SLV), t2 = std::max(k.Ts, k.T_SLV);
+      if (!(t1 > 0.0) || !std::isfinite(t2)) continue;
+      lo = std::min(lo, t1), hi = std::max(hi, t2);
+      who += ", " + a.kinematic.candidates[i].label;
+    }
+    const PeriodRange u = rocking_period_range(lo, hi);
+    const SelectionRequest req = selection_request(kase, *d.selection, u);
+    const std::shared_ptr<const LibrarySelection> ls =
+        select_from_library(*req.lib, req.rules, [&target](double T) { return target.Se(T); }, req.so);
+    const std::string range_text = fixed3(u.T_min) + "-" + fixed3(u.T_max) + " s";
+    if (ls->result.status == SelectionResult::Status::Compatible) {
+      shared = u;
+      a.selection_shared_note = "one selection for the " + std::to_string(others.size() + 1) +
+                                " candidates analysed dynamically (" + who + ") over the union of their ranges, " +
+                                range_text;
+    } else {
+      a.selection_shared_note = "the union of the ranges of the " + std::to_string(others.size() + 1) +
+                                " candidates analysed dynamically (" + range_text + ") gives no compatible set (" +
+                                ls->result.message + "): each candidate selected over its own range";
+    }
+  }
+  std::shared_ptr<const RecordLibrary> lib;
+  std::vector<std::optional<CatalogueEntry>> lib_entries;  // the library's entry of each selected record
+  load_records(a, d, opt, target, gov.result, recs, lib, lib_entries, shared);
+  flag_records(a);
   for (const RecordUsed& r : a.records)
     if (r.pga / units::g > plausibility::record_pga_max_g)
       a.warnings.push_back(kase.file + ": " + (r.json_path.empty() ? std::string("/dynamic/select") : r.json_path + "/scale") +
@@ -401,8 +612,11 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   // Curves for the report: record spectra and the moment-rotation curve.
   a.mean_psa.assign(a.periods.size(), 0.0);
   a.record_psa.resize(recs.size());
+  // A selected record's spectrum at these periods is the library's, integrated
+  // once per process for every mechanism and candidate that uses the record.
   detail::parallel_for(recs.size(), [&](std::size_t ir) {
-    a.record_psa[ir] = response_spectrum(recs[ir], a.periods).psa();
+    a.record_psa[ir] = lib && lib_entries[ir] ? *lib->psa(*lib_entries[ir], a.periods, 0.05)
+                                              : response_spectrum(recs[ir], a.periods).psa();
     for (double& v : a.record_psa[ir]) v *= a.records[ir].scale;
   });
   for (const auto& psa : a.record_psa)
@@ -420,7 +634,10 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   if (md.filter && kase.building) {
     a.floor_mean_psa.assign(a.periods.size(), 0.0);
     std::vector<std::vector<double>> psa(inputs.size());
-    detail::parallel_for(inputs.size(), [&](std::size_t ir) { psa[ir] = response_spectrum(inputs[ir], a.periods).psa(); });
+    detail::parallel_for(inputs.size(), [&](std::size_t ir) {
+      psa[ir] = lib && lib_entries[ir] ? *lib->psa(*lib_entries[ir], a.periods, 0.05, &*md.filter)
+                                       : response_spectrum(inputs[ir], a.periods).psa();
+    });
     for (std::size_t ir = 0; ir < inputs.size(); ++ir)
       for (std::size_t j = 0; j < a.periods.size(); ++j)
         a.floor_mean_psa[j] += psa[ir][j] * a.records[ir].scale / double(inputs.size());
@@ -480,8 +697,12 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
     row.capacity = dynamic_d_SLV(kin);
     row.unit = "m";
     row.dc = s.dc_slv;
-    row.satisfied = s.slv_satisfied;
     row.no_verdict = s.no_verdict;
+    row.analyses = s.analyses;
+    row.collapsed = s.collapsed;
+    row.failed = s.failed;
+    row.dc_survivors = s.dc_survivors;
+    decide(row);
     a.checks.push_back(row);
 
     // The seed paper's energy measure (seed §3.2): the mean over the
@@ -495,23 +716,33 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
     en.clause = "seed §3.2 energy D/C (not a code check), " + e_text +
                 (md.tied() ? ", on the tied wall's restoring moment with the ties at their strength" : "");
     en.formula = "mean over " + std::to_string(s.analyses) + " analyses of the energy demand/capacity";
-    en.demand = s.mean_dc;
+    en.demand = s.energy_dc;
     en.capacity = 1.0;
     en.unit = "-";
-    en.dc = s.mean_dc;
-    en.satisfied = s.overturned == 0 && s.mean_dc <= 1.0;
+    en.dc = s.energy_dc;
+    en.analyses = s.analyses;
+    en.collapsed = s.overturned;
+    en.failed = s.failed;
+    en.dc_survivors = s.mean_dc_survivors;
+    decide(en);
     en.note = "overturned in " + std::to_string(s.overturned) + " of " + std::to_string(s.analyses) + " analyses";
     a.energy_rows.push_back(en);
   }
   // The other candidates that govern a code or fail a kinematic check (issue
   // 24): each analysed as the case restricted to it, as if run alone.
   if (kase.mechanism.candidates.size() > 1) {
-    FacadeOptions sub_opt = opt;
-    sub_opt.histories = false;
-    for (std::size_t i : dynamic_candidates(a.kinematic)) {
+    FacadeOptions sub_opt = opt;  // histories kept as asked: the relazione develops the candidate that governs
+    for (std::size_t i : others) {
       CaseFile one = kase;
       one.mechanism.candidates = {kase.mechanism.candidates[i]};
+      if (shared) one.dynamic["select"]["period_range_s"] = nlohmann::json::array({shared->T_min, shared->T_max});
       FacadeAssessment sub = assess_facade(one, sub_opt);
+      if (shared && sub.selection) {
+        const KinematicResult& k = a.kinematic.candidates[i].result;
+        sub.selection_range_note = range_note(*d.selection, k, *shared, std::min(k.Ts, k.T_SLV),
+                                              std::max(k.Ts, k.T_SLV), true);
+      }
+      sub.selection_shared_note = a.selection_shared_note;
       for (const CheckRow& r : sub.checks)
         if (r.kind == "dynamic") a.checks.push_back(r);
       a.energy_rows.insert(a.energy_rows.end(), sub.energy_rows.begin(), sub.energy_rows.end());

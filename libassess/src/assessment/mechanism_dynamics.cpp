@@ -18,6 +18,16 @@
 namespace assess {
 
 namespace {
+
+// Where the sidedness a restitution is checked against comes from (issue 31:
+// a two-sided override in a building's wall was reported at restitution/0
+// alone): "<file>: /dynamic/sidedness" when given, which the building reader
+// maps to the wall or mechanism that wrote it.
+std::string sidedness_note(const std::string& file, const DynamicSpec& d) {
+  if (d.sidedness == Sidedness::two_sided) return " (sidedness two-sided, " + file + ": /dynamic/sidedness)";
+  return " (sidedness one-sided, the default of /dynamic/sidedness)";
+}
+
 std::string fmt(const char* f, double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, f, v);
@@ -119,10 +129,15 @@ std::string MechanismDynamics::describe() const {
     s = "one body rotating about its ground hinge (rocking model, seed Eq. 1)";
     if (tied()) s += held_by(ties.size());
   } else {
-    s = std::string(sidedness == Sidedness::two_sided ? "two-sided" : "one-sided") + " chain of " +
-        std::to_string(chain->chain().blocks().size()) +
-        " blocks, one coordinate q = rotation of block '" + chain->chain().blocks()[std::size_t(chain->reference_block())].name +
-        "' (Lagrange's equation, docs/theory/chain-dynamics.md), q_u = " + fmt("%.5f", chain->q_u()) + " rad";
+    if (chain->chain().blocks().size() == 1)  // issue 33: a roof thrust, its moment exact at every rotation
+      s = std::string(sidedness == Sidedness::two_sided ? "two-sided" : "one-sided") +
+          " model of one body rotating about its ground hinge with the roof thrust's moment exact at every rotation "
+          "(Lagrange's equation, docs/theory/chain-dynamics.md), q_u = " + fmt("%.5f", chain->q_u()) + " rad";
+    else
+      s = std::string(sidedness == Sidedness::two_sided ? "two-sided" : "one-sided") + " chain of " +
+          std::to_string(chain->chain().blocks().size()) + " blocks, one coordinate q = rotation of block '" +
+          chain->chain().blocks()[std::size_t(chain->reference_block())].name +
+          "' (Lagrange's equation, docs/theory/chain-dynamics.md), q_u = " + fmt("%.5f", chain->q_u()) + " rad";
     if (tied()) s += "," + held_by(ties.size());
   }
   if (Z > 0.0 || floor_input) {
@@ -142,6 +157,26 @@ MechanismDynamics build_bare(const CaseFile& kase, const CandidateResult& cand, 
                              const DynamicSpec& d) {
   MechanismDynamics m;
   const std::string& file = kase.file;
+  // Issue 33: the mechanisms the 1-DOF rocking equation does not describe
+  // (docs/theory/mechanisms.md §1.5, §2.4).
+  if (chain.plan()) {
+    m.note = "horizontal flexure: the strip is restored by the arch's thrust, not by gravity, and that thrust is "
+             "bounded by crushing at the hinges, by the side walls' sliding or by a yielding tie, none of which "
+             "restores the strip's shape after an excursion: no rocking equation describes it (the kinematic "
+             "checks stand)";
+    return m;
+  }
+  for (const Load& l : chain.loads())
+    if (l.type == LoadType::Friction) {
+      m.note = "interlocking friction (Coulomb friction: the side walls' interlocking, a floor's seat) dissipates and "
+               "sticks: it is no restoring force of the rocking equation; the dynamic analysis is not run for this "
+               "candidate (the kinematic checks stand)";
+      return m;
+    }
+  // Issue 33: a roof thrust's moment about the hinge varies with the rotation,
+  // P_H (H_P cos q + e sin q); the rocking body holds a constant external
+  // moment, the chain model the exact one: a roof_thrust mechanism uses it.
+  const bool exact_forces = kase.mechanism.type == "roof_thrust";
   m.Z = cand.Z;
   m.floor_input = d.floor_input;
   m.sidedness = d.sidedness;
@@ -169,12 +204,23 @@ MechanismDynamics build_bare(const CaseFile& kase, const CandidateResult& cand, 
   } catch (const InputError&) {
     body.reset();  // not one body (or a carried mass the rocking body cannot hold): the chain model
   }
+  std::vector<double> body_e;  // a one-body chain (roof thrust): the rocking laws' coefficients
+  if (body && exact_forces) {
+    for (std::size_t i = 0; i < d.restitutions.size(); ++i) {
+      try {
+        body_e.push_back(RockingModel(body->body, found, d.sidedness, d.restitutions[i]).restitution());
+      } catch (const InputError& e) {
+        throw InputError(file + ": /dynamic/restitution/" + std::to_string(i) + ": " + e.what());
+      }
+    }
+    body.reset();
+  }
   if (body) {
     for (std::size_t i = 0; i < d.restitutions.size(); ++i) {
       try {
         m.rocking.emplace_back(body->body, found, d.sidedness, d.restitutions[i]);
       } catch (const InputError& e) {
-        throw InputError(file + ": /dynamic/restitution/" + std::to_string(i) + ": " + e.what());
+        throw InputError(file + ": /dynamic/restitution/" + std::to_string(i) + ": " + e.what() + sidedness_note(file, d));
       }
       m.e.push_back(m.rocking.back().restitution());
     }
@@ -186,11 +232,13 @@ MechanismDynamics build_bare(const CaseFile& kase, const CandidateResult& cand, 
 
   // A multi-block chain: given coefficients; two-sided only if mirror-symmetric (checked below).
   const bool two = d.sidedness == Sidedness::two_sided;
-  if (!d.restitution_given)
+  if (!body_e.empty()) {
+    m.e = body_e;
+  } else if (!d.restitution_given)
     throw InputError(file + ": /dynamic/restitution: missing: a chain of several blocks needs a given coefficient "
                      "(q'+ = e q'- at q = 0: in [-1, 0] one-sided, 0 stops the chain; in [0, 1] two-sided); the "
                      "laws \"housner\" and \"one-sided-theory\" are derived for one block");
-  for (std::size_t i = 0; i < d.restitutions.size(); ++i) {
+  for (std::size_t i = 0; i < d.restitutions.size() && body_e.empty(); ++i) {
     const Restitution& r = d.restitutions[i];
     const std::string path = file + ": /dynamic/restitution" + (d.restitutions.size() > 1 ? "/" + std::to_string(i) : "");
     if (r.kind != Restitution::Kind::value)
@@ -200,10 +248,10 @@ MechanismDynamics build_bare(const CaseFile& kase, const CandidateResult& cand, 
                        "\" is derived for one block");
     if (!two && !(r.e >= -1.0 && r.e <= 0.0))
       throw InputError(path + ": expected a coefficient in [-1, 0] (-, one-sided rebound q'+ = e q'-), got " +
-                       fmt("%g", r.e));
+                       fmt("%g", r.e) + sidedness_note(file, d));
     if (two && !(r.e >= 0.0 && r.e <= 1.0))
       throw InputError(path + ": expected a coefficient in [0, 1] (-, two-sided: the chain goes through q = 0 with "
-                       "q'+ = e q'-), got " + fmt("%g", r.e));
+                       "q'+ = e q'-), got " + fmt("%g", r.e) + sidedness_note(file, d));
     m.e.push_back(r.e);
   }
   if (d.options.overturn != OverturnCriterion::theta_u)

@@ -95,7 +95,9 @@ std::vector<TieLevelResult> level_results(const CaseFile& c, const KinematicCase
     }
     if (found < ties.size()) {
       L.count = ties[found].count;
-      if (required) L.required = required_tie_forces(chain, c.options, in, ties, found, L.tie.spacing);
+      KinematicOptions opt = c.options;  // issue 33: the candidate's own bound on its rotation, as in run_kinematic_case
+      opt.rotation_cap = c.mechanism.candidates[r.governing].rotation_bound;
+      if (required) L.required = required_tie_forces(chain, opt, in, ties, found, L.tie.spacing);
       for (const RequiredTieForce& f : L.required) {
         if (!counts(c, f.code)) continue;
         if (f.reachable) {

@@ -384,14 +384,9 @@ CampaignSpec parse_campaign(const json& j, const std::string& base_dir) {
 }
 
 CampaignSpec read_campaign(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError("campaign file '" + path + "' is a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot open campaign file '" + path + "'");
-  std::ostringstream text;
-  text << in.rdbuf();
+  // The bounded reader: a regular file (a directory, a device or a FIFO is named).
   // Errors name the file and the JSON path ("campaign file 'c.json': /walls/0/b: number out of the range ...").
-  const json j = parse_json_text(text.str(), "campaign file '" + path + "'");
+  const json j = parse_json_text(read_input_file(path, input_kinds::campaign_file), "campaign file '" + path + "'");
   const auto slash = path.find_last_of('/');
   try {
     return parse_campaign(j, slash == std::string::npos ? "." : path.substr(0, slash));

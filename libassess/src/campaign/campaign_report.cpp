@@ -21,6 +21,7 @@
 
 #include "assess/campaign/campaign_runner.hpp"
 #include "assess/support/error.hpp"
+#include "assess/support/output_file.hpp"
 #include "assess/support/units.hpp"
 
 #include <cctype>
@@ -303,9 +304,14 @@ std::string campaign_index_html(const json& s, const std::vector<std::pair<std::
   h.set_lang(to_string(L));
   h.add_paragraph(msgf(L, "camp.intro", s.value("analyses", 0ull), s.value("analyses_in_campaign", 0ull),
                        s.value("failed", 0ull)));
-  using C = HtmlCell;
+  // A cell: "num" right-aligns a figure.
+  const auto C = [](std::string text, const std::string& cls = "") {
+    Cell c(std::move(text));
+    c.numeric = cls == "num";
+    return c;
+  };
   if (s.contains("by_model")) {
-    std::vector<std::vector<C>> rows;
+    std::vector<std::vector<Cell>> rows;
     for (const auto& [model, m] : s.at("by_model").items())
       rows.push_back({C(model), C(fmt("%.0f", number_at(m, "analyses")), "num"), C(fmt("%.0f", number_at(m, "failed")), "num"),
                       C(fmt("%.0f", number_at(m, "moved")), "num"), C(fmt("%.0f", number_at(m, "overturned")), "num"),
@@ -318,7 +324,7 @@ std::string campaign_index_html(const json& s, const std::vector<std::pair<std::
                      rows, "");
   }
   if (s.contains("by_model_and_scale")) {
-    std::vector<std::vector<C>> rows;
+    std::vector<std::vector<Cell>> rows;
     for (const json& m : s.at("by_model_and_scale"))
       rows.push_back({C(m.value("model", std::string())), C(fmt("%.3f", number_at(m, "scale")), "num"),
                       C(fmt("%.0f", number_at(m, "analyses")), "num"),
@@ -333,7 +339,7 @@ std::string campaign_index_html(const json& s, const std::vector<std::pair<std::
                      rows, "");
   }
   if (s.contains("code_vs_dynamic")) {
-    std::vector<std::vector<C>> rows;
+    std::vector<std::vector<Cell>> rows;
     for (const auto& [model, m] : s.at("code_vs_dynamic").items())
       for (const auto& [kind, k] : m.items())
         rows.push_back({C(model), C(kind), C(fmt("%.0f", number_at(k, "considered")), "num"),
@@ -364,22 +370,18 @@ CampaignReportFiles write_campaign_report(const Campaign& campaign, const std::s
   summary["campaign"] = campaign.spec().name;
   summary["analyses_in_campaign"] = campaign.size();
   files.summary = out_dir + "/summary.json";
-  std::ofstream(files.summary) << summary.dump(2) << "\n";
-  if (!std::ifstream(files.summary)) throw InputError("cannot write '" + files.summary + "'");
+  write_output_file(files.summary, summary.dump(2) + "\n", "the campaign summary", out_dir);
   std::vector<std::pair<std::string, std::string>> svgs;  // file name, SVG
   if (plots)
     for (const auto& [name, plot] : campaign_plots(campaign, rows)) {
       const std::string path = out_dir + "/" + name;
       std::string svg = render_svg(plot);
-      std::ofstream out(path);
-      out << svg;
-      if (!out) throw InputError("cannot write '" + path + "'");
+      write_output_file(path, svg, "a campaign plot", out_dir);
       files.plots.push_back(path);
       svgs.emplace_back(name, std::move(svg));
     }
   files.index = out_dir + "/index.html";
-  std::ofstream(files.index) << campaign_index_html(summary, svgs);
-  if (!std::ifstream(files.index)) throw InputError("cannot write '" + files.index + "'");
+  write_output_file(files.index, campaign_index_html(summary, svgs), "the campaign page", out_dir);
   return files;
 }
 

@@ -12,6 +12,8 @@
 
 #include "assess/campaign/output_lock.hpp"
 #include "assess/support/error.hpp"
+#include "assess/support/input_file.hpp"
+#include "assess/support/output_file.hpp"
 
 #include "campaign/csv_fields.hpp"
 
@@ -179,6 +181,7 @@ AnalysisRow parse_campaign_csv_row(const std::string& line) {
 }
 
 std::vector<AnalysisRow> read_campaign_csv(const std::string& path) {
+  if (!non_regular_file_type(path).empty()) check_input_file(path, input_kinds::own_output);  // not a FIFO, /dev/zero
   std::ifstream in(path);
   if (!in) throw InputError("cannot open campaign results '" + path + "'");
   std::string line;
@@ -201,6 +204,7 @@ namespace {
 // expected id sequence; returns their count and the byte offset after them.
 std::pair<std::uint64_t, std::uint64_t> valid_prefix(const CampaignJob& job, const std::string& path,
                                                      const TaskList& tasks) {
+  if (!non_regular_file_type(path).empty()) check_input_file(path, input_kinds::own_output);  // not a FIFO, /dev/zero
   std::ifstream in(path, std::ios::binary);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::string header = job.csv_header() + "\n";
@@ -279,8 +283,8 @@ CampaignRunSummary run_campaign_job(const CampaignJob& job, const std::string& o
   options.validate();
   const auto start = std::chrono::steady_clock::now();
   std::error_code ec;
-  fs::create_directories(out_dir, ec);
-  if (ec || !fs::is_directory(out_dir)) throw InputError("cannot create output directory '" + out_dir + "'");
+  // A new or an existing folder (an existing regular file is refused by name).
+  make_output_folder(out_dir, "--out");
   // One writer per output directory (and per part), before anything is written.
   std::optional<CampaignOutputLock> lock;
   if (!options.output_locked) lock.emplace(out_dir, options.part, options.parts);
@@ -288,17 +292,19 @@ CampaignRunSummary run_campaign_job(const CampaignJob& job, const std::string& o
   // The normalised spec: a resumed run must be the same campaign.
   const std::string spec_path = out_dir + "/" + job.inputs_file();
   const std::string spec_text = job.inputs_text();
+  if (options.resume && !fs::exists(spec_path) && fs::exists(campaign_part_path(out_dir, options.part, options.parts)))
+    throw InputError("cannot resume into '" + out_dir + "': it holds results but no " + job.inputs_file() +
+                     " saying what they are results of: choose another --out");
   if (options.resume && fs::exists(spec_path)) {
-    std::ifstream in(spec_path);
-    std::string old((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string old = read_input_file(spec_path, input_kinds::own_output);
     if (old != spec_text)
-      throw InputError("cannot resume: '" + spec_path + "' describes a different campaign (the inputs changed)");
+      throw InputError("cannot resume into '" + out_dir + "': its " + job.inputs_file() +
+                       " describes a different campaign or fragility study (another case or campaign file, or the same "
+                       "file edited since, other records or options): choose another --out, or run without --resume "
+                       "into a new folder");
   } else {
-    // Written by every part to a private name and renamed: identical content, atomic replacement.
-    const std::string tmp = spec_path + ".tmp" + std::to_string(options.part);
-    std::ofstream(tmp) << spec_text;
-    fs::rename(tmp, spec_path, ec);
-    if (ec) throw InputError("cannot write '" + spec_path + "'");
+    // Written by every part to a private temporary name and renamed: identical content, atomic replacement.
+    write_output_file(spec_path, spec_text, "--out " + out_dir, out_dir);
   }
 
   // The tasks of this part, lazily: `all` ignores the limit (a resumed file
@@ -330,6 +336,7 @@ CampaignRunSummary run_campaign_job(const CampaignJob& job, const std::string& o
   }
   if (!out) throw InputError("cannot write '" + path + "'");
   out.flush();
+  if (!out) throw SystemError("cannot write '" + path + "' (disk full or an I/O error)");
   // Every task but the last is a full group: the first task to run and its offset.
   const std::uint64_t first_task = skip >= summary.total ? tasks.count : skip / G;
   const std::uint64_t first_offset = skip >= summary.total ? 0 : skip % G;
@@ -370,7 +377,7 @@ CampaignRunSummary run_campaign_job(const CampaignJob& job, const std::string& o
         }
         if (wrote) {
           out.flush();
-          if (!out) throw InputError("cannot write '" + path + "' (disk full?)");
+          if (!out) throw SystemError("cannot write '" + path + "' (disk full or an I/O error)");
           if (options.progress) options.progress(done, summary.total);
         }
       }
@@ -414,6 +421,7 @@ void merge_campaign_job_parts(const CampaignJob& job, const std::vector<std::str
     if (!p.in.eof()) throw InputError("cannot read '" + name + "'");
   };
   for (std::size_t i = 0; i < parts.size(); ++i) {
+    if (!non_regular_file_type(part_paths[i]).empty()) check_input_file(part_paths[i], input_kinds::own_output);
     parts[i].in.open(part_paths[i], std::ios::binary);
     std::string header;
     if (!parts[i].in || !std::getline(parts[i].in, header) || header != job.csv_header())
@@ -433,10 +441,14 @@ void merge_campaign_job_parts(const CampaignJob& job, const std::vector<std::str
     advance(*best, part_paths[bi]);
   }
   out.close();
-  if (!out) throw InputError("cannot write '" + tmp + "'");
+  if (!out) {
+    std::error_code ec;
+    fs::remove(tmp, ec);
+    throw SystemError("cannot write '" + tmp + "' (disk full or an I/O error)");
+  }
   std::error_code ec;
   fs::rename(tmp, out_path, ec);
-  if (ec) throw InputError("cannot write '" + out_path + "'");
+  if (ec) throw SystemError("cannot write '" + out_path + "': " + ec.message());
 }
 
 }  // namespace assess

@@ -3,6 +3,7 @@
 #include "assess/campaign/output_lock.hpp"
 
 #include "assess/support/error.hpp"
+#include "assess/support/output_file.hpp"
 
 #include <cerrno>
 #include <cstring>
@@ -40,10 +41,8 @@ int lock_file(const std::string& path, int op, const std::string& out_dir) {
 }  // namespace
 
 CampaignOutputLock::CampaignOutputLock(const std::string& out_dir, int part, int parts) {
-  std::error_code ec;
-  std::filesystem::create_directories(out_dir, ec);
-  if (!std::filesystem::is_directory(out_dir, ec))
-    throw InputError("cannot create output directory '" + out_dir + "'");
+  // A new or an existing folder; an existing regular file is refused by name.
+  make_output_folder(out_dir, "--out");
   const std::string base = out_dir + "/.assess-lock";
   dir_fd_ = lock_file(base, parts > 1 ? LOCK_SH : LOCK_EX, out_dir);
   if (parts > 1) {

@@ -79,7 +79,8 @@ Eigen::VectorXd constraint_terms(const Chain& ch, Eigen::Index rows, Term T) {
   for (const Constraint& c : ch.constraints()) {
     switch (c.type) {
       case ConstraintType::GroundHinge: h.segment<2>(k) = T(c.block, c.point); k += 2; break;
-      case ConstraintType::Hinge: h.segment<2>(k) = T(c.block, c.point) - T(c.other, c.point); k += 2; break;
+      case ConstraintType::Hinge:
+      case ConstraintType::Weld: h.segment<2>(k) = T(c.block, c.point) - T(c.other, c.point); k += 2; break;
       case ConstraintType::Slider: {
         const Eigen::Vector2d nrm = Eigen::Vector2d(-c.direction.y(), c.direction.x()).normalized();
         h(k++) = nrm.dot(T(c.block, c.point));
@@ -260,6 +261,9 @@ ChainState ChainDynamics::derive(double q, const Eigen::VectorXd& Q) const {
 }
 
 ChainDynamics::ChainDynamics(const Chain& chain, Foundation foundation) : chain_(chain), foundation_(foundation) {
+  if (chain_.plan())
+    throw InputError("dynamic analysis: the chain is drawn in plan (horizontal flexure): gravity does not restore it, "
+                     "the rocking equation does not apply");
   for (const Load& l : chain_.loads())
     if (l.type == LoadType::Friction)
       throw InputError("dynamic analysis: load '" + l.name +

@@ -214,7 +214,8 @@ class Integration {
     const EventAction action = sys_.on_event(k, t_, y_, mode_);
     if (action == EventAction::stop) return finish(HybridTermination::stopped_by_event, "stopped by an event");
     if (res_.events >= opt_.max_events)
-      return finish(HybridTermination::event_limit, "event limit reached (accumulation of events?)");
+      return finish(HybridTermination::event_limit, "event limit reached: " + std::to_string(res_.events) +
+                                                        " events by t = " + std::to_string(t_) + " s");
     if (!restart())
       return finish(HybridTermination::integrator_error,
                     "right-hand side failed after an event at t = " + std::to_string(t_) + " s");

@@ -6,11 +6,14 @@
 #pragma once
 
 #include "assess/dynamics/analysis_end.hpp"
+#include "assess/dynamics/analysis_limits.hpp"
 #include "assess/dynamics/hybrid_ode.hpp"
 #include "assess/dynamics/rocking_analysis.hpp"
 #include "assess/records/ground_motion.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace assess::detail {
 
@@ -23,7 +26,10 @@ inline HybridOdeOptions hybrid_options(const RockingOptions& options, const Grou
   h.abs_tol = options.abs_tol;
   h.event_time_tol = options.event_time_tol;
   h.max_steps = options.max_steps;
-  h.max_events = options.max_events;
+  // The accumulation bound of analysis_limits.hpp (chatter fails in milliseconds, not seconds).
+  const double span = motion.duration() + options.tail_s;
+  const double accumulation = limits::events_floor + limits::events_per_second_max * (std::isfinite(span) ? span : 0.0);
+  h.max_events = static_cast<long>(std::min<double>(double(options.max_events), accumulation));
   h.h_max = motion.max_step();
   return h;
 }
@@ -45,7 +51,12 @@ inline void take_integration(const HybridOdeResult& h, RockingResult& r) {
       r.message = "overturned";
       break;
     case HybridTermination::step_limit: r.termination = RockingTermination::step_limit; break;
-    case HybridTermination::event_limit: r.termination = RockingTermination::event_limit; break;
+    case HybridTermination::event_limit:
+      r.termination = RockingTermination::event_limit;
+      r.message += "; events accumulate (at most " + std::to_string(long(limits::events_per_second_max)) +
+                   " per second of motion): the body chatters at rest, e.g. under a record scaled far below any "
+                   "effect (docs/theory/rocking.md §7)";
+      break;
     case HybridTermination::integrator_error: r.termination = RockingTermination::integrator_error; break;
   }
 }

@@ -3,6 +3,7 @@
 
 #include "assess/hazard/hazard.hpp"
 #include "assess/support/error.hpp"
+#include "assess/support/input_file.hpp"
 #include "assess/support/json_input.hpp"
 
 #include <algorithm>
@@ -17,7 +18,10 @@ namespace {
 
 /// Lower case ASCII letters and digits only; the accented Latin letters of
 /// Italian, German, French, Slovenian and Ladin names lose their accent
-/// (UTF-8 two-byte sequences of U+00C0..U+017F).
+/// (UTF-8 two-byte sequences of U+00C0..U+017F); blanks and the punctuation
+/// of names (' - . / ,) are dropped. Any other character (an emoji, another
+/// script, a control character) becomes '?', so that "L'Aquila😀" matches no
+/// comune instead of L'Aquila (issue 31).
 std::string fold(const std::string& s) {
   static const char* latin1 =  // U+00C0 .. U+00FF
       "aaaaaaaceeeeiiiidnooooo/ouuuuypsaaaaaaaceeeeiiiidnooooo/ouuuuypy";
@@ -26,6 +30,7 @@ std::string fold(const std::string& s) {
     const unsigned char c = s[i];
     if (c < 0x80) {
       if (std::isalnum(c)) out += char(std::tolower(c));
+      else if (!(c == ' ' || c == '\'' || c == '-' || c == '.' || c == '/' || c == ',' || c == '`')) out += '?';
       continue;
     }
     if ((c == 0xC3 || c == 0xC4 || c == 0xC5) && i + 1 < s.size()) {
@@ -34,6 +39,7 @@ std::string fold(const std::string& s) {
       if (cp >= 0xC0 && cp <= 0xFF) {
         const char b = latin1[cp - 0xC0];
         if (std::isalpha(static_cast<unsigned char>(b))) out += b;
+        else out += '?';  // multiplication and division signs
       } else if (cp >= 0x100 && cp <= 0x17F) {
         // Latin Extended-A: pairs of upper/lower case of a base letter.
         static const char* ext =
@@ -43,7 +49,11 @@ std::string fold(const std::string& s) {
       }
       continue;
     }
-    // Other multi-byte sequences: skip their continuation bytes.
+    // Other characters (other scripts, symbols, emoji): no comune's name.
+    // The typographic apostrophe U+2019 (E2 80 99) of "L’Aquila" is dropped like '.
+    const bool apostrophe = c == 0xE2 && i + 2 < s.size() && static_cast<unsigned char>(s[i + 1]) == 0x80 &&
+                            static_cast<unsigned char>(s[i + 2]) == 0x99;
+    if (!apostrophe) out += '?';
     while (i + 1 < s.size() && (static_cast<unsigned char>(s[i + 1]) & 0xC0) == 0x80) ++i;
   }
   return out;
@@ -102,8 +112,7 @@ std::string comune_note() {
 }
 
 ComuneTable ComuneTable::load(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the list of comuni");
+  std::istringstream in(read_input_file(path, input_kinds::comuni_table));
   ComuneTable t;
   std::string line;
   int n = 0;
@@ -162,7 +171,11 @@ const Comune& ComuneTable::find(const std::string& name, const std::string& prov
     return out;
   };
   std::vector<const Comune*> found = matches(false);
-  if (found.empty()) found = matches(true);
+  // A part of a bilingual or double name ("Vignola" of Vignola-Falesina, TN)
+  // matches too: a name that is one comune and part of another's (Vignola,
+  // MO) needs the province (issue 31: it was taken as the first).
+  for (const Comune* c : matches(true))
+    if (std::find(found.begin(), found.end(), c) == found.end()) found.push_back(c);
   if (found.empty()) {
     // "Did you mean": the three closest names by edit distance of the folded forms.
     std::vector<std::pair<std::size_t, const Comune*>> near;

@@ -16,6 +16,7 @@
 #include "assess/hazard/hazard.hpp"
 
 #include "assess/support/error.hpp"
+#include "assess/support/input_file.hpp"
 #include "assess/hazard/seismic_action.hpp"
 
 #include <algorithm>
@@ -78,10 +79,10 @@ double parse_number(const std::string& s, const std::string& file, std::size_t l
   return v;
 }
 
-std::ifstream open_or_throw(const std::string& path, const std::string& what) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot read the " + what + " '" + path + "' (missing or unreadable file)");
-  return in;
+// The whole file through the bounded reader (a regular file within its
+// limit: /dev/zero as the grid is an error, not a read until memory runs out).
+std::istringstream open_or_throw(const std::string& path, const InputKind& kind) {
+  return std::istringstream(read_input_file(path, kind));
 }
 
 // Reads the 27 columns ag/F0/Tc x 9 TR starting at `first` into a node.
@@ -181,7 +182,7 @@ void HazardGrid::build_index() {
 }
 
 HazardGrid HazardGrid::load(const std::string& csv_path) {
-  std::ifstream in = open_or_throw(csv_path, "hazard grid file");
+  std::istringstream in = open_or_throw(csv_path, input_kinds::hazard_grid);
   HazardGrid g;
   std::string line;
   if (!std::getline(in, line)) throw InputError("hazard grid file '" + csv_path + "' is empty");
@@ -344,7 +345,7 @@ std::string trim(const std::string& s) {
 }  // namespace
 
 IslandTable IslandTable::load(const std::string& csv_path) {
-  std::ifstream in = open_or_throw(csv_path, "islands table");
+  std::istringstream in = open_or_throw(csv_path, input_kinds::islands_table);
   IslandTable t;
   std::string line;
   if (!std::getline(in, line)) throw InputError("islands table '" + csv_path + "' is empty");

@@ -186,6 +186,7 @@ SparseMatrix sparse_jacobian(const Chain& chain, const Eigen::VectorXd& q, Eigen
         k += 2;
         break;
       case ConstraintType::Hinge:
+      case ConstraintType::Weld:
         position_entries(chain, c.block, c.point, q, k, 1.0, t);
         position_entries(chain, c.other, c.point, q, k, -1.0, t);
         k += 2;
@@ -207,7 +208,92 @@ SparseMatrix sparse_jacobian(const Chain& chain, const Eigen::VectorXd& q, Eigen
   return A;
 }
 
+// True when segments [a, b] and [c, d] share a point (orientation tests;
+// collinear overlaps included).
+bool segments_cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                    const Eigen::Vector2d& d, double tol) {
+  auto orient = [tol](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& r) {
+    const double v = (q.x() - p.x()) * (r.y() - p.y()) - (q.y() - p.y()) * (r.x() - p.x());
+    return v > tol ? 1 : v < -tol ? -1 : 0;
+  };
+  auto on = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& r) {
+    return std::min(p.x(), q.x()) <= r.x() && r.x() <= std::max(p.x(), q.x()) && std::min(p.y(), q.y()) <= r.y() &&
+           r.y() <= std::max(p.y(), q.y());
+  };
+  const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;  // a proper crossing
+  if (o1 == 0 && on(a, b, c)) return true;
+  if (o2 == 0 && on(a, b, d)) return true;
+  if (o3 == 0 && on(c, d, a)) return true;
+  if (o4 == 0 && on(c, d, b)) return true;
+  return false;
+}
+
+std::string num_m(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
 }  // namespace
+
+std::string polygon_defect(const std::vector<Eigen::Vector2d>& polygon, bool repeated_vertices_ok) {
+  std::vector<Eigen::Vector2d> v = polygon;
+  std::size_t n = v.size();
+  if (n < 3) return "the polygon needs at least 3 vertices";
+  Eigen::Vector2d lo = v[0], hi = v[0];
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!v[i].allFinite()) return "vertex " + std::to_string(i) + " is not a finite point";
+    if (v[i].cwiseAbs().maxCoeff() > chain_max_coordinate_m)
+      return "vertex " + std::to_string(i) + " " + point_str(v[i]) + " lies farther than " +
+             num_m(chain_max_coordinate_m) + " m from the origin: coordinates are in m";
+    lo = lo.cwiseMin(v[i]);
+    hi = hi.cwiseMax(v[i]);
+  }
+  const double extent = (hi - lo).norm();
+  if (extent < chain_min_extent_m)
+    return "the polygon is " + num_m(extent) + " m across, less than " + num_m(chain_min_extent_m) +
+           " m: a block is at least 1 mm across (coordinates are in m)";
+  for (std::size_t i = 0; i < n; ++i)
+    if ((v[i] - v[(i + 1) % n]).norm() <= 1e-12 * extent && !repeated_vertices_ok)
+      return "vertices " + std::to_string(i) + " and " + std::to_string((i + 1) % n) + " are the same point " +
+             point_str(v[i]) + ": each vertex once, in order around the block";
+  if (repeated_vertices_ok) {
+    // The polygon without its repeated vertices, for the tests below.
+    std::vector<Eigen::Vector2d> u;
+    for (std::size_t i = 0; i < n; ++i)
+      if ((v[i] - v[(i + 1) % n]).norm() > 1e-12 * extent) u.push_back(v[i]);
+    v = std::move(u);
+    n = v.size();
+    if (n < 3) return "its vertices lie on one line (zero area): a block's polygon encloses an area";
+  }
+  // Collinear: every vertex within a rounding distance of the line through the two farthest apart.
+  std::size_t ia = 0, ib = 1;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      if ((v[i] - v[j]).squaredNorm() > (v[ia] - v[ib]).squaredNorm()) ia = i, ib = j;
+  const Eigen::Vector2d u = (v[ib] - v[ia]).normalized();
+  double off = 0.0;
+  for (const Eigen::Vector2d& p : v) off = std::max(off, std::fabs(u.x() * (p - v[ia]).y() - u.y() * (p - v[ia]).x()));
+  if (off <= 1e-9 * extent)
+    return "its " + std::to_string(n) + " vertices lie on one line (zero area): a block's polygon encloses an area";
+  // Simple polygon: no two non-adjacent edges meet.
+  const double tol = 1e-12 * extent * extent;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      if (j == i + 1 || (i == 0 && j == n - 1)) continue;  // adjacent edges share a vertex
+      if (segments_cross(v[i], v[(i + 1) % n], v[j], v[(j + 1) % n], tol))
+        return "its edges cross: edge " + std::to_string(i) + "-" + std::to_string((i + 1) % n) + " meets edge " +
+               std::to_string(j) + "-" + std::to_string((j + 1) % n) +
+               " (a self-crossing polygon): list the vertices in order around the block";
+    }
+  double a;
+  Eigen::Vector2d c;
+  polygon_area_centroid(v, a, c);
+  if (std::fabs(a) < 1e-12 * (hi - lo).squaredNorm())
+    return "the polygon has zero area (a sliver of its " + num_m(extent) + " m extent)";
+  return "";
+}
 
 std::string to_string(LoadType t) {
   switch (t) {
@@ -227,10 +313,9 @@ Chain::Chain(std::vector<Block> blocks, std::vector<Constraint> constraints, std
   Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
   for (int i = 0; i < nb; ++i) {
     const Block& b = blocks_[i];
-    if (b.polygon.size() < 3)
-      throw InputError(block_label(blocks_, i) + ": the polygon needs at least 3 vertices");
+    if (const std::string d = polygon_defect(b.polygon, true); !d.empty())
+      throw InputError(block_label(blocks_, i) + ": " + d);
     for (const auto& v : b.polygon) {
-      if (!v.allFinite()) throw InputError(block_label(blocks_, i) + ": a vertex is not finite");
       lo = lo.cwiseMin(v);
       hi = hi.cwiseMax(v);
     }
@@ -238,6 +323,8 @@ Chain::Chain(std::vector<Block> blocks, std::vector<Constraint> constraints, std
       throw InputError(block_label(blocks_, i) + ": unit weight must be >= 0 kN/m^3");
     if (!(b.length > 0.0) || !std::isfinite(b.length))
       throw InputError(block_label(blocks_, i) + ": out-of-plane length must be > 0 m");
+    if (!std::isfinite(b.extra_gyration_sq))
+      throw InputError(block_label(blocks_, i) + ": the extra radius of gyration squared is not finite");
     double a;
     Eigen::Vector2d c;
     polygon_area_centroid(b.polygon, a, c);
@@ -245,6 +332,9 @@ Chain::Chain(std::vector<Block> blocks, std::vector<Constraint> constraints, std
     centroids_.push_back(c);
     moments_.push_back(polygon_moments(b.polygon, c));
   }
+  for (int i = 1; i < nb; ++i)
+    if (blocks_[i].weight_in_plane != blocks_[0].weight_in_plane)
+      throw InputError(block_label(blocks_, i) + ": a chain is drawn either in section or in plan, not both");
   size_ = (hi - lo).norm();
   for (int i = 0; i < nb; ++i) {
     // A degenerate (self-crossing or sliver) polygon: area tiny against its extent.
@@ -255,6 +345,8 @@ Chain::Chain(std::vector<Block> blocks, std::vector<Constraint> constraints, std
     }
     if (areas_[i] < 1e-12 * (bhi - blo).squaredNorm())
       throw InputError(block_label(blocks_, i) + ": the polygon has zero area");
+    if (!(moments_[i](0) + moments_[i](2) + blocks_[i].extra_gyration_sq > 0.0))
+      throw InputError(block_label(blocks_, i) + ": the extra radius of gyration squared leaves no rotational inertia");
   }
 
   // Constraints: valid blocks, points on their blocks.
@@ -264,7 +356,7 @@ Chain::Chain(std::vector<Block> blocks, std::vector<Constraint> constraints, std
     if (c.block < 0 || c.block >= nb)
       throw InputError(lab + ": block index " + std::to_string(c.block) + " does not exist");
     if (!c.point.allFinite()) throw InputError(lab + ": the point is not finite");
-    if (!contains(c.block, c.point))
+    if (c.type != ConstraintType::Weld && !contains(c.block, c.point))
       throw InputError(lab + ": the point " + point_str(c.point) + " is not on " +
                        block_label(blocks_, c.block));
     switch (c.type) {
@@ -276,6 +368,12 @@ Chain::Chain(std::vector<Block> blocks, std::vector<Constraint> constraints, std
         if (!contains(c.other, c.point))
           throw InputError(lab + ": the point " + point_str(c.point) + " is not on " +
                            block_label(blocks_, c.other));
+        n_equations_ += 2;
+        break;
+      case ConstraintType::Weld:
+        if (c.other < 0 || c.other >= nb)
+          throw InputError(lab + ": block index " + std::to_string(c.other) + " does not exist");
+        if (c.other == c.block) throw InputError(lab + ": a weld joins two different blocks");
         n_equations_ += 2;
         break;
       case ConstraintType::Slider:
@@ -296,6 +394,7 @@ Chain::Chain(std::vector<Block> blocks, std::vector<Constraint> constraints, std
     p.block = i;
     p.point = centroids_[i];
     p.weight = W;
+    p.vertical = blocks_[i].weight_in_plane;  // in plan the weight acts normal to the drawing
     loads_.push_back(p);
   }
   for (std::size_t k = 0; k < loads.size(); ++k) {
@@ -316,6 +415,7 @@ Chain::Chain(std::vector<Block> blocks, std::vector<Constraint> constraints, std
       throw InputError(lab + ": a tie force is horizontal and points inward (-x)");
     if (l.type == LoadType::Friction && !(l.force.x() >= 0.0 && l.force.y() == 0.0))
       throw InputError(lab + ": a friction force is a magnitude >= 0 kN");
+    if (!(l.slip_limit > 0.0)) throw InputError(lab + ": the slip limit must be > 0 m");
     loads_.push_back(l);
   }
 
@@ -395,6 +495,8 @@ Chain::Chain(std::vector<Block> blocks, std::vector<Constraint> constraints, std
     throw InputError("the mechanism moves no seismic mass horizontally (sum W dx = 0)");
 }
 
+bool Chain::plan() const { return !blocks_.empty() && !blocks_.front().weight_in_plane; }
+
 Eigen::Vector2d Chain::position(int block, const Eigen::Vector2d& p0,
                                 const Eigen::VectorXd& q) const {
   const Eigen::Vector2d& c = centroids_[block];
@@ -404,6 +506,11 @@ Eigen::Vector2d Chain::position(int block, const Eigen::Vector2d& p0,
 
 Eigen::MatrixXd Chain::position_jacobian(int block, const Eigen::Vector2d& p0,
                                          const Eigen::VectorXd& q) const {
+  // A block index out of range wrote outside G (issue 31: "free(): invalid
+  // pointer" when no control point was found for coordinates of 1e150 m).
+  if (block < 0 || block >= static_cast<int>(blocks_.size()))
+    throw InputError("block index " + std::to_string(block) + " does not exist (0.." +
+                     std::to_string(blocks_.size() - 1) + ")");
   Eigen::MatrixXd G = Eigen::MatrixXd::Zero(2, static_cast<Eigen::Index>(n_coordinates()));
   const Eigen::Index j = 3 * block;
   G.block<2, 2>(0, j).setIdentity();
@@ -430,6 +537,7 @@ Eigen::VectorXd Chain::residual(const Eigen::VectorXd& q) const {
         k += 2;
         break;
       case ConstraintType::Hinge:
+      case ConstraintType::Weld:
         r.segment<2>(k) = position(c.block, c.point, q) - position(c.other, c.point, q);
         k += 2;
         break;
@@ -454,6 +562,7 @@ Eigen::MatrixXd Chain::jacobian(const Eigen::VectorXd& q) const {
         k += 2;
         break;
       case ConstraintType::Hinge:
+      case ConstraintType::Weld:
         J.middleRows(k, 2) =
             position_jacobian(c.block, c.point, q) - position_jacobian(c.other, c.point, q);
         k += 2;
@@ -471,6 +580,9 @@ Eigen::MatrixXd Chain::jacobian(const Eigen::VectorXd& q) const {
 Eigen::Vector2d Chain::point_velocity(int block, const Eigen::Vector2d& p0, const Eigen::VectorXd& q,
                                       const Eigen::VectorXd& v) const {
   // d position = (dx, dz) + R'(phi) (p0 - c) dphi: position_jacobian(...) * v without the 2 x n matrix.
+  if (block < 0 || block >= static_cast<int>(blocks_.size()))
+    throw InputError("block index " + std::to_string(block) + " does not exist (0.." +
+                     std::to_string(blocks_.size() - 1) + ")");
   const Eigen::Index j = 3 * block;
   return Eigen::Vector2d(v(j), v(j + 1)) + rotation_derivative(q(j + 2)) * (p0 - centroids_[block]) * v(j + 2);
 }

@@ -44,7 +44,7 @@ CheckRow row(CodeEdition code, LimitState ls, const char* kind, const char* loca
   r.capacity = capacity;
   r.unit = unit;
   r.dc = demand / capacity;
-  r.satisfied = r.dc <= 1.0;
+  decide(r);
   return r;
 }
 
@@ -101,6 +101,10 @@ void set_pga(CheckRow& r, double ag_cap, double ag_site) {
 }
 
 }  // namespace
+
+bool check_satisfied(double dc, bool no_verdict) { return !no_verdict && std::isfinite(dc) && dc <= 1.0; }
+
+void decide(CheckRow& r) { r.satisfied = check_satisfied(r.dc, r.no_verdict); }
 
 std::string to_string(CodeEdition c) { return c == CodeEdition::NTC2008 ? "NTC2008" : "NTC2018"; }
 
@@ -304,6 +308,11 @@ std::vector<CheckRow> checks_of(const KinematicResult& r, const CheckInput& in) 
                                         ElasticSpectrum(*x.h, in.site).Se(in.building->T1));
           c.inputs.insert(c.inputs.end(), hi.begin(), hi.end());
           c.inputs.push_back({"S_eZ(T) (m/s2)", fs.Se(x.T)});
+          c.inputs.push_back({"a_Z (m/s2)", fs.a_Z()});
+          const double b = code_rules::floor_spectrum_b, T1 = in.building->T1, two_pi = 2.0 * units::pi;
+          c.floor_branch = x.T > b * T1 && fs.Se(T1) * b * b * T1 * T1 / (two_pi * two_pi) > fs.SDe(x.T)
+                               ? "plateau_bound"
+                               : fs.branch(x.T);
         }
         rows.push_back(c);
       }

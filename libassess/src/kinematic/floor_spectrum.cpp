@@ -52,6 +52,24 @@ double FloorSpectrum::Se(double T) const {
   return s;
 }
 
+const char* FloorSpectrum::branch(double T) const {
+  const double a = code_rules::floor_spectrum_a, b = code_rules::floor_spectrum_b, Tk = building_.T1;
+  double s;
+  const char* which;
+  if (T < a * Tk) {
+    s = a_Z_ * amp_ / (1.0 + (amp_ - 1.0) * std::pow(1.0 - T / (a * Tk), 1.6));
+    which = "rising";
+  } else if (T < b * Tk) {
+    s = a_Z_ * amp_;
+    which = "plateau";
+  } else {
+    s = a_Z_ * amp_ / (1.0 + (amp_ - 1.0) * std::pow(T / (b * Tk) - 1.0, 1.2));
+    which = "falling";
+  }
+  if (T > Tk && element_spectrum_.Se(T) > s) which = "ground";
+  return which;
+}
+
 double FloorSpectrum::SDe(double T) const {
   const double w = T / (2.0 * units::pi);
   return Se(T) * w * w;

@@ -74,6 +74,8 @@ void KinematicOptions::validate() const {
   if (!(du_cap > 0.0)) throw InputError("du* cap: expected > 0 m");
   if (!(d_SLV_cap > 0.0)) throw InputError("d_SLV cap: expected > 0 m");
   if (!(d_SLC_cap > 0.0)) throw InputError("d_SLC cap: expected > 0 m");
+  if (!(dSLV_over_d0 > 0.0 && dSLV_over_d0 < 1.0)) throw InputError("d_SLV / d0*: expected in (0, 1)");
+  if (!(rotation_cap > 0.0)) throw InputError("rotation cap: expected > 0 rad");
 }
 
 std::vector<LoadWork> load_works(const Chain& chain, const Eigen::VectorXd& q) {
@@ -95,11 +97,15 @@ std::vector<LoadWork> load_works(const Chain& chain, const Eigen::VectorXd& q) {
           const double r2 = l.type == LoadType::SelfWeight ? chain.vertical_gyration_sq(l.block, q) : 0.0;
           w.W_dx2 = l.weight * (w.dx * w.dx + dphi * dphi * r2);
         }
-        if (l.type == LoadType::SelfWeight || l.vertical) w.work = -l.weight * w.dz;
+        if (l.vertical) w.work = -l.weight * w.dz;  // self weights bear unless drawn in plan
         break;
       case LoadType::Force:
       case LoadType::Tie: w.work = l.force.dot(d); break;
-      case LoadType::Friction: w.work = -l.force.x() * std::fabs(w.dx); break;
+      case LoadType::Friction:
+        // Lost once the point has slipped by slip_limit (issue 33).
+        if (!(std::fabs(chain.position(l.block, l.point, q).x() - l.point.x()) >= l.slip_limit))
+          w.work = -l.force.x() * std::fabs(w.dx);
+        break;
     }
     out.push_back(w);
   }
@@ -179,6 +185,21 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
     R.ties.push_back(tie_work(chain, t, q0, v0, true));
     R.work_other += R.ties.back().work;
   }
+  // Every weight, work and virtual displacement must be a finite number
+  // before anything is divided by them (coordinates of 1e150 m made the
+  // weights infinite and their works not-a-number).
+  if (!std::isfinite(R.sum_W_dx) || !std::isfinite(R.sum_W_dx2) || !std::isfinite(R.work_other) ||
+      !std::isfinite(R.sum_W) || !Wp.allFinite())
+    throw InputError("the weights or virtual displacements of the mechanism are not finite numbers: check the "
+                     "coordinates (m), unit weights (kN/m^3) and loads (kN) for absurd magnitudes");
+  if (!(R.sum_W > 0.0))
+    throw InputError("the mechanism has no seismic weight (weightless blocks and no weight load with \"seismic\": "
+                     "true): alpha0 = -(work of the other loads) / (sum W dx) is undefined [C8A.4.1]");
+  if (!(R.sum_W_dx > 0.0))
+    // (virtual_displacement orients the mechanism so that sum W dx >= 0.)
+    throw InputError("no seismic weight of the mechanism moves horizontally (sum W dx = 0): a horizontal action "
+                     "does no work on it, so alpha0 [C8A.4.1] is undefined; check the constraints (a vertical "
+                     "slider alone, a hinge at every block's centroid)");
   R.alpha0 = -R.work_other / R.sum_W_dx;                        // [C8A.4.1]
   R.M_star = R.sum_W_dx * R.sum_W_dx / (units::g * R.sum_W_dx2); // [C8A.4.2]
   R.e_star = units::g * R.M_star / R.sum_W;                      // [C8A.4.3] = [C8.7.1.5]
@@ -221,6 +242,9 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
         }
     }
   }
+  if (R.control_block < 0)  // (not reached: sum W dx > 0 above; position_jacobian of block -1 wrote outside its matrix)
+    throw InputError("no seismic weight of the mechanism moves outward (sum W dx = " + std::to_string(R.sum_W_dx / units::kN) +
+                     " kN m): no control point; check the constraints and the loads");
   R.dx_k = dx_of(R.control_block, R.control_point);
   R.d_star_per_dk = R.sum_W_dx2 / (R.dx_k * R.sum_W_dx);  // [C8A.4.5] / [C8.7.1.4]
 
@@ -268,6 +292,33 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
   }
   if (!R.curve_complete()) return R;
   R.d0_star = R.d_star_per_dk * R.dk0;
+
+  // Issue 33: a rotation bound of a one-body mechanism about its ground hinge.
+  KinematicOptions capped = opt;
+  if (std::isfinite(opt.rotation_cap)) {
+    const Constraint* hinge = nullptr;
+    for (const Constraint& c : chain.constraints())
+      if (c.type == ConstraintType::GroundHinge) {
+        if (hinge) throw InputError("rotation cap: the mechanism has more than one ground hinge");
+        hinge = &c;
+      }
+    if (!hinge) throw InputError("rotation cap: the mechanism has no ground hinge");
+    const double phi = v0(3 * hinge->block + 2);
+    for (std::size_t b = 0; b < chain.blocks().size(); ++b)
+      if (std::fabs(v0(Eigen::Index(3 * b + 2)) - phi) > 1e-9 * std::max(1.0, std::fabs(phi)))
+        throw InputError("rotation cap: the mechanism does not turn as one rigid body");
+    // Outward rotation theta of the whole chain about the hinge O (clockwise in
+    // x-z with x outward): x' = O.x + r.x cos(theta) + r.z sin(theta).
+    const Eigen::Vector2d r = R.control_point - hinge->point;
+    const double th = opt.rotation_cap;
+    R.dk0_bound = r.x() * (std::cos(th) - 1.0) + r.y() * std::sin(th);
+    R.d0_star_bound = R.d_star_per_dk * R.dk0_bound;
+    if (R.d0_star_bound < R.d0_star) {
+      capped.du_cap = std::min(opt.du_cap, code_rules::du_over_d0_2008 * R.d0_star_bound);
+      capped.d_SLV_cap = std::min(opt.d_SLV_cap, opt.dSLV_over_d0 * R.d0_star_bound);
+      capped.d_SLC_cap = std::min(opt.d_SLC_cap, code_rules::dSLC_over_d0_2018 * R.d0_star_bound);
+    }
+  }
 
   const double a_scale = units::g / (R.e_star * R.FC);
   // a*(d*) (m/s^2) from the chosen curve model.
@@ -342,15 +393,15 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
   auto capacities = [&](double d_tie) {
     Caps c{};
     // NTC 2008 (C8A.4, §6 of docs/theory/kinematic.md).
-    c.du = std::min({code_rules::du_over_d0_2008 * R.d0_star, opt.du_cap, d_tie});
+    c.du = std::min({code_rules::du_over_d0_2008 * R.d0_star, capped.du_cap, d_tie});
     c.ds = code_rules::ds_over_du_2008 * c.du;
     c.as = a_star_at(c.ds);
     c.Ts = 2.0 * units::pi * std::sqrt(c.ds / c.as);
     // NTC 2018 (Circ. 2019 §C8.7.1.2.1.6, [C8.7.1.10], [C8.7.1.11]).
-    c.dSLV = std::min({code_rules::dSLV_over_d0_2018 * R.d0_star, opt.d_SLV_cap, d_tie});
+    c.dSLV = std::min({opt.dSLV_over_d0 * R.d0_star, capped.d_SLV_cap, d_tie});
     c.aSLV = a_star_at(c.dSLV);
     c.TSLV = code_rules::T_SLV_factor_of_pi * units::pi * std::sqrt(c.dSLV / c.aSLV);
-    c.dSLC = std::min({code_rules::dSLC_over_d0_2018 * R.d0_star, opt.d_SLC_cap, d_tie});
+    c.dSLC = std::min({code_rules::dSLC_over_d0_2018 * R.d0_star, capped.d_SLC_cap, d_tie});
     c.aSLC = a_star_at(c.dSLC);
     c.TSLC = code_rules::T_SLC_factor_of_pi * units::pi * std::sqrt(c.dSLC / c.aSLC);
     return c;

@@ -8,9 +8,12 @@
 // activation multiplier [C8A.4.1]/[C8.7.1.1]; Z constraint height (C8A.4.9).
 #include "assess/kinematic/mechanism_catalogue.hpp"
 
+#include "kinematic/catalogue_helpers.hpp"
+
 #include "assess/support/error.hpp"
 #include "assess/kinematic/kinematic_analysis.hpp"
 #include "assess/support/units.hpp"
+#include "assess/kinematic/roof_thrust.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,76 +21,8 @@
 #include <sstream>
 
 namespace assess {
-namespace {
 
-using V = Eigen::Vector2d;
-
-void require_positive(double v, const std::string& what, const char* unit) {
-  if (!(v > 0.0) || !std::isfinite(v))
-    throw InputError(what + " = " + std::to_string(v) + ": must be > 0 " + unit);
-}
-void require_non_negative(double v, const std::string& what, const char* unit) {
-  if (!(v >= 0.0) || !std::isfinite(v))
-    throw InputError(what + " = " + std::to_string(v) + ": must be >= 0 " + unit);
-}
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
-Constraint ground_hinge(const std::string& name, int block, V p) {
-  Constraint c;
-  c.type = ConstraintType::GroundHinge;
-  c.name = name;
-  c.block = block;
-  c.point = p;
-  return c;
-}
-Constraint hinge(const std::string& name, int a, int b, V p) {
-  Constraint c = ground_hinge(name, a, p);
-  c.type = ConstraintType::Hinge;
-  c.other = b;
-  return c;
-}
-Load weight(const std::string& name, int block, V p, double W, bool vertical = true) {
-  Load l;
-  l.type = LoadType::Weight;
-  l.name = name;
-  l.block = block;
-  l.point = p;
-  l.weight = W;
-  l.vertical = vertical;
-  return l;
-}
-Load force(LoadType type, const std::string& name, int block, V p, V F) {
-  Load l;
-  l.type = type;
-  l.name = name;
-  l.block = block;
-  l.point = p;
-  l.force = F;
-  return l;
-}
-
-// Minimises f on [a, b] by golden-section search (unimodal f), to |b - a| <= tol.
-template <class F>
-double golden_minimum(F f, double a, double b, double tol) {
-  const double r = 0.5 * (std::sqrt(5.0) - 1.0);
-  double c = b - r * (b - a), d = a + r * (b - a);
-  double fc = f(c), fd = f(d);
-  while (b - a > tol) {
-    if (fc < fd) {
-      b = d; d = c; fd = fc; c = b - r * (b - a); fc = f(c);
-    } else {
-      a = c; c = d; fc = fd; d = a + r * (b - a); fd = f(d);
-    }
-  }
-  return 0.5 * (a + b);
-}
-
-}  // namespace
+using namespace catalogue;
 
 double activation_multiplier(const Chain& chain) {
   return load_multiplier(chain, Eigen::VectorXd::Zero(static_cast<Eigen::Index>(chain.n_coordinates())));
@@ -124,6 +59,14 @@ MechanismSet simple_overturning(const SimpleOverturningParams& p) {
     if (!(s.floor_distance_from_inner_face >= 0.0 && s.floor_distance_from_inner_face <= s.thickness))
       throw InputError(lab + "floor_distance_from_inner_face must lie in [0, thickness] m");
     z[i + 1] = z[i] + s.height;
+  }
+  RoofLoads roof;
+  if (p.roof) {
+    p.roof->validate("roof_thrust: roof: ");
+    if (!(p.roof->seat_from_inner_face <= p.storeys.back().thickness))
+      throw InputError("roof_thrust: roof: the seat's distance from the inner face must lie in [0, thickness of the "
+                       "top storey] m");
+    roof = roof_loads(*p.roof);
   }
   MechanismSet set;
   set.type = "simple_overturning";
@@ -166,9 +109,46 @@ MechanismSet simple_overturning(const SimpleOverturningParams& p) {
       if (s.tie > 0.0)
         loads.push_back(force(LoadType::Tie, "tie " + lvl, 0, V(-0.5 * s.thickness, z[i + 1]), V(-s.tie, 0.0)));
     }
+    if (p.roof) {  // issue 33: the roof on the top storey, at its seat
+      const V seat(-p.storeys.back().thickness + p.roof->seat_from_inner_face, z[n]);
+      if (roof.V > 0.0) loads.push_back(weight("roof weight", 0, seat, roof.V * p.length));
+      if (roof.H > 0.0) loads.push_back(force(LoadType::Force, "roof thrust", 0, seat, V(roof.H * p.length, 0.0)));
+    }
     const V h(-p.hinge_setback, z[j]);
     set.candidates.push_back({"hinge at z = " + fmt("%.2f", z[j]) + " m (level " + std::to_string(j) + ")",
                               Chain({b}, {ground_hinge("hinge", 0, h)}, loads), z[j], z[j]});
+  }
+  return set;
+}
+
+// ---------------------------------------------------------------- roof thrust (issue 33)
+MechanismSet roof_thrust_overturning(const SimpleOverturningParams& p) {
+  if (!p.roof) throw InputError("roof_thrust: the roof (\"roof\") is required");
+  MechanismSet set = simple_overturning(p);
+  set.type = "roof_thrust";
+  const RoofLoads r = roof_loads(*p.roof);
+  const std::string src = roof_thrust_formula(p.roof->scheme) + "; docs/theory/mechanisms.md §3.1 [D]";
+  for (MechanismCandidate& c : set.candidates) {
+    // alpha0 = -(sum of the non-seismic work) / (sum W dx) [C8.7.1.1], with and
+    // without the roof's terms (the same virtual displacements: one block).
+    double sWdx = 0.0, work = 0.0, w_thrust = 0.0, w_roof = 0.0, Wdx_roof = 0.0;
+    for (const LoadWork& w : load_works(c.chain, Eigen::VectorXd::Zero(Eigen::Index(c.chain.n_coordinates())))) {
+      sWdx += w.W_dx;
+      work += w.work;
+      if (w.load.name == "roof thrust") w_thrust = w.work;
+      if (w.load.name == "roof weight") w_roof = w.work, Wdx_roof = w.W_dx;
+    }
+    c.quantities = {
+        {"roof: load q", p.roof->load / units::kN, "kN/m²", "input"},
+        {"roof: span l (plan)", p.roof->span, "m", "input"},
+        {"roof: pitch φ", p.roof->pitch_deg, "°", "input"},
+        {"roof: vertical reaction V per metre", r.V / units::kN, "kN/m", src},
+        {"roof: thrust H per metre", r.H / units::kN, "kN/m", src},
+        {"roof: thrust over the façade", r.H * p.length / units::kN, "kN", src},
+        {"α0 with the roof's weight and thrust", -work / sWdx, "-", "C8.7.1.1; docs/theory/mechanisms.md (3.3) [V-p]"},
+        {"α0 without the roof thrust", -(work - w_thrust) / sWdx, "-", "C8.7.1.1"},
+        {"α0 without the roof", -(work - w_thrust - w_roof) / (sWdx - Wdx_roof), "-", "C8.7.1.1"},
+    };
   }
   return set;
 }
@@ -241,35 +221,6 @@ MechanismSet vertical_flexure(const VerticalFlexureParams& p) {
 }
 
 // ---------------------------------------------------------------- composite overturning
-namespace {
-// The wedge angles to analyse (deg): beta_deg; else from the texture,
-// tan beta = (unit_length / 2) / course_height; else a grid in
-// [beta_min_deg, beta_max_deg] (`searched` set).
-template <class P>
-std::vector<double> wedge_angles(const std::string& lab, const P& p, bool& searched) {
-  std::vector<double> betas;
-  if (p.beta_deg) {
-    betas.push_back(*p.beta_deg);
-  } else if (p.unit_length || p.course_height) {
-    if (!p.unit_length || !p.course_height)
-      throw InputError(lab + "the texture needs both unit_length and course_height (m)");
-    require_positive(*p.unit_length, lab + "unit_length", "m");
-    require_positive(*p.course_height, lab + "course_height", "m");
-    betas.push_back(std::atan(0.5 * *p.unit_length / *p.course_height) / units::deg);
-  } else {
-    searched = true;
-    if (!(p.beta_min_deg > 0.0 && p.beta_max_deg > p.beta_min_deg && p.beta_max_deg < 90.0))
-      throw InputError(lab + "expected 0 < beta_min_deg < beta_max_deg < 90 deg");
-    if (p.search_points < 2) throw InputError(lab + "search_points must be >= 2");
-    for (int i = 0; i < p.search_points; ++i)
-      betas.push_back(p.beta_min_deg + (p.beta_max_deg - p.beta_min_deg) * i / (p.search_points - 1));
-  }
-  for (double beta : betas)
-    if (!(beta > 0.0 && beta < 90.0)) throw InputError(lab + "beta_deg must lie in (0, 90) deg");
-  return betas;
-}
-}  // namespace
-
 MechanismSet composite_overturning(const CompositeOverturningParams& p) {
   const std::string lab = "composite_overturning: ";
   require_positive(p.height, lab + "height", "m");
@@ -353,58 +304,6 @@ MechanismSet gable_overturning(const GableParams& p) {
   set.type = "gable_overturning";
   set.parameter_name = "-";
   set.candidates.push_back({"gable about its base", Chain(blocks, cons, loads), z0, 0.0});
-  return set;
-}
-
-// ---------------------------------------------------------------- corner overturning
-// Planar reduction [I] (docs/theory/kinematic.md §5): the wedge rotates about
-// a horizontal axis, so every point moves in a vertical plane parallel to the
-// bisector and the virtual work of the weights and of horizontal forces along
-// the bisector depends only on (s, z), s = outward distance along the bisector
-// from the axis. A plan point at depths (u, v) from the two outer faces has
-// s = -(u + v)/sqrt(2). Each piece is drawn in the (s, z) plane with its exact
-// weight, centroid and height distribution:
-//   pillar (u, v in [0, t]): rectangle s in [-sqrt(2) t, 0], length t/sqrt(2);
-//   arms (u in [t, t + reach(z)], v in [0, t], and the mirror one): the
-//   elevation triangle mapped by s = -(u + t/2)/sqrt(2), length 2 sqrt(2) t.
-MechanismSet corner_overturning(const CornerOverturningParams& p) {
-  const std::string lab = "corner_overturning: ";
-  require_positive(p.height, lab + "height", "m");
-  require_positive(p.thickness, lab + "thickness", "m");
-  require_positive(p.unit_weight, lab + "unit_weight", "kN/m^3");
-  require_positive(p.wall_length, lab + "wall_length", "m");
-  require_non_negative(p.base_z, lab + "base_z", "m");
-  require_non_negative(p.top_weight, lab + "top_weight", "kN");
-  require_non_negative(p.tie, lab + "tie", "kN");
-  MechanismSet set;
-  set.type = "corner_overturning";
-  set.parameter_name = "crack angle beta from the vertical (deg)";
-  const std::vector<double> betas = wedge_angles(lab, p, set.searched);
-  const double t = p.thickness, z0 = p.base_z, zt = p.base_z + p.height, r = 1.0 / std::sqrt(2.0);
-  const double s_arm = -1.5 * t * r;  // the arms' inner edge, u = t at mid-thickness
-  for (double beta : betas) {
-    const double tb = std::tan(beta * units::deg);
-    const double reach = std::min(p.height * tb, p.wall_length);
-    const double zc = z0 + reach / tb;  // where the crack meets the wall's end
-    Block pillar, arms;
-    pillar.name = "corner pillar";
-    arms.name = "wall arms";
-    pillar.unit_weight = arms.unit_weight = p.unit_weight;
-    pillar.length = t * r;
-    arms.length = 2.0 * t / r;
-    pillar.polygon = {V(0.0, z0), V(0.0, zt), V(-2.0 * t * r, zt), V(-2.0 * t * r, z0)};
-    arms.polygon = {V(s_arm, z0), V(s_arm, zt), V(s_arm - reach * r, zt)};
-    if (p.height * tb > p.wall_length) arms.polygon.push_back(V(s_arm - reach * r, zc));
-    std::vector<Constraint> cons{ground_hinge("corner hinge", 0, V(0.0, z0)),
-                                 hinge("weld bottom", 0, 1, V(s_arm, z0)), hinge("weld top", 0, 1, V(s_arm, zt))};
-    const V top(-t * r, zt);
-    std::vector<Load> loads;
-    if (p.top_weight > 0.0) loads.push_back(weight("top load", 0, top, p.top_weight));
-    if (p.thrust != 0.0) loads.push_back(force(LoadType::Force, "thrust", 0, top, V(p.thrust, 0.0)));
-    if (p.tie > 0.0) loads.push_back(force(LoadType::Tie, "ties (resultant)", 0, top, V(-p.tie / r, 0.0)));
-    set.candidates.push_back({"crack beta = " + fmt("%.1f", beta) + " deg", Chain({pillar, arms}, cons, loads),
-                              z0, beta});
-  }
   return set;
 }
 

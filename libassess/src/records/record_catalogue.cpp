@@ -10,7 +10,10 @@
 
 #include "assess/records/record_io.hpp"
 #include "assess/records/strong_motion.hpp"
+#include "assess/support/content_hash.hpp"
 #include "assess/support/error.hpp"
+#include "assess/support/input_file.hpp"
+#include "assess/support/json_input.hpp"
 #include "assess/support/units.hpp"
 #include "support/parallel_for.hpp"
 
@@ -19,6 +22,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <set>
 #include <sstream>
@@ -112,10 +116,21 @@ double num_or_nan(const nlohmann::json& r, const char* key) {
 
 std::string site_class_from_vs30(double v) {
   if (!std::isfinite(v) || !(v > 0.0)) return "";
-  if (v >= 800.0) return "A";
+  if (v > 800.0) return "A";
   if (v >= 360.0) return "B";
   if (v >= 180.0) return "C";
   return "D";
+}
+
+std::string near_fault_reason(const CatalogueEntry& e, double threshold_km) {
+  std::string why;
+  if (e.pulse == "pulse-like")
+    why = "pulse-like (source classification" +
+          (std::isfinite(e.pulse_period_s) ? ", Tp = " + fmt_g(e.pulse_period_s) + " s" : std::string()) + ")";
+  if (std::isfinite(e.distance_km) && e.distance_km < threshold_km)
+    why += (why.empty() ? "" : "; ") + std::string("near-fault: ") + (e.distance_kind.empty() ? "distance" : e.distance_kind) +
+           " " + fmt_g(e.distance_km) + " km < " + fmt_g(threshold_km) + " km";
+  return why;
 }
 
 const CatalogueEntry* RecordCatalogue::find(const std::string& id_or_file) const {
@@ -164,8 +179,7 @@ std::vector<Record> RecordCatalogue::load_all(const std::vector<CatalogueEntry>&
 }
 
 RecordCatalogue build_catalogue(const std::string& table) {
-  std::ifstream in(table, std::ios::binary);
-  if (!in) throw InputError("cannot open record metadata table '" + table + "'");
+  std::istringstream in(read_input_file(table, input_kinds::metadata_table));
   RecordCatalogue cat;
   cat.directory = directory_of(table);
   cat.description =
@@ -178,8 +192,8 @@ RecordCatalogue build_catalogue(const std::string& table) {
   const std::vector<std::string> header = split_csv(line, table + ":1");
   const std::vector<std::string> required = {
       "file", "event", "date", "Mw", "mechanism", "station", "station_code", "component", "positive_direction",
-      "distance_km", "distance_kind", "vs30_m_s", "site_class_stated", "country", "lowest_usable_hz", "plain_dt_s",
-      "plain_unit", "excluded_reason", "source", "terms", "notes"};
+      "distance_km", "distance_kind", "vs30_m_s", "site_class_stated", "country", "lowest_usable_hz", "pulse",
+      "pulse_period_s", "plain_dt_s", "plain_unit", "excluded_reason", "source", "terms", "notes"};
   std::map<std::string, std::size_t> col;
   for (std::size_t i = 0; i < header.size(); ++i) col[header[i]] = i;
   for (const auto& r : required)
@@ -220,10 +234,19 @@ RecordCatalogue build_catalogue(const std::string& table) {
     const std::string stated = cell("site_class_stated");
     if (!stated.empty() && stated.find_first_not_of("ABCDE") != std::string::npos)
       throw InputError(at("site_class_stated") + ": expected one of A, B, C, D, E, got '" + stated + "'");
-    e.site_class = site_class_from_vs30(e.vs30_m_s);
-    e.site_class_basis = e.site_class.empty() ? "" : "Vs30";
-    if (e.site_class.empty() && !stated.empty()) e.site_class = stated, e.site_class_basis = "stated";
-    if (stated == "E") e.site_class = "E", e.site_class_basis = "stated";
+    if (!stated.empty() && stated.size() != 1)
+      throw InputError(at("site_class_stated") + ": expected one of A, B, C, D, E, got '" + stated + "'");
+    // The class the source states first (it may know the stratigraphy: class
+    // E needs it), else the Tab. 3.2.II band of Vs30 (record-selection.md §3).
+    e.vs30_class = site_class_from_vs30(e.vs30_m_s);
+    if (!stated.empty()) e.site_class = stated, e.site_class_basis = "stated";
+    else if (!e.vs30_class.empty()) e.site_class = e.vs30_class, e.site_class_basis = "Vs30";
+    e.pulse = cell("pulse");
+    if (!e.pulse.empty() && e.pulse != "pulse-like" && e.pulse != "non-pulse")
+      throw InputError(at("pulse") + ": expected pulse-like, non-pulse or an empty cell, got '" + e.pulse + "'");
+    e.pulse_period_s = number_cell(cell("pulse_period_s"), at("pulse_period_s"), "s", 0.01, 100.0);
+    if (std::isfinite(e.pulse_period_s) && e.pulse != "pulse-like")
+      throw InputError(at("pulse_period_s") + ": a pulse period needs pulse = pulse-like");
     e.plain_unit = cell("plain_unit");
     Record rec;
     try {
@@ -238,6 +261,7 @@ RecordCatalogue build_catalogue(const std::string& table) {
       throw InputError(where + ": " + err.what());
     }
     e.format = rec.format;
+    e.content_hash = hash_hex(file_content_hash(cat.directory + "/" + e.file));
     e.npts = long(rec.size());
     e.dt_s = rec.dt;
     e.pga_g = round6(rec.pga() / units::g_n);
@@ -282,8 +306,12 @@ std::string catalogue_json(const RecordCatalogue& cat) {
     r["vs30_m_s"] = num_or_null(e.vs30_m_s);
     r["site_class"] = e.site_class;
     r["site_class_basis"] = e.site_class_basis;
+    r["vs30_class"] = e.vs30_class;
     r["country"] = e.country;
     r["lowest_usable_hz"] = num_or_null(e.lowest_usable_hz);
+    r["pulse"] = e.pulse;
+    r["pulse_period_s"] = num_or_null(e.pulse_period_s);
+    r["near_fault"] = near_fault_reason(e);
     r["npts"] = e.npts;
     r["dt_s"] = e.dt_s;
     r["pga_g"] = e.pga_g;
@@ -294,6 +322,7 @@ std::string catalogue_json(const RecordCatalogue& cat) {
     }
     r["source"] = e.source;
     r["terms"] = e.terms;
+    r["content_hash"] = e.content_hash;
     r["usable_for_design"] = e.usable_for_design;
     r["note"] = e.note;
     j["records"].push_back(std::move(r));
@@ -302,12 +331,15 @@ std::string catalogue_json(const RecordCatalogue& cat) {
 }
 
 RecordCatalogue read_catalogue(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError("cannot open record catalogue '" + path + "'");
+  // The bounded reader and the JSON parser of case files (depth limit, the
+  // path of a malformed value); a directory or /dev/zero is named.
+  const std::string text = read_input_file(path, input_kinds::record_catalogue);
+  const nlohmann::json j = parse_json_text(text, path);
   RecordCatalogue cat;
   cat.directory = directory_of(path);
+  cat.path = path;
+  cat.text_hash = content_hash(text);
   try {
-    const nlohmann::json j = nlohmann::json::parse(in);
     cat.description = j.value("description", "");
     for (const auto& r : j.at("records")) {
       CatalogueEntry e;
@@ -326,6 +358,10 @@ RecordCatalogue read_catalogue(const std::string& path) {
       e.distance_kind = r.value("distance_kind", "");
       e.site_class = r.value("site_class", "");
       e.site_class_basis = r.value("site_class_basis", "");
+      e.vs30_class = r.value("vs30_class", "");
+      e.pulse = r.value("pulse", "");
+      e.pulse_period_s = num_or_nan(r, "pulse_period_s");
+      e.content_hash = r.value("content_hash", "");
       e.country = r.value("country", "");
       e.terms = r.value("terms", "");
       e.Mw = num_or_nan(r, "Mw");

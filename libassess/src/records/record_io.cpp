@@ -7,12 +7,14 @@
 #include "assess/records/record_io.hpp"
 
 #include "assess/support/error.hpp"
+#include "assess/support/input_file.hpp"
 #include "assess/support/units.hpp"
 
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -56,16 +58,9 @@ std::vector<std::string> split_lines(std::string text) {
 }
 
 /// The content of a record file.
-std::string read_text(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(path + ": is a directory, expected a record file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot open record file '" + path + "'");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+/// (The bounded reader: a regular file of at most 256 MB; a directory, a
+/// device such as /dev/zero or a FIFO is named, never read.)
+std::string read_text(const std::string& path) { return read_input_file(path, input_kinds::record_file); }
 
 /// Appends the numbers of `line`, times `factor`, to `out`. Numbers may
 /// touch (fixed-width E15.7 fields with no blank before a minus sign).
@@ -91,6 +86,10 @@ void parse_numbers(const std::string& line, const std::string& path, std::size_t
     const auto where = [&] { return path + ":" + std::to_string(line_no) + ": "; };
     if (end == p || std::isnan(v))
       throw InputError(where() + "non-numeric value '" + token(p) + "' (expected an acceleration value)");
+    // strtod reads C99 hexadecimal floats (0x1p-3): no record format writes them.
+    const char* digits = (*p == '+' || *p == '-') ? p + 1 : p;
+    if (digits[0] == '0' && (digits[1] == 'x' || digits[1] == 'X'))
+      throw InputError(where() + "hexadecimal value '" + token(p) + "' (expected a decimal acceleration value)");
     if (!std::isfinite(v) || (errno == ERANGE && std::fabs(v) > 1.0))
       throw InputError(where() + "value '" + token(p) + "' is out of the range of a double (|a| < 1.8e308)");
     const double a = v * factor;
@@ -129,7 +128,8 @@ double parse_header_real(const std::string& text, const std::string& path, const
   const std::string t = trim(text);
   char* end = nullptr;
   const double v = std::strtod(t.c_str(), &end);
-  if (t.empty() || end == t.c_str() || (strict && !trim(end).empty()) || !std::isfinite(v))
+  const bool hex = t.find_first_of("xX") != std::string::npos && t.find_first_of("xX") < std::size_t(end - t.c_str());
+  if (t.empty() || end == t.c_str() || (strict && !trim(end).empty()) || !std::isfinite(v) || hex)
     throw InputError(path + ": header field " + field + ": expected a number (s), got '" + t.substr(0, 40) + "'");
   return v;
 }
@@ -142,10 +142,23 @@ bool is_numeric_line(const std::string& line) {
   return end != t.c_str() && (*end == '\0' || *end == ' ' || *end == '\t' || *end == '-' || *end == '+');
 }
 
-void check_dt(double dt, const std::string& path) {
-  if (!(std::isfinite(dt) && dt > 0.0))
-    throw InputError(path + ": time step must be positive (s), the header gives " + std::to_string(dt));
+std::string show(double v) {
+  if (std::isnan(v)) return "not a number";
+  if (std::isinf(v)) return v > 0 ? "infinite" : "minus infinite";
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", v);
+  return b;
 }
+
+/// dt within [record_dt_min_s, record_dt_max_s]; `where` says where it came from.
+void check_dt_range(double dt, const std::string& path, const std::string& where) {
+  if (std::isfinite(dt) && dt >= record_dt_min_s && dt <= record_dt_max_s) return;
+  if (!(dt > 0.0))
+    throw InputError(path + ": time step must be positive (s): " + where + " " + show(dt) + " s");
+  throw InputError(path + ": " + where + " " + show(dt) + " s: expected a time step in [" + show(record_dt_min_s) +
+                   ", " + show(record_dt_max_s) + "] s (strong-motion records are sampled at 0.001-0.04 s)");
+}
+void check_dt(double dt, const std::string& path) { check_dt_range(dt, path, "the header gives the time step"); }
 
 /// Reads data values from line index `first` to the end and checks the count.
 std::vector<double> read_data(const std::vector<std::string>& lines, std::size_t first, long npts,
@@ -357,14 +370,12 @@ Record parse_record_text(const std::string& text, const std::string& path) {
 }
 
 Record read_plain_record(const std::string& path, double dt_s, AccelerationUnit unit) {
-  if (!(std::isfinite(dt_s) && dt_s > 0.0))
-    throw InputError(path + ": time step must be positive (s), got " + std::to_string(dt_s));
+  check_dt_range(dt_s, path, "time step");
   return parse_plain_record_text(read_text(path), path, dt_s, unit);
 }
 
 Record parse_plain_record_text(const std::string& text, const std::string& path, double dt_s, AccelerationUnit unit) {
-  if (!(std::isfinite(dt_s) && dt_s > 0.0))
-    throw InputError(path + ": time step must be positive (s), got " + std::to_string(dt_s));
+  check_dt_range(dt_s, path, "time step");
   const std::vector<std::string> lines = split_lines(text);
   Record r;
   r.format = "plain";
@@ -387,6 +398,9 @@ Record parse_plain_record_text(const std::string& text, const std::string& path,
       throw InputError(path + ":" + std::to_string(i + 1) + ": expected " +
                        std::to_string(columns > 2 ? 2 : columns) + " column(s), found " + std::to_string(row.size()));
     if (columns == 2) {
+      if (!r.acc.empty() && !(row[0] > t_prev))
+        throw InputError(path + ":" + std::to_string(i + 1) + ": the time column must increase: t = " + show(row[0]) +
+                         " s after t = " + show(t_prev) + " s");
       if (!r.acc.empty() && std::fabs(row[0] - t_prev - dt_s) > 1e-6 * dt_s + 1e-9)
         throw InputError(path + ":" + std::to_string(i + 1) + ": time column spacing " +
                          std::to_string(row[0] - t_prev) + " s differs from the declared time step " +
@@ -422,8 +436,8 @@ Record read_plain_record(const std::string& path, AccelerationUnit unit) {
   if (t.size() < 2) throw InputError(path + ": a record needs at least 2 values");
   const double dt = t[1] - t[0];
   if (!(std::isfinite(dt) && dt > 0.0))
-    throw InputError(path + ": the time column must increase: the first two times give dt = " + std::to_string(dt) +
-                     " s");
+    throw InputError(path + ": the time column must increase: the first two times give dt = " + show(dt) + " s");
+  check_dt_range(dt, path, "the first two times give the time step");
   return parse_plain_record_text(text, path, dt, unit);
 }
 

@@ -334,6 +334,7 @@ std::vector<std::size_t> exhaustive_search(const Pool& p, const std::vector<std:
 }
 
 std::string fmt(double x, int prec = 3) {
+  if (!std::isfinite(x)) return std::isnan(x) ? "not a number" : (x > 0 ? "infinite" : "minus infinite");
   std::ostringstream os;
   os.precision(prec);
   os << x;
@@ -344,19 +345,22 @@ std::string fmt(double x, int prec = 3) {
 
 PeriodRange rocking_period_range(double T_first, double T_last) {
   if (!(T_first > 0.0) || !(T_last >= T_first) || !std::isfinite(T_last))
-    throw InputError("rocking_period_range: need 0 < T_first <= T_last (s)");
-  constexpr double lower_factor = 0.5, upper_factor = 1.5, floor_s = 0.1, cap_s = 4.0;
+    throw InputError("the mechanism's periods (Ts, T_SLV) " + fmt(T_first) + "-" + fmt(T_last) +
+                     " s do not give a period range for the record selection: expected 0 < T1 <= T2, finite (s)");
+  constexpr double lower_factor = rocking_range_lower_factor, upper_factor = rocking_range_upper_factor,
+                   floor_s = rocking_range_floor_s, cap_s = rocking_range_cap_s;
   PeriodRange r;
   r.T_min = std::clamp(lower_factor * T_first, floor_s, cap_s);
   r.T_max = std::clamp(upper_factor * T_last, floor_s, cap_s);
   if (!(r.T_max > r.T_min))
-    throw InputError("rocking_period_range: mechanism periods " + fmt(T_first) + "-" + fmt(T_last) +
-                     " s fall outside [0.1, 4] s");
+    throw InputError("the mechanism's periods (Ts, T_SLV) " + fmt(T_first) + "-" + fmt(T_last) +
+                     " s fall outside [0.1, 4] s, the periods over which records are selected (give the records, "
+                     "or \"period_range_s\" in dynamic/select; docs/theory/record-selection.md)");
   return r;
 }
 
 void SelectionOptions::validate() const {
-  if (n_records < 1) throw InputError("n_records must be >= 1");
+  if (n_records < 1) throw InputError("the number of records (count) must be >= 1");
   if (!(range.T_min > 0.0) || !(range.T_max > range.T_min) || !std::isfinite(range.T_max))
     throw InputError("period range must satisfy 0 < T_min < T_max (s)");
   if (!(lower_tol >= 0.0 && lower_tol < 1.0)) throw InputError("lower_tol must be in [0, 1) (fraction)");
@@ -371,7 +375,11 @@ void SelectionOptions::validate() const {
   if (!(damping_ratio >= 0.0) || !std::isfinite(damping_ratio))
     throw InputError("damping_ratio must be a finite fraction >= 0");
   if (!(max_combinations >= 1.0)) throw InputError("max_combinations must be >= 1");
-  if (pool_size < n_records) throw InputError("pool_size must be >= n_records");
+  if (pool_size < n_records)
+    throw InputError("a set of " + std::to_string(n_records) + " records (count) is more than the " +
+                     std::to_string(pool_size) + " best-ranked candidates the search combines: ask for at most " +
+                     std::to_string(pool_size) + " records");
+  if (!(max_misfit > 0.0)) throw InputError("max_misfit must be > 0 (-)");
 }
 
 std::string to_string(SelectionResult::Status s) {
@@ -504,6 +512,21 @@ SelectionResult select_records(const std::function<double(double)>& target, cons
     chosen = greedy_search(pool, order, k, res.combinations);
     res.exhaustive = false;
   }
+  // Only the best `pool_size` records were combined and the best set leaves
+  // the band: a greedy search with swaps over every eligible record may find
+  // a set inside it (issue 30: tried before the site class is relaxed); the
+  // better of the two by the same score is kept.
+  if (!res.exhaustive && order.size() < eligible.size() && (chosen.empty() || pool.score(chosen).violation > 0.0)) {
+    std::vector<std::size_t> all(eligible.size());
+    for (std::size_t c = 0; c < all.size(); ++c) all[c] = c;
+    double more = 0.0;
+    std::vector<std::size_t> g = greedy_search(pool, all, k, more);
+    res.combinations += more;
+    if (!g.empty() && (chosen.empty() || pool.score(g).better_than(pool.score(chosen)))) {
+      chosen = std::move(g);
+      res.pool = eligible.size();
+    }
+  }
   if (chosen.empty()) {
     res.status = SelectionResult::Status::FewerThanRequested;
     res.message = "no set of " + std::to_string(k) + " of the " + std::to_string(eligible.size()) +
@@ -515,7 +538,8 @@ SelectionResult select_records(const std::function<double(double)>& target, cons
   res.mean_psa.assign(nT, 0.0);
   for (std::size_t c : chosen) {
     const std::size_t i = eligible[c];
-    res.records.push_back({i, candidates[i].name, scale[c], scale[c] * candidates[i].pga, dev[c], rank_of[c], psa[c]});
+    res.records.push_back({i, candidates[i].name, scale[c], scale[c] * candidates[i].pga, dev[c], rank_of[c],
+                           dev[c] > opts.max_misfit, psa[c]});
     for (std::size_t j = 0; j < nT; ++j) res.mean_psa[j] += psa[c][j] / double(chosen.size());
     res.mean_scale += scale[c] / double(chosen.size());
     res.max_scaled_pga = std::max(res.max_scaled_pga, scale[c] * candidates[i].pga);
@@ -559,6 +583,27 @@ bool in_list(const std::vector<std::string>& list, const std::string& v) {
 
 }  // namespace
 
+std::vector<std::vector<std::string>> site_class_ladder(const std::vector<std::string>& classes, bool relax) {
+  std::vector<std::vector<std::string>> steps;
+  if (classes.empty()) return {{}};
+  steps.push_back(classes);
+  if (!relax) return steps;
+  std::vector<std::string> wide = classes;
+  for (const std::string& c : classes) {
+    const int r = class_rank(c);
+    if (c == "E") wide.push_back("C"), wide.push_back("D");
+    if (r > 0) wide.push_back(std::string(1, "ABCD"[r - 1]));
+    if (r >= 0 && r < 3) wide.push_back(std::string(1, "ABCD"[r + 1]));
+  }
+  std::sort(wide.begin(), wide.end());
+  wide.erase(std::unique(wide.begin(), wide.end()), wide.end());
+  std::vector<std::string> first = classes;
+  std::sort(first.begin(), first.end());
+  if (wide != first) steps.push_back(wide);
+  steps.push_back({});
+  return steps;
+}
+
 CandidateInfo candidate_info(const CatalogueEntry& e) {
   CandidateInfo c;
   c.event = e.event + " " + e.date;
@@ -591,25 +636,7 @@ CatalogueFilterResult filter_catalogue(const std::vector<CatalogueEntry>& entrie
     else out.rejected.push_back({i, e.id, 0.0, why});
   }
   // Site class, relaxed in steps while too few remain.
-  std::vector<std::vector<std::string>> steps;
-  if (!f.site_classes.empty()) {
-    steps.push_back(f.site_classes);
-    if (f.relax_site_class) {
-      std::vector<std::string> wide = f.site_classes;
-      for (const std::string& c : f.site_classes) {
-        const int r = class_rank(c);
-        if (c == "E") wide.push_back("C"), wide.push_back("D");
-        if (r > 0) wide.push_back(std::string(1, "ABCD"[r - 1]));
-        if (r >= 0 && r < 3) wide.push_back(std::string(1, "ABCD"[r + 1]));
-      }
-      std::sort(wide.begin(), wide.end());
-      wide.erase(std::unique(wide.begin(), wide.end()), wide.end());
-      steps.push_back(wide);
-      steps.push_back({});
-    }
-  } else {
-    steps.push_back({});
-  }
+  const std::vector<std::vector<std::string>> steps = site_class_ladder(f.site_classes, f.relax_site_class);
   std::vector<std::size_t> kept;
   for (std::size_t s = 0; s < steps.size(); ++s) {
     kept.clear();

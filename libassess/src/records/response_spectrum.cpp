@@ -143,6 +143,83 @@ SdofHistory sdof_response(const Record& record, double T, double damping_ratio) 
 
 namespace {
 
+/// Largest |s^3 - 2 s^2 + s| and |s^3 - s^2| on [0, 1]: 4/27 (at s = 1/3, 2/3),
+/// the slope weights of the cubic Hermite interpolant (hermite_peak).
+constexpr double hermite_slope_bound = 4.0 / 27.0;
+/// Relative margin on that bound for the rounding of hermite_peak's sums
+/// (a few ulps): a peak within it is computed, never skipped.
+constexpr double hermite_bound_margin = 1.0 + 1e-9;
+
+/// Sub-steps per record step at period T > 0: h = dt/m <= T/min_steps_per_period.
+int substeps(double dt, double T, const ResponseOptions& opts) {
+  const double m_real = std::ceil(dt * opts.min_steps_per_period / T);
+  return static_cast<int>(std::max(1.0, m_real));
+}
+
+/// The ordinates at L periods T[0..L-1] > 0 that share the same number of
+/// sub-steps m, integrated side by side (lock-step): each lane is the
+/// recurrence of one period, with exactly the arithmetic of a single period,
+/// so the results are those of one period at a time, bit for bit; the lanes
+/// only let the processor overlap L independent chains of dependent
+/// multiplications (the recurrence is latency-bound, §1 of
+/// docs/theory/record-selection.md).
+template <int L>
+void ordinates_lanes(const Record& record, const double* T, int m, const ResponseOptions& opts,
+                     SpectralOrdinates* out) {
+  const double xi = opts.damping_ratio;
+  const double h = record.dt / m;
+  double auu[L], auv[L], aup0[L], aup1[L], avu[L], avv[L], avp0[L], avp1[L], w[L], w2[L], cv[L];
+  double u[L], v[L], sd[L], sv[L], sa[L];
+  for (int l = 0; l < L; ++l) {
+    const SdofRecurrence c = sdof_recurrence(T[l], xi, h);
+    auu[l] = c.a_uu, auv[l] = c.a_uv, aup0[l] = c.a_up0, aup1[l] = c.a_up1;
+    avu[l] = c.a_vu, avv[l] = c.a_vv, avp0[l] = c.a_vp0, avp1[l] = c.a_vp1;
+    w[l] = 2.0 * units::pi / T[l];
+    w2[l] = w[l] * w[l];
+    cv[l] = 2.0 * xi * w[l];
+    u[l] = v[l] = sd[l] = sv[l] = sa[l] = 0.0;
+  }
+  const std::size_t n = record.size();
+  const double* acc = record.acc.data();
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    const double pa = -acc[i], dp = (acc[i] - acc[i + 1]) / m;
+    for (int k = 0; k < m; ++k) {
+      const double p0 = pa + k * dp, p1 = pa + (k + 1) * dp;
+      double u1[L], v1[L];
+      for (int l = 0; l < L; ++l) {
+        u1[l] = auu[l] * u[l] + auv[l] * v[l] + aup0[l] * p0 + aup1[l] * p1;
+        v1[l] = avu[l] * u[l] + avv[l] * v[l] + avp0[l] * p0 + avp1[l] * p1;
+      }
+      for (int l = 0; l < L; ++l) {
+        sd[l] = std::max(sd[l], std::fabs(u1[l]));
+        sv[l] = std::max(sv[l], std::fabs(v1[l]));
+        sa[l] = std::max(sa[l], std::fabs(cv[l] * v1[l] + w2[l] * u1[l]));
+      }
+      // A turning point of u inside the sub-step: its peak on the cubic Hermite
+      // interpolant, computed only when it can exceed sd. The interpolant is
+      // bounded by max(|u0|, |u1|) + (4/27) h (|v0| + |v1|) (the position
+      // weights are a convex pair; each slope weight is at most 4/27 in
+      // magnitude on [0, 1]), so a skipped peak could not have changed sd:
+      // the ordinates are those of computing every peak, bit for bit.
+      for (int l = 0; l < L; ++l)
+        if (((v[l] > 0.0 && v1[l] < 0.0) || (v[l] < 0.0 && v1[l] > 0.0)) &&
+            (std::max(std::fabs(u[l]), std::fabs(u1[l])) + hermite_slope_bound * h * (std::fabs(v[l]) + std::fabs(v1[l]))) *
+                    hermite_bound_margin >
+                sd[l])
+          sd[l] = std::max(sd[l], hermite_peak(u[l], v[l], u1[l], v1[l], h));
+      for (int l = 0; l < L; ++l) u[l] = u1[l], v[l] = v1[l];
+    }
+  }
+  for (int l = 0; l < L; ++l) {
+    out[l].T = T[l];
+    out[l].SD = sd[l];
+    out[l].SV = sv[l];
+    out[l].PSA = w2[l] * sd[l];
+    out[l].PSV = w[l] * sd[l];
+    out[l].SA = sa[l];
+  }
+}
+
 /// spectral_ordinates() for an already validated record and options.
 SpectralOrdinates ordinates_of(const Record& record, double T, const ResponseOptions& opts) {
   check_period(T);
@@ -152,36 +229,7 @@ SpectralOrdinates ordinates_of(const Record& record, double T, const ResponseOpt
     out.PSA = out.SA = record.pga();
     return out;
   }
-  const double xi = opts.damping_ratio;
-  const double w = 2.0 * units::pi / T;
-  // Sub-steps m per record step so that h = dt/m <= T/min_steps_per_period.
-  const double m_real = std::ceil(record.dt * opts.min_steps_per_period / T);
-  const int m = static_cast<int>(std::max(1.0, m_real));
-  const double h = record.dt / m;
-  const SdofRecurrence c = sdof_recurrence(T, xi, h);
-
-  double u = 0.0, v = 0.0, sd = 0.0, sv = 0.0, sa = 0.0;
-  const std::size_t n = record.size();
-  for (std::size_t i = 0; i + 1 < n; ++i) {
-    const double pa = -record.acc[i], dp = (record.acc[i] - record.acc[i + 1]) / m;
-    for (int k = 0; k < m; ++k) {
-      const double p0 = pa + k * dp, p1 = pa + (k + 1) * dp;
-      const double u1 = c.a_uu * u + c.a_uv * v + c.a_up0 * p0 + c.a_up1 * p1;
-      const double v1 = c.a_vu * u + c.a_vv * v + c.a_vp0 * p0 + c.a_vp1 * p1;
-      sd = std::max(sd, std::fabs(u1));
-      if ((v > 0.0 && v1 < 0.0) || (v < 0.0 && v1 > 0.0))
-        sd = std::max(sd, hermite_peak(u, v, u1, v1, h));
-      sv = std::max(sv, std::fabs(v1));
-      sa = std::max(sa, std::fabs(2.0 * xi * w * v1 + w * w * u1));
-      u = u1;
-      v = v1;
-    }
-  }
-  out.SD = sd;
-  out.SV = sv;
-  out.PSA = w * w * sd;
-  out.PSV = w * sd;
-  out.SA = sa;
+  ordinates_lanes<1>(record, &T, substeps(record.dt, T, opts), opts, &out);
   return out;
 }
 
@@ -199,8 +247,30 @@ ResponseSpectrum response_spectrum(const Record& record, const std::vector<doubl
   check_record(record);
   ResponseSpectrum rs;
   rs.damping_ratio = opts.damping_ratio;
-  rs.ordinates.reserve(periods.size());
-  for (double T : periods) rs.ordinates.push_back(ordinates_of(record, T, opts));
+  rs.ordinates.resize(periods.size());
+  // Periods with the same number of sub-steps go through the recurrence four
+  // at a time (ordinates_lanes: the same numbers as one at a time).
+  std::vector<std::pair<int, std::size_t>> order;  // (sub-steps, position)
+  for (std::size_t j = 0; j < periods.size(); ++j) {
+    check_period(periods[j]);
+    if (periods[j] == 0.0) rs.ordinates[j] = ordinates_of(record, 0.0, opts);
+    else order.emplace_back(substeps(record.dt, periods[j], opts), j);
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  constexpr int L = 4;
+  for (std::size_t g = 0; g < order.size();) {
+    std::size_t e = g;
+    while (e < order.size() && e - g < std::size_t(L) && order[e].first == order[g].first) ++e;
+    double T[L];
+    SpectralOrdinates o[L];
+    for (std::size_t k = g; k < e; ++k) T[k - g] = periods[order[k].second];
+    if (e - g == std::size_t(L)) ordinates_lanes<L>(record, T, order[g].first, opts, o);
+    else
+      for (std::size_t k = g; k < e; ++k) ordinates_lanes<1>(record, &T[k - g], order[g].first, opts, &o[k - g]);
+    for (std::size_t k = g; k < e; ++k) rs.ordinates[order[k].second] = o[k - g];
+    g = e;
+  }
   return rs;
 }
 

@@ -62,6 +62,50 @@ SelectionCandidates::SelectionCandidates(const std::vector<Record>& records, con
   });
 }
 
+SelectionCandidates::SelectionCandidates(const LibrarySpectra& spectra, const std::vector<std::size_t>& rows,
+                                         const std::vector<std::string>& names, const std::vector<CandidateInfo>& info,
+                                         const SelectionOptions& opts) {
+  opts.validate();
+  if (rows.empty()) throw InputError("select_records: no candidate records");
+  if (names.size() != rows.size() || info.size() != rows.size())
+    throw InputError("select_records: one name and one CandidateInfo per candidate");
+  const long d = spectra.find_damping(opts.damping_ratio);
+  if (d < 0) throw InputError("select_records: the precomputed spectra have no damping " + num(opts.damping_ratio));
+  if (opts.range.T_max > spectra.periods.back())
+    throw InputError("select_records: the precomputed spectra end at " + num(spectra.periods.back()) + " s < T_max = " +
+                     num(opts.range.T_max) + " s");
+  range_ = opts.range;
+  n_periods_ = opts.n_periods;
+  damping_ratio_ = opts.damping_ratio;
+  interpolated_ = true;
+  periods_ = log_spaced_periods(range_.T_min, range_.T_max, n_periods_);
+  candidates_.resize(rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (rows[i] >= spectra.ids.size()) throw InputError("select_records: no precomputed spectrum row " + std::to_string(rows[i]));
+    Candidate& c = candidates_[i];
+    const double* row = spectra.row(rows[i], std::size_t(d));
+    c.name = names[i];
+    c.pga = row[0];  // T = 0: the rigid oscillator, PSA = PGA
+    c.info = info[i];
+    c.usable = !(info[i].max_usable_period_s < range_.T_max);
+    if (!c.usable) continue;
+    c.psa.resize(periods_.size());
+    for (std::size_t j = 0; j < periods_.size(); ++j) c.psa[j] = spectra.interpolate(row, periods_[j]);
+  }
+}
+
+SelectionCandidates SelectionCandidates::subset(const std::vector<std::size_t>& which) const {
+  SelectionCandidates out;
+  out.range_ = range_;
+  out.n_periods_ = n_periods_;
+  out.damping_ratio_ = damping_ratio_;
+  out.interpolated_ = interpolated_;
+  out.periods_ = periods_;
+  out.candidates_.reserve(which.size());
+  for (std::size_t i : which) out.candidates_.push_back(candidates_.at(i));
+  return out;
+}
+
 void SelectionCandidates::check_compatible(const SelectionOptions& opts) const {
   if (opts.range.T_min != range_.T_min || opts.range.T_max != range_.T_max || opts.n_periods != n_periods_ ||
       opts.damping_ratio != damping_ratio_)

@@ -6,6 +6,7 @@
 #include "assess/report/tie_report.hpp"
 
 #include "report/report_heading.hpp"
+#include "report/number_text.hpp"
 #include "report/text_format.hpp"
 
 #include <cmath>
@@ -17,10 +18,17 @@ namespace {
 
 nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
+// A number of the terminal tables: "∞" for an unbounded one (a collapse's D/C, an ag never reached), "-" undefined.
 std::string fx(double v, int prec) {
   if (std::isnan(v)) return "-";
-  if (!std::isfinite(v)) return v > 0 ? "inf" : "-inf";
+  if (!std::isfinite(v)) return v > 0 ? "∞" : "-∞";
   return format("%.*f", prec, v);
+}
+
+// TR_C/TR_D: a return period extrapolated beyond the grid's 30-2475 years is a bound, never a number (issue 28).
+std::string tr_ratio(const SafetyIndex& s) {
+  if (!s.TR_extrapolated) return fx(s.TR_ratio, 2);
+  return s.TR_capacity > 2475.0 ? ">" + fx(2475.0 / s.TR_demand, 1) : "<" + fx(30.0 / s.TR_demand, 2);
 }
 
 std::string rstrip(std::string s) {
@@ -108,8 +116,14 @@ nlohmann::json safety_indices_json(const std::vector<SafetyIndex>& indices) {
     j["code"] = s.code;
     j["approach"] = s.approach;
     j["dc"] = num(s.dc);
-    j["satisfied"] = s.satisfied;
+    // No failing check but some without a verdict: no verdict (issue 28).
+    j["satisfied"] = s.failing == 0 && s.no_verdict > 0 ? nlohmann::json(nullptr) : nlohmann::json(s.satisfied);
     j["checks"] = s.checks;
+    if (!s.dc_candidate.empty()) {  // the candidate whose check gives the D/C, and its alpha0 and a0* (issue 28)
+      j["dc_candidate"] = s.dc_candidate;
+      j["dc_alpha0"] = num(s.dc_alpha0);
+      j["dc_a0_star"] = num(s.dc_a0_star);
+    }
     j["failing"] = s.failing;
     j["no_verdict"] = s.no_verdict;
     j["defined"] = s.defined;
@@ -221,6 +235,21 @@ nlohmann::json building_json(const BuildingAssessment& b) {
     gv.push_back(x);
   }
   j["governing"] = gv;
+  // The building's verdict (issue 28): every mechanism by its adopted method.
+  const BuildingVerdict& bv = b.verdict;
+  nlohmann::json vj;
+  vj["satisfied"] = bv.satisfied;
+  vj["mechanisms"] = bv.mechanisms;
+  nlohmann::json failing = nlohmann::json::array(), undecided = nlohmann::json::array();
+  for (int i : bv.failing) failing.push_back(bc.mechanisms[std::size_t(i)].id);
+  for (int i : bv.undecided) undecided.push_back(bc.mechanisms[std::size_t(i)].id);
+  vj["failing"] = failing;
+  vj["undecided"] = undecided;
+  vj["zeta_E"] = num(bv.zeta);
+  vj["zeta_E_mechanism"] = bv.zeta_mechanism >= 0 ? nlohmann::json(bc.mechanisms[std::size_t(bv.zeta_mechanism)].id) : nlohmann::json(nullptr);
+  vj["max_dc"] = num(bv.max_dc);
+  vj["max_dc_mechanism"] = bv.dc_mechanism >= 0 ? nlohmann::json(bc.mechanisms[std::size_t(bv.dc_mechanism)].id) : nlohmann::json(nullptr);
+  j["verdict"] = vj;
   // The building's index before and after the ties (docs/theory/building.md §8).
   const BuildingTieIndex& ti = b.tie_index;
   nlohmann::json tj;
@@ -291,6 +320,20 @@ std::string building_text(const BuildingAssessment& b, TextWidth width) {
               r.a.verdict.adopted + ", D/C " + fx(c->max_dc, 3) + ")";
     o += wide ? line + "\n" : wrap(line, 120);
   }
+  // The building's verdict in one sentence (issue 28): every mechanism by its adopted method.
+  {
+    const BuildingVerdict& v = b.verdict;
+    std::string failing;
+    for (int i : v.failing) failing += (failing.empty() ? "" : ", ") + bc.mechanisms[std::size_t(i)].id;
+    std::string line = "\nbuilding: " + std::string(v.satisfied ? "SATISFIED" : "NOT SATISFIED") + ": " +
+                       std::to_string(v.mechanisms - int(v.failing.size()) - int(v.undecided.size())) + " of " +
+                       std::to_string(v.mechanisms) + " mechanisms satisfy their adopted method" +
+                       (failing.empty() ? "" : "; not satisfied: " + failing);
+    if (v.zeta_mechanism >= 0)
+      line += "; zetaE,building = " + fx(v.zeta, 3) + " (" + bc.mechanisms[std::size_t(v.zeta_mechanism)].id +
+              ", the smallest zetaE of the adopted approaches)";
+    o += wide ? line + "\n" : wrap(line, 120);
+  }
   const std::size_t name_w = 0;
   for (const std::string& code : b.codes) {
     const bool y18 = code == "NTC2018";
@@ -302,8 +345,10 @@ std::string building_text(const BuildingAssessment& b, TextWidth width) {
     o += rstrip(head) + "\n";
     std::string units = format("%-4s ", "") + pad("", name_w) +
                         format(" %7s %7s | %-20s | %-20s", "-", "m/s2", "linear (strength)", "non-linear (displ.)");
+    // (alpha0, a0*: of the linear D/C's candidate)
     if (y18) units += format(" | %-11s", "dynamic");
     o += rstrip(units) + "\n";
+    std::vector<std::string> others;
     for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
       const BuildingMechanism& m = bc.mechanisms[i];
       const BuildingMechanismResult& r = b.results[i];
@@ -313,21 +358,31 @@ std::string building_text(const BuildingAssessment& b, TextWidth width) {
         const BuildingGoverning* g = b.governing_of(code, approach);
         const std::string star = g && g->mechanism == int(i) ? "*" : " ";
         if (!s || !s->has_checks) return format(" %6s %6s %7s", "-", "-", "-");
-        return format(" %6s %6s%s%7s", fx(s->dc, 3), s->defined ? fx(s->zeta, 3) : "n/a", star,
-                      s->defined ? fx(s->TR_ratio, 2) : "n/a");
+        return " " + detail::pad(fx(s->dc, 3), 6) + " " + detail::pad(s->defined ? fx(s->zeta, 3) : "-", 6) + star +
+               detail::pad(s->defined ? tr_ratio(*s) : "-", 7);
       };
+      // alpha0 and a0* of the candidate whose check gives the linear D/C beside them (issue 28); the
+      // non-linear D/C's candidate named under the table when it is another one.
+      const SafetyIndex* lin = r.index(code, "strength");
+      const SafetyIndex* nl = r.index(code, "displacement");
+      const bool own = lin && !lin->dc_candidate.empty();
       std::string line = format("%-4s ", m.id) + pad("", name_w) +
-                         format(" %7.4f %7.4f |", gc.result.alpha0, gc.result.a0_star) + cell("strength") + " |" +
-                         cell("displacement");
+                         format(" %7.4f %7.4f |", own ? lin->dc_alpha0 : gc.result.alpha0,
+                                own ? lin->dc_a0_star : gc.result.a0_star) +
+                         cell("strength") + " |" + cell("displacement");
+      if (own && nl && !nl->dc_candidate.empty() && nl->dc_candidate != lin->dc_candidate)
+        others.push_back(m.id + ": the non-linear D/C is of " + nl->dc_candidate + " (alpha0 " + fx(nl->dc_alpha0, 4) +
+                         ", a0* " + fx(nl->dc_a0_star, 4) + " m/s2); the linear one of " + lin->dc_candidate);
       if (y18) {
         const SafetyIndex* s = r.index(code, "dynamic");
         const BuildingGoverning* g = b.governing_of(code, "dynamic");
         const std::string star = g && g->mechanism == int(i) ? "*" : " ";
-        line += " |" + (s ? format(" %6s%s", fx(s->dc, 3), star) : format(" %6s ", "-")) +
+        line += " |" + (s ? " " + detail::pad(fx(s->dc, 3), 6) + star : format(" %6s ", "-")) +
                 format(" %-6s", record_set_text(b, m));
       }
       o += rstrip(line) + "\n";
     }
+    for (const std::string& x : others) o += wide ? "  " + x + "\n" : wrap("  " + x, 120);
   }
   o += "\ngoverning mechanisms\n";
   for (const BuildingGoverning& g : b.governing) {
@@ -337,8 +392,9 @@ std::string building_text(const BuildingAssessment& b, TextWidth width) {
                        m.name;
     if (s && s->defined)
       line += ", zetaE = " + fx(s->zeta, 3) + " (PGA_C " + fx(s->ag_capacity_g, 4) + " g / PGA_D " +
-              fx(s->ag_demand_g, 4) + " g, " + s->limit_state + "), TR_C = " + fx(s->TR_capacity, 0) + " / TR_D = " +
-              fx(s->TR_demand, 0) + " years" + (s->TR_extrapolated ? " (extrapolated)" : "");
+              fx(s->ag_demand_g, 4) + " g, " + s->limit_state + "), TR_C = " +
+              (s->TR_extrapolated ? (s->TR_capacity > 2475.0 ? "> 2475" : "< 30") : fx(s->TR_capacity, 0)) +
+              " / TR_D = " + fx(s->TR_demand, 0) + " years" + (s->TR_extrapolated ? " (beyond the grid: a bound)" : "");
     else
       line += ", D/C = " + fx(g.dc, 3) + " (no zetaE: no PGA capacity)";
     line += "; " + std::to_string(g.satisfied) + " of " + std::to_string(g.assessed) + " satisfied, " +

@@ -1,6 +1,7 @@
 // facade_report.cpp: text, JSON and HTML reports of a façade assessment.
 #include "assess/report/facade_report.hpp"
 
+#include "report/number_text.hpp"
 #include "report/text_format.hpp"
 
 #include "assess/hazard/comuni.hpp"
@@ -15,6 +16,7 @@ namespace assess {
 namespace {
 
 constexpr double g = units::g;
+using detail::number_text;
 
 const CandidateResult& governing(const FacadeAssessment& a) {
   return a.kinematic.candidates[a.kinematic.governing];
@@ -24,8 +26,23 @@ std::string record_label(const FacadeAssessment& a, const DynamicRun& r) {
   return a.records[r.record].name + (r.reversed ? " (reversed)" : "");
 }
 
-const char* dyn_verdict(const RestitutionSummary& s) {
+// JSON has no infinity: an unbounded or undefined figure is null (its meaning beside it).
+nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+std::string dyn_verdict(const RestitutionSummary& s) {
   return s.no_verdict ? "no verdict" : verdict(s.slv_satisfied);
+}
+
+// Issue 28: beside a D/C of +inf (a collapse or a failed analysis), the
+// figure over the records that neither collapsed nor failed, never the verdict.
+std::string survivors_text(const RestitutionSummary& s) {
+  if (std::isfinite(s.dc_slv)) return "";
+  std::string t = s.collapsed > 0 ? format("; collapse in %d of %d analyses", s.collapsed, s.analyses)
+                                  : format("; %d of %d analyses failed", s.failed, s.analyses);
+  if (std::isfinite(s.dc_survivors))
+    t += format(" (the %d records without a collapse: d* %.4f m, D/C %.3f)", s.records_survived, s.d_demand_survivors,
+                s.dc_survivors);
+  return t;
 }
 
 }  // namespace
@@ -132,22 +149,69 @@ std::string facade_text(const FacadeAssessment& a, TextWidth width) {
                   10) +
              "\n";
         for (const std::string& w : a.selection_warnings) o += para("  warning: " + w, 11) + "\n";
+        o += para("  range: " + a.selection_range_note, 4) + "\n";
+        if (!a.selection_shared_note.empty()) o += para("  candidates: " + a.selection_shared_note, 4) + "\n";
+        for (const std::string& st : a.selection_steps) o += para("  site classes tried: " + st, 4) + "\n";
+        o += para(format("  rules: site class first (relaxed only without a compatible set); near-fault and pulse-like "
+                         "records %s (%zu left out; distance < %.0f km or pulse-like); misfit flagged above %.2f; "
+                         "candidates' spectra %s",
+                         a.selection_include_near_fault ? "admitted" : "left out", a.selection_near_fault_excluded,
+                         a.selection_near_fault_km, a.selection_max_misfit,
+                         a.selection_spectra == "precomputed" ? "precomputed (spectra.bin, log-log interpolation)"
+                                                              : "integrated"),
+                  4) +
+             "\n";
       }
       if (a.compatibility.computed && !a.selection) o += "records listed in the case: " + a.compatibility.message + "\n";
       for (const std::string& f : a.record_failures) o += para("  record skipped: " + f, 4) + "\n";
       const int rw = wide ? 34 : 32;  // record column
-      // Why each record was chosen: scale, scaled PGA, deviation from the target, rank, Mw, site class,
-      // distance and its kind, seconds integrated; the event/station line below (120 columns).
-      o += format("  %-*s %7s %8s %6s %4s %-5s %2s %7s %4s %8s\n", rw, "record", "scale", "PGA (g)", "dev", "rank", "Mw",
-                  "cl", "R (km)", "kind", "used (s)");
+      // Each record: scale, scaled PGA, misfit to the target and its rank, Mw, distance and its kind,
+      // site class, seconds integrated; below it the event, date, station, country, Vs30 with the class
+      // basis, the usable period and the flags (120 columns). "—" where the catalogue says nothing.
+      // Padding by display width (a dash is one column, three bytes).
+      auto pad = [](const std::string& t, int width, bool left) {
+        int cols = 0;
+        for (unsigned char ch : t) cols += (ch & 0xC0) != 0x80;
+        const std::string fill(std::size_t(std::max(0, width - cols)), ' ');
+        return left ? t + fill : fill + t;
+      };
+      const std::string dash = "\u2014";
+      auto cell = [&](double v, int width, int prec) {
+        return pad(std::isfinite(v) ? format("%.*f", prec, v) : dash, width, false);
+      };
+      auto or_dash = [&](const std::string& t) { return t.empty() ? dash : t; };
+      o += format("  %-*s %7s %8s %6s %4s %5s %7s %-4s %2s %8s\n", rw, "record", "scale", "PGA (g)", "misfit", "rank",
+                  "Mw", "R (km)", "kind", "cl", "used (s)");
       for (const RecordUsed& r : a.records) {
-        o += format("  %-*s %7.3f %8.4f %6.3f %4d %5.2f %2s %7.1f %4s %8.1f\n", rw, r.name.c_str(), r.scale, r.pga / g,
-                    r.deviation, r.rank, r.Mw, r.site_class.c_str(), r.distance_km, r.distance_kind.c_str(),
-                    r.integrated_s);
-        o += para(format("    %s / %s, %s (+ %s)", r.event.c_str(), r.station.c_str(), r.component.c_str(),
-                         r.positive_direction.c_str()),
-                  6) +
-             "\n";
+        o += format("  %-*s %7.3f %8.4f %s %s %s %s %s %s %8.1f\n", rw, r.name.c_str(), r.scale, r.pga / g,
+                    cell(r.deviation, 6, 3).c_str(), pad(r.rank > 0 ? std::to_string(r.rank) : dash, 4, false).c_str(),
+                    cell(r.Mw, 5, 2).c_str(), cell(r.distance_km, 7, 1).c_str(), pad(or_dash(r.distance_kind), 4, true).c_str(),
+                    pad(or_dash(r.site_class), 2, false).c_str(), r.integrated_s);
+        if (r.in_catalogue) {
+          o += para(format("    %s, %s / %s%s, %s (+ %s); %s", or_dash(r.event).c_str(), or_dash(r.date).c_str(),
+                           or_dash(r.station).c_str(), r.station_code.empty() ? "" : (" (" + r.station_code + ")").c_str(),
+                           or_dash(r.component).c_str(), or_dash(r.positive_direction).c_str(),
+                           or_dash(r.country).c_str()),
+                    6) +
+               "\n";
+          o += para("    Vs30 " + (std::isfinite(r.vs30_m_s) ? format("%.0f m/s", r.vs30_m_s) : dash) + ", class " +
+                        or_dash(r.site_class) +
+                        (r.site_class_basis == "stated" ? " (stated by the source)"
+                         : r.site_class_basis == "Vs30" ? " (from Vs30, NTC 2018 Tab. 3.2.II)"
+                                                        : "") +
+                        "; usable to " + (std::isfinite(r.usable_period_s) ? format("%.2f s", r.usable_period_s)
+                                                                           : dash + " (not given by the source)") +
+                        "; pulse: " + (r.pulse.empty() ? dash + " (not classified)" : r.pulse),
+                    6) +
+               "\n";
+        } else {
+          // A listed file outside the library: what its header says, if anything.
+          std::string what = r.file;
+          if (!r.event.empty() || !r.station.empty())
+            what += ": " + or_dash(r.event) + " / " + or_dash(r.station) + ", " + or_dash(r.component);
+          o += para("    " + what, 6) + "\n";
+        }
+        for (const std::string& f : r.flags) o += para("    FLAG: " + f, 10) + "\n";
       }
       o += para(format("  each record integrated to its last sample, then the free motion until rest, until the "
                        "energy after an impact can no longer reach the peak rotation, or for at most %.0f s "
@@ -185,19 +249,22 @@ std::string facade_text(const FacadeAssessment& a, TextWidth width) {
                     "mean D/C", "max D/C", "mean th/u", "mean d* (m)", "max d* (m)", "rule (§7.3.5)", "D/C d*",
                     "verdict (C8.7.1.2.1.9)");
         for (const RestitutionSummary& s : a.summaries)
-          o += format("  %-18s %6d %-13s %10.4f %10.4f %10.4f %12.4f %12.4f %-17s %8.3f  %s\n",
+          o += format("  %-18s %6d %-13s %s %10.4f %10.4f %12.4f %12.4f %-17s %s  %s\n",
                       describe(a.dynamic->restitutions[s.restitution]).c_str(), s.analyses,
-                      format("%d of %d", s.overturned, s.analyses).c_str(), s.mean_dc, s.max_dc, s.mean_theta_ratio,
-                      s.mean_d_star, s.max_d_star, s.rule.c_str(), s.dc_slv, dyn_verdict(s));
+                      format("%d of %d", s.overturned, s.analyses).c_str(), number_text(s.energy_dc, "%.4f", 10),
+                      s.max_dc, s.mean_theta_ratio, s.mean_d_star, s.max_d_star, s.rule.c_str(),
+                      number_text(s.dc_slv, "%.3f", 8), dyn_verdict(s) + survivors_text(s));
       } else {  // 120 columns: the verdict on its own line under each row, never cut mid-phrase
         o += format("  %-12s %4s %-10s %8s %8s %9s %9s %9s %-14s %6s\n", "restitution", "runs", "overturned",
                     "mean D/C", "max D/C", "mean th/u", "mean d*", "max d*", "rule (§7.3.5)", "D/C d*");
         o += format("  %-12s %s\n", "", "verdict (C8.7.1.2.1.9)");
         for (const RestitutionSummary& s : a.summaries)
-          o += format("  %-12s %4d %-10s %8.4f %8.4f %9.4f %9.4f %9.4f %-14s %6.3f\n%15s%s\n",
+          o += format("  %-12s %4d %-10s %s %8.4f %9.4f %9.4f %9.4f %-14s %s\n",
                       describe(a.dynamic->restitutions[s.restitution]).c_str(), s.analyses,
-                      format("%d of %d", s.overturned, s.analyses).c_str(), s.mean_dc, s.max_dc, s.mean_theta_ratio,
-                      s.mean_d_star, s.max_d_star, s.rule.c_str(), s.dc_slv, "", dyn_verdict(s));
+                      format("%d of %d", s.overturned, s.analyses).c_str(), number_text(s.energy_dc, "%.4f", 8),
+                      s.max_dc, s.mean_theta_ratio, s.mean_d_star, s.max_d_star, s.rule.c_str(),
+                      number_text(s.dc_slv, "%.3f", 6)) +
+               wrap_text(std::string(15, ' ') + dyn_verdict(s) + survivors_text(s), 17) + "\n";
       }
     }
   }
@@ -223,9 +290,12 @@ std::string facade_text(const FacadeAssessment& a, TextWidth width) {
       for (const RestitutionSummary& x : s.summaries) {
         int collapses = 0;
         for (const DynamicRun& r : s.runs) collapses += r.restitution == x.restitution && r.collapse ? 1 : 0;
-        o += format("    %-14s %9s %10.4f %10.4f %7.3f  %s\n", describe(s.dynamic->restitutions[x.restitution]).c_str(),
-                    format("%d of %d", collapses, x.analyses).c_str(), x.d_demand,
-                    s.kinematic.candidates.front().result.d_SLV, x.dc_slv, dyn_verdict(x));
+        o += para(format("    %-14s %9s %s %10.4f %s  %s", describe(s.dynamic->restitutions[x.restitution]).c_str(),
+                         format("%d of %d", collapses, x.analyses).c_str(), number_text(x.d_demand, "%.4f", 10),
+                         s.kinematic.candidates.front().result.d_SLV, number_text(x.dc_slv, "%.3f", 7),
+                         dyn_verdict(x) + survivors_text(x)),
+                  58) +
+             "\n";
       }
       std::string recs;
       for (const RecordUsed& r : s.records) recs += (recs.empty() ? "" : ", ") + r.name + format(" (%.2f)", r.scale);
@@ -320,7 +390,15 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
                         {"distance_km", std::isfinite(r.distance_km) ? nlohmann::json(r.distance_km) : nlohmann::json(nullptr)},
                         {"distance_kind", r.distance_kind}, {"site_class", r.site_class},
                         {"deviation", std::isfinite(r.deviation) ? nlohmann::json(r.deviation) : nlohmann::json(nullptr)},
-                        {"rank", r.rank}, {"duration_s", r.duration_s}, {"integrated_s", r.integrated_s}});
+                        {"rank", r.rank}, {"duration_s", r.duration_s}, {"integrated_s", r.integrated_s},
+                        {"in_catalogue", r.in_catalogue}, {"date", r.date}, {"country", r.country},
+                        {"station_code", r.station_code},
+                        {"vs30_m_s", std::isfinite(r.vs30_m_s) ? nlohmann::json(r.vs30_m_s) : nlohmann::json(nullptr)},
+                        {"site_class_basis", r.site_class_basis}, {"vs30_class", r.vs30_class},
+                        {"usable_period_s", std::isfinite(r.usable_period_s) ? nlohmann::json(r.usable_period_s)
+                                                                             : nlohmann::json(nullptr)},
+                        {"pulse", r.pulse}, {"near_fault", r.near_fault}, {"misfit_flag", r.misfit_flag},
+                        {"flags", r.flags}});
       d["records"] = recs;
       d["record_failures"] = a.record_failures;
       if (a.compatibility.computed)
@@ -345,7 +423,17 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
                           {"eligible", a.selection->eligible},
                           {"combinations", a.selection->combinations},
                           {"site_classes", a.selection_site_classes},
+                          {"site_class_steps", a.selection_steps},
                           {"warnings", a.selection_warnings},
+                          {"range_note", a.selection_range_note},
+                          {"shared_note", a.selection_shared_note},
+                          {"spectra", a.selection_spectra},
+                          {"max_scale", a.selection_max_scale},
+                          {"max_mean_scale", a.selection_max_mean_scale},
+                          {"max_misfit", a.selection_max_misfit},
+                          {"include_near_fault", a.selection_include_near_fault},
+                          {"near_fault_km", a.selection_near_fault_km},
+                          {"near_fault_excluded", a.selection_near_fault_excluded},
                           {"mean_scale", a.selection->mean_scale},
                           {"max_scaled_pga_g", a.selection->max_scaled_pga / g},
                           {"max_pga_ratio", a.selection_max_pga_ratio},
@@ -419,8 +507,14 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
                         {"max_d_star", s.max_d_star},
                         {"records", s.records},
                         {"rule", s.rule},
-                        {"d_demand", s.d_demand},
-                        {"dc_slv", s.dc_slv},
+                        {"d_demand", finite_or_null(s.d_demand)},
+                        {"dc_slv", finite_or_null(s.dc_slv)},
+                        {"collapsed", s.collapsed},
+                        {"energy_dc", finite_or_null(s.energy_dc)},
+                        {"mean_dc_survivors", finite_or_null(s.mean_dc_survivors)},
+                        {"records_survived", s.records_survived},
+                        {"d_demand_survivors", finite_or_null(s.d_demand_survivors)},
+                        {"dc_survivors", finite_or_null(s.dc_survivors)},
                         {"any_collapse", s.any_collapse},
                         {"no_verdict", s.no_verdict},
                         {"slv_satisfied", s.no_verdict ? nlohmann::json(nullptr) : nlohmann::json(s.slv_satisfied)}});

@@ -3,6 +3,7 @@
 #include "assess/report/kinematic_report.hpp"
 
 #include "assess/support/units.hpp"
+#include "report/number_text.hpp"
 #include "report/text_format.hpp"
 
 #include <cmath>
@@ -16,6 +17,7 @@ const char* verdict(bool satisfied) {
 
 namespace {
 constexpr double g = units::g;
+using detail::number_text;
 
 }  // namespace
 
@@ -33,12 +35,42 @@ nlohmann::json to_json(const CheckRow& r) {
     j["inputs"] = in;  // every input of the demand, name with its unit (issue 24)
   }
   if (!std::isfinite(r.dc)) j["dc"] = nullptr;
+  if (!std::isfinite(r.demand)) j["demand"] = nullptr;
+  if (r.analyses > 0) {  // dynamic and energy rows (issue 28): D/C = +inf (null) with a collapse or a failed analysis
+    j["analyses"] = r.analyses;
+    j["collapsed"] = r.collapsed;
+    j["failed"] = r.failed;
+    j["dc_survivors"] = std::isfinite(r.dc_survivors) ? nlohmann::json(r.dc_survivors) : nlohmann::json(nullptr);
+    if (!std::isfinite(r.dc)) j["dc_meaning"] = r.collapsed > 0 ? "collapse" : "failed analyses";
+  }
   if (r.has_pga) {
     j["ag_capacity_g"] = std::isfinite(r.ag_capacity_g) ? nlohmann::json(r.ag_capacity_g) : nlohmann::json(nullptr);
     j["ag_demand_g"] = r.ag_demand_g;
     j["dc_pga"] = r.dc_pga;
   }
   return j;
+}
+
+// Issue 33: the rows of a mechanism's data or derivation.
+nlohmann::json quantities_json(const std::vector<MechanismQuantity>& q) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const MechanismQuantity& x : q) {
+    nlohmann::json j{{"label", x.label}, {"unit", x.unit}, {"source", x.source}};
+    j["value"] = x.unit.empty() ? nlohmann::json(nullptr) : nlohmann::json(x.value);
+    a.push_back(j);
+  }
+  return a;
+}
+
+std::string quantities_text(const std::vector<MechanismQuantity>& q, bool wide) {
+  std::string out;
+  for (const MechanismQuantity& x : q) {
+    std::string line = "  " + x.label;
+    if (!x.unit.empty()) line += " = " + format("%.6g", x.value) + (x.unit == "-" ? "" : " " + x.unit);
+    if (!x.source.empty() && x.source != "input") line += " [" + x.source + "]";
+    out += (wide ? line : wrap_text(line, 4)) + "\n";
+  }
+  return out;
 }
 
 nlohmann::json kinematic_json(const CaseFile& c, const KinematicCaseResult& out) {
@@ -71,6 +103,13 @@ nlohmann::json kinematic_json(const CaseFile& c, const KinematicCaseResult& out)
   j["a_SLC"] = r.a_SLC;
   j["T_SLC"] = r.T_SLC;
   j["curve_model"] = r.curve_model == CurveModel::Linearised ? "linearised" : "finite_displacement";
+  // Issue 33: a bound on d0* from the mechanism (null without one).
+  const MechanismCandidate& gm = c.mechanism.candidates.at(out.governing);
+  j["d0_star_bound"] = std::isfinite(r.d0_star_bound) ? nlohmann::json(r.d0_star_bound) : nlohmann::json(nullptr);
+  j["dk0_bound"] = std::isfinite(r.dk0_bound) ? nlohmann::json(r.dk0_bound) : nlohmann::json(nullptr);
+  if (std::isfinite(gm.rotation_bound)) j["d0_star_bound_reason"] = gm.rotation_bound_reason;
+  j["data"] = quantities_json(c.mechanism.data);
+  j["quantities"] = quantities_json(gm.quantities);
   nlohmann::json loads = nlohmann::json::array();
   for (const LoadWork& w : r.loads)
     loads.push_back({{"name", w.load.name}, {"type", to_string(w.load.type)}, {"x", w.load.point.x()},
@@ -92,6 +131,7 @@ nlohmann::json kinematic_json(const CaseFile& c, const KinematicCaseResult& out)
       if (gi == i) gov.push_back(code);
     cj["governing_dc"] = dc;
     cj["governing_for"] = gov;
+    cj["quantities"] = quantities_json(c.mechanism.candidates.at(i).quantities);
     if (!cr.checks.empty())
       cj["ag_capacity_min_g"] =
           std::isfinite(cr.ag_capacity_min_g) ? nlohmann::json(cr.ag_capacity_min_g) : nlohmann::json(nullptr);
@@ -198,13 +238,15 @@ std::string checks_text(const std::vector<CheckRow>& checks, TextWidth width) {
                   "demand", "capacity", "unit", "D/C", "ag,cap(g)", "ag,site(g)", "D/C ag", "verdict",
                   "demand formula / clause");
     for (const CheckRow& x : checks) {
-      char pga[64] = "";
-      if (x.has_pga) std::snprintf(pga, sizeof pga, "%10.5f %10.5f %7.3f", x.ag_capacity_g, x.ag_demand_g, x.dc_pga);
-      else std::snprintf(pga, sizeof pga, "%10s %10s %7s", "-", "-", "-");
-      out += format("  %-8s %-4s %-12s %-7s %12.6f %12.6f %-5s %7.3f %s  %-30s %s; %s%s\n", x.code.c_str(),
-                    x.limit_state.c_str(), x.kind.c_str(), x.location.c_str(), x.demand, x.capacity, x.unit.c_str(),
-                    x.dc, pga, x.no_verdict ? "no verdict" : verdict(x.satisfied), x.formula.c_str(),
-                    x.clause.c_str(), x.note.empty() ? "" : ("; " + x.note).c_str());
+      const std::string pga = x.has_pga ? number_text(x.ag_capacity_g, "%.5f", 10) + " " +
+                                              number_text(x.ag_demand_g, "%.5f", 10) + " " +
+                                              number_text(x.dc_pga, "%.3f", 7)
+                                        : format("%10s %10s %7s", "-", "-", "-");
+      out += format("  %-8s %-4s %-12s %-7s %s %s %-5s %s %s  %-30s %s; %s%s\n", x.code.c_str(),
+                    x.limit_state.c_str(), x.kind.c_str(), x.location.c_str(), number_text(x.demand, "%.6f", 12),
+                    number_text(x.capacity, "%.6f", 12), x.unit.c_str(), number_text(x.dc, "%.3f", 7), pga,
+                    x.no_verdict ? "no verdict" : verdict(x.satisfied), x.formula.c_str(), x.clause.c_str(),
+                    x.note.empty() ? "" : ("; " + x.note).c_str());
       if (!x.inputs.empty()) out += "           " + inputs_text(x) + "\n";
     }
     return out;
@@ -215,11 +257,12 @@ std::string checks_text(const std::vector<CheckRow>& checks, TextWidth width) {
                 "capacity", "unit", "D/C", "ag,cap(g)", "ag,site", "D/C ag");
   out += format("  %-8s %s\n", "", "verdict; demand formula; clause");
   for (const CheckRow& x : checks) {
-    char pga[64] = "";
-    if (x.has_pga) std::snprintf(pga, sizeof pga, "%9.5f %9.5f %7.3f", x.ag_capacity_g, x.ag_demand_g, x.dc_pga);
-    else std::snprintf(pga, sizeof pga, "%9s %9s %7s", "-", "-", "-");
-    out += format("  %-8s %-4s %-12s %-7s %10.6f %10.6f %-5s %7.3f %s\n", x.code.c_str(), x.limit_state.c_str(),
-                  x.kind.c_str(), x.location.c_str(), x.demand, x.capacity, x.unit.c_str(), x.dc, pga);
+    const std::string pga = x.has_pga ? number_text(x.ag_capacity_g, "%.5f", 9) + " " +
+                                            number_text(x.ag_demand_g, "%.5f", 9) + " " + number_text(x.dc_pga, "%.3f", 7)
+                                      : format("%9s %9s %7s", "-", "-", "-");
+    out += format("  %-8s %-4s %-12s %-7s %s %s %-5s %s %s\n", x.code.c_str(), x.limit_state.c_str(), x.kind.c_str(),
+                  x.location.c_str(), number_text(x.demand, "%.6f", 10), number_text(x.capacity, "%.6f", 10),
+                  x.unit.c_str(), number_text(x.dc, "%.3f", 7), pga);
     out += wrap_items(std::string(11, ' '),
                       split_items(std::string(x.no_verdict ? "no verdict" : verdict(x.satisfied)) + "; " + x.formula +
                                   "; " + x.clause + (x.note.empty() ? "" : "; " + x.note)),
@@ -242,6 +285,9 @@ std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res, Te
                                  gc.label.c_str(), gc.Z);
     out += (wide ? m : wrap_text(m, 11)) + "\n";
   }
+  if (!c.mechanism.data.empty()) out += "\nmechanism data:\n" + quantities_text(c.mechanism.data, wide);
+  if (!c.mechanism.candidates.at(res.governing).quantities.empty())
+    out += "\nderivation (governing candidate):\n" + quantities_text(c.mechanism.candidates.at(res.governing).quantities, wide);
   if (res.candidates.size() > 1) {
     const bool checked = !res.governing_by_code.empty();
     const std::string head = format("\ncandidates (%s searched; governing = %s):", c.mechanism.parameter_name.c_str(),
@@ -268,10 +314,10 @@ std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res, Te
       std::string gov;
       for (const auto& [code, gi] : res.governing_by_code) {
         const auto it = cr.max_dc.find(code);
-        out += format(wide ? " %11.3f" : " %8.3f", it == cr.max_dc.end() ? 0.0 : it->second);
+        out += " " + number_text(it == cr.max_dc.end() ? 0.0 : it->second, "%.3f", wide ? 11 : 8);
         if (gi == i) gov += (gov.empty() ? "" : ", ") + (wide ? code : code.substr(3));
       }
-      if (checked) out += format(wide ? " %12.5f" : " %10.5f", cr.ag_capacity_min_g);
+      if (checked) out += " " + number_text(cr.ag_capacity_min_g, "%.5f", wide ? 12 : 10);
       if (!checked && i == res.governing) gov = "smallest alpha0";
       out += gov.empty() ? "\n" : (wide ? "  <- governing (" : "  <- governing ") + gov + (wide ? ")\n" : "\n");
     }
@@ -327,6 +373,12 @@ std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res, Te
   out += format("  dk0 (alpha = 0)                        %14.6f m\n", r.dk0);
   out += format("  d*/dk          [C8A.4.5 / C8.7.1.4]    %14.6f -\n", r.d_star_per_dk);
   out += format("  d0*                                    %14.6f m\n", r.d0_star);
+  if (std::isfinite(r.d0_star_bound)) {
+    const std::string b = format("  d0* bound                              %14.6f m (dk = %.6f m): %s; du*, d_SLV, d_SLC "
+                                 "capped at 0.4, 0.4, 0.6 of it", r.d0_star_bound, r.dk0_bound,
+                                 c.mechanism.candidates.at(res.governing).rotation_bound_reason.c_str());
+    out += (wide ? b : wrap_text(b, 4)) + "\n";
+  }
   out += format("  NTC 2008: du* = %.6f m, ds* = %.6f m, as* = %.6f m/s2, Ts = %.6f s\n", r.du_star, r.ds_star,
               r.as_star, r.Ts);
   out += format("  NTC 2018: d_SLV = %.6f m, a(d_SLV) = %.6f m/s2, T_SLV = %.6f s [C8.7.1.10]\n", r.d_SLV, r.a_SLV, r.T_SLV);
@@ -371,7 +423,7 @@ nlohmann::json to_json(const Verdict& v) {
   for (const MethodVerdict& m : v.methods)
     methods.push_back({{"code", m.code},
                        {"method", m.method},
-                       {"satisfied", m.satisfied},
+                       {"satisfied", m.undecided() ? nlohmann::json(nullptr) : nlohmann::json(m.satisfied)},
                        {"checks", m.checks},
                        {"failing", m.failing},
                        {"no_verdict", m.no_verdict},
@@ -387,11 +439,7 @@ nlohmann::json to_json(const Verdict& v) {
 
 std::string verdict_word(const VerdictRow& r) {
   if (r.no_verdict) return "no verdict";
-  if (r.code == "seed") {
-    if (r.satisfied) return "<= 1, no overturning";
-    // Never "<= 1" while an analysis overturned (the note counts them).
-    return r.note.rfind("overturned in 0 ", 0) == 0 ? "> 1" : "collapse (overturned)";
-  }
+  if (r.code == "seed") return r.satisfied ? "<= 1, no overturning" : std::isinf(r.dc) ? "collapse (overturned)" : "> 1";
   return verdict(r.satisfied);
 }
 
@@ -409,7 +457,7 @@ std::string verdict_text(const Verdict& v, TextWidth width) {
     std::string tail = r.candidate.empty() ? r.clause : r.candidate + "; " + r.clause;
     if (r.failing > 0 && r.checks > 1) tail += format("; %d of %d checks fail", r.failing, r.checks);
     if (!r.note.empty()) tail += "; " + r.note;
-    const std::string dc = std::isfinite(r.dc) ? format("%8.3f", r.dc) : format("%8s", "n/a");
+    const std::string dc = number_text(r.dc, "%.3f", 8);
     const std::string cols = format("  %-8s %-15s %-4s %-7s %s  %-31s", r.code.c_str(),
                                     (r.code == "seed" ? std::string("energy (mean)") : r.approach).c_str(),
                                     r.limit_state.c_str(), r.location.c_str(), dc.c_str(), verdict_word(r).c_str());
@@ -421,17 +469,18 @@ std::string verdict_text(const Verdict& v, TextWidth width) {
               2) +
          "\n";
   for (const MethodVerdict& m : v.methods) {
-    out += format("  %-8s %-10s %s: %d of %d checks fail, largest D/C %.3f", m.code.c_str(), m.method.c_str(),
+    out += format("  %-8s %-10s %s: %d of %d checks fail, largest D/C %s", m.code.c_str(), m.method.c_str(),
                   m.satisfied ? "VERIFICATO / SATISFIED" : "NON VERIFICATO / NOT SATISFIED", m.failing, m.checks,
-                  m.max_dc);
+                  number_text(m.max_dc, "%.3f"));
     if (m.no_verdict > 0) out += format(" (%d without a verdict)", m.no_verdict);
     if (m.code != v.conclusion_code) out += " (for comparison)";
     out += "\n";
   }
   if (const MethodVerdict* c = v.conclusion())
-    out += para(format("conclusion (adopted procedure: %s, %s; case key \"method\"): %s, D/C = %.3f",
+    out += para(format("conclusion (adopted procedure: %s, %s; case key \"method\"): %s, D/C = %s",
                        c->method.c_str(), c->code.c_str(),
-                       c->satisfied ? "VERIFICATO / SATISFIED" : "NON VERIFICATO / NOT SATISFIED", c->max_dc),
+                       c->satisfied ? "VERIFICATO / SATISFIED" : "NON VERIFICATO / NOT SATISFIED",
+                       number_text(c->max_dc, "%.3f")),
                 2) +
            "\n";
   else if (!v.methods.empty())

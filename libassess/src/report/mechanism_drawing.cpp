@@ -28,29 +28,31 @@ using V2 = Eigen::Vector2d;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-std::string f1(double v) {
+// The drawing's numbers in its language: the decimal comma in Italian (issue
+// 28), set by mechanism_svg for the drawing it makes (one per thread at a time).
+thread_local bool decimal_comma = false;
+
+// A value printed in a label (the drawing's language); coordinates use f1.
+std::string number(const char* layout, double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, layout, v);
+  if (decimal_comma)
+    for (char* p = b; *p; ++p)
+      if (*p == '.') *p = ',';
+  return b;
+}
+
+std::string f1(double v) {  // an SVG coordinate: always the decimal point
   char b[32];
   std::snprintf(b, sizeof b, "%.1f", v);
   return b;
 }
 
-std::string d2(double v) {  // a dimension value: m, 2 decimals, no unit (the legend says "m")
-  char b[32];
-  std::snprintf(b, sizeof b, "%.2f", v);
-  return b;
-}
+std::string d2(double v) { return number("%.2f", v); }  // a dimension value: m, 2 decimals, no unit (the legend says "m")
 
-std::string kn(double newton) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.2f kN", newton / units::kN);
-  return b;
-}
+std::string kn(double newton) { return number("%.2f kN", newton / units::kN); }
 
-std::string m2(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.2f m", v);
-  return b;
-}
+std::string m2(double v) { return number("%.2f m", v); }
 
 // Strings of the drawing only (kept here, both languages).
 std::string tr(Lang lang, const char* it, const char* en) { return lang == Lang::it ? it : en; }
@@ -330,9 +332,243 @@ struct Geometry {
 
 long mm(double v) { return std::lround(v * 1000.0); }
 
+// ------------------------------------------------------------------ plan
+// Issue 33: a chain drawn in plan (horizontal flexure): the strip along the
+// page (u to the right), outward up; the transverse walls at the ends, the
+// vertical hinges, the arch's thrust line and its thrust at both supports,
+// the ring beam's force, the control point, the seismic action outward.
+// Dimensions: the stretches between the hinges and openings (kind "level"),
+// the span (kind "total"), the thickness (kind "thickness").
+std::string plan_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
+  const std::vector<Block>& blocks = chain.blocks();
+  double xmin = kInf, xmax = -kInf, umin = kInf, umax = -kInf;
+  for (const Block& b : blocks)
+    for (const auto& p : b.polygon) {
+      xmin = std::min(xmin, p.x()), xmax = std::max(xmax, p.x());
+      umin = std::min(umin, p.y()), umax = std::max(umax, p.y());
+    }
+  const double t = std::max(xmax - xmin, 1e-6), L = std::max(umax - umin, 1e-6);
+  // To scale, the span in at most 520 px, the thickness at least 24 px.
+  const double s = std::min(520.0 / L, 160.0 / t);
+  const double sx = std::max(s, 24.0 / t);  // thickness exaggerated if thin (said in the legend)
+  auto X = [&](double u) { return 120.0 + s * (u - umin); };
+  auto Y = [&](double x) { return 200.0 - sx * x; };  // outward (x > 0) up
+  std::string o;
+  Placer placer;
+  Box ext{kInf, kInf, -kInf, -kInf};
+  auto grow = [&](double x, double y) {
+    ext = {std::min(ext.x0, x), std::min(ext.y0, y), std::max(ext.x1, x), std::max(ext.y1, y)};
+  };
+  auto line = [&](double x1, double y1, double x2, double y2, const std::string& style, bool obstacle = true) {
+    o += "<line x1=\"" + f1(x1) + "\" y1=\"" + f1(y1) + "\" x2=\"" + f1(x2) + "\" y2=\"" + f1(y2) + "\" " + style + "/>\n";
+    grow(x1, y1), grow(x2, y2);
+    if (obstacle) placer.segment(x1, y1, x2, y2);
+  };
+  auto circle = [&](double x, double y, double rad, const std::string& style) {
+    o += "<circle cx=\"" + f1(x) + "\" cy=\"" + f1(y) + "\" r=\"" + f1(rad) + "\" " + style + "/>\n";
+    grow(x - rad, y - rad), grow(x + rad, y + rad);
+    placer.mark({x - rad, y - rad, x + rad, y + rad});
+  };
+  auto head = [&](double x1, double y1, double x2, double y2, double w) {
+    const double n = std::hypot(x2 - x1, y2 - y1), h = 3.5 * w;
+    if (!(n > 0.0)) return;
+    const double cx = x2 - (x2 - x1) / n * h, cy = y2 - (y2 - y1) / n * h;
+    placer.mark({cx - h, cy - h, cx + h, cy + h});
+    grow(cx - h, cy - h), grow(cx + h, cy + h);
+  };
+  auto tick = [&](double x, double y) {
+    line(x - 3.5, y + 3.5, x + 3.5, y - 3.5, "class=\"dim-line\" stroke=\"#333\" stroke-width=\"1\"");
+  };
+  const std::string dim_style = "class=\"dim-line\" stroke=\"#333\" stroke-width=\"0.7\"";
+  const std::string ext_style = "class=\"ext-line\" stroke=\"#666\" stroke-width=\"0.5\"";
+  struct LabelReq {
+    std::string text;
+    double fs;
+    std::string attrs;
+    double ax, ay;
+    std::vector<Cand> prefs;
+  };
+  std::vector<LabelReq> dim_labels, labels;
+
+  // The strip's blocks.
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    std::string pts;
+    std::vector<std::array<double, 2>> px;
+    for (const auto& p : blocks[i].polygon) {
+      pts += f1(X(p.y())) + "," + f1(Y(p.x())) + " ";
+      px.push_back({X(p.y()), Y(p.x())});
+      grow(X(p.y()), Y(p.x()));
+    }
+    o += "<polygon points=\"" + pts + "\" fill=\"" + (i % 2 ? "#d9cbb5" : "#e6dcc8") +
+         "\" stroke=\"#5a4a32\" stroke-width=\"1.2\"/>\n";
+    placer.polygon(std::move(px));
+  }
+  // The transverse walls at the supports (context, hatched, inward of the strip).
+  const double wall_w = std::max(14.0, s * t), wall_d = 70.0;
+  for (int side = 0; side < 2; ++side) {
+    const double xa = side == 0 ? X(umin) - wall_w : X(umax), xb = xa + wall_w;
+    const double ya = Y(xmax), yb = Y(xmin) + wall_d;
+    o += "<rect x=\"" + f1(xa) + "\" y=\"" + f1(ya) + "\" width=\"" + f1(xb - xa) + "\" height=\"" + f1(yb - ya) +
+         "\" fill=\"#cfcfcf\" stroke=\"#555\" stroke-width=\"1\"/>\n";
+    grow(xa, ya), grow(xb, yb);
+    placer.polygon({{xa, ya}, {xb, ya}, {xb, yb}, {xa, yb}});
+    for (double hy = ya + 8; hy < yb; hy += 10) line(xa, hy, xb, hy - 6, "stroke=\"#888\" stroke-width=\"0.5\"", false);
+    labels.push_back({tr(lang, "muro trasversale", "transverse wall"), 10, "fill=\"#444\"", 0.5 * (xa + xb), yb,
+                      {{0.5 * (xa + xb), yb + 14, Anchor::Middle}, {side == 0 ? xa - 4 : xb + 4, yb - 4,
+                                                                      side == 0 ? Anchor::End : Anchor::Start}}});
+  }
+  // Hinges and the thrust line through them.
+  std::vector<std::array<double, 2>> hinge_px;
+  for (const Constraint& c : chain.constraints()) {
+    if (c.type == ConstraintType::Hinge) {
+      bool middle = true;  // a joint of two segments of one half lies on a face, the middle hinge inside
+      for (const Constraint& d : chain.constraints())
+        if (&d != &c && d.type == ConstraintType::Hinge && std::fabs(d.point.y() - c.point.y()) < 1e-9) middle = false;
+      if (!middle) continue;
+    }
+    const double Xp = X(c.point.y()), Yp = Y(c.point.x());
+    hinge_px.push_back({Xp, Yp});
+    circle(Xp, Yp, 4.5, "fill=\"#fff\" stroke=\"#b3001b\" stroke-width=\"1.8\"");
+    labels.push_back({msg(lang, "draw.hinge") + " u = " + m2(c.point.y()), 10, "fill=\"#b3001b\"", Xp, Yp,
+                      {{Xp, Yp - 9, Anchor::Middle}, {Xp, Yp + 16, Anchor::Middle}, {Xp + 8, Yp - 8, Anchor::Start},
+                       {Xp - 8, Yp - 8, Anchor::End}}});
+  }
+  std::sort(hinge_px.begin(), hinge_px.end());
+  for (std::size_t k = 0; k + 1 < hinge_px.size(); ++k)
+    line(hinge_px[k][0], hinge_px[k][1], hinge_px[k + 1][0], hinge_px[k + 1][1],
+         "stroke=\"#b3001b\" stroke-width=\"1\" stroke-dasharray=\"5 3\"", false);
+  // Loads: the arch's thrust (at both supports), the ring beam's force.
+  std::set<char> symbols;
+  for (const Load& l : chain.loads()) {
+    if (l.type != LoadType::Force && l.type != LoadType::Tie) continue;
+    const double n = l.force.norm();
+    if (!(n > 0.0)) continue;
+    symbols.insert('S');
+    if (std::fabs(l.force.x()) < 1e-12) {  // the thrust, along the wall
+      for (int side = 0; side < 2; ++side) {
+        const double Xp = X(side == 0 ? umin : umax), Yp = Y(l.point.x());
+        const double x1 = side == 0 ? Xp - 46 : Xp + 46;
+        line(x1, Yp - 16, Xp + (side == 0 ? 10 : -10), Yp - 16,
+             "stroke=\"#8a3ea8\" stroke-width=\"2.2\" marker-end=\"url(#arrowk)\"");
+        head(x1, Yp - 16, Xp + (side == 0 ? 10 : -10), Yp - 16, 2.2);
+        labels.push_back({"H = " + kn(n), 11, "fill=\"#8a3ea8\"", x1, Yp - 16,
+                          {{x1, Yp - 22, side == 0 ? Anchor::Start : Anchor::End},
+                           {side == 0 ? x1 - 4 : x1 + 4, Yp - 12, side == 0 ? Anchor::End : Anchor::Start}}});
+      }
+    } else {  // a force across the wall (ring beam), inward
+      const double Xp = X(l.point.y()), Yp = Y(l.point.x());
+      line(Xp, Yp - 40, Xp, Yp - 4, "stroke=\"#8a3ea8\" stroke-width=\"2.2\" marker-end=\"url(#arrowk)\"");
+      head(Xp, Yp - 40, Xp, Yp - 4, 2.2);
+      labels.push_back({"S = " + kn(n), 11, "fill=\"#8a3ea8\"", Xp, Yp - 40,
+                        {{Xp + 5, Yp - 36, Anchor::Start}, {Xp - 5, Yp - 36, Anchor::End}}});
+    }
+  }
+  // Control point.
+  if (r.control_block >= 0) {
+    const double Xp = X(r.control_point.y()), Yp = Y(r.control_point.x());
+    circle(Xp, Yp, 6, "fill=\"none\" stroke=\"#000\" stroke-width=\"1.5\"");
+    line(Xp - 8, Yp, Xp + 8, Yp, "stroke=\"#000\"");
+    line(Xp, Yp - 8, Xp, Yp + 8, "stroke=\"#000\"");
+    labels.push_back({msg(lang, "draw.control"), 10, "", Xp, Yp,
+                      {{Xp + 10, Yp + 16, Anchor::Start}, {Xp - 10, Yp + 16, Anchor::End}}});
+  }
+  // Dimensions below the strip (inside the building, beyond the walls' ends).
+  std::set<long> us = {mm(umin), mm(umax)};
+  for (const Block& b : blocks)
+    for (const auto& p : b.polygon) us.insert(mm(p.y()));
+  for (const Constraint& c : chain.constraints())
+    if (c.type == ConstraintType::Hinge) us.insert(mm(c.point.y()));
+  std::vector<double> uv;
+  for (long v : us) uv.push_back(v / 1000.0);
+  const double yd1 = Y(xmin) + wall_d + 34.0, yd2 = yd1 + 22.0;
+  for (std::size_t row = 0; row < 2; ++row) {
+    const double yd = row == 0 ? yd1 : yd2;
+    const std::vector<double> pts = row == 0 ? uv : std::vector<double>{umin, umax};
+    if (row == 0 && pts.size() <= 2) continue;
+    line(X(pts.front()) - 5, yd, X(pts.back()) + 5, yd, dim_style);
+    for (double u : pts) {
+      tick(X(u), yd);
+      line(X(u), Y(xmin) + 3, X(u), yd + 5, ext_style);
+    }
+    for (std::size_t k = 0; k + 1 < pts.size(); ++k) {
+      const double xm = 0.5 * (X(pts[k]) + X(pts[k + 1]));
+      dim_labels.push_back({d2(pts[k + 1] - pts[k]), 10,
+                            std::string("class=\"dim\" data-kind=\"") + (row == 0 ? "level" : "total") + "\" fill=\"#222\"",
+                            xm, yd, {{xm, yd - 3, Anchor::Middle}, {xm, yd + 12, Anchor::Middle}}});
+    }
+  }
+  // The thickness, beyond the last support's wall.
+  {
+    const double xd = X(umax) + wall_w + 40.0;
+    line(xd, Y(xmax) - 5, xd, Y(xmin) + 5, dim_style);
+    tick(xd, Y(xmax)), tick(xd, Y(xmin));
+    line(X(umax) + wall_w + 3, Y(xmax), xd + 5, Y(xmax), ext_style);
+    line(X(umax) + wall_w + 3, Y(xmin), xd + 5, Y(xmin), ext_style);
+    const double ym = 0.5 * (Y(xmax) + Y(xmin));
+    dim_labels.push_back({d2(t), 10, "class=\"dim\" data-kind=\"thickness\" fill=\"#222\"", xd, ym,
+                          {{xd + 5, ym + 3.5, Anchor::Start}, {xd - 5, ym + 3.5, Anchor::End}}});
+  }
+  // Outer face, inside, the seismic action outward.
+  {
+    const double xa = 0.5 * (X(umin) + X(umax)), ya = Y(xmax) - 70.0;
+    line(xa, ya + 48, xa, ya, "stroke=\"#b3001b\" stroke-width=\"2.5\" marker-end=\"url(#arrowr)\"");
+    head(xa, ya + 48, xa, ya, 2.5);
+    labels.push_back({msg(lang, "draw.seismic"), 11, "fill=\"#b3001b\"", xa, ya,
+                      {{xa + 8, ya + 10, Anchor::Start}, {xa - 8, ya + 10, Anchor::End}}});
+    labels.push_back({tr(lang, "esterno", "outside"), 10, "fill=\"#444\" font-style=\"italic\"", X(umin), Y(xmax),
+                      {{X(umin) + 4, Y(xmax) - 6, Anchor::Start}}});
+    labels.push_back({tr(lang, "interno", "inside"), 10, "fill=\"#444\" font-style=\"italic\"", X(umin), Y(xmin),
+                      {{X(umin) + 4, Y(xmin) + 14, Anchor::Start}}});
+  }
+  for (const LabelReq& q : dim_labels) placer.place(q.text, q.fs, q.attrs, q.ax, q.ay, q.prefs);
+  for (const LabelReq& q : labels) placer.place(q.text, q.fs, q.attrs, q.ax, q.ay, q.prefs);
+  double ly = ext.y1;
+  for (const Placed& p : placer.labels()) ly = std::max(ly, p.box.y1);
+  ly += 16;
+  std::vector<std::string> legend = {tr(lang, "pianta della fascia, quote in m", "plan of the strip, dimensions in m")};
+  if (sx > s * 1.0001)
+    legend.push_back(tr(lang, "spessore esagerato per leggibilità", "thickness exaggerated for legibility"));
+  legend.push_back(tr(lang, "H = spinta dell'arco; tratteggio rosso: linea delle pressioni tra le cerniere",
+                      "H = the arch's thrust; red dashes: the thrust line between the hinges"));
+  if (symbols.count('S') && chain.loads().size() > 0)
+    for (const Load& l : chain.loads())
+      if (l.type == LoadType::Force && std::fabs(l.force.x()) > 0.0) {
+        legend.push_back(tr(lang, "S = forza equivalente del cordolo", "S = the ring beam's equivalent force"));
+        break;
+      }
+  const double gx = X(umin) - wall_w - 60.0;
+  for (const std::string& lt : legend) {
+    placer.place(lt, 10, "fill=\"#444\" font-style=\"italic\"", gx, ly, {{gx, ly, Anchor::Start}});
+    ly += 14;
+  }
+  for (const auto& l : placer.leaders()) line(l[0], l[1], l[2], l[3], "stroke=\"#777\" stroke-width=\"0.6\"", false);
+  std::string tx;
+  for (const Placed& p : placer.labels()) {
+    grow(p.box.x0, p.box.y0), grow(p.box.x1, p.box.y1);
+    tx += "<text x=\"" + f1(p.x) + "\" y=\"" + f1(p.y) + "\" font-size=\"" + f1(p.fs) + "\" text-anchor=\"" +
+          anchor_name(p.a) + "\"" + (p.attrs.empty() ? "" : " " + p.attrs) + ">" + xml_escape(p.text) + "</text>\n";
+  }
+  const double m = 8.0;
+  double vx = std::floor(ext.x0 - m), vw = std::ceil(ext.x1 + m) - vx;
+  if (vw < 640.0) vx -= std::floor(0.5 * (640.0 - vw)), vw = 640.0;
+  const double vy = std::floor(ext.y0 - m), vh = std::ceil(ext.y1 + m) - vy;
+  std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" + f1(vx) + " " + f1(vy) + " " + f1(vw) + " " +
+                    f1(vh) + "\" width=\"" + f1(vw) + "\" height=\"" + f1(vh) +
+                    "\" font-family=\"sans-serif\" font-size=\"11\">\n";
+  svg += "<title>" + xml_escape(msg(lang, "mech.heading")) + "</title>\n";
+  svg += "<defs><marker id=\"arrowr\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" "
+         "orient=\"auto\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#b3001b\"/></marker>"
+         "<marker id=\"arrowk\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" "
+         "orient=\"auto\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#222\"/></marker></defs>\n";
+  svg += o + tx + "</svg>\n";
+  return svg;
+}
+
 }  // namespace
 
 std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
+  decimal_comma = lang == Lang::it;
+  if (chain.plan()) return plan_svg(chain, r, lang);  // issue 33: horizontal flexure, in plan
   const std::vector<Block>& blocks = chain.blocks();
   // Bounding box of the blocks and of the foundation level z = 0.
   double xmin = kInf, xmax = -kInf, zmin = 0.0, zmax = -kInf;
@@ -347,7 +583,12 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
   const double s = std::min(240.0 / wx, 440.0 / wz);
   auto X = [&](double x) { return 300.0 + s * (x - xmin); };
   auto Y = [&](double z) { return 80.0 + s * (zmax - z); };
-  const bool many = blocks.size() > 6;  // a sliced body (gable): joints and slice weights not labelled
+  // A projected 3-D body (issue 33: the corner's pieces welded, drawn as
+  // equivalent strips in the plane normal to the axis): one resultant weight,
+  // the pieces translucent, no per-piece widths.
+  bool welded = false;
+  for (const Constraint& c : chain.constraints()) welded = welded || c.type == ConstraintType::Weld;
+  const bool many = blocks.size() > 6 || welded;  // a sliced body (gable): joints and slice weights not labelled
 
   std::string o;   // graphics
   Placer placer;
@@ -403,8 +644,9 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
       px.push_back({X(p.x()), Y(p.y())});
       grow(X(p.x()), Y(p.y()));
     }
-    o += "<polygon points=\"" + pts + "\" fill=\"" + (i % 2 ? "#d9cbb5" : "#e6dcc8") +
-         "\" stroke=\"#5a4a32\" stroke-width=\"" + (many ? "0.6" : "1.2") + "\"/>\n";
+    o += "<polygon points=\"" + pts + "\" fill=\"" + (i % 2 ? "#d9cbb5" : "#e6dcc8") + "\"" +
+         (welded ? " fill-opacity=\"0.55\"" : "") + " stroke=\"#5a4a32\" stroke-width=\"" + (many ? "0.6" : "1.2") +
+         "\"/>\n";
     placer.polygon(std::move(px));
   }
 
@@ -439,6 +681,7 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
   std::vector<HDim> hdims;
   std::set<std::pair<long, long>> hdim_keys;
   for (const Block& b : blocks) {
+    if (welded) break;  // the pieces of a projection: equivalent widths, not dimensions of the wall
     // The block's vertex levels as they are (rounding them to mm would put a
     // cut of a thin slice outside it: the 0.117 m slices of a 2.8 m gable).
     std::vector<double> zv;
@@ -730,7 +973,7 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
   std::set<std::pair<long, long>> drawn;
   for (const Constraint& c : chain.constraints()) {
     const double Xp = X(c.point.x()), Yp = Y(c.point.y());
-    if (c.type == ConstraintType::Hinge && many) continue;  // joints of a sliced body are not drawn
+    if ((c.type == ConstraintType::Hinge && many) || c.type == ConstraintType::Weld) continue;  // joints of a sliced body are not drawn
     if (!drawn.insert({std::lround(Xp), std::lround(Yp)}).second) continue;
     if (c.type == ConstraintType::Slider) {
       circle(Xp + 6, Yp, 4, "fill=\"#fff\" stroke=\"#222\"");

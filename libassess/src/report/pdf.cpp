@@ -1,32 +1,28 @@
 // pdf.cpp: HTML -> PDF through headless Chromium. The page is written to a
 // private temporary directory, printed with --print-to-pdf (no header and
-// footer lines), and the PDF is checked to exist and start with "%PDF".
+// footer lines; PDF bookmarks from the headings), and the PDF is checked to
+// exist and start with "%PDF". The outline is read back with pdftohtml
+// (poppler-utils) for the contents' page numbers.
 #include "assess/report/pdf.hpp"
 
+#include "report/external_tool.hpp"
+
 #include "assess/support/error.hpp"
+#include "assess/support/input_file.hpp"
+#include "assess/support/output_file.hpp"
 
-#include <sys/wait.h>
-
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 
 namespace assess {
 
 namespace {
 
-std::string sh_quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
-std::string read_head(const std::string& path, std::size_t n) {
-  std::ifstream in(path, std::ios::binary);
-  std::string s(n, '\0');
-  in.read(s.data(), std::streamsize(n));
-  s.resize(std::size_t(in.gcount()));
+std::string xml_unescape(std::string s) {
+  static const std::pair<const char*, const char*> ents[] = {
+      {"&lt;", "<"}, {"&gt;", ">"}, {"&quot;", "\""}, {"&#39;", "'"}, {"&apos;", "'"}, {"&amp;", "&"}};
+  for (const auto& [from, to] : ents)
+    for (std::size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + 1)) s.replace(at, std::string(from).size(), to);
   return s;
 }
 
@@ -36,37 +32,36 @@ void html_to_pdf(const std::string& html, const std::string& pdf_path) {
   namespace fs = std::filesystem;
   const char* env = std::getenv("CHROMIUM");
   const std::string browser = env && *env ? env : "chromium";
-  std::string tmpl = (fs::temp_directory_path() / "assess_pdf_XXXXXX").string();
-  if (!::mkdtemp(tmpl.data())) throw InputError("--pdf: cannot create a temporary directory in " + tmpl);
-  const fs::path dir(tmpl);
-  struct Cleanup {
-    fs::path d;
-    ~Cleanup() {
-      std::error_code ec;
-      fs::remove_all(d, ec);
-    }
-  } cleanup{dir};
-  const fs::path page = dir / "report.html", out = dir / "report.pdf", log = dir / "chromium.log";
-  {
-    std::ofstream f(page, std::ios::binary);
-    if (!(f << html)) throw InputError("--pdf: cannot write the temporary page " + page.string());
-  }
-  const std::string cmd = "timeout 180 " + sh_quote(browser) +
-                          " --headless --no-sandbox --disable-gpu --no-first-run --disable-background-networking"
-                          " --disable-component-update --disable-sync --user-data-dir=" +
-                          sh_quote((dir / "profile").string()) +
-                          " --no-pdf-header-footer --print-to-pdf-no-header --print-to-pdf=" +
-                          sh_quote(out.string()) + " " + sh_quote("file://" + page.string()) + " >" +
-                          sh_quote(log.string()) + " 2>&1";
-  const int status = std::system(cmd.c_str());
-  const int code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : 1;
+  detail::TempDir dir("assess_pdf_");
+  const fs::path page = dir.path() / "report.html", out = dir.path() / "report.pdf", log = dir.path() / "chromium.log";
+  detail::write_file(page, html, "--pdf");
+  const int code = detail::run_program(
+      {browser, "--headless", "--no-sandbox", "--disable-gpu", "--no-first-run", "--disable-background-networking",
+       "--disable-component-update", "--disable-sync", "--user-data-dir=" + (dir.path() / "profile").string(),
+       "--no-pdf-header-footer", "--print-to-pdf-no-header", "--generate-pdf-document-outline",
+       "--print-to-pdf=" + out.string(), "file://" + page.string()},
+      log);
   if (code == 127)
     throw InputError("--pdf: " + browser + " was not found on PATH: install it (Debian: apt-get install chromium)");
-  if (code != 0 || !fs::exists(out) || read_head(out.string(), 4) != "%PDF")
+  if (code != 0 || !fs::exists(out) || detail::read_file(out).compare(0, 4, "%PDF") != 0)
     throw InputError("--pdf: " + browser + " could not print the report (exit " + std::to_string(code) + ")");
-  std::error_code ec;
-  fs::copy_file(out, pdf_path, fs::copy_options::overwrite_existing, ec);
-  if (ec) throw InputError("--pdf " + pdf_path + ": cannot write the file (" + ec.message() + ")");
+  // Whole or not at all, never over an input of the run (output_file.hpp).
+  write_output_file(pdf_path, read_input_file(out.string(), input_kinds::own_output), "--pdf");
+}
+
+std::vector<std::pair<int, std::string>> pdf_outline(const std::string& pdf_path) {
+  detail::TempDir dir("assess_outline_");
+  const std::filesystem::path xml = dir.path() / "outline.xml", log = dir.path() / "log";
+  const int code = detail::run_program({"pdftohtml", "-xml", "-i", "-q", "-nodrm", pdf_path, (dir.path() / "outline").string()}, log);
+  std::vector<std::pair<int, std::string>> out;
+  if (code != 0) return out;
+  const std::string s = detail::read_file(xml);
+  for (std::size_t at = s.find("<item page=\""); at != std::string::npos; at = s.find("<item page=\"", at + 1)) {
+    const std::size_t q = s.find('"', at + 12), gt = s.find('>', at), end = s.find("</item>", at);
+    if (q == std::string::npos || gt == std::string::npos || end == std::string::npos) break;
+    out.push_back({std::atoi(s.substr(at + 12, q - at - 12).c_str()), xml_unescape(s.substr(gt + 1, end - gt - 1))});
+  }
+  return out;
 }
 
 }  // namespace assess

@@ -1,5 +1,7 @@
 // xml_escape.hpp (private): escape text for HTML/SVG element content and
-// attribute values (& < > " ').
+// attribute values (& < > " '). Control characters, which XML 1.0 forbids
+// (a NUL byte made the page invalid, issue 31), become U+FFFD; tab, line feed
+// and carriage return stay.
 #pragma once
 
 #include <string>
@@ -16,7 +18,11 @@ inline std::string xml_escape(const std::string& s) {
       case '>': out += "&gt;"; break;
       case '"': out += "&quot;"; break;
       case '\'': out += "&#39;"; break;
-      default: out += c;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t' && c != '\r')
+          out += "\xEF\xBF\xBD";  // U+FFFD REPLACEMENT CHARACTER
+        else
+          out += c;
     }
   }
   return out;

@@ -6,6 +6,7 @@
 #include "assess/risk/fragility_job.hpp"
 
 #include "assess/support/error.hpp"
+#include "assess/support/input_file.hpp"
 
 #include "campaign/csv_fields.hpp"
 
@@ -18,6 +19,23 @@
 namespace assess {
 
 namespace {
+
+// FNV-1a 64-bit hash of a file's bytes as 16 hex digits ("" if unreadable),
+// as the fragility summary's case_fnv1a64 (fragility_report.cpp).
+std::string content_fnv1a64(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "";
+  std::uint64_t h = 14695981039346656037ull;
+  char c;
+  while (in.get(c)) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 1099511628211ull;
+  }
+  char buf[20];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
 
 const char* const kColumns[] = {"id",           "stripe",        "TR_years",        "im_m_s2",   "record",
                                 "scale",        "polarity",      "restitution",     "theta_max_rad",
@@ -96,6 +114,7 @@ FragilityRow parse_fragility_csv_row(const std::string& line) {
 }
 
 std::vector<FragilityRow> read_fragility_csv(const std::string& path) {
+  if (!non_regular_file_type(path).empty()) check_input_file(path, input_kinds::own_output);  // not a FIFO, /dev/zero
   std::ifstream in(path);
   if (!in) throw InputError("cannot open fragility results '" + path + "'");
   std::string line;
@@ -117,6 +136,10 @@ std::string FragilityJob::inputs_text() const {
   using nlohmann::json;
   json j;
   j["case"] = s_.file;
+  // The case's content, not only its name: a --resume into the output of
+  // another case with the same file name (another folder, or the file edited
+  // since) is refused (issue 31).
+  j["case_fnv1a64"] = content_fnv1a64(s_.file);
   j["project"] = s_.project;
   j["method"] = to_string(s_.options.method);
   j["mechanism"] = s_.mechanism;

@@ -3,10 +3,15 @@
 // except the curves' values on the plot grids).
 #include "assess/risk/fragility_report.hpp"
 
+#include "assess/support/content_hash.hpp"
+
 #include "assess/report/html_report.hpp"
 #include "assess/report/plot.hpp"
 #include "assess/risk/collapse_rate.hpp"
 #include "assess/support/error.hpp"
+#include "assess/support/input_file.hpp"
+#include "assess/support/json_input.hpp"
+#include "assess/support/output_file.hpp"
 #include "assess/support/units.hpp"
 
 #include <cmath>
@@ -30,11 +35,10 @@ std::string fmt(double v, const char* f = "%.4g") {
 }
 std::string g_units(double a) { return fmt(a / units::g, "%.3f"); }
 
+// Every file of the fragility output: whole or not at all (output_file.hpp).
 void write_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text;
-  out.close();
-  if (!out) throw InputError("cannot write '" + path + "'");
+  const auto slash = path.find_last_of('/');
+  write_output_file(path, text, "the fragility output", slash == std::string::npos ? "." : path.substr(0, slash));
 }
 
 json curve_json(const FragilityStudy& st, const FragilityCurve& c) {
@@ -74,20 +78,13 @@ json curve_json(const FragilityStudy& st, const FragilityCurve& c) {
 
 // FNV-1a 64-bit hash of a file's bytes, as 16 hex digits ("" if unreadable):
 // ties a summary to the case file's content, so that a report does not show
-// the fragility of a case edited since (Fowler, Noll, Vo; offset basis
-// 14695981039346656037, prime 1099511628211).
+// the fragility of a case edited since (support/content_hash.hpp).
 std::string file_fnv1a64(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return "";
-  std::uint64_t h = 14695981039346656037ull;
-  char c;
-  while (in.get(c)) {
-    h ^= static_cast<unsigned char>(c);
-    h *= 1099511628211ull;
+  try {
+    return hash_hex(file_content_hash(path));
+  } catch (const InputError&) {
+    return "";
   }
-  char buf[20];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
 }
 
 PlotSeries series(std::string name, PlotSeries::Style style) {
@@ -387,7 +384,7 @@ FragilityReportFiles write_fragility_report(const FragilityStudy& st, const Frag
       }
     }
   } else {
-    html.add_paragraph("Plots skipped (gnuplot not found: Debian package gnuplot-nox).");
+    html.add_paragraph("Plots skipped (--no-plots).");
   }
   f.html = dir + "/report.html";
   write_file(f.html, html.str());
@@ -396,14 +393,9 @@ FragilityReportFiles write_fragility_report(const FragilityStudy& st, const Frag
 
 json read_fragility_summary(const std::string& dir, const std::string& case_file) {
   const std::string path = dir + "/summary.json";
-  std::ifstream in(path);
-  if (!in) throw InputError("--fragility: cannot open '" + path + "' (run `assess fragility CASE.json --out " + dir + "` first)");
-  json j;
-  try {
-    in >> j;
-  } catch (const json::exception& e) {
-    throw InputError("'" + path + "' is not valid JSON: " + e.what());
-  }
+  if (!std::filesystem::exists(path))
+    throw InputError("--fragility: cannot open '" + path + "' (run `assess fragility CASE.json --out " + dir + "` first)");
+  const json j = parse_json_text(read_input_file(path, input_kinds::own_output), path);
   if (!j.is_object() || !j.contains("case") || !j["case"].is_string() || !j.contains("governing"))
     throw InputError("'" + path + "' is not a fragility summary (keys /case and /governing expected)");
   std::error_code ec;

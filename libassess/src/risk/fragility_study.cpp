@@ -9,7 +9,9 @@
 #include "assess/risk/fragility_study.hpp"
 
 #include "assess/hazard/site.hpp"
+#include "assess/records/library_selection.hpp"
 #include "assess/records/record_catalogue.hpp"
+#include "assess/records/record_library.hpp"
 #include "assess/records/record_io.hpp"
 #include "assess/records/selection_candidates.hpp"
 #include "assess/records/response_spectrum.hpp"
@@ -19,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 
 namespace assess {
 
@@ -133,6 +136,7 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
       so.max_pga_ratio = rs.max_pga_ratio;
       so.max_per_event = rs.max_per_event;
       so.max_per_station = rs.max_per_station;
+      so.max_misfit = rs.max_misfit;
     } else {
       so.max_scale = max_scale;
     }
@@ -144,13 +148,35 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
                                 ? PeriodRange{*d.selection->T_min, *d.selection->T_max}
                                 : rocking_period_range(T1, T2);
 
-  // The candidate records: the catalogue's design records (or the listed ones for an IDA).
+  // The records: those the selections choose from the record library (read
+  // once per process, records/record_library.hpp), or the listed ones for an IDA.
   const bool listed = !d.selection;
-  std::vector<CandidateInfo> infos;  // event/station grouping of catalogue candidates
   if (listed && opt.method == FragilityMethod::stripes)
     throw InputError(kase.file + ": /dynamic/records: a multiple-stripe analysis selects records at each return "
                      "period from the catalogue: give \"select\" instead of \"records\", or use --ida to scale the "
                      "listed records");
+  std::shared_ptr<const RecordLibrary> lib;
+  LibrarySelectionRules rules;
+  std::map<std::string, std::size_t> index_of;  // catalogue id -> position in st.records
+  auto use_entry = [&](const CatalogueEntry& e) {
+    const auto it = index_of.find(e.id);
+    if (it != index_of.end()) return it->second;
+    try {
+      st.records.push_back(*lib->record(e));
+    } catch (const InputError& err) {
+      throw InputError(kase.file + ": /dynamic/select/catalogue: " + e.file + ": " + err.what());
+    }
+    st.record_files.push_back(lib->catalogue().directory + "/" + e.file);
+    index_of[e.id] = st.records.size() - 1;
+    return st.records.size() - 1;
+  };
+  auto keep_warnings = [&](const LibrarySelection& sel, const std::string& prefix) {
+    for (const std::string& w : sel.warnings) {
+      const std::string v = w.rfind("site class relaxed", 0) == 0 ? prefix + w : w;
+      if (std::find(st.selection_warnings.begin(), st.selection_warnings.end(), v) == st.selection_warnings.end())
+        st.selection_warnings.push_back(v);
+    }
+  };
   if (listed) {
     for (const ListedRecord& lr : d.records) {
       try {
@@ -162,22 +188,12 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
     }
   } else {
     const RecordSelectionSpec& rs = *d.selection;
-    const RecordCatalogue cat = read_catalogue(rs.catalogue);
-    // The case's catalogue filters, as `assess run` (record-selection.md §2.1).
-    const CatalogueFilters filters = catalogue_filters(rs, to_string(kase.site->conditions.soil), count);
-    const CatalogueFilterResult fr = filter_catalogue(cat.entries, filters);
-    st.selection_warnings = fr.warnings;
-    for (const CatalogueEntry& e : fr.kept) {
-      try {
-        st.records.push_back(cat.load(e.id));
-        st.record_files.push_back(cat.directory + "/" + e.file);
-        infos.push_back(candidate_info(e));
-      } catch (const InputError& err) {
-        throw InputError(kase.file + ": /dynamic/select/catalogue: " + e.file + ": " + err.what());
-      }
-    }
-    if (st.records.empty())
-      throw InputError(kase.file + ": /dynamic/select: no design record of the catalogue passes the filters");
+    lib = RecordLibrary::open(rs.catalogue);
+    // The case's rules, as `assess run` (record-selection.md §2): catalogue
+    // filters, site class first, near-fault records left out unless asked.
+    rules.filters = catalogue_filters(rs, to_string(kase.site->conditions.soil), count);
+    rules.include_near_fault = rs.include_near_fault;
+    rules.near_fault_km = rs.near_fault_km;
   }
 
   const SiteConditions& cond = kase.site->conditions;
@@ -188,24 +204,23 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
     trs.erase(std::unique(trs.begin(), trs.end()), trs.end());
     SelectionOptions so = selection_options(ScaleRule::Pga);
     so.range = range;
-    // The candidates' response spectra at the check periods, once for every
-    // stripe (they do not depend on the target; a scaled record's spectrum is
-    // f times the record's): selection_candidates.hpp.
-    const SelectionCandidates candidates =
-        infos.empty() ? SelectionCandidates(st.records, so) : SelectionCandidates(st.records, infos, so);
+    // Each stripe selects from the library (precomputed spectra, the same
+    // candidates' spectra for every target: records/library_selection.hpp).
     for (double tr : trs) {
       const ElasticSpectrum target(site.hazard_at_tr(tr), cond, 5.0);
-      const SelectionResult sel = select_records([&target](double T) { return target.Se(T); }, candidates, so);
+      const std::shared_ptr<const LibrarySelection> sel =
+          select_from_library(*lib, rules, [&target](double T) { return target.Se(T); }, so);
+      keep_warnings(*sel, "stripe " + fmt(tr) + " years: ");
       Stripe s;
       s.im = target.Se(0.0);
       s.TR = tr;
-      s.compatible = sel.band_satisfied;
-      s.selection = sel.message;
-      for (const SelectedRecord& r : sel.records) s.records.push_back({r.index, r.scale});
+      s.compatible = sel->result.band_satisfied;
+      s.selection = sel->result.message;
+      for (const SelectedRecord& r : sel->result.records) s.records.push_back({use_entry(sel->candidates[r.index]), r.scale});
       if (s.records.empty())
         throw InputError(kase.file + ": /dynamic/select: no set of " + std::to_string(count) +
                          " catalogue records for the " + fmt(tr) + "-year stripe (PGA " +
-                         fmt(s.im / units::g, "%.3f") + " g, max_scale " + fmt(max_scale) + "): " + sel.message +
+                         fmt(s.im / units::g, "%.3f") + " g, max_scale " + fmt(max_scale) + "): " + sel->result.message +
                          "; ask for fewer records per stripe (--records, select/count)");
       st.stripes.push_back(std::move(s));
     }
@@ -218,8 +233,10 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
       SelectionOptions so = selection_options(SelectionOptions{}.scale_rule);
       so.range = range;
       const ElasticSpectrum slv(st.actions.at(LimitState::SLV).hazard, cond, 5.0);
-      const SelectionResult sel = select_records([&slv](double T) { return slv.Se(T); }, st.records, infos, so);
-      for (const SelectedRecord& r : sel.records) set.push_back(r.index);
+      const std::shared_ptr<const LibrarySelection> sel =
+          select_from_library(*lib, rules, [&slv](double T) { return slv.Se(T); }, so);
+      keep_warnings(*sel, "");
+      for (const SelectedRecord& r : sel->result.records) set.push_back(use_entry(sel->candidates[r.index]));
       if (set.empty()) throw InputError(kase.file + ": /dynamic/select: no compatible record in the catalogue");
     }
     std::vector<double> levels = opt.ida_levels;

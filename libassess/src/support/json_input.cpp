@@ -3,8 +3,10 @@
 #include "assess/support/json_input.hpp"
 
 #include "assess/support/error.hpp"
+#include "assess/support/input_file.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -12,11 +14,7 @@
 
 namespace assess {
 namespace {
-std::string num(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
+std::string num(double v) { return number_for_message(v); }
 const char* type_name(const nlohmann::json& j) { return j.type_name(); }
 }  // namespace
 
@@ -106,7 +104,65 @@ class PathTracker final : public nlohmann::json_sax<nlohmann::json> {
 
 }  // namespace
 
+namespace {
+
+// The deepest nesting of arrays and objects in `text` (strings skipped), and
+// the offset of the bracket that first went past `limit` (a cheap pass over
+// the text before any tree is built: a DOM 100 000 levels deep is copied,
+// compared, merged and printed by recursive functions).
+std::size_t deepest(const std::string& text, std::size_t limit, std::size_t& where) {
+  std::size_t depth = 0, max = 0;
+  bool in_string = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\') ++i;
+      else if (c == '"') in_string = false;
+      continue;
+    }
+    if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > max) max = depth;
+      if (depth > limit) {
+        where = i;
+        return depth;
+      }
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+  return max;
+}
+
+// Line and column (1-based) of a byte offset.
+std::string line_column(const std::string& text, std::size_t offset) {
+  std::size_t line = 1, col = 1;
+  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      col = 1;
+    } else {
+      ++col;
+    }
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(col);
+}
+
+}  // namespace
+
 nlohmann::json parse_json_text(const std::string& text, const std::string& file) {
+  std::size_t where = 0;
+  if (deepest(text, json_max_depth, where) > json_max_depth) {
+    // The path of the first values (not 100 000 levels of it).
+    PathTracker tracker;
+    nlohmann::json::sax_parse(text.substr(0, where), &tracker);
+    std::string path = tracker.error_path();
+    if (path.size() > 80) path = path.substr(0, 80) + "...";
+    throw InputError(file + ": " + path + ": arrays and objects nested more than " + std::to_string(json_max_depth) +
+                     " levels deep (at " + line_column(text, where) +
+                     "); a case, building or campaign file nests about ten levels");
+  }
   try {
     return nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception& e) {
@@ -119,17 +175,14 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& file)
     throw InputError(file + ": " + tracker.error_path() + ": " +
                      (overflow ? std::string("number out of the range of a double (|x| < 1.8e308): ") + e.what()
                                : std::string("not valid JSON: ") + e.what()));
+  } catch (const std::bad_alloc&) {
+    throw SystemError(file + ": out of memory while reading the JSON text (" + std::to_string(text.size()) +
+                      " bytes)");
   }
 }
 
-nlohmann::json read_json_file(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, expected a JSON file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return parse_json_text(ss.str(), path);
+nlohmann::json read_json_file(const std::string& path, const InputKind& kind) {
+  return parse_json_text(read_input_file(path, kind), path);
 }
 
 JsonNode::JsonNode(const nlohmann::json& value, std::string file, std::string path)
@@ -191,6 +244,8 @@ double JsonNode::as_number(const char* unit, double lo, double hi) const {
   if (!value_->is_number())
     fail(std::string("expected a number (") + unit + "), got " + type_name(*value_));
   const double v = value_->get<double>();
+  if (is_subnormal(v))
+    fail(number_rule_violation(v, NumberRule{unit, lo, hi, false, false, ""}));
   if (!std::isfinite(v) || v < lo || v > hi) {
     std::string range = lo > -1e300 && hi < 1e300 ? "in [" + num(lo) + ", " + num(hi) + "]"
                         : lo > -1e300            ? ">= " + num(lo)
@@ -200,9 +255,45 @@ double JsonNode::as_number(const char* unit, double lo, double hi) const {
   return v;
 }
 
+double JsonNode::as_number(const NumberRule& rule) const {
+  if (!value_->is_number())
+    fail(std::string("expected a number (") + rule.unit + "), got " + type_name(*value_));
+  const double v = value_->get<double>();
+  const std::string bad = number_rule_violation(v, rule);
+  if (!bad.empty()) fail(bad);
+  return v;
+}
+
+double JsonNode::number(const std::string& key, const NumberRule& rule) const { return at(key).as_number(rule); }
+
+double JsonNode::number_or(const std::string& key, double fallback, const NumberRule& rule) const {
+  const auto n = find(key);
+  return n ? n->as_number(rule) : fallback;
+}
+
+Eigen::Vector2d JsonNode::as_point(const NumberRule& rule) const {
+  if (!value_->is_array() || value_->size() != 2) fail(std::string("expected a point [x, z] (") + rule.unit + ")");
+  return Eigen::Vector2d(at(std::size_t{0}).as_number(rule), at(std::size_t{1}).as_number(rule));
+}
+
 std::string JsonNode::as_string() const {
   if (!value_->is_string()) fail(std::string("expected a string, got ") + type_name(*value_));
-  return value_->get<std::string>();
+  const std::string& s = value_->get_ref<const std::string&>();
+  // Names, paths and labels are printed in reports, tables and HTML: no
+  // control characters (U+0000-U+001F, U+007F, U+0080-U+009F), which broke
+  // the text tables and put a NUL byte into the HTML (issue 31).
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    const bool c1 = c == 0xC2 && i + 1 < s.size() && static_cast<unsigned char>(s[i + 1]) >= 0x80 &&
+                    static_cast<unsigned char>(s[i + 1]) <= 0x9F;
+    if (c < 0x20 || c == 0x7F || c1) {
+      char code[16];
+      std::snprintf(code, sizeof code, "U+%04X", c1 ? static_cast<unsigned char>(s[i + 1]) : c);
+      fail(std::string("the text holds a control character (") + code + ") at character " + std::to_string(i + 1) +
+           ": names and file names are printed in the reports; write it without control characters");
+    }
+  }
+  return s;
 }
 
 double JsonNode::number(const std::string& key, const char* unit, double lo, double hi) const {
@@ -263,6 +354,6 @@ Eigen::Vector2d JsonNode::as_point(const char* unit) const {
   return Eigen::Vector2d(at(std::size_t{0}).as_number(unit), at(std::size_t{1}).as_number(unit));
 }
 
-Eigen::Vector2d JsonNode::point(const std::string& key) const { return at(key).as_point("m"); }
+Eigen::Vector2d JsonNode::point(const std::string& key) const { return at(key).as_point(rules::coordinate_m); }
 
 }  // namespace assess

@@ -85,9 +85,10 @@ def main():
                f"{j['median_pga_g']:.3f} g", f"{j['beta']:.3f}", f"{j['lambda_per_year']:.3e}/year",
                f"{j['return_period_years']:.0f} years", f"{100 * j['probability_in_VN']:.1f} %",
                f"Return period of SLV (code, NTC 2018 §3.2.1)</td><td class=\"num\">{j['TR_SLV_years']:.0f} years",
-               f"(VN = {vn:.0f} years)", "class=\"probabilistic\""],
+               f"(VN = {vn:.0f} years)", "class=\"box probabilistic\""],
+        # The Italian edition writes the decimal comma (issue 28).
         "it": ["Risultato probabilistico aggiuntivo: rischio annuo di ribaltamento", "Non è una verifica di norma",
-               f"{j['median_pga_g']:.3f} g", f"{j['return_period_years']:.0f} anni",
+               f"{j['median_pga_g']:.3f} g".replace(".", ","), f"{j['return_period_years']:.0f} anni",
                f"Periodo di ritorno dello SLV (norma, NTC 2018 §3.2.1)</td><td class=\"num\">{j['TR_SLV_years']:.0f} anni"],
     }
     for lang, needles in expect.items():
@@ -99,7 +100,7 @@ def main():
             if n not in page:
                 errors.append(f"HTML ({lang}): missing {n!r}")
         # The box comes after the verdicts by approach, not among the checks.
-        if page.find("class=\"probabilistic\"") < page.find("fig-dc"):
+        if page.find("class=\"box probabilistic\"") < page.find("fig-dc"):
             errors.append(f"HTML ({lang}): the probabilistic box precedes the verdicts by approach")
     # Without --fragility (and no CASE.fragility in the working directory) there is no fragility result.
     if "fragility" in json.loads(run(exe, "run", case, "--json")):

@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
-"""The Italian relazione is entirely Italian (issue 24): renders the Italian
-HTML of every shipped case and scans its text for English words, outside the
-input appendix (<pre>), the project line (the user's own text), and elements
-that declare lang="en" (the program's warnings, marked as English). Also:
+"""The Italian relazione is entirely Italian (issues 24, 28): renders the Italian
+HTML of every shipped case and scans its text for English words and code
+tokens (ASCII spellings of Greek letters and units, internal names, paths),
+and for a decimal point (the Italian edition writes the decimal comma), outside
+the input appendix (<pre>), the project line and the engineer's own words
+(<span class="user">: the project, names of walls, descriptions). Also:
 red only where a D/C exceeds 1 (issue 24, finding 7): no D/C <= 1 in the
 "dc-fail" class and no D/C > 1 in "dc-ok" (a check that fails with D/C <= 1
 says why in its outcome cell).
@@ -21,7 +23,16 @@ ENGLISH = ["the", "of", "and", "hinge", "records", "record", "analyses", "mean",
            "level", "body", "rotating", "chain", "floor", "motions", "warning", "relaxed", "default", "used",
            "blocks", "rotation", "result", "results", "band", "wedge", "gable", "crack", "middle", "above",
            "exceeded", "within", "outside", "spectrum", "seed", "over", "largest", "peak", "most", "none",
-           "theory", "one-sided", "two-sided", "filter", "given", "each", "with", "not", "satisfied"]
+           "theory", "one-sided", "two-sided", "filter", "given", "each", "with", "not", "satisfied",
+           # Issue 28, item 8: load and block names, machine words and code tokens.
+           "storeys", "slice", "top load", "wall arms", "corner pillar", "ridge beam", "thrust", "facade",
+           "lower", "upper", "n/a", "psi", "gamma", "xi", "eta", "sqrt", "eps_ud", "eps_uk", "m/s2", "ug''",
+           "docs/", "inf", "nan", "design", "tie", "ties", "case", "key", "block", "load", "pulse", "near-fault",
+           # issue 33: the labels of horizontal flexure, the side walls' friction, the roof thrust, the corner
+           "strip", "arch", "thrust", "friction", "roof", "axis", "pier", "arm", "half", "sliding", "walls", "side",
+           "without", "bare", "supports", "crushing", "restraint", "lever", "seat", "deg"]
+# A decimal point: a number "0.991" that is not a clause or section number ("C8.7.1", "§3.2", "[3.2.10]").
+DECIMAL_POINT = re.compile(r"(?<![\w§.\[/-])\d+\.\d+(?![.\d\w])")
 
 
 def text_of(page):
@@ -30,6 +41,9 @@ def text_of(page):
     page = re.sub(r"<pre>.*?</pre>", " ", page, flags=re.S)
     page = re.sub(r'<p class="meta">.*?</p>', " ", page, flags=re.S)  # project, file: the user's words
     page = re.sub(r'<(div|p|span)[^>]*lang="en"[^>]*>.*?</\1>', " ", page, flags=re.S)
+    page = re.sub(r'<span class="user">.*?</span>', " ", page, flags=re.S)  # the engineer's own words
+    page = re.sub(r'<span class="secno">.*?</span>', " ", page, flags=re.S)  # section numbers "8.1"
+    page = re.sub(r"<svg.*?</svg>", " ", page, flags=re.S)  # figures: checked apart
     page = re.sub(r"<title>.*?</title>", " ", page, flags=re.S)
     page = re.sub(r"<[^>]+>", " ", page)
     return html.unescape(page)
@@ -54,8 +68,8 @@ def main():
         with open(page_file, encoding="utf-8") as f:
             page = f.read()
         text = text_of(page)
-        for m in re.finditer(r'class="[^"]*dc-(fail|ok)[^"]*">(?:D/C = )?([0-9.]+)<', page):
-            v = float(m.group(2))  # printed to 3 decimals: 1.000 may be 1.0004 (> 1, red)
+        for m in re.finditer(r'class="[^"]*dc-(fail|ok)[^"]*">(?:D/C = )?([0-9.,]+|∞)<', page):
+            v = float("inf") if m.group(2) == "∞" else float(m.group(2).replace(",", "."))  # printed to 3 decimals: 1.000 may be 1.0004 (> 1, red)
             if (m.group(1) == "fail" and v < 1.0 - 5e-4) or (m.group(1) == "ok" and v > 1.0 + 5e-4):
                 failures.append(f"{name}: D/C {v} shown as dc-{m.group(1)}")
         found = {}
@@ -65,6 +79,9 @@ def main():
                 found.setdefault(w, ctx)
         for w, ctx in found.items():
             failures.append(f"{name}: English '{w}' in the Italian relazione: ...{ctx}...")
+        for m in list(DECIMAL_POINT.finditer(text))[:3]:
+            ctx = text[max(0, m.start() - 50):m.end() + 30].replace("\n", " ")
+            failures.append(f"{name}: decimal point '{m.group(0)}' in the Italian relazione: ...{ctx}...")
         print(f"{name}: {'OK' if not found else str(len(found)) + ' English words'}")
     if failures:
         sys.exit("\n".join(failures))

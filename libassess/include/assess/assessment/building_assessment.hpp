@@ -38,6 +38,11 @@ struct SafetyIndex {
   double zeta = std::numeric_limits<double>::quiet_NaN();           ///< PGA_C / PGA_D (-)
   double TR_capacity = std::numeric_limits<double>::quiet_NaN();    ///< TR of PGA_C on the site's ag curve (years)
   double TR_demand = std::numeric_limits<double>::quiet_NaN();      ///< TR of the limit state (years)
+  /// The candidate whose D/C is the approach's (its governing row, issue 28):
+  /// its label, alpha0 (-) and a0* (m/s^2), printed beside that D/C.
+  std::string dc_candidate;
+  double dc_alpha0 = std::numeric_limits<double>::quiet_NaN();
+  double dc_a0_star = std::numeric_limits<double>::quiet_NaN();
   double TR_ratio = std::numeric_limits<double>::quiet_NaN();       ///< TR_C / TR_D (-)
   bool TR_extrapolated = false;  ///< TR_C outside the grid's 30-2475 years (power-law extrapolation)
 };
@@ -85,12 +90,31 @@ struct BuildingTieIndex {
   int passing_before = 0, passing_after = 0;        ///< mechanisms with passes_before / passes_after
 };
 
+/// The building's verdict (issue 28: one verdict, computed once, read by
+/// every writer): each mechanism by its adopted method under NTC 2018 (its
+/// Verdict::conclusion()); the building satisfies the check when every
+/// mechanism does. Its index zetaE,edificio is the smallest zetaE of the
+/// mechanisms' adopted approaches (the weakest local mechanism governs,
+/// Circ. 2019 C8.7.1; docs/theory/building.md §8); mechanisms adopting the
+/// dynamic method have none (NaN when no mechanism has one).
+struct BuildingVerdict {
+  bool satisfied = false;
+  int mechanisms = 0;               ///< mechanisms with an adopted verdict
+  std::vector<int> failing;         ///< indices of the mechanisms that do not satisfy it
+  std::vector<int> undecided;       ///< indices of those without a verdict
+  double zeta = std::numeric_limits<double>::quiet_NaN();
+  int zeta_mechanism = -1;          ///< index of the mechanism that gives zeta
+  double max_dc = 0.0;              ///< the largest adopted D/C over the mechanisms (+inf: a collapse)
+  int dc_mechanism = -1;
+};
+
 struct BuildingAssessment {
   BuildingCase building;  ///< as run (a shared selection that fell back is marked)
   std::vector<BuildingMechanismResult> results;  ///< one per mechanism, in the file's order
   std::vector<BuildingGoverning> governing;      ///< per code, then approach
   std::vector<std::string> codes;                ///< the codes present, NTC2018 first
   BuildingTieIndex tie_index;                    ///< before/after the tie rods (issue 23)
+  BuildingVerdict verdict;                       ///< the building's verdict (issue 28)
   std::string site_description;
   double VR = 0.0;
   double TR_SLV = 0.0;  ///< years
@@ -110,6 +134,9 @@ BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& o
 /// lowest NTC 2018 zetaE (else NTC 2008); ties: the first. The index in
 /// b.mechanisms. Used by `assess fragility BUILDING.json` without --mechanism.
 std::size_t governing_mechanism_kinematic(const BuildingCase& b, const std::string& approach);
+
+/// The building's verdict from its mechanisms' (assess_building stores it in BuildingAssessment::verdict).
+BuildingVerdict building_verdict(const BuildingAssessment& b);
 
 /// The safety indices of one mechanism's assessment (docs/theory/building.md §4).
 std::vector<SafetyIndex> safety_indices(const FacadeAssessment& a);

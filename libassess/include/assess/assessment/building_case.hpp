@@ -70,6 +70,8 @@ struct BuildingCase {
   std::vector<SharedSelection> selections;
   /// "shared" (default) or "per_mechanism" (key "record_selection").
   std::string record_selection = "shared";
+  /// "report": the relazione's frontespizio and descriptive sections (issue 28), building-wide.
+  ReportInfo report;
 };
 
 /// Parses a building document: validates the building keys (unknown keys are

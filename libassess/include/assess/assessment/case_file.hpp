@@ -16,11 +16,36 @@
 
 #include <nlohmann/json.hpp>
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace assess {
+
+/// What the relazione says of the work and of its engineer (case key
+/// "report", issue 28, item 7; docs/user/case-file.md §Report): the
+/// frontespizio, the description of the building, the survey and
+/// investigations that justify the knowledge level, the masonry and the
+/// criteria of the mechanisms' choice. Text as the engineer writes it (any
+/// language); empty: the relazione says that it is not given.
+struct ReportInfo {
+  std::string client;          ///< committente
+  std::string work;            ///< opera (the building, its name)
+  std::string location;        ///< ubicazione (address); the site's coordinates are printed anyway
+  std::string engineer;        ///< tecnico: name
+  std::string registration;    ///< albo professionale and number
+  std::string revision;        ///< revisione of the document
+  std::string place;           ///< luogo of the signature
+  std::string description;     ///< descrizione dell'edificio
+  std::string investigations;  ///< rilievo, indagini, what justifies LC and FC (C8.5.4)
+  std::string masonry;         ///< tipologia muraria (Tab. C8.5.I)
+  /// Masonry parameters (MPa; NaN when not given): fm, tau0, E, G.
+  double fm = std::numeric_limits<double>::quiet_NaN(), tau0 = std::numeric_limits<double>::quiet_NaN();
+  double E = std::numeric_limits<double>::quiet_NaN(), G = std::numeric_limits<double>::quiet_NaN();
+  std::string mechanism_criteria;  ///< criteri di scelta dei meccanismi
+  bool heritage = false;           ///< bene tutelato: the DPCM 9/2/2011 indices are named
+};
 
 /// A parsed case file. Units inside are SI (the file uses m, kN, kN/m^3).
 struct CaseFile {
@@ -37,6 +62,7 @@ struct CaseFile {
   /// "linear", "nonlinear" (default) or "dynamic"; its verdict is the
   /// conclusion (assessment/verdict.hpp, docs/theory/facade.md §6).
   std::string method = "nonlinear";
+  ReportInfo report;              ///< "report": what the relazione says of the work (issue 28)
   /// Issues 23, 29: the tie levels that act in this case's analyses, SI
   /// inside (the file uses mm, MPa, kN, m: docs/user/case-file.md §Ties);
   /// every candidate is analysed with the levels whose anchor lies on one of

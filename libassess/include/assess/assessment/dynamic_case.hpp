@@ -34,7 +34,7 @@ struct ListedRecord {
 struct RecordSelectionSpec {
   int count = 7;                      ///< N
   std::optional<double> T_min, T_max;  ///< period range (s); default: around the mechanism's periods
-  double max_scale = 4.0;             ///< largest scale factor of a record (-)
+  double max_scale = 3.0;             ///< largest scale factor of a record (-), record-selection.md §2.4
   double max_mean_scale = 2.0;        ///< largest mean scale factor of the set (-)
   double max_pga_ratio = 2.5;         ///< guard: scaled PGA <= max_pga_ratio * ag S (-)
   int max_per_event = 3, max_per_station = 1;
@@ -43,6 +43,9 @@ struct RecordSelectionSpec {
   std::vector<std::string> site_classes;     ///< default: the site's soil class, relaxed with a warning
   bool relax_site_class = true;
   std::vector<std::string> countries;        ///< default: any
+  bool include_near_fault = false;           ///< "near_fault": "include" (default "exclude")
+  double near_fault_km = 10.0;               ///< distance threshold of the near-fault flag (km)
+  double max_misfit = 0.5;                   ///< individual misfit flagged above it (-)
   std::string catalogue;              ///< catalogue.json (default: data_dir()/spectra/records/catalogue.json)
 };
 

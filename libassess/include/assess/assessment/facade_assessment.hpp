@@ -33,12 +33,29 @@ struct RecordUsed {
   double scale = 1.0;    ///< scale factor applied (-)
   double pga = 0.0;      ///< PGA of the scaled record (m/s^2)
   std::string json_path; ///< where it was listed ("" if selected)
-  // Why it was chosen (selected records; NaN / "" when unknown or listed).
+  // What the record is (the catalogue's metadata: selected records, and listed
+  // records whose file is in the catalogue; NaN / "" when unknown).
+  bool in_catalogue = false;     ///< metadata below come from the record library's catalogue
+  std::string date, country, station_code;
   double Mw = std::numeric_limits<double>::quiet_NaN();
   double distance_km = std::numeric_limits<double>::quiet_NaN();
   std::string distance_kind, site_class, positive_direction;
-  double deviation = std::numeric_limits<double>::quiet_NaN();  ///< individual RMS of f S/Se - 1 over the range (-)
-  int rank = 0;                  ///< rank of that deviation among the eligible records (1 = best)
+  std::string site_class_basis;  ///< "stated" (by the source) or "Vs30" (NTC 2018 Tab. 3.2.II bands)
+  std::string vs30_class;        ///< the class Vs30 implies (may differ from a stated class)
+  double vs30_m_s = std::numeric_limits<double>::quiet_NaN();
+  /// Longest usable period 1/f_low (s) where the source gives f_low; NaN unknown.
+  double usable_period_s = std::numeric_limits<double>::quiet_NaN();
+  std::string pulse;             ///< "pulse-like", "non-pulse" or "" (not classified)
+  /// Why the record is near-fault or pulse-like ("" if its metadata do not say so).
+  std::string near_fault;
+  // Why it was chosen (selected records; NaN when listed).
+  double deviation = std::numeric_limits<double>::quiet_NaN();  ///< individual misfit: RMS of f S/Se - 1 over the range (-)
+  int rank = 0;                  ///< rank of that deviation among the eligible records (1 = best; 0 listed)
+  bool misfit_flag = false;      ///< deviation above the selection's max_misfit
+  /// The caveats of this record, computed (record-selection.md §2.8): near-fault
+  /// or pulse-like, misfit above the limit, class other than the site's, a
+  /// stated class its Vs30 contradicts, scale above the default cap, no metadata.
+  std::vector<std::string> flags;
   double duration_s = 0.0;       ///< length of the record file (s)
   double integrated_s = 0.0;     ///< excitation integrated (s): the whole motion at the mechanism's base
 };
@@ -81,7 +98,21 @@ struct RestitutionSummary {
   double d_demand = 0.0;          ///< the demand of the rule: mean or largest peak d* (m)
   bool no_verdict = false;        ///< N < 3 and no collapse: the records cannot support a verdict
   bool slv_satisfied = false;     ///< no failed analysis, no collapse and d_demand <= d_SLV (and a verdict)
-  double dc_slv = 0.0;            ///< d_demand / d_SLV (-)
+  double dc_slv = 0.0;            ///< d_demand / d_SLV (-); +inf with a collapse or a failed analysis
+  /// Issue 28 (docs/theory/facade.md §6.4): with a collapse (d0 exceeded or
+  /// overturned) the displacement demand is unbounded and d_demand = dc_slv =
+  /// +inf; with a failed analysis there is no trustworthy demand and they are
+  /// +inf too. The same figures over the records none of whose analyses
+  /// collapsed or failed are given apart (NaN when there is none):
+  int collapsed = 0;                    ///< analyses with a collapse
+  int records_survived = 0;             ///< records none of whose analyses collapsed or failed
+  double d_demand_survivors = std::numeric_limits<double>::quiet_NaN();  ///< rule's demand over them (m)
+  double dc_survivors = std::numeric_limits<double>::quiet_NaN();        ///< d_demand_survivors / d_SLV (-)
+  /// The seed energy D/C of the check: mean_dc when no analysis overturned or
+  /// failed, else +inf; mean_dc_survivors is the mean over the analyses that
+  /// did not overturn (NaN when none).
+  double energy_dc = 0.0;
+  double mean_dc_survivors = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Compatibility of the records' mean 5 % spectrum with the SLV elastic
@@ -131,6 +162,19 @@ struct FacadeAssessment {
   std::vector<std::string> selection_site_classes;  ///< classes accepted in the end (empty = any)
   double selection_max_pga_ratio = 0.0;         ///< the PGA guard used (-)
   double selection_max_scale = 0.0, selection_max_mean_scale = 0.0;  ///< scale limits used (-)
+  double selection_max_misfit = 0.0;            ///< misfit above which a record is flagged (-)
+  bool selection_include_near_fault = false;    ///< near-fault / pulse-like records admitted
+  double selection_near_fault_km = 0.0;         ///< distance threshold of the near-fault flag (km)
+  std::size_t selection_near_fault_excluded = 0;  ///< near-fault / pulse-like records left out
+  /// The site-class ladder tried: classes, candidates, outcome (the last is used).
+  std::vector<std::string> selection_steps;
+  std::string selection_spectra;   ///< "precomputed" (interpolated) or "integrated" candidates' spectra
+  /// Why the period range is what it is (computed: the mechanism periods, the
+  /// factors, the cap, and the limit-state periods it does not reach).
+  std::string selection_range_note;
+  /// Several candidates analysed dynamically (issue 24): how their selection
+  /// was shared (one set over the union of their ranges, or each its own).
+  std::string selection_shared_note;
   double free_tail_s = 0.0;   ///< cap on the free motion after each record (s; dynamics/analysis_end.hpp)
   std::vector<std::string> record_failures;  ///< "<path>: <message>" of records skipped (--keep-going)
   std::vector<DynamicRun> runs;
@@ -165,6 +209,9 @@ struct FacadeAssessment {
   /// The ADRS demand curves of the governing candidate's displacement checks (issue 24), at adrs_periods (s).
   std::vector<AdrsDemand> adrs;
   std::vector<double> adrs_periods;
+  /// The same for every candidate (index as in kinematic.candidates; issue 28:
+  /// the relazione develops each candidate that governs a method).
+  std::vector<std::vector<AdrsDemand>> candidate_adrs;
 
   /// The dynamic analyses of the other candidates (issue 24; docs/theory/facade.md §6.3):
   /// every candidate besides the governing one that governs a code or fails one of
@@ -173,7 +220,8 @@ struct FacadeAssessment {
   /// candidate: the same code path, and the same numbers, as a run of that
   /// candidate alone. Their dynamic rows are in `checks` and their energy rows
   /// in `energy_rows`, so the dynamic verdict is the worst over all of them.
-  /// Histories are not kept for them.
+  /// Histories are kept when the options ask for them (the relazione shows the
+  /// histories of the candidate that governs the dynamic verdict).
   std::vector<FacadeAssessment> other_dynamics;
   /// The candidate index (in kinematic.candidates) of each of other_dynamics.
   std::vector<std::size_t> other_dynamics_candidate;

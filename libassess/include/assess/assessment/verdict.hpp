@@ -52,6 +52,9 @@ struct MethodVerdict {
   int checks = 0, failing = 0, no_verdict = 0;
   double max_dc = 0.0;     ///< largest D/C (-); inf if one is not finite
   int governing = -1;      ///< index in Verdict::rows of its governing row(s): the worst; -1 if none
+  /// No check fails but some give no verdict: the method has no verdict
+  /// (shown as such, never as "not satisfied" beside a D/C <= 1; issue 28).
+  bool undecided() const { return failing == 0 && no_verdict > 0; }
 };
 
 /// "linear" (rows of kind "strength"), "nonlinear" ("displacement"), "dynamic" ("dynamic"); "" otherwise.

@@ -44,8 +44,8 @@ std::string campaign_index_html(const nlohmann::json& summary,
                                 const std::vector<std::pair<std::string, std::string>>& svgs);
 
 /// Reads out_dir/results.csv and writes summary.json, index.html and, if
-/// `plots`, the SVG plots (rendered with gnuplot). @throws InputError if a file cannot be
-/// read or written, or gnuplot is missing when plots are asked for.
+/// `plots`, the SVG plots (render_svg). @throws InputError if a file cannot be
+/// read or written.
 CampaignReportFiles write_campaign_report(const Campaign& campaign, const std::string& out_dir, bool plots = true);
 
 }  // namespace assess

@@ -45,5 +45,14 @@ constexpr double max_events_max = 1e9;      ///< events
 constexpr double winkler_k_max_N_m3 = 1e12; ///< N/m^3 (= 1e9 kN/m^3)
 constexpr double theta_cr_min_over_abs_tol = 10.0;  ///< -
 constexpr double unit_weight_max_N_m3 = 1e7;        ///< N/m^3 (= 1e4 kN/m^3)
+/// Events (impacts, contact-branch switches, lift-offs) an analysis may locate
+/// per second of analysed time (motion and tail), plus events_floor: a
+/// rocking wall meets a few tens per second (a stiff Winkler base: about 400);
+/// more is an accumulation of events at rest, where the body only chatters
+/// (issue 31: a campaign at scale 1e-13 located ten million events, 6 s per
+/// analysis, before "failed"; now about 0.05 s). The analysis ends as
+/// event_limit, a failure, with the count in its message.
+constexpr double events_per_second_max = 2000.0;    ///< 1/s
+constexpr double events_floor = 10000.0;            ///< events
 
 }  // namespace assess::limits

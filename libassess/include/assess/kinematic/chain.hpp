@@ -13,6 +13,7 @@
 
 #include <Eigen/Dense>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -25,12 +26,27 @@ struct Block {
   std::vector<Eigen::Vector2d> polygon;   ///< vertices (x, z) (m), either orientation
   double unit_weight = 0.0;               ///< gamma (N/m^3), >= 0
   double length = 1.0;                    ///< out-of-plane length (m), > 0
+  /// false: the chain is drawn in PLAN (horizontal flexure, issue 33): the
+  /// block's weight acts normal to the drawing and does no virtual work, its
+  /// mass still takes part in the seismic action (its self weight is a
+  /// seismic, non-bearing load: Load::vertical = false).
+  bool weight_in_plane = true;
+  /// Added to the polygon's polar radius of gyration squared (m^2, may be
+  /// negative, the total must stay > 0): the spread of the mass normal to the
+  /// drawing that a planar reduction of a 3-D body does not draw (the corner
+  /// wedge projected on the plane normal to its rotation axis, issue 33;
+  /// docs/theory/kinematic.md §5). Only the rotational inertia uses it.
+  double extra_gyration_sq = 0.0;
 };
 
 enum class ConstraintType {
   GroundHinge,  ///< the block rotates about a fixed point (2 equations)
   Hinge,        ///< two blocks share a point (2 equations)
   Slider,       ///< a point of the block moves along a fixed line (1 equation)
+  /// Two blocks share a material point that need not lie on either polygon
+  /// (2 equations, as Hinge): two welds at distinct points join two pieces of
+  /// one rigid body drawn apart (the planar reduction of a 3-D wedge, issue 33).
+  Weld,
 };
 
 /// A constraint. Points are in the undeformed configuration (m).
@@ -38,7 +54,7 @@ struct Constraint {
   ConstraintType type = ConstraintType::GroundHinge;
   std::string name;
   int block = -1;                       ///< index of the (first) block
-  int other = -1;                       ///< Hinge: index of the second block
+  int other = -1;                       ///< Hinge, Weld: index of the second block
   Eigen::Vector2d point{0.0, 0.0};      ///< hinge point / sliding point (m)
   /// Slider: direction of the line the point moves along (any length); e.g.
   /// (0, 1) for a floor that stops the horizontal motion of the wall.
@@ -72,7 +88,31 @@ struct Load {
   /// The drawing's label of a force, tie or friction (report/mechanism_drawing;
   /// issue 29: ties labelled per tie and per level); "": "T = <force> kN".
   std::string label;
+  /// Friction (issue 33): the horizontal slip of the point (m) beyond which
+  /// the friction is lost (the interlocked units or a floor's seat
+  /// disengage); infinity = never. alpha0 is unaffected (no slip at rest).
+  double slip_limit = std::numeric_limits<double>::infinity();
 };
+
+/// What makes a block's polygon unusable, or "" for a usable one (issue 31):
+/// fewer than 3 vertices, a vertex not finite or farther than
+/// chain_max_coordinate_m from the origin, two consecutive vertices at the
+/// same point, a polygon smaller than chain_min_extent_m across, every vertex
+/// on one line, edges that cross each other (not a simple polygon), or an
+/// area that is a sliver of its extent. The Chain constructor and the case
+/// file reader (with the JSON path) give the same diagnosis.
+/// `repeated_vertices_ok`: a vertex repeated at once (a catalogue mechanism
+/// whose wedge vanishes) is skipped rather than refused; a case file's
+/// explicit block refuses it.
+std::string polygon_defect(const std::vector<Eigen::Vector2d>& polygon, bool repeated_vertices_ok = false);
+
+/// Coordinates of a chain lie within 1000 km of its origin: products of
+/// coordinates (areas, moments) stay far from overflow (1e150 m made every
+/// weight infinite). The case file's physical bound is tighter (1 km,
+/// support/number_rules.hpp).
+inline constexpr double chain_max_coordinate_m = 1e6;
+/// A block is at least 1 mm across.
+inline constexpr double chain_min_extent_m = 1e-3;
 
 /// The chain. Immutable once built; the constructor validates it.
 class Chain {
@@ -101,9 +141,14 @@ class Chain {
   double vertical_gyration_sq(int block, const Eigen::VectorXd& q) const;
 
   /// Polar radius of gyration squared about the block's centroid (m^2):
-  /// integral of ((x - x_c)^2 + (z - z_c)^2) dA / A of the undeformed polygon.
-  /// The block's moment of inertia about its centroid is then m * this.
-  double polar_gyration_sq(int block) const { return moments_[block](0) + moments_[block](2); }
+  /// integral of ((x - x_c)^2 + (z - z_c)^2) dA / A of the undeformed polygon,
+  /// plus Block::extra_gyration_sq. The block's moment of inertia about its
+  /// centroid is then m * this.
+  double polar_gyration_sq(int block) const {
+    return moments_[block](0) + moments_[block](2) + blocks_[block].extra_gyration_sq;
+  }
+  /// True if every block is drawn in plan (Block::weight_in_plane false).
+  bool plan() const;
 
   /// Position (m) of the material point p0 (undeformed, m) of `block` in the
   /// configuration q (size n_coordinates(); zero = undeformed).

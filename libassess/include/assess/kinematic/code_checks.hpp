@@ -9,6 +9,7 @@
 #include "assess/hazard/seismic_action.hpp"
 #include "assess/hazard/spectrum.hpp"
 
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -50,6 +51,16 @@ struct CheckRow {
   /// Issue 29: a displacement check of a tied mechanism that the wall without
   /// its tie levels satisfies better (the row is the bare wall's).
   bool without_ties = false;
+  /// Dynamic and energy rows (issue 28): the analyses behind the row, how
+  /// many collapsed (the threshold d0 exceeded or the wall overturned,
+  /// C8.7.1.2.1.9) and how many failed (integrator limits: not a result).
+  /// Convention (docs/theory/facade.md §6.4): a row with a collapse has an
+  /// unbounded demand, dc = +inf ("collasso in n su N"), and a row with a
+  /// failed analysis has no trustworthy demand, dc = +inf as well; the
+  /// figure over the analyses that neither collapsed nor failed is
+  /// `dc_survivors` (NaN when none), shown apart and never as the verdict.
+  int analyses = 0, collapsed = 0, failed = 0;
+  double dc_survivors = std::numeric_limits<double>::quiet_NaN();
   /// Every input of the demand, so that it can be redone by hand (issue 24):
   /// name with its unit ("T1 (s)", "psi(Z) (-)", "gamma (-)", "N (storeys)",
   /// "Se(T1) (m/s2)", "a_Z (m/s2)", "q (-)", "xi (%)", "eta (-)", "T (s)", ...) and value.
@@ -59,7 +70,21 @@ struct CheckRow {
   /// as* [C8A.4.7]; NTC 2018: d_SLV or d_SLC and a(d) [C8.7.1.10-11]), and
   /// the damping of the demand spectrum xi (%). 0 for the other kinds.
   double secant_T = 0.0, secant_d = 0.0, secant_a = 0.0, xi_pct = 0.0;
+  /// Checks at height (issue 28): what gives the floor demand, "" at ground:
+  /// the branch of [C7.2.6] ("rising", "plateau", "falling"), "ground" when the
+  /// ground spectrum's lower bound of [C7.2.5] governs, "plateau_bound" when the
+  /// lower bound S_eZ(T1) (b T1)^2/4 pi^2 of [C8.7.1.12] does.
+  std::string floor_branch;
 };
+
+/// The one verdict rule of a check (issue 28: one verdict everywhere): a
+/// check is satisfied if and only if it can give a verdict and its D/C is a
+/// finite number not above 1. Every rule that fails a check does so through
+/// its D/C (a collapse, a failed analysis: dc = +inf), so that no row can
+/// show a D/C <= 1 beside "not satisfied" or a D/C > 1 beside "satisfied".
+bool check_satisfied(double dc, bool no_verdict);
+/// Sets r.satisfied by check_satisfied(r.dc, r.no_verdict).
+void decide(CheckRow& r);
 
 /// What the checks need besides the analysis.
 struct CheckInput {

@@ -36,6 +36,11 @@ class FloorSpectrum {
   double Se(double T) const;
   /// Floor displacement spectrum S_eZ(T) T^2 / (4 pi^2) (m).
   double SDe(double T) const;
+  /// Which part of [C7.2.5]-[C7.2.6] gives S_eZ(T) (issue 28: the relazione
+  /// names the branch that governs): "rising" (T < a T1), "plateau"
+  /// (a T1 <= T < b T1), "falling" (T >= b T1), or "ground" when the ground
+  /// spectrum Se(T, xi) is larger (T > T1, the lower bound of [C7.2.5]).
+  const char* branch(double T) const;
   double gamma() const { return gamma_; }
   double psi() const { return psi_; }
   double T1() const { return building_.T1; }

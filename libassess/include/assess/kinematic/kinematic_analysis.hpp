@@ -5,6 +5,7 @@
 #pragma once
 
 #include "assess/kinematic/chain.hpp"
+#include "assess/kinematic/code_rules.hpp"
 #include "assess/kinematic/tie.hpp"
 
 #include <Eigen/Dense>
@@ -44,6 +45,17 @@ struct KinematicOptions {
   double du_cap = std::numeric_limits<double>::infinity();
   double d_SLV_cap = std::numeric_limits<double>::infinity();
   double d_SLC_cap = std::numeric_limits<double>::infinity();
+  /// d_SLV / d0* (-): the code's 0.40 (Circ. 2019 C8.7.1.2.1.6); another
+  /// value only for the relazione's sensitivity study (assessment/sensitivity.hpp).
+  double dSLV_over_d0 = code_rules::dSLV_over_d0_2018;
+  /// Issue 33: a bound on the rotation (rad) of a mechanism that turns as one
+  /// rigid body about its single ground hinge (the corner pier's own
+  /// overturning, the pull-out of the side walls' interlocking): d0* is
+  /// bounded by d* at that rotation, so du*, d_SLV and d_SLC are capped at
+  /// 0.4, 0.4 and 0.6 of it (the same fractions as of d0*, code_rules).
+  /// Infinity = none. Why the bound holds is the mechanism's
+  /// (MechanismCandidate::rotation_bound_reason).
+  double rotation_cap = std::numeric_limits<double>::infinity();
   /// Throws InputError naming the field.
   void validate() const;
 };
@@ -119,6 +131,11 @@ struct KinematicResult {
   std::string message;        ///< why the curve is incomplete, if it is
   double dk0 = 0.0;           ///< control displacement at alpha = 0 (m)
   double d0_star = 0.0;       ///< d* at alpha = 0 (m)
+  /// Issue 33: the control displacement and d* at KinematicOptions::rotation_cap
+  /// (m); infinity without a cap. The displacement capacities use
+  /// min(d0*, d0_star_bound) and a dynamic analysis collapses at min(dk0, dk0_bound).
+  double dk0_bound = std::numeric_limits<double>::infinity();
+  double d0_star_bound = std::numeric_limits<double>::infinity();
   std::vector<CapacityPoint> curve;  ///< from d* = 0 to d0*
   // NTC 2008 (Circ. 617/2009 C8A.4).
   double du_star = 0.0;   ///< ultimate displacement du* (m)

@@ -5,6 +5,7 @@
 
 #include "assess/records/record.hpp"
 
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
@@ -21,13 +22,20 @@ struct CatalogueEntry {
   std::string station_code;
   std::string positive_direction;  ///< direction of positive acceleration ("N", "W", "azimuth 228 deg", "not stated ...")
   std::string distance_kind;       ///< "Rjb", "Repi" or "Rrup" ("" if unknown)
-  std::string site_class;          ///< NTC 2018 Tab. 3.2.II class from Vs30 (A..D), else the stated one, else ""
-  std::string site_class_basis;    ///< "Vs30" or "stated" or ""
+  /// NTC 2018 Tab. 3.2.II class: the one the source states (site_class_stated
+  /// of metadata.csv), else the one its Vs30 implies (A..D), else "".
+  std::string site_class;
+  std::string site_class_basis;    ///< "stated" (by the source), "Vs30" (Tab. 3.2.II bands) or ""
+  std::string vs30_class;          ///< the class Vs30 implies ("" without Vs30); may differ from a stated class
+  std::string content_hash;        ///< FNV-1a 64 of the file's bytes (16 hex digits), computed at build
+  /// Pulse classification given by a source: "pulse-like", "non-pulse" or "" (not classified).
+  std::string pulse;
   std::string country, terms;
   double Mw = std::numeric_limits<double>::quiet_NaN();                ///< moment magnitude (-)
   double distance_km = std::numeric_limits<double>::quiet_NaN();       ///< source-to-site distance (km)
   double vs30_m_s = std::numeric_limits<double>::quiet_NaN();          ///< Vs30 (m/s)
   double lowest_usable_hz = std::numeric_limits<double>::quiet_NaN();  ///< lowest usable frequency / high-pass corner (Hz)
+  double pulse_period_s = std::numeric_limits<double>::quiet_NaN();    ///< Tp of a pulse-like record (s)
   double significant_duration_s = 0.0;  ///< D5-95 of the Arias intensity (s), Trifunac & Brady (1975)
   long npts = 0;          ///< number of samples
   double dt_s = 0.0;      ///< time step (s)
@@ -39,6 +47,8 @@ struct CatalogueEntry {
 
 struct RecordCatalogue {
   std::string directory;  ///< folder holding the record files
+  std::string path;       ///< the catalogue.json read ("" if built in memory)
+  std::uint64_t text_hash = 0;  ///< content_hash of catalogue.json's bytes (0 if built in memory)
   std::string description;
   std::vector<CatalogueEntry> entries;
 
@@ -59,9 +69,21 @@ struct RecordCatalogue {
 };
 
 /// Site class of NTC 2018 Tab. 3.2.II (= EC8 Tab. 3.1) implied by Vs30 (m/s):
-/// A >= 800, B 360-800, C 180-360, D < 180. Class E needs the stratigraphy
+/// A > 800 ("superiori a 800 m/s"), B 360-800, C 180-360, D < 180; 800
+/// itself is B, and a value on the 360 or 180 bound takes the stiffer class
+/// (B, C). Class E needs the stratigraphy
 /// and is only taken where a source states it. "" for a non-finite Vs30.
 std::string site_class_from_vs30(double vs30_m_s);
+
+/// Distance below which a record is near-fault (km, docs/theory/record-selection.md §2.4).
+inline constexpr double near_fault_distance_km = 10.0;
+
+/// Why a record is near-fault or pulse-like, "" if its metadata do not say so
+/// (docs/theory/record-selection.md §2.4): pulse-like by its source's
+/// classification; or its catalogued distance below `threshold_km` (km) of
+/// any kind (Rjb <= Repi, so an epicentral distance below the threshold puts
+/// the rupture's surface projection within it too).
+std::string near_fault_reason(const CatalogueEntry& e, double threshold_km = near_fault_distance_km);
 
 /// Weak motion threshold of the catalogue (g): a component whose PGA is
 /// below it is not usable for design (docs/theory/record-selection.md §3).

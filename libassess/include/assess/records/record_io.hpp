@@ -13,6 +13,13 @@
 
 namespace assess {
 
+/// The time step of every record, from a header, a time column, a case file's
+/// "dt" or --dt (s): 1 us to 10 s. Strong-motion records are sampled at
+/// 0.001-0.04 s; 1e-320 s (a subnormal) passed every check "dt > 0" and gave
+/// a record 1e-317 s long (issue 31).
+inline constexpr double record_dt_min_s = 1e-6;
+inline constexpr double record_dt_max_s = 10.0;
+
 /// Unit of the acceleration values in a file.
 enum class AccelerationUnit {
   g,      ///< multiples of standard gravity g_n = 9.80665 m/s^2

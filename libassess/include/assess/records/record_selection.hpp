@@ -34,6 +34,10 @@ struct PeriodRange {
   double T_max = 2.0;   ///< s
 };
 
+/// Factors and bounds of rocking_period_range (s, record-selection.md §2.3).
+inline constexpr double rocking_range_lower_factor = 0.5, rocking_range_upper_factor = 1.5;
+inline constexpr double rocking_range_floor_s = 0.1, rocking_range_cap_s = 4.0;
+
 /// Default range for a rocking mechanism: [0.5 T_first, 1.5 T_last] clipped
 /// to [0.1, 4] s, where T_first is the shortest and T_last the longest
 /// secant period of interest (e.g. Ts at SLD and T_SLC of Circ. 2019
@@ -43,7 +47,7 @@ struct PeriodRange {
 PeriodRange rocking_period_range(double T_first, double T_last);
 
 /// Settings of the selection (docs/theory/record-selection.md §2). Defaults:
-/// 7 records, band -10 %/+30 %, each scale factor <= 4, mean scale factor
+/// 7 records, band -10 %/+30 %, each scale factor <= 3, mean scale factor
 /// <= 2, scaled PGA <= 2.5 Se(0) (= 2.5 ag S), at most 1 component per
 /// station and 3 per event, least-squares scaling, 40 log-spaced periods.
 struct SelectionOptions {
@@ -51,7 +55,8 @@ struct SelectionOptions {
   PeriodRange range{};               ///< check range (s), 0 < T_min < T_max
   double lower_tol = 0.10;           ///< mean >= (1 - lower_tol) Se over the range (-)
   double upper_tol = 0.30;           ///< mean <= (1 + upper_tol) Se over the range (-)
-  double max_scale = 4.0;            ///< records needing f > max_scale are rejected (-)
+  /// Records needing f > max_scale are rejected (-): 3, record-selection.md §2.4.
+  double max_scale = 3.0;
   double max_mean_scale = 2.0;       ///< sets whose mean f exceeds this are not formed (-)
   /// Guard: a record whose scaled PGA exceeds max_pga_ratio * Se(0) (= ag S
   /// for an NTC spectrum) is rejected (-). 0 disables (not recommended).
@@ -67,6 +72,9 @@ struct SelectionOptions {
   /// is still too many, greedy forward selection plus best swaps on the pool.
   double max_combinations = 2e6;
   int pool_size = 28;                ///< ranked candidates combined (>= N); C(28, 7) = 1.18e6
+  /// A chosen record whose individual misfit (`SelectedRecord::deviation`)
+  /// exceeds this is flagged (-, record-selection.md §2.4); it is not excluded.
+  double max_misfit = 0.5;
 
   /// Throws InputError naming the field when a value is out of range.
   void validate() const;
@@ -89,6 +97,7 @@ struct SelectedRecord {
   double scaled_pga = 0.0;    ///< f * PGA (m/s^2)
   double deviation = 0.0;     ///< individual RMS of f S/Se - 1 over the range (-)
   int rank = 0;               ///< 1 = closest individual match among the eligible
+  bool misfit_flag = false;   ///< deviation > SelectionOptions::max_misfit
   std::vector<double> psa;    ///< f * PSA at the check periods (m/s^2)
 };
 
@@ -169,6 +178,11 @@ struct CatalogueFilterResult {
   std::vector<std::string> site_classes;  ///< classes finally accepted (empty = any)
   std::vector<std::string> warnings;
 };
+
+/// The site classes tried in turn (docs/theory/record-selection.md §2.2):
+/// `classes`; if `relax`, then with their neighbours (A-B-C-D; E with C and
+/// D); then any class (an empty list). Empty `classes`: one step, any class.
+std::vector<std::vector<std::string>> site_class_ladder(const std::vector<std::string>& classes, bool relax);
 
 /// Applies the filters to the design candidates (usable_for_design) of a catalogue.
 CatalogueFilterResult filter_catalogue(const std::vector<CatalogueEntry>& entries, const CatalogueFilters& f);

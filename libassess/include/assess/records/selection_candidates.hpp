@@ -10,6 +10,8 @@
 #include "assess/records/record.hpp"
 #include "assess/records/record_selection.hpp"
 
+#include "assess/records/record_spectra.hpp"
+
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -22,6 +24,7 @@ namespace assess {
 /// selection with other values of these three is refused (InputError).
 class SelectionCandidates {
  public:
+  SelectionCandidates() = default;
   /// One candidate: what the selection reads of it.
   struct Candidate {
     std::string name;          ///< Record::name
@@ -40,6 +43,15 @@ class SelectionCandidates {
                       const SelectionOptions& opts);
   /// Same, each record its own event and station ("#i").
   SelectionCandidates(const std::vector<Record>& records, const SelectionOptions& opts);
+  /// Candidates whose spectra are precomputed on a period grid (the record
+  /// library's, record_spectra.hpp): rows[i] is candidate i's position in
+  /// spectra.ids; its PSA at the check periods is interpolated log-log
+  /// between grid periods (LibrarySpectra::interpolate), its PGA is the T = 0
+  /// ordinate. names, info and rows have one element per candidate.
+  /// @throws InputError if the grid lacks opts.damping_ratio or ends before opts.range.T_max
+  SelectionCandidates(const LibrarySpectra& spectra, const std::vector<std::size_t>& rows,
+                      const std::vector<std::string>& names, const std::vector<CandidateInfo>& info,
+                      const SelectionOptions& opts);
 
   const std::vector<double>& periods() const { return periods_; }  ///< check periods (s)
   const std::vector<Candidate>& candidates() const { return candidates_; }
@@ -47,6 +59,12 @@ class SelectionCandidates {
   const PeriodRange& range() const { return range_; }                ///< s
   int n_periods() const { return n_periods_; }
   double damping_ratio() const { return damping_ratio_; }            ///< fraction
+  /// true: the PSA were interpolated on a precomputed grid; false: integrated.
+  bool interpolated() const { return interpolated_; }
+
+  /// The candidates at positions `which` (in that order), their spectra
+  /// copied: for selections over subsets of one set of candidates.
+  SelectionCandidates subset(const std::vector<std::size_t>& which) const;
 
   /// Throws InputError unless opts has the range, n_periods and damping ratio
   /// these spectra were computed for (compared exactly).
@@ -56,6 +74,7 @@ class SelectionCandidates {
   PeriodRange range_;
   int n_periods_ = 0;
   double damping_ratio_ = 0.0;
+  bool interpolated_ = false;
   std::vector<double> periods_;
   std::vector<Candidate> candidates_;
 };

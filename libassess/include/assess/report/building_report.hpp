@@ -30,12 +30,19 @@ nlohmann::json building_json(const BuildingAssessment& b);
 /// The safety indices of one mechanism as JSON (an array; non-finite numbers null).
 nlohmann::json safety_indices_json(const std::vector<SafetyIndex>& indices);
 
-/// The relazione of the building as one self-contained HTML page: header,
-/// premessa and normativa, the site, the summary (table with a link to each
-/// mechanism's section, the governing mechanisms marked, the bar chart of
-/// zetaE against 1), then one section per mechanism (the façade report's
-/// sections, ids prefixed with the mechanism's id), conclusions, the case file.
-/// @throws InputError if gnuplot is missing
+/// The relazione of the building as a document (issue 28): frontespizio, the
+/// building's verdict (one sentence: verdict, zetaE,edificio, the mechanisms
+/// that fail) and the governing mechanism of each approach, contents;
+/// premessa, normativa, description, survey, the mechanisms examined; the
+/// seismic action; the formulas; the summary (per-approach alpha0, a0*, D/C
+/// and zetaE of every mechanism, the zetaE chart, NTC 2008, the record sets,
+/// the ties); one section per mechanism (the façade relazione's sections,
+/// anchors and figure ids prefixed with the mechanism's id); interventions;
+/// conclusions and signature; appendices (other candidates, warnings,
+/// legend, readings adopted, the case file).
+Document building_document(const BuildingAssessment& b, const ReportOptions& options = {});
+
+/// to_html(building_document(b, options)).
 std::string building_html(const BuildingAssessment& b, const ReportOptions& options = {});
 
 }  // namespace assess

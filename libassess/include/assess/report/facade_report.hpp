@@ -6,17 +6,18 @@
 #include "assess/assessment/facade_assessment.hpp"
 #include "assess/assessment/tie_intervention.hpp"
 #include "assess/report/kinematic_report.hpp"
+#include "assess/report/document.hpp"
 #include "assess/report/messages.hpp"
 #include "assess/report/probabilistic_result.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <optional>
+#include <set>
 #include <string>
 
 namespace assess {
 
-class HtmlReport;
 
 /// Readable report: site block per limit state, kinematic block with every
 /// intermediate quantity, the checks table (kinematic and dynamic rows, verdicts
@@ -39,34 +40,45 @@ struct ReportOptions {
   /// in its own box after the verdicts by approach, labelled as not a code check.
   std::optional<ProbabilisticResult> fragility;
   /// Issue 23: the tie rods of the case (assess run with "ties" or "design"):
-  /// their section (tie_html.cpp) after the comparison; null: none.
+  /// their section (tie_html.cpp) in the interventions; null: none.
   const TieInterventionResult* ties = nullptr;
+  /// A building's mechanism whose records are a set shared with others (issue
+  /// 28): the set's name ("S1"); its records are described once in the
+  /// building's summary and the mechanism's dynamic section refers to it.
+  std::string shared_records;
 };
 
-/// The summary row (index in v.rows) that the verdict box of `code` names as
-/// governing: a row without a verdict or with a D/C that is not finite first
-/// (it cannot be trusted), then a failing row, then the largest D/C; -1 if the
-/// code has no row. Formatting only: picks among the assessment's rows.
-int governing_verdict_row(const Verdict& v, const std::string& code);
+/// The relazione of the assessment as a document (issue 28): frontespizio,
+/// verdict box and contents; premessa, normativa, description of the building,
+/// survey and knowledge level, masonry, criteria of the mechanisms' choice;
+/// seismic action; the formulas with their clauses; each candidate that
+/// governs a method developed (bodies, drawing, virtual work, kinematic
+/// quantities with their numbers, capacity curve, ADRS); the checks; the
+/// dynamic analysis of the candidate that governs it; safety indices; the
+/// methods compared; interventions; the probabilistic result when given;
+/// the evaluation of the results; conclusions and signature; appendices
+/// (other candidates' checks, warnings, legend, the readings adopted, the
+/// case file). Render it with to_html (html_writer.hpp), write_docx
+/// (docx_writer.hpp) or the report files (report_files.hpp).
+Document facade_document(const FacadeAssessment& a, const ReportOptions& options = {});
 
-/// The relazione as a self-contained, printable HTML page (A4): verdict box
-/// per code, site and spectra, a drawing of the mechanism, the virtual-work
-/// and candidates tables, the kinematic quantities and the ADRS plot, the
-/// checks, the dynamic analysis (compatibility of the records, theta/theta_u
-/// histories, summary), the grouped D/C bars, the additional probabilistic
-/// result when given (options.fragility), the legend of the clause tags
-/// and the case file. Plots are drawn by gnuplot.
-/// @throws InputError if gnuplot is missing (names the package gnuplot-nox)
+/// to_html(facade_document(a, options)).
 std::string facade_html(const FacadeAssessment& a, const ReportOptions& options = {});
 
-/// The site section of the relazione (site, limit states, spectra), appended
-/// to `h`: the building relazione shows it once (issue 22).
-void facade_html_site_section(const FacadeAssessment& a, const ReportOptions& options, HtmlReport& h);
+/// The seismic-action section (site, limit states, spectra), added to `d`:
+/// the building relazione shows it once (issue 22).
+void facade_site_section(const FacadeAssessment& a, const ReportOptions& options, DocumentBuilder& d);
 
-/// One mechanism's sections of the relazione appended to `h` (verdict box,
-/// mechanism, kinematic analysis, checks, dynamic analysis, D/C by approach,
-/// the tie rods when options.ties is set, warnings): the building relazione nests them under each mechanism's heading
-/// (with HtmlReport::set_id_prefix and set_heading_shift).
-void facade_html_mechanism_sections(const FacadeAssessment& a, const ReportOptions& options, HtmlReport& h);
+/// One mechanism's sections (verdict box, mechanism, checks, dynamic analysis,
+/// safety indices, interventions (the methods compared are in the building's summary), evaluation, conclusions without
+/// signature, warnings), added to `d`: the building relazione nests them
+/// under each mechanism's heading (DocumentBuilder::set_id_prefix and
+/// set_heading_shift). `readings` collects the readings its clauses rely on.
+void facade_mechanism_sections(const FacadeAssessment& a, const ReportOptions& options, DocumentBuilder& d,
+                               std::set<std::string>* readings);
+
+/// The appendix of the checks of the candidates the body does not develop.
+void facade_candidates_appendix(const FacadeAssessment& a, const ReportOptions& options, DocumentBuilder& d,
+                                std::set<std::string>* readings);
 
 }  // namespace assess

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace assess {
 
@@ -12,5 +14,10 @@ namespace assess {
 /// environment variable CHROMIUM. @throws InputError if the browser is missing
 /// (naming the Debian package chromium), fails, or writes no PDF.
 void html_to_pdf(const std::string& html, const std::string& pdf_path);
+
+/// The bookmarks of a PDF printed by html_to_pdf, in document order: (page,
+/// title) of every heading. Read with pdftohtml (Debian package
+/// poppler-utils); empty when it is missing or fails.
+std::vector<std::pair<int, std::string>> pdf_outline(const std::string& pdf_path);
 
 }  // namespace assess

@@ -1,6 +1,6 @@
 // fragility_report.hpp: the outputs of a fragility analysis: summary JSON,
 // CSV tables (curves, stripes, hazard curve) and a self-contained HTML page
-// with gnuplot SVG plots (fragility curves with the stripe points and the
+// with SVG plots (fragility curves with the stripe points and the
 // bootstrap band, the hazard curve, the integrand of the risk), beside the
 // code's SLV/SLC return periods and checks (docs/user/fragility.md).
 #pragma once
@@ -27,7 +27,7 @@ struct FragilityReportFiles {
 };
 
 /// Writes summary.json, curves.csv, stripes.csv, hazard.csv and report.html
-/// (with plots when `plots`, i.e. gnuplot is available) into out_dir.
+/// (with plots unless `plots` is false) into out_dir.
 /// @throws InputError if a file cannot be written
 FragilityReportFiles write_fragility_report(const FragilityStudy& study, const FragilityResult& result,
                                             const std::string& out_dir, bool plots);

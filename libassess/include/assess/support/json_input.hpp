@@ -4,6 +4,9 @@
 // keys are errors with a "did you mean" suggestion.
 #pragma once
 
+#include "assess/support/input_file.hpp"
+#include "assess/support/number_rules.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <Eigen/Core>
@@ -39,8 +42,18 @@ class JsonNode {
   /// The elements of a required array member (`min_size` at least).
   std::vector<JsonNode> array(const std::string& key, std::size_t min_size = 0) const;
 
-  /// This value as a number in [lo, hi]; `unit` is named in errors.
+  /// This value as a number in [lo, hi]; `unit` is named in errors. Every
+  /// number read is finite and never subnormal (number_rules.hpp).
   double as_number(const char* unit, double lo = -1e300, double hi = 1e300) const;
+  /// This value as a number obeying `rule` (number_rules.hpp: finite, not
+  /// subnormal, within the physical range of its quantity, in its unit).
+  double as_number(const NumberRule& rule) const;
+  /// Required number member obeying `rule`.
+  double number(const std::string& key, const NumberRule& rule) const;
+  /// Optional number member obeying `rule` (absent or null: `fallback`).
+  double number_or(const std::string& key, double fallback, const NumberRule& rule) const;
+  /// A point [x, z], each coordinate obeying `rule` (default rules::coordinate_m).
+  Eigen::Vector2d as_point(const NumberRule& rule) const;
   std::string as_string() const;
   /// Required number member in [lo, hi] (closed) with its unit.
   double number(const std::string& key, const char* unit, double lo = -1e300, double hi = 1e300) const;
@@ -67,10 +80,19 @@ class JsonNode {
 /// Levenshtein distance (for suggestions).
 std::size_t edit_distance(const std::string& a, const std::string& b);
 
-/// Parses a JSON file; InputError naming the file, the JSON path (e.g.
+/// The deepest nesting of arrays and objects any JSON input may have (a case
+/// or building file nests about ten levels). Deeper text is refused before a
+/// tree is built: copying, merging or printing a tree 100 000 levels deep
+/// recurses once per level (issue 31: a building file so nested ended in a
+/// segmentation fault).
+inline constexpr std::size_t json_max_depth = 64;
+
+/// Parses a JSON file read by read_input_file (a regular file within the
+/// limit of `kind`); InputError naming the file, the JSON path (e.g.
 /// /mechanism/height for "height": 1e400) and the parse position.
-nlohmann::json read_json_file(const std::string& path);
-/// Same, for JSON text read from `file` (named in errors).
+nlohmann::json read_json_file(const std::string& path, const InputKind& kind = input_kinds::json_file);
+/// Same, for JSON text read from `file` (named in errors): nested at most
+/// json_max_depth levels.
 nlohmann::json parse_json_text(const std::string& text, const std::string& file);
 
 }  // namespace assess

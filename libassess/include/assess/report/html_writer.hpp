@@ -1,0 +1,31 @@
+// html_writer.hpp: the HTML writer of the document model (issue 28): a
+// self-contained, printable HTML5 page (inline CSS: A4, fixed type sizes,
+// full-width tables that wrap instead of shrinking, headings kept with what
+// follows; no scripts, no external resources; one <figure> per figure with
+// its SVG inline). Sections are numbered here ("3.2"), so the HTML, the
+// Word document and the text agree; the contents list them with the page
+// of each heading when the PDF printer has given it (pdf.hpp).
+#pragma once
+
+#include "assess/report/document.hpp"
+
+#include <map>
+#include <string>
+
+namespace assess {
+
+struct HtmlOptions {
+  /// Page of each heading's anchor in the printed PDF (from a first print);
+  /// empty: the contents show no page numbers yet (the same layout, "…").
+  std::map<std::string, int> pages;
+  /// Show the contents' page column (a printed edition): "…" where the page is not known.
+  bool page_column = false;
+  /// Each figure's SVG without its content (its root element with the same size and viewBox):
+  /// the same layout and pages, printed in a fraction of the time (the first print of a PDF,
+  /// which only reads where each heading falls).
+  bool layout_only = false;
+};
+
+std::string to_html(const Document& d, const HtmlOptions& options = {});
+
+}  // namespace assess

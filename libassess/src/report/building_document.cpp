@@ -1,0 +1,819 @@
+// building_document.cpp: the relazione of a building (issues 22, 28) as a
+// document: frontespizio, the building's verdict (one sentence: verdict,
+// zetaE,edificio and the mechanisms that fail), contents; premessa,
+// normativa, description, survey, criteria (the mechanisms examined); the
+// seismic action once; the formulas; the summary of every mechanism (table
+// with per-approach alpha0, a0*, D/C and zetaE, the zetaE chart, NTC 2008,
+// the record sets, the ties); one section per mechanism made of the façade
+// relazione's own sections; interventions; conclusions and signature;
+// appendices (every mechanism's other candidates, warnings, legend, readings,
+// the case file). Every verdict read from BuildingAssessment.
+#include "assess/report/building_report.hpp"
+
+#include "report/relazione_context.hpp"
+#include "report/report_heading.hpp"
+#include "report/text_format.hpp"
+#include "report/xml_escape.hpp"
+
+#include "assess/report/html_writer.hpp"
+#include "assess/report/tie_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+namespace assess {
+
+namespace {
+
+using detail::code_name;
+using detail::xml_escape;
+
+// The building report's own phrases, Italian and English.
+const std::string& bt(Lang L, const std::string& key) {
+  static const std::map<std::string, std::pair<std::string, std::string>> m = {
+      {"verdict_heading", {"Esito della verifica dell'edificio", "Outcome of the building's assessment"}},
+      {"verdict_ok", {"L'edificio soddisfa la verifica dei meccanismi locali: tutti i {} meccanismi sono verificati con il metodo adottato",
+                      "The building satisfies the check of its local mechanisms: all {} mechanisms are satisfied by the adopted method"}},
+      {"verdict_fail", {"L'edificio non soddisfa la verifica dei meccanismi locali: {} meccanismi su {} non sono verificati con il metodo adottato ({})",
+                        "The building does not satisfy the check of its local mechanisms: {} of {} mechanisms are not satisfied by the adopted method ({})"}},
+      {"verdict_undecided", {"senza esito: {}", "without a verdict: {}"}},
+      {"verdict_zeta", {"indicatore di rischio dell'edificio ζE,edificio = {} ({}), il più piccolo ζE dei meccanismi nel loro approccio adottato",
+                        "the building's safety index ζE,building = {} ({}), the smallest ζE of the mechanisms in their adopted approach"}},
+      {"verdict_dc", {"D/C massimo del metodo adottato: {} ({})", "largest D/C of the adopted method: {} ({})"}},
+      {"wall_col", {"Parete", "Wall"}},
+      {"mech_col", {"Meccanismo", "Mechanism"}},
+      {"mechanisms_list", {"Meccanismi esaminati", "Mechanisms examined"}},
+      {"mechanisms_cap", {"Meccanismi locali esaminati, parete per parete, con il tipo di cinematismo e il metodo adottato per la conclusione.",
+                          "Local mechanisms examined, wall by wall, with the kind of mechanism and the method adopted for the conclusion."}},
+      {"method_col", {"Metodo adottato", "Adopted method"}},
+      {"interventions", {"Interventi", "Interventions"}},
+      {"int_none", {"Tutti i meccanismi sono verificati con il metodo adottato: non sono richiesti interventi per i meccanismi locali esaminati.",
+                    "Every mechanism is satisfied by the adopted method: no intervention is required for the local mechanisms examined."}},
+      {"int_failing", {"I meccanismi seguenti non soddisfano la verifica con il metodo adottato e richiedono un intervento di miglioramento o di riparazione locale (NTC 2018 §8.4): ",
+                       "The mechanisms below do not satisfy the check by the adopted method and need an improvement or a local repair (NTC 2018 §8.4): "}},
+      {"int_ties", {"{}: catene {} (si veda la sezione del meccanismo)", "{}: ties {} (see the mechanism's section)"}},
+      {"int_no_ties", {"{}: D/C = {}; nessun intervento è dimensionato in questa relazione: le catene si possono dimensionare con il progetto automatico delle catene del meccanismo",
+                       "{}: D/C = {}; no intervention is designed in this report: the ties are designed by the mechanism's tie design (key \"design\")"}},
+      {"appendix_candidates", {"Appendice — verifiche degli altri cinematismi di ciascun meccanismo", "Appendix — checks of the other candidates of each mechanism"}},
+      {"dc_candidate", {"candidato della D/C", "candidate of the D/C"}},
+      {"chart_cap_plain",
+       {"Indicatore di rischio ζE = PGA_C/PGA_D di ogni meccanismo, approccio lineare e non lineare, confrontato con 1 "
+        "(linea rossa): sotto 1 il meccanismo non sopporta l'azione richiesta allo SLV. Barre oltre il grafico: valore "
+        "scritto; ∞: capacità non raggiunta sotto 20 g.",
+        "Safety index ζE = PGA_C/PGA_D of every mechanism, linear and non-linear approach, against 1 (red line): "
+        "below 1 the mechanism does not withstand the action required at SLV. Bars beyond the chart: value written; "
+        "∞: capacity not reached below 20 g."}},
+      {"title", {"Relazione di calcolo — meccanismi locali dell'edificio", "Calculation report — local mechanisms of the building"}},
+      {"intro",
+       {"Verifica dei meccanismi locali di collasso fuori piano di tutte le pareti dell'edificio (Circ. 2019 C8.7.1; "
+        "Circ. 617/2009 C8A.4 a titolo di confronto): per ogni meccanismo l'analisi cinematica lineare e non lineare e, "
+        "dove richiesta, l'analisi dinamica non lineare; per ogni approccio l'accelerazione di picco che il meccanismo "
+        "sopporta (PGA_C), quella richiesta allo SLV (PGA_D) e l'indicatore di rischio ζE = PGA_C/PGA_D, con i periodi "
+        "di ritorno TR_C/TR_D (D.P.C.M. 9/2/2011).",
+        "Assessment of the out-of-plane local collapse mechanisms of every wall of the building (Circ. 2019 C8.7.1; "
+        "Circ. 617/2009 C8A.4 for comparison): for each mechanism the linear and non-linear kinematic analyses and, "
+        "where requested, the non-linear dynamic analysis; for each approach the peak ground acceleration the "
+        "mechanism withstands (PGA_C), the one required at SLV (PGA_D) and the safety index ζE = PGA_C/PGA_D, with "
+        "the return periods TR_C/TR_D (D.P.C.M. 9/2/2011)."}},
+      {"project", {"Progetto", "Project"}},
+      {"case_file", {"File del caso", "Case file"}},
+      {"generated", {"Generata con assess", "Generated by assess"}},
+      {"date", {"data", "date"}},
+      {"summary", {"Sintesi dei meccanismi dell'edificio", "Summary of the building's mechanisms"}},
+      {"site_line", {"Sito", "Site"}},
+      {"slv_line", {"SLV: periodo di ritorno", "SLV: return period"}},
+      {"years", {"anni", "years"}},
+      {"governing", {"Meccanismi che governano", "Governing mechanisms"}},
+      {"strength", {"lineare (resistenza)", "linear (strength)"}},
+      {"displacement", {"non lineare (spostamento)", "non-linear (displacement)"}},
+      {"dynamic", {"dinamica non lineare", "non-linear dynamic"}},
+      {"satisfied_of", {"soddisfatti", "satisfied"}},
+      {"of", {"su", "of"}},
+      {"failing", {"non soddisfatti", "not satisfied"}},
+      {"no_verdict", {"senza esito", "without verdict"}},
+      {"no_zeta", {"nessun ζE: l'analisi dinamica dà un D/C, non una PGA di capacità",
+                   "no ζE: the dynamic analysis gives a D/C, not a PGA capacity"}},
+      {"table_cap",
+       {"Tabella di sintesi (NTC 2018). Per ogni approccio: α0 e a0* del cinematismo la cui verifica dà il D/C "
+        "riportato accanto (il più grande dell'approccio), il D/C e ζE = PGA_C/PGA_D (ag su roccia, verifica SLV o SLC "
+        "che governa); ★ = meccanismo che governa l'approccio; in rosso i D/C non verificati e ζE < 1; ∞: collasso in "
+        "un'analisi dinamica. Esito: la conclusione del metodo adottato (indicato sotto se non è il non lineare); Acc.: "
+        "insieme di accelerogrammi. Il codice del meccanismo porta alla sua sezione.",
+        "Summary table (NTC 2018). For each approach: α0 and a0* of the candidate whose check gives the D/C beside them "
+        "(the approach's largest), the D/C and ζE = PGA_C/PGA_D (ag on rock, the governing SLV or SLC check); ★ = the "
+        "approach's governing mechanism; red: D/C not satisfied and ζE < 1; ∞: a collapse in a dynamic analysis. "
+        "Outcome: the adopted method's conclusion (named below it unless non-linear); Rec.: the record set. The "
+        "mechanism's code links to its section."}},
+      {"table08_cap",
+       {"NTC 2008 (Circ. 617/2009 C8A.4), a titolo di confronto. PGA_C con la lettura delle verifiche NTC 2018: "
+        "resistenza, q per l'ag dello SLV a cui la domanda senza q eguaglia a0*; spostamento, l'ag dello SLV a cui il "
+        "D/C della verifica vale 1.",
+        "NTC 2008 (Circ. 617/2009 C8A.4), for comparison. PGA_C with the reading of the NTC 2018 checks: strength, q "
+        "times the SLV ag at which the demand without q equals a0*; displacement, the SLV ag at which the check's D/C "
+        "equals 1."}},
+      {"id", {"Cod.", "Id"}},
+      {"wall_mech", {"Parete: meccanismo", "Wall: mechanism"}},
+      {"records", {"Accelerogrammi", "Records"}},
+      {"outcome", {"Esito", "Outcome"}},
+      {"records_short", {"Acc.", "Rec."}},
+      {"ok", {"soddisfatta", "satisfied"}},
+      {"fail", {"non soddisfatta", "not satisfied"}},
+      {"chart_title", {"ζE per meccanismo (NTC 2018)", "ζE per mechanism (NTC 2018)"}},
+      {"chart_designed", {"con le catene progettate", "with the designed ties"}},
+      {"chart_cap",
+       {"Indicatore di rischio ζE = PGA_C/PGA_D di ogni meccanismo, approccio lineare e non lineare, confrontato con 1 "
+        "(linea rossa): sotto 1 il meccanismo non sopporta l'azione richiesta allo SLV. Barre oltre il grafico: valore "
+        "scritto; ∞: capacità non raggiunta sotto 20 g. Rombo verde: ζE con le catene progettate (approccio adottato).",
+        "Safety index ζE = PGA_C/PGA_D of every mechanism, linear and non-linear approach, against 1 (red line): "
+        "below 1 the mechanism does not withstand the action required at SLV. Bars beyond the chart: value written; "
+        "∞: capacity not reached below 20 g. Green diamond: ζE with the designed ties (adopted approach)."}},
+      {"sets", {"Accelerogrammi usati", "Records used"}},
+      {"sets_text",
+       {"I meccanismi con la stessa selezione automatica condividono un solo insieme di accelerogrammi, scelto una volta "
+        "sull'intervallo di periodi che li comprende tutti (unione degli intervalli dei singoli meccanismi); lo stesso "
+        "intervallo è scritto nel caso espanso di ciascun meccanismo (assess run --expand), che eseguito da solo "
+        "ritrova gli stessi accelerogrammi e gli stessi risultati.",
+        "The mechanisms with the same automatic selection share one set of records, selected once over the period "
+        "range that spans them all (the union of the mechanisms' own ranges); the same range is written into each "
+        "mechanism's expanded case (assess run --expand), which run alone finds the same records and results."}},
+      {"set", {"Insieme", "Set"}},
+      {"range", {"Intervallo di periodi (s)", "Period range (s)"}},
+      {"members", {"Meccanismi", "Mechanisms"}},
+      {"set_none", {"nessuna analisi dinamica", "no dynamic analysis"}},
+      {"set_listed", {"accelerogrammi elencati nel caso", "records listed in the case"}},
+      {"set_own", {"selezione propria", "own selection"}},
+      {"own_short", {"propria", "own"}},
+      {"listed_short", {"elencati", "listed"}},
+      {"set_shared", {"selezione condivisa", "shared selection"}},
+      {"premessa", {"Premessa", "Introduction"}},
+      {"premessa_text",
+       {"La presente relazione riporta la verifica dei meccanismi locali di collasso fuori piano dell'edificio, "
+        "parete per parete. Ogni meccanismo è analizzato come un caso a sé, con i dati comuni dell'edificio (sito, "
+        "altezza, numero di piani, periodo T1, livello di conoscenza, impostazioni dell'analisi dinamica) e i propri "
+        "dati; le sezioni che seguono la sintesi riportano per ciascuno il disegno, il lavoro virtuale, le verifiche, "
+        "lo spettro ADRS e i risultati dinamici.",
+        "This report gives the assessment of the building's out-of-plane local collapse mechanisms, wall by wall. "
+        "Each mechanism is analysed as a case of its own, with the building's shared data (site, height, storeys, "
+        "period T1, knowledge level, dynamic settings) and its own; the sections after the summary give for each "
+        "the drawing, the virtual work, the checks, the ADRS plot and the dynamic results."}},
+      {"building_data", {"Edificio", "Building"}},
+      {"height", {"altezza H", "height H"}},
+      {"storeys", {"piani", "storeys"}},
+      {"kl", {"livello di conoscenza", "knowledge level"}},
+      {"normativa", {"Normativa di riferimento", "Codes and references"}},
+      {"mech_type", {"Tipo", "Type"}},
+      {"mech_path", {"Posizione nel file dell'edificio", "Position in the building file"}},
+      {"mech_records", {"Accelerogrammi", "Records"}},
+      {"indices", {"Indicatori di rischio del meccanismo", "Safety indices of the mechanism"}},
+      {"code", {"Norma", "Code"}},
+      {"approach", {"Approccio", "Approach"}},
+      {"check", {"Verifica che governa", "Governing check"}},
+      {"back", {"↑ torna alla sintesi", "↑ back to the summary"}},
+      {"conclusioni", {"Conclusioni", "Conclusions"}},
+      {"concl_gov", {"Il meccanismo che governa l'edificio", "The building's governing mechanism"}},
+      {"concl_counts", {"meccanismi soddisfano la verifica con il metodo adottato", "mechanisms satisfy the check by the adopted method"}},
+      {"place_date", {"Luogo e data", "Place and date"}},
+      {"concl_failing", {"non soddisfano la verifica", "not satisfied"}},
+      {"site_records_note", {"Gli accelerogrammi nel grafico degli spettri sono quelli di M1; ogni meccanismo riporta i propri nella sua sezione.",
+                             "The records in the spectra plot are M1's; each mechanism shows its own in its section."}},
+      {"engineer", {"Il tecnico", "The engineer"}},
+      {"appendix", {"Appendice: file del caso dell'edificio", "Appendix: the building case file"}},
+      {"warnings", {"Avvertenze", "Warnings"}},
+      {"warnings_en", {"Le avvertenze sono le frasi del programma, in inglese come stampate nel terminale.",
+                       "The program's warnings, as printed in the terminal."}},
+      {"height_m", {"in quota", "at height"}},
+      {"ground", {"al piede", "at the ground"}},
+      {"extrapolated", {"estrapolato oltre 30–2475 anni", "extrapolated beyond 30–2475 years"}},
+      {"ties_title", {"Catene: i meccanismi prima e dopo l'intervento", "Tie rods: the mechanisms before and after the intervention"}},
+      {"ties_cap",
+       {"Per ogni meccanismo: le catene (assegnate nel file o progettate: la barra e la piastra commerciali più piccole "
+        "che soddisfano ogni verifica), ζE = PGA_C/PGA_D (NTC 2018, approccio del metodo adottato: resistenza per il "
+        "lineare, spostamento altrimenti) senza e con le catene, l'esito di tutte le verifiche cinematiche (entrambe le "
+        "norme; dopo, anche le verifiche delle catene) e la verifica dinamica delle analisi ripetute con le catene. "
+        "Per le catene assegnate le tabelle precedenti sono già con le catene; per un progetto sono senza.",
+        "For each mechanism: its ties (given in the file, or designed: the smallest commercial rod and plate that "
+        "satisfy every check), ζE = PGA_C/PGA_D (NTC 2018, the adopted method's approach: strength for linear, "
+        "displacement otherwise) without and with the ties, whether every kinematic check is satisfied (both codes; "
+        "after: the ties' checks too) and the dynamic check of the analyses repeated with the ties. With given ties "
+        "the tables above already include them; with a design they do not."}},
+      {"ties_kind", {"Catene", "Ties"}},
+      {"ties_design", {"progetto", "design"}},
+      {"ties_given", {"assegnate", "given"}},
+      {"ties_none", {"—", "—"}},
+      {"ties_rod", {"Barra e capochiave", "Rod and anchor"}},
+      {"ties_plate", {"piastra", "plate"}},
+      {"ties_bar", {"paletto", "bar anchor"}},
+      {"ties_levels", {"livelli", "levels"}},
+      {"ties_not_found", {"non trovata", "not found"}},
+      {"before", {"prima", "before"}},
+      {"after", {"dopo", "after"}},
+      {"checks_all", {"Verifiche cinematiche", "Kinematic checks"}},
+      {"dyn_check", {"Verifica dinamica", "Dynamic check"}},
+      {"ties_index",
+       {"Indicatore di rischio dell'edificio (il più piccolo ζE dei suoi meccanismi)",
+        "Safety index of the building (the smallest ζE of its mechanisms)"}},
+      {"without_ties", {"senza le catene", "without the ties"}},
+      {"with_ties", {"con le catene", "with the ties"}},
+      {"ties_passing", {"meccanismi con tutte le verifiche cinematiche soddisfatte", "mechanisms with every kinematic check satisfied"}},
+  };
+  const auto it = m.find(key);
+  if (it == m.end()) {
+    static const std::string missing = "?";
+    return missing;
+  }
+  return L == Lang::it ? it->second.first : it->second.second;
+}
+
+
+std::string esc(const std::string& s) { return xml_escape(s); }
+
+// "12,3" in Italian, "∞" and "—" (relazione::Ctx::n without a context).
+std::string fx(Lang L, double v, int prec) {
+  if (std::isnan(v)) return "—";
+  if (!std::isfinite(v)) return v > 0 ? "∞" : "−∞";
+  std::string s = format("%.*f", prec, v);
+  if (L == Lang::it)
+    for (char& c : s)
+      if (c == '.') c = ',';
+  return s;
+}
+
+// The engineer's own words (names of walls and mechanisms): printed as written.
+Cell user_cell(const std::string& text, const std::string& note = "") {
+  Cell c(text, note);
+  c.user = true;
+  return c;
+}
+
+Cell num(Lang L, double v, int prec) {
+  Cell c(fx(L, v, prec));
+  c.numeric = true;
+  return c;
+}
+
+Cell dc_cell(Lang L, double dc, bool satisfied, bool undecided) {
+  Cell c(undecided ? "—" : fx(L, dc, relazione::dc_decimals(dc, satisfied)));
+  c.numeric = true;
+  if (!undecided) {
+    c.tone = satisfied ? Tone::ok : Tone::fail;
+    c.strong = true;
+  }
+  return c;
+}
+
+Cell zeta_cell(Lang L, const SafetyIndex* s, bool governing) {
+  if (!s || !s->has_checks || !s->defined) return num(L, std::nan(""), 3);
+  Cell c((governing ? "★ " : "") + fx(L, s->zeta, 3));
+  c.numeric = true;
+  c.tone = s->zeta >= 1.0 ? Tone::ok : Tone::fail;  // an index, not a D/C: coloured, not in the D/C classes
+  return c;
+}
+
+std::string record_set_text(Lang L, const BuildingAssessment& b, std::size_t i) {
+  const BuildingMechanism& m = b.building.mechanisms[i];
+  const FacadeAssessment& a = b.results[i].a;
+  std::string s;
+  switch (m.record_set) {
+    case RecordSetKind::none: return bt(L, "set_none");
+    case RecordSetKind::listed: s = bt(L, "set_listed"); break;
+    case RecordSetKind::own: s = bt(L, "set_own"); break;
+    case RecordSetKind::shared: s = bt(L, "set_shared") + " " + m.record_group; break;
+  }
+  if (a.dynamic && a.dynamic_applies)
+    s += " (" + std::to_string(a.records.size()) + ", " + fx(L, a.selection_range.T_min, 2) + "–" +
+         fx(L, a.selection_range.T_max, 2) + " s)";
+  else if (!a.dynamic_applies && a.dynamic)
+    s = bt(L, "set_none");
+  return s;
+}
+
+std::string record_set_short(Lang L, const BuildingAssessment& b, std::size_t i) {
+  const BuildingMechanism& m = b.building.mechanisms[i];
+  const FacadeAssessment& a = b.results[i].a;
+  if (!a.dynamic || !a.dynamic_applies) return "—";
+  switch (m.record_set) {
+    case RecordSetKind::none: return "—";
+    case RecordSetKind::listed: return bt(L, "listed_short");
+    case RecordSetKind::own: return bt(L, "own_short");
+    case RecordSetKind::shared: return m.record_group;
+  }
+  return "—";
+}
+
+// The bar chart of zetaE per mechanism against 1 (inline SVG; the colours of
+// the approaches as in the façade's figures).
+std::string zeta_chart(Lang L, const BuildingAssessment& b, bool* designed_out) {
+  const std::size_t n = b.building.mechanisms.size();
+  const double W = 680, H = 300, left = 48, right = 12, top = 28, bottom = 40;
+  double zmax = 1.2;
+  for (const BuildingMechanismResult& r : b.results)
+    for (const char* ap : {"strength", "displacement"})
+      if (const SafetyIndex* s = r.index("NTC2018", ap))
+        if (s->defined && std::isfinite(s->zeta)) zmax = std::max(zmax, std::min(s->zeta, 4.0) * 1.1);
+  const double plot_w = W - left - right, plot_h = H - top - bottom;
+  auto y_of = [&](double z) { return top + plot_h * (1.0 - std::min(z, zmax) / zmax); };
+  std::string svg = format("<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 %.0f %.0f\" width=\"%.0f\" height=\"%.0f\" "
+                           "font-family=\"DejaVu Sans, sans-serif\" font-size=\"11\" role=\"img\" aria-label=\"%s\">\n",
+                           W, H, W, H, esc(bt(L, "chart_title")));
+  svg += format("<text x=\"%.0f\" y=\"16\" font-size=\"13\" text-anchor=\"middle\">%s</text>\n", W / 2, esc(bt(L, "chart_title")));
+  const double step = zmax > 3 ? 1.0 : zmax > 1.5 ? 0.5 : 0.25;
+  for (double z = 0.0; z <= zmax + 1e-9; z += step) {
+    const double y = y_of(z);
+    svg += format("<line x1=\"%.1f\" x2=\"%.1f\" y1=\"%.1f\" y2=\"%.1f\" stroke=\"#ddd\"/>\n", left, W - right, y, y);
+    svg += format("<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\">%s</text>\n", left - 4, y + 4, fx(L, z, 2));
+  }
+  svg += format("<text x=\"12\" y=\"%.1f\" transform=\"rotate(-90 12 %.1f)\" text-anchor=\"middle\">ζE (–)</text>\n",
+                top + plot_h / 2, top + plot_h / 2);
+  const double group = plot_w / double(std::max<std::size_t>(n, 1));
+  const double bw = std::min(28.0, group * 0.36);
+  static const char* colour[] = {"#1f5fbf", "#d9730d"};
+  bool designed = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x0 = left + group * double(i) + group / 2.0;
+    int k = 0;
+    for (const char* ap : {"strength", "displacement"}) {
+      const double x = x0 + (k == 0 ? -bw - 1 : 1);
+      const SafetyIndex* s = b.results[i].index("NTC2018", ap);
+      if (s && s->defined) {
+        const double z = s->zeta;
+        const double y = y_of(std::isfinite(z) ? z : zmax);
+        svg += format("<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"%s\"><title>%s %s: ζE = %s</title></rect>\n",
+                      x, y, bw, top + plot_h - y, colour[k], esc(b.building.mechanisms[i].id), esc(bt(L, ap)), esc(fx(L, z, 3)));
+        if (!std::isfinite(z) || z > zmax)
+          svg += format("<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" font-size=\"9\">%s</text>\n", x + bw / 2,
+                        y + 10, esc(fx(L, z, 2)));
+      }
+      ++k;
+    }
+    const BuildingMechanismResult& r = b.results[i];
+    if (r.ties && r.ties->designed && std::isfinite(r.zeta_after)) {
+      const double y = y_of(r.zeta_after);
+      svg += format("<path d=\"M %.1f %.1f l 6 6 l -6 6 l -6 -6 z\" fill=\"#1a7f37\" stroke=\"#fff\"><title>%s %s: ζE = %s"
+                    "</title></path>\n",
+                    x0, y - 6, esc(b.building.mechanisms[i].id), esc(bt(L, "chart_designed")), esc(fx(L, r.zeta_after, 3)));
+      if (r.zeta_after > zmax)
+        svg += format("<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" font-size=\"9\" fill=\"#1a7f37\">%s</text>\n",
+                      x0, y + 18, esc(fx(L, r.zeta_after, 2)));
+      designed = true;
+    }
+    svg += format("<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">%s</text>\n", x0, top + plot_h + 16,
+                  esc(b.building.mechanisms[i].id));
+  }
+  const double y1 = y_of(1.0);
+  svg += format("<line x1=\"%.1f\" x2=\"%.1f\" y1=\"%.1f\" y2=\"%.1f\" stroke=\"#b3001b\" stroke-width=\"2\" "
+                "stroke-dasharray=\"6 3\"/>\n<text x=\"%.1f\" y=\"%.1f\" fill=\"#b3001b\" text-anchor=\"start\">ζE = 1</text>\n",
+                left, W - right, y1, y1, left + 2, y1 - 4);
+  svg += format("<line x1=\"%.1f\" x2=\"%.1f\" y1=\"%.1f\" y2=\"%.1f\" stroke=\"#333\"/>\n", left, W - right,
+                top + plot_h, top + plot_h);
+  for (int k = 0; k < 2; ++k) {
+    const double lx = left + 8 + 190.0 * k, ly = H - 10;
+    svg += format("<rect x=\"%.1f\" y=\"%.1f\" width=\"12\" height=\"10\" fill=\"%s\"/><text x=\"%.1f\" y=\"%.1f\">%s</text>\n",
+                  lx, ly - 9, colour[k], lx + 16, ly, esc(bt(L, k == 0 ? "strength" : "displacement")));
+  }
+  if (designed) {
+    const double lx = left + 8 + 380.0, ly = H - 10;
+    svg += format("<path d=\"M %.1f %.1f l 6 6 l -6 6 l -6 -6 z\" fill=\"#1a7f37\"/><text x=\"%.1f\" y=\"%.1f\">%s</text>\n",
+                  lx + 6, ly - 11, lx + 16, ly, esc(bt(L, "chart_designed")));
+  }
+  *designed_out = designed;
+  return svg + "</svg>";
+}
+
+// The tie rods of a mechanism in one state in a few words (issue 29): the
+// existing ties, then the new ones (count, rod, anchor; "n levels").
+std::string tie_label(Lang L, const TieInterventionResult& t, bool after) {
+  const std::vector<TieLevelResult>& lv = after ? t.levels : t.levels_before;
+  std::string out;
+  for (bool existing : {true, false}) {
+    int n = 0;
+    const Tie* x = nullptr;
+    for (const TieLevelResult& l : lv)
+      if (l.tie.existing == existing && n++ == 0) x = &l.tie;
+    if (!x) continue;
+    std::string s = msg(L, existing ? "tie.existing" : "tie.new") + ": " + std::to_string(x->layout.count) + " × " +
+                    (x->rod.diameter > 0.0 ? "Ø" + fx(L, x->rod.diameter * 1e3, 0) + " mm " + x->rod.grade
+                                           : "A = " + fx(L, x->rod.area * 1e6, 0) + " mm² " + x->rod.grade);
+    s += x->anchor.type == AnchorType::Plate
+             ? ", " + bt(L, "ties_plate") + " " + fx(L, x->anchor.a * 1e3, 0) + " × " + fx(L, x->anchor.b * 1e3, 0) +
+                   " × " + fx(L, x->anchor.t * 1e3, 0) + " mm"
+             : ", " + bt(L, "ties_bar") + " " + fx(L, x->anchor.a * 1e3, 0) + " mm";
+    if (n > 1) s += " (" + std::to_string(n) + " " + bt(L, "ties_levels") + ")";
+    out += (out.empty() ? "" : "; ") + s;
+  }
+  if (after && t.designed && !t.found) out = bt(L, "ties_not_found") + " (" + out + ")";
+  return out.empty() ? "—" : out;
+}
+
+Cell pass_cell(Lang L, bool ok) {
+  Cell c(bt(L, ok ? "ok" : "fail"));
+  c.tone = ok ? Tone::ok : Tone::fail;
+  return c;
+}
+
+// The building's index in one state (issue 29: one index per state), one sentence.
+std::string tie_index_text(Lang L, const BuildingAssessment& b, bool after) {
+  const BuildingTieIndex& ti = b.tie_index;
+  const BuildingCase& bc = b.building;
+  const int k = after ? ti.mechanism_after : ti.mechanism_before;
+  return msgf(L, after ? "tie.bld.index_after" : "tie.bld.index_before", fx(L, after ? ti.zeta_after : ti.zeta_before, 3),
+              k >= 0 ? bc.mechanisms[std::size_t(k)].id : std::string("—"),
+              after ? ti.passing_after : ti.passing_before, bc.mechanisms.size());
+}
+
+// The building in its stato di fatto and in its stato di progetto (issues 23,
+// 29): one table and one index per state.
+void add_ties_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d) {
+  const BuildingCase& bc = b.building;
+  d.add_heading(bt(L, "ties_title"), 3, false);
+  auto z = [&](double v) {
+    Cell c = num(L, v, 3);
+    c.tone = v >= 1.0 ? Tone::ok : Tone::fail;
+    return c;
+  };
+  Cell zh("ζE");
+  zh.numeric = true;
+  for (bool after : {false, true}) {
+    std::vector<std::vector<Cell>> rows;
+    for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
+      const BuildingMechanism& m = bc.mechanisms[i];
+      const BuildingMechanismResult& r = b.results[i];
+      const TieInterventionResult* x = r.ties ? &*r.ties : nullptr;
+      Cell dyn("—");
+      if (x && x->dynamics.applies && !x->dynamics.summaries.empty()) {
+        bool ok = true;
+        for (const TieDynamicSummary& y : x->dynamics.summaries) ok = ok && (after ? y.satisfied_after : y.satisfied_before);
+        dyn = pass_cell(L, ok);
+      }
+      Cell id(m.id);
+      id.link = m.id;
+      rows.push_back({id, user_cell(m.name), Cell(x ? tie_label(L, *x, after) : "—"),
+                      z(after ? r.zeta_after : r.zeta_before), pass_cell(L, after ? r.passes_after : r.passes_before),
+                      dyn});
+    }
+    d.add_cell_table({Cell(bt(L, "id")), Cell(bt(L, "wall_mech")),
+                      Cell(msg(L, after ? "tie.bld.ties_after" : "tie.bld.ties_before")), zh,
+                      Cell(bt(L, "checks_all")), Cell(bt(L, "dyn_check"))},
+                     rows, msg(L, after ? "tie.bld.cap_after" : "tie.bld.cap_before"));
+    d.add_paragraph(tie_index_text(L, b, after));
+  }
+}
+
+// The building's verdict in one sentence (issue 28, item 4).
+Inline verdict_sentence(Lang L, const BuildingAssessment& b) {
+  const BuildingVerdict& v = b.verdict;
+  const BuildingCase& bc = b.building;
+  std::string failing;
+  for (int i : v.failing) failing += (failing.empty() ? "" : ", ") + bc.mechanisms[std::size_t(i)].id;
+  Inline out;
+  if (v.satisfied)
+    out.push_back(Span{fmt::format(fmt::runtime(bt(L, "verdict_ok")), v.mechanisms), true, Tone::ok});
+  else
+    out.push_back(Span{fmt::format(fmt::runtime(bt(L, "verdict_fail")), v.failing.size(), v.mechanisms, failing), true, Tone::fail});
+  std::string tail;
+  if (!v.undecided.empty()) {
+    std::string u;
+    for (int i : v.undecided) u += (u.empty() ? "" : ", ") + bc.mechanisms[std::size_t(i)].id;
+    tail += "; " + fmt::format(fmt::runtime(bt(L, "verdict_undecided")), u);
+  }
+  if (v.zeta_mechanism >= 0)
+    tail += "; " + fmt::format(fmt::runtime(bt(L, "verdict_zeta")), fx(L, v.zeta, 3), bc.mechanisms[std::size_t(v.zeta_mechanism)].id);
+  if (v.dc_mechanism >= 0)
+    tail += "; " + fmt::format(fmt::runtime(bt(L, "verdict_dc")), fx(L, v.max_dc, 3), bc.mechanisms[std::size_t(v.dc_mechanism)].id);
+  out.push_back(Span{tail + "."});
+  return out;
+}
+
+void add_verdict(Lang L, const BuildingAssessment& b, DocumentBuilder& d) {
+  d.add_heading(bt(L, "verdict_heading"), 2, false, false);
+  Box box{"conclusion", b.verdict.satisfied ? Tone::ok : Tone::fail, {{"building", "verdict"}}, {}};
+  box.content.push_back(Paragraph{verdict_sentence(L, b), "", ""});
+  d.add_box(std::move(box));
+  // The governing mechanism of each approach.
+  std::vector<Inline> items;
+  const BuildingCase& bc = b.building;
+  for (const BuildingGoverning& g : b.governing) {
+    const BuildingMechanism& m = bc.mechanisms[std::size_t(g.mechanism)];
+    const SafetyIndex* s = b.results[std::size_t(g.mechanism)].index(g.code, g.approach);
+    const bool ok = g.failing == 0 && g.no_verdict == 0;
+    Inline line{Span{code_name(g.code) + ", " + bt(L, g.approach) + ": "}, Span{m.id, true, Tone::plain, ""},
+                Span{" " + m.wall + ": " + m.name}};
+    if (s && s->defined) {
+      line.push_back(Span{", ζE = " + fx(L, s->zeta, 3), true, s->zeta >= 1.0 ? Tone::ok : Tone::fail});
+      const bool ext = s->TR_extrapolated;
+      const std::string trc = ext ? (s->TR_capacity > 2475.0 ? "> 2475" : "< 30") : fx(L, s->TR_capacity, 0);
+      line.push_back(Span{" (PGA_C = " + fx(L, s->ag_capacity_g, 3) + " g / PGA_D = " + fx(L, s->ag_demand_g, 3) +
+                          " g, " + s->limit_state + "; TR_C = " + trc + " " + bt(L, "years") + ", TR_D = " +
+                          fx(L, s->TR_demand, 0) + " " + bt(L, "years") + ")"});
+    } else {
+      line.push_back(Span{", D/C = " + fx(L, g.dc, 3), true, ok ? Tone::ok : Tone::fail});
+      line.push_back(Span{" (" + bt(L, "no_zeta") + ")"});
+    }
+    line.push_back(Span{"; " + bt(L, "satisfied_of") + ": " + std::to_string(g.satisfied) + " " + bt(L, "of") + " " +
+                        std::to_string(g.assessed) + ", " + bt(L, "failing") + ": " + std::to_string(g.failing) +
+                        (g.no_verdict ? ", " + bt(L, "no_verdict") + ": " + std::to_string(g.no_verdict) : "")});
+    items.push_back(line);
+  }
+  d.add_paragraph(bt(L, "governing") + ":", "");
+  d.add_list(items, "governing");
+}
+
+// Every mechanism examined, wall by wall (the criteria's list).
+void add_mechanism_list(Lang L, const BuildingAssessment& b, DocumentBuilder& d) {
+  std::vector<std::vector<Cell>> rows;
+  for (std::size_t i = 0; i < b.building.mechanisms.size(); ++i) {
+    const BuildingMechanism& m = b.building.mechanisms[i];
+    Cell wall(m.wall), name(m.name);
+    wall.user = name.user = true;
+    rows.push_back({Cell(m.id), wall, name, Cell(mechanism_name(L, m.kase.mechanism.type)),
+                    Cell(msg(L, "method." + b.results[i].a.verdict.adopted))});
+  }
+  d.add_cell_table({Cell(bt(L, "id")), Cell(bt(L, "wall_col")), Cell(bt(L, "mech_col")), Cell(bt(L, "mech_type")),
+                    Cell(bt(L, "method_col"))},
+                   rows, bt(L, "mechanisms_cap"));
+}
+
+void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d, const ReportOptions& options) {
+  const BuildingCase& bc = b.building;
+  d.add_heading(bt(L, "summary"), 2, true, true, "summary");
+  d.add_paragraph(bt(L, "site_line") + ": " + relazione::decimal_comma(L == Lang::it ? localise(L, b.site_description) : b.site_description) +
+                  ". " + bt(L, "slv_line") + " TR = " + fx(L, b.TR_SLV, 0) + " " + bt(L, "years") + ", ag = " +
+                  fx(L, b.ag_SLV_g, 4) + " g; VR = " + fx(L, b.VR, 0) + " " + bt(L, "years") + ".");
+  auto gov_of = [&](const std::string& code, const char* ap, std::size_t i) {
+    const BuildingGoverning* g = b.governing_of(code, ap);
+    return g && g->mechanism == int(i);
+  };
+  std::vector<std::vector<Cell>> rows;
+  for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
+    const BuildingMechanism& m = bc.mechanisms[i];
+    const BuildingMechanismResult& r = b.results[i];
+    Cell id(m.id);
+    id.link = m.id;
+    Cell name(m.name, m.wall);
+    name.user = true;
+    std::vector<Cell> row{id, name};
+    for (const char* ap : {"strength", "displacement"}) {
+      const SafetyIndex* s = r.index("NTC2018", ap);
+      if (s && s->has_checks) {
+        Cell al = num(L, s->dc_alpha0, 4);
+        al.note = s->dc_candidate == r.a.kinematic.candidates.front().label && r.a.kinematic.candidates.size() == 1
+                      ? ""
+                      : relazione::decimal_comma(L == Lang::it ? localise(L, s->dc_candidate) : s->dc_candidate);
+        row.push_back(al);
+        row.push_back(num(L, s->dc_a0_star, 3));
+        const MethodVerdict* mv = nullptr;
+        for (const MethodVerdict& x : r.a.verdict.methods)
+          if (x.code == "NTC2018" && x.method == method_of_kind(ap)) mv = &x;
+        row.push_back(dc_cell(L, s->dc, s->satisfied, mv && mv->undecided()));
+      } else {
+        row.push_back(num(L, std::nan(""), 4));
+        row.push_back(num(L, std::nan(""), 3));
+        row.push_back(num(L, std::nan(""), 3));
+      }
+      row.push_back(zeta_cell(L, s, gov_of("NTC2018", ap, i)));
+    }
+    const SafetyIndex* dy = r.index("NTC2018", "dynamic");
+    if (dy && dy->has_checks) {
+      Cell c = dc_cell(L, dy->dc, dy->satisfied, dy->failing == 0 && dy->no_verdict > 0);
+      if (gov_of("NTC2018", "dynamic", i)) c.text = "★ " + c.text;
+      row.push_back(c);
+    } else {
+      row.push_back(num(L, std::nan(""), 3));
+    }
+    row.push_back(Cell(record_set_short(L, b, i)));
+    if (const MethodVerdict* c = r.a.verdict.conclusion()) {
+      Cell out(c->undecided() ? msg(L, "verdict.no_verdict_short") : bt(L, c->satisfied ? "ok" : "fail"));
+      out.tone = c->undecided() ? Tone::plain : c->satisfied ? Tone::ok : Tone::fail;
+      if (r.a.verdict.adopted != "nonlinear") out.note = bt(L, r.a.verdict.adopted == "linear" ? "strength" : "dynamic");
+      row.push_back(out);
+    } else {
+      row.push_back(Cell("—"));
+    }
+    rows.push_back(row);
+  }
+  auto h = [](const std::string& t, const std::string& note = "") {
+    Cell c(t, note);
+    c.numeric = true;
+    return c;
+  };
+  const std::string lin = bt(L, "strength"), nl = bt(L, "displacement");
+  d.add_cell_table({Cell(bt(L, "id")), Cell(bt(L, "wall_mech")), h("α0", lin), h("a0* (m/s²)", lin), h("D/C", lin),
+                    h("ζE", lin), h("α0", nl), h("a0* (m/s²)", nl), h("D/C", nl), h("ζE", nl),
+                    h("D/C", bt(L, "dynamic")), Cell(bt(L, "records_short")), Cell(bt(L, "outcome"))},
+                   rows, bt(L, "table_cap"), "building-summary");
+  bool designed = false;
+  const std::string chart = zeta_chart(L, b, &designed);
+  d.add_svg(chart, bt(L, designed ? "chart_cap" : "chart_cap_plain"), "fig-zeta");
+
+  if (std::find(b.codes.begin(), b.codes.end(), "NTC2008") != b.codes.end()) {
+    std::vector<std::vector<Cell>> rows08;
+    for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
+      std::vector<Cell> row{Cell(bc.mechanisms[i].id), user_cell(bc.mechanisms[i].name, bc.mechanisms[i].wall)};
+      for (const char* ap : {"strength", "displacement"}) {
+        const SafetyIndex* s = b.results[i].index("NTC2008", ap);
+        row.push_back(s && s->has_checks ? dc_cell(L, s->dc, s->satisfied, false) : num(L, std::nan(""), 3));
+        row.push_back(zeta_cell(L, s, gov_of("NTC2008", ap, i)));
+        row.push_back(s && s->defined ? num(L, s->ag_capacity_g, 3) : num(L, std::nan(""), 3));
+      }
+      rows08.push_back(row);
+    }
+    d.add_cell_table({Cell(bt(L, "id")), Cell(bt(L, "wall_mech")), h("D/C", lin), h("ζE", lin), h("PGA_C (g)", lin),
+                      h("D/C", nl), h("ζE", nl), h("PGA_C (g)", nl)},
+                     rows08, bt(L, "table08_cap"));
+  }
+  d.add_heading(bt(L, "sets"), 3, false);
+  d.add_paragraph(bt(L, "sets_text"));
+  std::vector<std::vector<Cell>> srows;
+  for (std::size_t i = 0; i < bc.mechanisms.size(); ++i)
+    srows.push_back({Cell(bc.mechanisms[i].id), user_cell(bc.mechanisms[i].wall + ": " + bc.mechanisms[i].name),
+                     Cell(record_set_text(L, b, i))});
+  d.add_cell_table({Cell(bt(L, "id")), Cell(bt(L, "wall_mech")), Cell(bt(L, "records"))}, srows, "");
+  for (const SharedSelection& s : bc.selections)
+    if (s.fell_back) d.add_paragraph(s.id + ": " + (L == Lang::it ? relazione::decimal_comma(localise(L, s.note)) : s.note));
+  // Each shared set described once (its first member's records, flags, selection and compatibility):
+  // the mechanisms' dynamic sections refer to it (issue 28, item 11).
+  std::set<std::string> shown;
+  for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
+    const BuildingMechanism& m = bc.mechanisms[i];
+    const FacadeAssessment& a = b.results[i].a;
+    if (m.record_set != RecordSetKind::shared || !a.dynamic || !a.dynamic_applies || !shown.insert(m.record_group).second)
+      continue;
+    d.add_heading(bt(L, "set") + " " + m.record_group, 4, false, true, "set-" + m.record_group);
+    ReportOptions ro = options;
+    relazione::Ctx c{a, ro, L, d, nullptr};
+    relazione::add_record_set(c, a, "fig-compatibility-" + m.record_group);
+  }
+  if (b.tie_index.any_ties) add_ties_summary(L, b, d);
+}
+
+// Interventions (issue 28, item 4): where any mechanism fails, which and what it needs.
+void add_interventions(Lang L, const BuildingAssessment& b, DocumentBuilder& d) {
+  d.add_heading(bt(L, "interventions"));
+  if (b.verdict.failing.empty() && !b.tie_index.any_ties) {
+    d.add_paragraph(bt(L, "int_none"));
+    return;
+  }
+  if (!b.verdict.failing.empty()) d.add_paragraph(bt(L, "int_failing"));
+  std::vector<Inline> items;
+  for (std::size_t i = 0; i < b.results.size(); ++i) {
+    const BuildingMechanismResult& r = b.results[i];
+    const bool fails = std::find(b.verdict.failing.begin(), b.verdict.failing.end(), int(i)) != b.verdict.failing.end();
+    const BuildingMechanism& m = b.building.mechanisms[i];
+    const std::string who = m.id + " (" + m.wall + ": " + m.name + ")";
+    if (r.ties)
+      items.push_back({Span{fmt::format(fmt::runtime(bt(L, "int_ties")), who, tie_label(L, *r.ties, true))}});
+    else if (fails) {
+      const MethodVerdict* c = r.a.verdict.conclusion();
+      items.push_back({Span{fmt::format(fmt::runtime(bt(L, "int_no_ties")), who, fx(L, c ? c->max_dc : std::nan(""), 3))}});
+    }
+  }
+  if (!items.empty()) d.add_list(items);
+  if (b.tie_index.any_ties) {
+    d.add_paragraph(tie_index_text(L, b, false));
+    d.add_paragraph(tie_index_text(L, b, true));
+  }
+}
+
+}  // namespace
+
+Document building_document(const BuildingAssessment& b, const ReportOptions& options) {
+  const Lang L = options.lang;
+  const BuildingCase& bc = b.building;
+  DocumentBuilder d(bt(L, "title"), to_string(L));
+  std::set<std::string> readings;
+  const ReportInfo& info = bc.report;
+  std::string meta;
+  if (!bc.project.empty()) meta += bt(L, "project") + ": " + bc.project + ". ";
+  meta += bt(L, "generated") + " " + ASSESS_VERSION + ", " + bt(L, "date") + " " +
+          (options.date.empty() ? detail::today_utc() : options.date) + ".";
+  d.set_subtitle(meta);
+  {
+    std::vector<std::vector<Cell>> rows;
+    auto row = [&](const char* key, const std::string& v) {
+      if (v.empty()) return;
+      Cell value(v);
+      value.user = std::string(key) != "front.site" && std::string(key) != "front.date";
+      rows.push_back({Cell(msg(L, key)), value});
+    };
+    row("front.client", info.client);
+    row("front.work", info.work.empty() ? bc.project : info.work);
+    row("front.location", info.location);
+    row("front.site", L == Lang::it ? relazione::decimal_comma(localise(L, b.site_description)) : b.site_description);
+    row("front.engineer", info.engineer);
+    row("front.registration", info.registration);
+    row("front.date", options.date.empty() ? detail::today_utc() : options.date);
+    row("front.revision", info.revision.empty() ? "0" : info.revision);
+    row("front.case_file", detail::shown_file(bc.file));
+    d.add_cell_table({Cell(msg(L, "front.item")), Cell(msg(L, "front.value"))}, rows, "", "front");
+  }
+  add_verdict(L, b, d);
+  d.add_contents(msg(L, "doc.contents"), 2);
+
+  // The opening sections, as the single relazione writes them, from the first mechanism's case.
+  const FacadeAssessment& a0 = b.results.front().a;
+  ReportOptions mo = options;
+  mo.case_text.clear();
+  mo.fragility.reset();
+  {
+    relazione::Ctx c{a0, mo, L, d, &readings};
+    d.add_heading(bt(L, "premessa"), 2, false);
+    d.add_paragraph(bt(L, "premessa_text"));
+    d.add_paragraph(bt(L, "intro"));
+    relazione::add_normativa(c);
+    relazione::add_building_description(c);
+    add_mechanism_list(L, b, d);
+  }
+  facade_site_section(a0, options, d);
+  bool one_set = true;
+  for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
+    const FacadeAssessment& a = b.results[i].a;
+    if (!a.dynamic || !a.dynamic_applies) continue;
+    const BuildingMechanism& m = bc.mechanisms[i];
+    if (!(m.record_set == RecordSetKind::shared && m.record_group == bc.mechanisms.front().record_group)) one_set = false;
+  }
+  if (!one_set && !a0.record_psa.empty()) d.add_paragraph(bt(L, "site_records_note"));
+  {
+    relazione::Ctx c{a0, mo, L, d, &readings};
+    relazione::add_formulas(c);
+  }
+  add_summary(L, b, d, options);
+
+  for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
+    const BuildingMechanism& m = bc.mechanisms[i];
+    const BuildingMechanismResult& r = b.results[i];
+    d.set_id_prefix("");
+    d.add_heading(m.id + " — " + m.wall + ": " + m.name, 2, true, true, m.id);
+    d.add_paragraph(bt(L, "mech_type") + ": " + mechanism_name(L, m.kase.mechanism.type) + ". " + bt(L, "mech_path") +
+                    ": " + m.json_path + ". " + bt(L, "mech_records") + ": " + record_set_text(L, b, i) + ".");
+    d.set_id_prefix(m.id + "-");
+    d.set_heading_shift(1);
+    mo.ties = r.ties ? &*r.ties : nullptr;
+    mo.shared_records = m.record_set == RecordSetKind::shared ? m.record_group : "";
+    facade_mechanism_sections(r.a, mo, d, &readings);
+    d.set_heading_shift(0);
+    d.set_id_prefix("");
+  }
+  mo.ties = nullptr;
+  mo.shared_records.clear();
+  add_interventions(L, b, d);
+
+  d.add_heading(bt(L, "conclusioni"));
+  d.add_paragraph(verdict_sentence(L, b));
+  for (const BuildingGoverning& g : b.governing) {
+    if (g.code != "NTC2018") continue;
+    const BuildingMechanism& m = bc.mechanisms[std::size_t(g.mechanism)];
+    const SafetyIndex* s = b.results[std::size_t(g.mechanism)].index(g.code, g.approach);
+    d.add_paragraph(bt(L, "concl_gov") + " (" + bt(L, g.approach) + ", " + code_name(g.code) + "): " + m.id + " " + m.wall +
+                    ": " + m.name + (s && s->defined ? ", ζE = " + fx(L, s->zeta, 3) : ", D/C = " + fx(L, g.dc, 3)) + "; " +
+                    bt(L, "satisfied_of") + ": " + std::to_string(g.satisfied) + " " + bt(L, "of") + " " +
+                    std::to_string(g.assessed) + ".");
+  }
+  if (b.tie_index.any_ties) {
+    d.add_paragraph(tie_index_text(L, b, false));
+    d.add_paragraph(tie_index_text(L, b, true));
+  }
+  d.add_signature({bt(L, "place_date") + ": " + (info.place.empty() ? "______________________" : info.place + ", ______________"),
+                   bt(L, "engineer") + ": " + (info.engineer.empty() ? "______________________" : info.engineer) +
+                       (info.registration.empty() ? "" : " (" + info.registration + ")")});
+
+  // Appendices.
+  bool any_candidates = false;
+  for (const BuildingMechanismResult& r : b.results) any_candidates = any_candidates || r.a.kinematic.candidates.size() > 1;
+  if (any_candidates) {
+    d.add_heading(bt(L, "appendix_candidates"));
+    for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
+      const BuildingMechanismResult& r = b.results[i];
+      if (r.a.kinematic.candidates.size() < 2) continue;
+      d.set_id_prefix(bc.mechanisms[i].id + "-app-");
+      d.add_heading(bc.mechanisms[i].id + " — " + bc.mechanisms[i].wall + ": " + bc.mechanisms[i].name, 3, false);
+      d.set_heading_shift(1);
+      facade_candidates_appendix(r.a, mo, d, &readings);
+      d.set_heading_shift(0);
+    }
+    d.set_id_prefix("");
+  }
+  if (!b.warnings.empty()) {
+    d.add_heading(bt(L, "warnings"));
+    d.add_paragraph(msg(L, "warnings.intro"));
+    std::vector<Inline> items;
+    for (const std::string& w : b.warnings)
+      items.push_back({Span{L == Lang::it ? relazione::decimal_comma(localise(L, w)) : w}});
+    d.add_list(items, "warnings");
+  }
+  {
+    relazione::Ctx c{a0, mo, L, d, &readings};
+    relazione::add_legend(c);
+    relazione::add_readings_appendix(c);
+  }
+  d.add_heading(bt(L, "appendix"));
+  d.add_paragraph(detail::shown_file(bc.file));
+  d.add_pre(options.case_text);
+  return d.document();
+}
+
+std::string building_html(const BuildingAssessment& b, const ReportOptions& options) {
+  return to_html(building_document(b, options));
+}
+
+}  // namespace assess

@@ -1,0 +1,114 @@
+// relazione_appendix.cpp: the appendices (issue 28, items 6 and 7): the
+// readings adopted where the code is ambiguous or only recalled, each with its
+// basis, so that the signing engineer sees and owns them; every other
+// candidate's checks; the warnings; the legend; the case file.
+#include "report/relazione_context.hpp"
+
+#include "report/report_heading.hpp"
+#include "report/text_format.hpp"
+
+#include <algorithm>
+
+namespace assess::relazione {
+
+namespace {
+
+std::vector<CheckRow> appendix_rows(const FacadeAssessment& a, std::size_t i) { return a.kinematic.candidates[i].checks; }
+
+// The catalogue key of a reading noted by Ctx::clause ("C8A.4.11 [R]" ...).
+std::string reading_key(const std::string& r) {
+  static const std::vector<std::pair<std::string, std::string>> keys{
+      {"C8A.4.11", "reading.c8a411"}, {"C8A.4.12", "reading.c8a412"}, {"C8A.4 SLD", "reading.sld08"},
+      {"[4.2.6]", "reading.rod"},     {"eps_u", "reading.eps"},        {"nchor bending", "reading.anchor"},
+      {"prassi", "reading.punching"}, {"lanar reduction", "reading.corner"}, {"I_S,SLV", "reading.heritage"},
+      {"gamma_M", "reading.masonry_anchor"}};
+  for (const auto& [needle, key] : keys)
+    if (r.find(needle) != std::string::npos) return key;
+  return "";
+}
+
+}  // namespace
+
+void add_readings_appendix(Ctx& c) {
+  const FacadeAssessment& a = c.a;
+  c.d.add_heading(c.t("reading.heading"));
+  c.d.add_paragraph(c.t("reading.intro"));
+  std::vector<std::string> keys;
+  auto add = [&](const std::string& k) {
+    if (!k.empty() && std::find(keys.begin(), keys.end(), k) == keys.end()) keys.push_back(k);
+  };
+  // The readings every relazione rests on, then those of the clauses cited.
+  if (a.kase.knowledge_level != "given") add("reading.fc");
+  add("reading.curve");
+  if (a.kinematic.candidates.size() > 1) add("reading.candidates");
+  bool height = false;
+  for (const CandidateResult& cr : a.kinematic.candidates) height = height || cr.Z > 0.0;
+  if (height) add("reading.floor");
+  if (a.dynamic && a.dynamic_applies) {
+    add("reading.collapse");
+    add("reading.count");
+    add("reading.energy");
+    if (a.mechanism_dynamics && a.mechanism_dynamics->filter) add("reading.floor_filter");
+    for (const Restitution& r : a.dynamic->restitutions)
+      if (r.kind == Restitution::Kind::one_sided_theory) add("reading.one_sided");
+    if (a.mechanism_dynamics && !a.mechanism_dynamics->single_body()) add("reading.chain");
+    if (a.selection) add("reading.selection");
+  }
+  if (a.kase.site) add("reading.tr");
+  std::vector<std::string> unknown;
+  if (c.readings)
+    for (const std::string& r : *c.readings) {
+      const std::string k = reading_key(r);
+      if (k.empty()) unknown.push_back(r);
+      add(k);
+    }
+  std::vector<Inline> items;
+  for (const std::string& k : keys) items.push_back({Span{c.t(k + ".what") + ": ", true}, Span{c.t(k + ".text")}});
+  for (const std::string& r : unknown) items.push_back({Span{r + ": ", true}, Span{c.t("reading.other")}});
+  c.d.add_list(items);
+}
+
+void add_candidates_appendix(Ctx& c) {
+  const FacadeAssessment& a = c.a;
+  const std::vector<std::size_t> dev = developed_candidates(a);
+  bool any = false;
+  for (std::size_t i = 0; i < a.kinematic.candidates.size(); ++i)
+    any = any || (std::find(dev.begin(), dev.end(), i) == dev.end() && !appendix_rows(a, i).empty());
+  if (!any) return;
+  c.d.add_heading(c.t("checks_all.heading"));
+  c.d.add_paragraph(c.t("checks_all.note2"));
+  for (std::size_t i = 0; i < a.kinematic.candidates.size(); ++i) {
+    if (std::find(dev.begin(), dev.end(), i) != dev.end()) continue;
+    const std::vector<CheckRow> rows = appendix_rows(a, i);
+    if (rows.empty()) continue;
+    const CandidateResult& cr = a.kinematic.candidates[i];
+    c.d.add_heading(c.loc(cr.label) + " (α0 = " + c.n(cr.result.alpha0, 4) + ", a0* = " + c.n(cr.result.a0_star, 3) +
+                        " m/s²)",
+                    3, false, false);
+    c.d.add_cell_table(check_head(c, false), check_rows(c, rows, false), "", "checks");
+  }
+}
+
+void add_warnings(Ctx& c) {
+  if (c.a.warnings.empty()) return;
+  c.d.add_heading(c.t("warnings.heading"), 2, false);
+  c.d.add_paragraph(c.t("warnings.intro"));
+  std::vector<Inline> items;
+  for (const std::string& w : c.a.warnings) items.push_back({Span{c.loc(w)}});
+  c.d.add_list(items, "warnings");
+}
+
+void add_legend(Ctx& c) {
+  c.d.add_heading(c.t("legend.heading2"), 2, false);
+  std::vector<Inline> items;
+  for (const char* k : {"legend.dc2", "legend.inf", "legend.dash", "legend.tables"}) items.push_back({Span{c.t(k)}});
+  c.d.add_list(items, "legend");
+}
+
+void add_case_file(Ctx& c) {
+  c.d.add_heading(c.t("appendix.heading"));
+  c.d.add_paragraph(c.t("appendix.note") + " (" + detail::shown_file(c.a.kase.file) + ")");
+  c.d.add_pre(c.o.case_text.empty() ? c.t("appendix.missing") : c.o.case_text);
+}
+
+}  // namespace assess::relazione

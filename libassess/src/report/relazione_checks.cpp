@@ -1,0 +1,141 @@
+// relazione_checks.cpp: the checks (issue 28, items 1-3): one table of every
+// check of the candidates developed in the body and every dynamic check, each
+// row with its inputs, its D/C and its verdict read from the check itself;
+// the safety indices zetaE = PGA_C/PGA_D and TR_C/TR_D per method and edition.
+#include "report/relazione_context.hpp"
+
+#include "report/report_heading.hpp"
+#include "report/text_format.hpp"
+
+#include "assess/assessment/building_assessment.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace assess::relazione {
+
+using detail::code_name;
+
+namespace {
+
+std::string check_name(const Ctx& c, const CheckRow& r) {
+  return c.t("checks.verifica") + " " + r.limit_state + ", " + c.t("kind." + r.kind) + ", " + c.t("where." + r.location);
+}
+
+// The second line of a check: its demand formula, clause, every input and,
+// at height, which part of the floor spectrum gives the demand.
+std::string check_note(const Ctx& c, const CheckRow& r) {
+  std::string s = c.loc(r.formula) + "; " + c.clause(r.clause);
+  std::string inputs;
+  for (const auto& [name, v] : r.inputs) inputs += (inputs.empty() ? "" : ", ") + c.input_name(name) + " = " + c.g(v, 4);
+  if (!inputs.empty()) s += "; " + inputs;
+  if (!r.floor_branch.empty()) s += "; " + c.t("branch." + r.floor_branch);
+  return s;
+}
+
+}  // namespace
+
+std::vector<std::vector<Cell>> check_rows(const Ctx& c, const std::vector<CheckRow>& rows, bool with_candidate) {
+  std::vector<std::vector<Cell>> out;
+  for (const CheckRow& r : rows) {
+    std::vector<Cell> row{Cell(code_name(r.code)), Cell(check_name(c, r), check_note(c, r))};
+    if (with_candidate) row.push_back(Cell(c.loc(r.candidate)));
+    row.push_back(c.num(r.demand, 4));
+    row.push_back(c.num(r.capacity, 4));
+    row.push_back(Cell(c.unit(r.unit)));
+    row.push_back(c.dc_cell(r));
+    Cell pga(r.has_pga ? c.n(r.ag_capacity_g, 3) + " / " + c.n(r.ag_demand_g, 3) : "—");
+    pga.numeric = true;
+    row.push_back(pga);
+    row.push_back(c.verdict_cell(r));
+    out.push_back(row);
+  }
+  return out;
+}
+
+std::vector<Cell> check_head(const Ctx& c, bool with_candidate) {
+  auto h = [](const std::string& t) {
+    Cell x(t);
+    x.numeric = true;
+    return x;
+  };
+  std::vector<Cell> head{Cell(c.t("checks.code")), Cell(c.t("checks.check"))};
+  if (with_candidate) head.push_back(Cell(c.t("mech.candidate")));
+  for (Cell x : {h(c.t("checks.demand")), h(c.t("checks.capacity")), Cell(c.t("kin.unit")), h("D/C"), h(c.t("checks.ag")),
+                 Cell(c.t("checks.outcome"))})
+    head.push_back(x);
+  return head;
+}
+
+void add_checks(Ctx& c) {
+  const FacadeAssessment& a = c.a;
+  if (a.checks.empty() && a.kinematic.candidates.front().checks.empty()) return;
+  c.d.add_heading(c.t("checks.heading"));
+  const std::vector<std::size_t> dev = developed_candidates(a);
+  const bool several = dev.size() > 1;
+  // Every check of the developed candidates (NTC 2018 first: the conclusion's
+  // code), then every dynamic check; the other candidates' checks are in the
+  // appendix, so that the verdict box's counts are the rows of the two.
+  std::vector<CheckRow> rows;
+  for (const char* code : {"NTC2018", "NTC2008"})
+    for (std::size_t ci : dev)
+      for (const CheckRow& r : c.candidate(ci).checks)
+        if (r.code == code) rows.push_back(r);
+  for (const CheckRow& r : a.checks)
+    if (r.kind == "dynamic") rows.push_back(r);
+  c.d.add_paragraph(c.t(dev.size() < a.kinematic.candidates.size() ? "checks.body_note2" : "checks.body_note_all"));
+  c.d.add_cell_table(check_head(c, several), check_rows(c, rows, several), c.t("checks.table_cap"), "checks");
+}
+
+// Safety indices (issue 28, item 3; docs/theory/building.md §4): per method
+// and edition the PGA the mechanism withstands, the site's, zetaE and the
+// return periods; an extrapolated return period is shown as a bound.
+void add_safety_indices(Ctx& c) {
+  const std::vector<SafetyIndex> idx = safety_indices(c.a);
+  if (idx.empty()) return;
+  c.d.add_heading(c.t("zeta.heading"));
+  c.d.add_paragraph(c.t("zeta.intro"));
+  std::vector<std::vector<Cell>> rows;
+  bool any_extrapolated = false;
+  for (const SafetyIndex& s : idx) {
+    const std::string method = c.t("method." + method_of_kind(s.approach));
+    if (!s.defined) {
+      Cell why(s.approach == "dynamic" ? c.t("zeta.no_dynamic") : c.loc(s.note));
+      rows.push_back({Cell(code_name(s.code)), Cell(method), Cell("—"), c.num(std::nan(""), 3), c.num(std::nan(""), 3),
+                      c.num(std::nan(""), 3), c.num(std::nan(""), 0), c.num(std::nan(""), 0), c.num(std::nan(""), 2), why});
+      continue;
+    }
+    const std::string where = s.limit_state + ", " + c.t("where." + s.location) +
+                              (s.candidate.empty() ? "" : "; " + c.loc(s.candidate));
+    Cell zeta = c.num(s.zeta, 3);
+    zeta.tone = s.zeta >= 1.0 ? Tone::ok : Tone::fail;  // an index, not a D/C: coloured, not in the D/C classes
+    Cell trc = c.num(s.TR_capacity, 0), ratio = c.num(s.TR_ratio, 2);
+    std::string note;
+    if (s.TR_extrapolated) {
+      any_extrapolated = true;
+      const bool above = s.TR_capacity > 2475.0;
+      trc.text = above ? "> 2475" : "< 30";
+      ratio.text = (above ? "> " : "< ") + c.n((above ? 2475.0 : 30.0) / s.TR_demand, 2);
+      note = c.t(above ? "zeta.tr_above" : "zeta.tr_below");
+    }
+    if (!std::isfinite(s.ag_capacity_g)) note = c.t("zeta.never");
+    rows.push_back({Cell(code_name(s.code)), Cell(method), Cell(where), c.num(s.ag_capacity_g, 4), c.num(s.ag_demand_g, 4),
+                    zeta, trc, c.num(s.TR_demand, 0), ratio, Cell(note)});
+  }
+  auto h = [](const std::string& t) {
+    Cell x(t);
+    x.numeric = true;
+    return x;
+  };
+  c.d.add_cell_table({Cell(c.t("checks.code")), Cell(c.t("cmp.method")), Cell(c.t("zeta.check")), h("PGA_C (g)"),
+                      h("PGA_D (g)"), h("ζE"), h("TR_C (" + c.t("site.years") + ")"), h("TR_D (" + c.t("site.years") + ")"),
+                      h("TR_C/TR_D"), Cell(c.t("zeta.notes"))},
+                     rows, c.t("zeta.cap"));
+  if (any_extrapolated) c.d.add_paragraph(c.t("zeta.extrapolated"), "note");
+  if (c.a.kase.report.heritage) {
+    c.d.add_paragraph(c.t("zeta.heritage"));
+    if (c.readings) c.readings->insert("D.P.C.M. 9/2/2011 I_S,SLV f_a,SLV [R]");
+  }
+}
+
+}  // namespace assess::relazione

@@ -1,0 +1,120 @@
+// relazione_context.hpp (private to the report layer): what every section of
+// the relazione shares (issue 28): the assessment, the options, the language,
+// the document being built, and the one way each section prints a number, a
+// unit, a clause, a D/C and a verdict. A section is a function that adds
+// blocks to the document (relazione_*.cpp); nothing else knows the layout.
+#pragma once
+
+#include "assess/assessment/facade_assessment.hpp"
+#include "assess/report/document.hpp"
+#include "assess/report/facade_report.hpp"
+#include "assess/report/messages.hpp"
+#include "assess/report/plot.hpp"
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace assess::relazione {
+
+/// The sections' shared state. `readings` collects the readings the document
+/// relies on (clauses tagged [R] or [I] in the engine): the body cites the
+/// clause only, the appendix "Ipotesi e letture adottate" lists each reading
+/// with its basis (issue 28, item 6).
+struct Ctx {
+  const FacadeAssessment& a;
+  const ReportOptions& o;
+  Lang L;
+  DocumentBuilder& d;
+  std::set<std::string>* readings;
+
+  const std::string& t(const std::string& key) const { return msg(L, key); }
+  /// A text generated in English by the analysis, in the report's language (decimal comma in Italian).
+  std::string loc(const std::string& text) const;
+  /// A number with `prec` decimals in the report's convention ("0,991" in Italian; "∞", "—").
+  std::string n(double v, int prec) const;
+  /// A number in scientific notation with `prec` decimals ("1,234e-04" in Italian).
+  std::string e(double v, int prec) const;
+  /// A number with %g-like precision (`digits` significant digits).
+  std::string g(double v, int digits = 4) const;
+  /// A plot in the report's convention (decimal comma in Italian).
+  Plot plot() const {
+    Plot p;
+    p.decimal_comma = L == Lang::it;
+    return p;
+  }
+  /// A unit as typeset ("m/s2" -> "m/s²").
+  std::string unit(const std::string& u) const;
+  /// A clause as the body cites it: the engine's certainty tags removed and remembered for the appendix.
+  std::string clause(const std::string& text) const;
+  /// The name of an input of a demand, typeset in the language ("psi(Z) (-)" -> "ψ(Z) (-)", "N (storeys)" -> "N (piani)").
+  std::string input_name(const std::string& name) const;
+
+  const CandidateResult& candidate(std::size_t i) const { return a.kinematic.candidates[i]; }
+  const CandidateResult& gc() const { return candidate(a.kinematic.governing); }
+
+  /// The verdict word of a check: "verificato", "non verificato", "senza esito".
+  std::string verdict_word(bool satisfied, bool no_verdict) const;
+  /// A D/C cell read from the check's own verdict (the one rule of code_checks.hpp):
+  /// its number ("∞" for a collapse or a failed analysis, "—" without a verdict), coloured by the verdict.
+  Cell dc_cell(double dc, bool satisfied, bool no_verdict) const;
+  Cell dc_cell(const CheckRow& r) const { return dc_cell(r.dc, r.satisfied, r.no_verdict); }
+  /// The outcome cell of a check, with the reason when the D/C alone does not say it.
+  Cell verdict_cell(const CheckRow& r) const;
+  /// "collasso in 2 su 14 analisi; media sulle analisi senza collasso D/C 0,486".
+  std::string collapse_text(const CheckRow& r) const;
+  Cell num(double v, int prec) const;
+  Cell text(const std::string& s) const { return Cell(s); }
+};
+
+// ---------------------------------------------------------------- sections
+// Each adds its blocks to c.d; the façade relazione calls them in the order of
+// a relazione di calcolo (facade_document.cpp), the building relazione nests
+// the mechanism's sections (building_document.cpp).
+
+void add_front_matter(Ctx& c);           // frontespizio, verdict box, contents
+void add_verdict_box(Ctx& c);            // per code and method, the conclusion
+void add_premessa(Ctx& c);               // scope, mechanism, adopted procedure
+void add_normativa(Ctx& c);
+void add_building_description(Ctx& c);   // descrizione, indagini e LC, muratura, criteri
+void add_site(Ctx& c);                   // azione sismica, spectra
+void add_formulas(Ctx& c);               // every formula once, with its clause
+void add_mechanism(Ctx& c);              // each candidate that governs a method, developed
+void add_checks(Ctx& c);                 // the checks tables
+void add_safety_indices(Ctx& c);         // zetaE and TR_C/TR_D
+void add_dynamic(Ctx& c);                // the dynamic analysis of each candidate that governs it
+/// The records of `x` (table, flags, selection, compatibility figure `id`): a building's shared set, once.
+void add_record_set(Ctx& c, const FacadeAssessment& x, const std::string& id);
+void add_comparison(Ctx& c);             // D/C by approach, bars
+void add_interventions(Ctx& c);          // ties, or what a failing mechanism needs
+void add_probabilistic(Ctx& c);
+void add_evaluation(Ctx& c);             // valutazione dei risultati (computed)
+void add_conclusions(Ctx& c, bool signature = true);
+void add_readings_appendix(Ctx& c);      // ipotesi e letture adottate
+void add_candidates_appendix(Ctx& c);    // every other candidate's checks
+void add_warnings(Ctx& c);
+void add_legend(Ctx& c);
+void add_case_file(Ctx& c);
+
+/// The rows of a checks table (every input in the second line of the check's
+/// cell, D/C and outcome read from the check) and its header.
+std::vector<std::vector<Cell>> check_rows(const Ctx& c, const std::vector<CheckRow>& rows, bool with_candidate);
+std::vector<Cell> check_head(const Ctx& c, bool with_candidate);
+
+/// The candidates the body develops in full: the one that governs the
+/// adopted method first, then those that govern the other methods (NTC 2018,
+/// then NTC 2008), each once.
+std::vector<std::size_t> developed_candidates(const FacadeAssessment& a);
+/// The candidate index of a check's candidate label (kinematic.governing if none matches).
+std::size_t candidate_of(const FacadeAssessment& a, const std::string& label);
+
+/// The decimals a D/C is printed with: 3, more when a failing D/C would round
+/// to 1.000 (the number printed carries the verdict: "1,0004", issue 28).
+int dc_decimals(double dc, bool satisfied);
+
+/// Italian decimal comma in a text generated by the engine: "0.991" ->
+/// "0,991", never inside a clause or section number ("C8.7.1.2", "§3.2.3.6",
+/// "Tab. 3.2.II", "[3.2.10]") or a version.
+std::string decimal_comma(const std::string& text);
+
+}  // namespace assess::relazione

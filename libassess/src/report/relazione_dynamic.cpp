@@ -1,0 +1,411 @@
+// relazione_dynamic.cpp: the non-linear dynamic analysis (Circ. 2019
+// C8.7.1.2.1.9; issue 28, items 1, 2, 5): the candidate that governs the
+// dynamic verdict developed in full (its equation of motion with the
+// reference, the equivalent body's parameters consistent with each other,
+// the restitution coefficients as numbers, the records, their compatibility,
+// the histories and the summary with the collapse convention), then every
+// other candidate analysed.
+#include "report/relazione_context.hpp"
+
+#include "report/report_heading.hpp"
+#include "report/text_format.hpp"
+
+#include "assess/report/plot.hpp"
+#include "assess/support/units.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace assess::relazione {
+
+using detail::code_name;
+
+namespace {
+
+constexpr double g = units::g;
+
+PlotSeries series(std::string name, PlotSeries::Style style, std::vector<double> x = {}, std::vector<double> y = {}) {
+  PlotSeries s;
+  s.name = std::move(name);
+  s.style = style;
+  s.x = std::move(x);
+  s.y = std::move(y);
+  return s;
+}
+
+// The assessment whose dynamic analysis governs the dynamic verdict (the
+// governing candidate's own, or one of the other candidates').
+const FacadeAssessment& governing_dynamics(const FacadeAssessment& a) {
+  for (const MethodVerdict& m : a.verdict.methods) {
+    if (m.method != "dynamic" || m.code != a.verdict.conclusion_code || m.governing < 0) continue;
+    const std::size_t ci = candidate_of(a, a.verdict.rows[std::size_t(m.governing)].candidate);
+    for (std::size_t k = 0; k < a.other_dynamics.size(); ++k)
+      if (a.other_dynamics_candidate[k] == ci && a.other_dynamics[k].dynamic_applies) return a.other_dynamics[k];
+  }
+  return a;
+}
+
+std::string restitution_text(const Ctx& c, const FacadeAssessment& x, const RestitutionSummary& s) {
+  const Restitution& r = x.dynamic->restitutions[s.restitution];
+  if (r.kind == Restitution::Kind::value) return "e = " + c.n(s.e, 3);
+  return "e = " + c.n(s.e, 3) + " (" + c.t(r.kind == Restitution::Kind::housner ? "dyn.e_housner" : "dyn.e_one_sided") + ")";
+}
+
+// The model: equation of motion with its reference, and the body's parameters.
+void add_model(Ctx& c, const FacadeAssessment& x) {
+  const MechanismDynamics& md = *x.mechanism_dynamics;
+  const DynamicSpec& d = *x.dynamic;
+  std::string what = c.t(d.smooth ? "dyn.smooth" : "dyn.rigid") + ", ";
+  if (x.model) what += c.t(x.model->sidedness() == Sidedness::one_sided ? "dyn.one_sided" : "dyn.two_sided") + ". ";
+  c.d.add_paragraph(what + c.t("dyn.model") + ": " + c.loc(md.describe()) + ".");
+  c.d.add_paragraph(c.t(md.single_body() ? "dyn.eq_body" : "dyn.eq_chain"), "note");
+  if (d.smooth) c.d.add_paragraph(c.t("dyn.eq_winkler"), "note");
+  c.d.add_paragraph(c.t("dyn.eq_impact"), "note");
+  std::vector<std::vector<Cell>> rows;
+  auto row = [&](const std::string& what, double v, int prec, const std::string& unit, const std::string& how) {
+    rows.push_back({Cell(what), c.num(v, prec), Cell(unit), Cell(how)});
+  };
+  if (x.model) {
+    const RockingBody& b = x.model->body();
+    row(c.t("dyn.p_W"), b.W / units::kN, 3, "kN/m", c.t("dyn.h_W"));
+    row(c.t("dyn.p_b"), b.b, 4, "m", c.t("dyn.h_b"));
+    row(c.t("dyn.p_xG"), b.x_G(), 4, "m", c.t("dyn.h_xG"));
+    row(c.t("dyn.p_zG"), b.z_G(), 4, "m", c.t("dyn.h_zG"));
+    row("R", b.R, 4, "m", "√(x_G² + z_G²) = √(" + c.n(b.x_G(), 4) + "² + " + c.n(b.z_G(), 4) + "²)");
+    row("α", b.alpha, 5, "rad", "atan(x_G / z_G) = atan(" + c.n(b.x_G(), 4) + " / " + c.n(b.z_G(), 4) + ")");
+    row("I₀", b.I0, 1, "kg m²/m", c.t("dyn.h_I0"));
+    row("p", b.p(), 4, "rad/s", "√(W R / I₀)");
+    if (b.M_ext != 0.0) row(c.t("dyn.p_Mext"), b.M_ext / units::kN, 3, "kN m/m", c.t("dyn.h_Mext"));
+    if (d.smooth) {
+      row("k", d.k / units::kN, 0, "kN/m³", c.t("data.case"));
+      row("θ_cr", x.model->theta_cr(), 6, "rad", "W / (2 b² k)");
+    }
+    row("θu", x.model->theta_u(+1), 5, "rad", c.t(d.smooth ? "dyn.h_thu_smooth" : "dyn.h_thu_rigid"));
+  } else {
+    row("q_u", md.q_u(), 5, "rad", c.t("dyn.h_qu_chain"));
+  }
+  row(c.t("dyn.capacity"), md.capacity() / units::kN, 4, "kJ/m", c.t("dyn.h_capacity"));
+  for (const RestitutionSummary& s : x.summaries) rows.push_back({Cell(c.t("dyn.p_e")), c.num(s.e, 4), Cell("–"), Cell(restitution_text(c, x, s))});
+  Cell hv(c.t("kin.value"));
+  hv.numeric = true;
+  c.d.add_cell_table({Cell(c.t("kin.quantity")), hv, Cell(c.t("kin.unit")), Cell(c.t("kin.how"))}, rows,
+                     c.t("dyn.params_cap"));
+  // The moment-rotation curve.
+  if (!x.mr_theta.empty()) {
+    Plot mr = c.plot();
+    mr.title = c.t("dyn.mr_title");
+    mr.x_label = "θ (rad)";
+    mr.y_label = "M (kN m/m)";
+    PlotSeries s = series(c.t("dyn.mr_series"), PlotSeries::Style::Line, x.mr_theta);
+    for (double v : x.mr_moment) s.y.push_back(v / units::kN);
+    s.highlight = true;
+    mr.series.push_back(s);
+    mr.height = 320;
+    c.d.add_svg(render_svg(mr), c.t(md.tied() ? "dyn.mr_fig_tied" : "dyn.mr_fig"), "fig-moment-rotation");
+  }
+}
+
+// The records (issues 24, 30): what each is (event, date, station, country,
+// magnitude, distance and its kind, site class with its basis, usable
+// period), why it was chosen (scale, misfit and rank) and its flags; then the
+// selection's caveats, the period range and why, the compatibility, and how
+// the analyses ended. "—" where the catalogue says nothing.
+void add_records(Ctx& c, const FacadeAssessment& x) {
+  if (!c.o.shared_records.empty()) {
+    // A building's set shared by several mechanisms: described once in its summary (issue 28, item 11).
+    std::string names;
+    for (const RecordUsed& r : x.records) names += (names.empty() ? "" : ", ") + r.name + " (" + c.n(r.scale, 3) + ")";
+    c.d.add_paragraph(msgf(c.L, "dyn.shared_set", c.o.shared_records, names));
+    if (!x.selection_range_note.empty())
+      c.d.add_list({{Span{c.t("dyn.range_why") + ": ", true}, Span{c.loc(x.selection_range_note)}}});
+    return;
+  }
+  std::vector<std::vector<Cell>> rows;
+  auto or_dash = [](const std::string& t) { return t.empty() ? std::string("—") : t; };
+  for (const RecordUsed& r : x.records) {
+    Cell dist = c.num(r.distance_km, 1);
+    if (std::isfinite(r.distance_km)) dist.text += " " + r.distance_kind;
+    std::string cls = or_dash(r.site_class);
+    if (r.site_class_basis == "Vs30") cls += " (Vs30 " + c.n(r.vs30_m_s, 0) + ")";
+    else if (r.site_class_basis == "stated")
+      cls += " (" + c.t("dyn.class_stated") + (std::isfinite(r.vs30_m_s) ? "; Vs30 " + c.n(r.vs30_m_s, 0) : "") + ")";
+    const std::string what =
+        r.in_catalogue ? or_dash(r.event) + ", " + or_dash(r.date) + " / " + or_dash(r.station) + ", " +
+                             or_dash(r.component) + " — " + or_dash(r.country)
+        : r.event.empty() && r.station.empty() ? std::string("—")
+                                               : or_dash(r.event) + " / " + or_dash(r.station) + ", " + or_dash(r.component);
+    std::string flags;
+    for (const std::string& f : r.flags) flags += (flags.empty() ? "" : "; ") + c.loc(f);
+    Cell name(r.name, flags);
+    if (!r.flags.empty()) name.tone = Tone::fail;
+    rows.push_back({name, Cell(what), c.num(r.Mw, 2), dist, Cell(cls), c.num(r.usable_period_s, 2), c.num(r.scale, 3),
+                    c.num(r.pga / g, 4), c.num(r.deviation, 3), r.rank > 0 ? c.num(r.rank, 0) : c.num(std::nan(""), 0),
+                    c.num(r.integrated_s, 1)});
+  }
+  auto h = [](const std::string& t) {
+    Cell y(t);
+    y.numeric = true;
+    return y;
+  };
+  c.d.add_cell_table({Cell(c.t("dyn.record")), Cell(c.t("dyn.event_station")), h("Mw"), h(c.t("dyn.distance")),
+                      Cell(c.t("dyn.site_class")), h(c.t("dyn.usable")), h(c.t("dyn.scale")), h("PGA (g)"),
+                      h(c.t("dyn.deviation")), h(c.t("dyn.rank")), h(c.t("dyn.integrated"))},
+                     rows, c.t("dyn.records_cap") + " " + c.t("dyn.flags_cap"));
+  for (const std::string& w : x.selection_warnings) c.d.add_paragraph(c.t("dyn.selection_warning") + ": " + c.loc(w));
+  for (const std::string& f : x.record_failures) c.d.add_paragraph(c.t("dyn.skipped") + ": " + f);
+  if (x.selection) {
+    c.d.add_paragraph(msgf(c.L, "dyn.selection", c.n(x.selection_range.T_min, 2), c.n(x.selection_range.T_max, 2)) +
+                      c.loc(x.selection->message));
+    std::vector<Inline> why;
+    if (!x.selection_range_note.empty()) why.push_back({Span{c.t("dyn.range_why") + ": ", true}, Span{c.loc(x.selection_range_note)}});
+    if (!x.selection_shared_note.empty())
+      why.push_back({Span{c.t("dyn.shared_why") + ": ", true}, Span{c.loc(x.selection_shared_note)}});
+    for (const std::string& st : x.selection_steps) why.push_back({Span{c.t("dyn.classes_tried") + ": ", true}, Span{c.loc(st)}});
+    if (!why.empty()) c.d.add_list(why);
+  }
+  if (x.compatibility.computed) c.d.add_paragraph(c.t("dyn.compat_msg") + ": " + c.loc(x.compatibility.message) + ".");
+  std::map<std::string, int> ends;
+  for (const DynamicRun& r : x.runs) ++ends[to_string(r.result.end)];
+  std::string list;
+  for (const auto& [k, n] : ends) list += (list.empty() ? "" : "; ") + c.t("end." + k) + ": " + std::to_string(n);
+  c.d.add_paragraph(c.t("dyn.duration") + " " + c.n(x.free_tail_s, 0) + " s. " + c.t("dyn.ends") + " — " + list + ".");
+}
+
+void add_floor_spectra(Ctx& c, const FacadeAssessment& x);
+
+void add_compatibility(Ctx& c, const FacadeAssessment& x, const std::string& id = "fig-compatibility") {
+  const auto se = x.site_Se.find(LimitState::SLV);
+  if (se == x.site_Se.end() || x.record_psa.empty()) return;
+  Plot p = c.plot();
+  p.title = c.t("dyn.compat_title");
+  p.x_label = "T (s)";
+  p.y_label = "Se, PSA (g)";
+  const PeriodRange& rg = x.compatibility.computed ? x.compatibility.range : x.selection_range;
+  if (rg.T_max > rg.T_min) {
+    PlotSeries band = series(c.t("dyn.band"), PlotSeries::Style::Band);
+    for (std::size_t i = 0; i < x.periods.size(); ++i) {
+      const double T = x.periods[i];
+      if (T < rg.T_min || T > rg.T_max) continue;
+      band.x.push_back(T);
+      band.y.push_back(1.3 * se->second[i] / g);
+      band.y_low.push_back(0.9 * se->second[i] / g);
+    }
+    band.color = "#1f5fbf";
+    if (!band.x.empty()) p.series.push_back(band);
+  }
+  PlotSeries target = series("Se SLV", PlotSeries::Style::Line, x.periods);
+  for (double v : se->second) target.y.push_back(v / g);
+  target.color = "#1f5fbf";
+  target.highlight = true;
+  p.series.push_back(target);
+  for (std::size_t i = 0; i < x.record_psa.size(); ++i) {
+    PlotSeries s = series(i == 0 ? c.t("site.records_scaled") : "", PlotSeries::Style::Line, x.periods);
+    for (double v : x.record_psa[i]) s.y.push_back(v / g);
+    s.color = "#aaaaaa";
+    p.series.push_back(s);
+  }
+  if (!x.mean_psa.empty()) {
+    PlotSeries s = series(c.t("site.records_mean"), PlotSeries::Style::Line, x.periods);
+    for (double v : x.mean_psa) s.y.push_back(v / g);
+    s.color = "#000000";
+    s.highlight = true;
+    p.series.push_back(s);
+  }
+  double top = 0.0;
+  for (double v : se->second) top = std::max(top, 1.3 * v / g);
+  for (double v : x.mean_psa) top = std::max(top, v / g);
+  if (rg.T_max > rg.T_min) {
+    PlotSeries l1 = series(c.t("dyn.range"), PlotSeries::Style::Dashed, {rg.T_min, rg.T_min}, {0.0, 1.2 * top});
+    PlotSeries l2 = series("", PlotSeries::Style::Dashed, {rg.T_max, rg.T_max}, {0.0, 1.2 * top});
+    l1.color = l2.color = "#444444";
+    p.series.push_back(l1);
+    p.series.push_back(l2);
+  }
+  p.y_min = 0.0;
+  p.y_max = 1.25 * top;
+  p.x_min = 0.0;
+  p.x_max = x.periods.empty() ? 4.0 : x.periods.back();
+  c.d.add_svg(render_svg(p), c.t("dyn.compat_fig"), id);
+}
+
+// At height: the mean spectrum of the floor motions against the code's floor spectrum.
+void add_floor_spectra(Ctx& c, const FacadeAssessment& x) {
+  if (x.code_floor_Se.empty()) return;
+  Plot fp = c.plot();
+  fp.title = c.t("dyn.floor_title");
+  fp.x_label = "T (s)";
+  fp.y_label = "Sa (g)";
+  PlotSeries fm = series(c.t("dyn.floor_series"), PlotSeries::Style::Line, x.periods);
+  for (double v : x.floor_mean_psa) fm.y.push_back(v / g);
+  fm.highlight = true;
+  PlotSeries cf = series("S_eZ [C7.2.6]", PlotSeries::Style::Dashed, x.periods);
+  for (double v : x.code_floor_Se) cf.y.push_back(v / g);
+  fp.series.push_back(fm);
+  fp.series.push_back(cf);
+  c.d.add_svg(render_svg(fp), c.t("dyn.floor_fig"), "fig-floor-spectra");
+}
+
+void add_histories(Ctx& c, const FacadeAssessment& x) {
+  std::vector<std::pair<std::string, std::string>> panels;
+  static const char* colours[] = {"#1f5fbf", "#d9730d", "#2b7a2b", "#8a3ea8"};
+  for (std::size_t ir = 0; ir < x.records.size(); ++ir) {
+    Plot p = c.plot();
+    p.x_label = "t (s)";
+    p.y_label = "θ/θu";
+    p.width = 300;
+    p.height = 190;
+    p.font_size = 11;  // legible at a third of the page width
+    p.key = "off";
+    double t_show = 0.0, t_last = 0.0;
+    for (const DynamicRun& r : x.runs)
+      if (r.record == ir) t_show = std::max(t_show, r.result.t_theta_max), t_last = std::max(t_last, r.result.t_end);
+    p.x_min = 0.0;
+    p.x_max = std::min(t_last, t_show + 10.0);
+    if (!(p.x_max > 0.0)) p.x_max = 1.0;
+    bool overturned = false;
+    for (const DynamicRun& r : x.runs) {
+      if (r.record != ir || r.result.history.t.empty()) continue;
+      PlotSeries s = series("", r.reversed ? PlotSeries::Style::Dashed : PlotSeries::Style::Line);
+      const std::vector<double>& t = r.result.history.t;
+      const std::size_t n = std::size_t(std::upper_bound(t.begin(), t.end(), p.x_max) - t.begin());
+      const std::size_t step = std::max<std::size_t>(1, n / 600);
+      for (std::size_t i = 0; i < n; i += step) {
+        s.x.push_back(t[i]);
+        s.y.push_back(r.result.history.theta[i] / r.result.theta_u);
+      }
+      if (s.x.empty()) continue;
+      s.color = colours[r.restitution % 4];
+      p.series.push_back(s);
+      if (r.result.overturned && r.result.t_overturn) {
+        PlotSeries o = series("", PlotSeries::Style::Points, {*r.result.t_overturn}, {1.0});
+        o.point_type = 2;
+        o.point_size = 2.0;
+        o.color = "#b3001b";
+        p.series.push_back(o);
+        overturned = true;
+      }
+    }
+    if (p.series.empty()) continue;
+    PlotSeries one = series("", PlotSeries::Style::Dashed, {0.0, p.x_max}, {1.0, 1.0});
+    one.color = "#b3001b";
+    p.series.push_back(one);
+    p.y_min = -1.1;
+    p.y_max = 1.1;
+    panels.push_back({render_svg(p), x.records[ir].name + (overturned ? " — " + c.t("dyn.overturning") : "")});
+  }
+  if (panels.empty()) return;
+  c.d.add_heading(c.t("dyn.histories"), 4, false);
+  c.d.add_svg_grid(panels, c.t("dyn.histories_fig"), "fig-histories");
+}
+
+// The summary per restitution value: the check's D/C with the collapse
+// convention (+inf, the figure over the analyses without a collapse apart),
+// the energy D/C the same way, and the outcome read from the check.
+void add_summary(Ctx& c, const FacadeAssessment& x) {
+  c.d.add_heading(c.t("dyn.summary"), 4, false);
+  std::vector<std::vector<Cell>> rows;
+  for (const RestitutionSummary& s : x.summaries) {
+    bool uplift = false;
+    for (const DynamicRun& r : x.runs) uplift = uplift || (r.restitution == s.restitution && r.result.theta_max > 0.0);
+    Cell coll(std::to_string(s.collapsed) + " / " + std::to_string(s.analyses));
+    coll.numeric = true;
+    if (s.failed > 0) coll.note = msgf(c.L, "dc.failed", s.failed, s.analyses);
+    Cell energy = c.dc_cell(s.energy_dc, check_satisfied(s.energy_dc, false), false);
+    if (!std::isfinite(s.energy_dc) && std::isfinite(s.mean_dc_survivors))
+      energy.note = msgf(c.L, "dc.survivors", c.n(s.mean_dc_survivors, 3));
+    Cell dc = c.dc_cell(s.dc_slv, s.slv_satisfied, s.no_verdict);
+    if (!std::isfinite(s.dc_slv) && std::isfinite(s.dc_survivors))
+      dc.note = msgf(c.L, "dc.survivors", c.n(s.dc_survivors, 3));
+    Cell out(c.verdict_word(s.slv_satisfied, s.no_verdict));
+    out.tone = s.no_verdict ? Tone::plain : s.slv_satisfied ? Tone::ok : Tone::fail;
+    if (s.collapsed > 0) out.note = msgf(c.L, "dc.collapse", s.collapsed, s.analyses);
+    else if (!uplift) out.note = c.t("dyn.no_uplift");
+    rows.push_back({Cell(restitution_text(c, x, s)), c.num(s.analyses, 0), coll, energy, c.num(s.mean_d_star, 4),
+                    c.num(s.max_d_star, 4), Cell(c.loc(s.rule)), c.num(s.d_demand, 4), dc, out});
+  }
+  auto h = [](const std::string& t) {
+    Cell y(t);
+    y.numeric = true;
+    return y;
+  };
+  c.d.add_cell_table({Cell(c.t("dyn.restitution")), h(c.t("dyn.analyses")), h(c.t("dyn.collapses")),
+                      h(c.t("dyn.energy_dc")), h(c.t("dyn.mean_d")), h(c.t("dyn.max_d")), Cell(c.t("dyn.rule")),
+                      h(c.t("dyn.d_demand")), h(c.t("dyn.dc_slv")), Cell(c.t("checks.outcome"))},
+                     rows, c.t("dyn.summary_cap2"));
+}
+
+// The other candidates analysed (each as the case restricted to it).
+void add_others(Ctx& c, const FacadeAssessment& shown) {
+  const FacadeAssessment& a = c.a;
+  std::vector<std::pair<const FacadeAssessment*, std::size_t>> list;  // assessment, candidate index
+  if (&shown != &a) list.push_back({&a, a.kinematic.governing});
+  for (std::size_t k = 0; k < a.other_dynamics.size(); ++k)
+    if (&a.other_dynamics[k] != &shown) list.push_back({&a.other_dynamics[k], a.other_dynamics_candidate[k]});
+  if (list.empty()) return;
+  c.d.add_heading(c.t("dyn.others"), 3, false);
+  c.d.add_paragraph(c.t("dyn.others_text"));
+  std::vector<std::vector<Cell>> rows;
+  for (const auto& [o, ci] : list) {
+    const std::string label = c.loc(c.candidate(ci).label);
+    if (!o->dynamic_applies) {
+      rows.push_back({Cell(label), Cell("—"), Cell("—"), c.num(std::nan(""), 0), c.num(std::nan(""), 4),
+                      c.num(std::nan(""), 4), c.num(std::nan(""), 3), Cell(c.t("dyn.na") + ": " + c.loc(o->dynamic_note))});
+      continue;
+    }
+    std::string recs;
+    for (const RecordUsed& r : o->records) recs += (recs.empty() ? "" : ", ") + r.name + " (" + c.n(r.scale, 2) + ")";
+    for (const RestitutionSummary& s : o->summaries) {
+      Cell coll(std::to_string(s.collapsed) + " / " + std::to_string(s.analyses));
+      coll.numeric = true;
+      Cell dc = c.dc_cell(s.dc_slv, s.slv_satisfied, s.no_verdict);
+      if (!std::isfinite(s.dc_slv) && std::isfinite(s.dc_survivors))
+        dc.note = msgf(c.L, "dc.survivors", c.n(s.dc_survivors, 3));
+      Cell out(c.verdict_word(s.slv_satisfied, s.no_verdict));
+      out.tone = s.no_verdict ? Tone::plain : s.slv_satisfied ? Tone::ok : Tone::fail;
+      rows.push_back({Cell(label), Cell(recs), Cell(restitution_text(c, *o, s)), coll, c.num(s.d_demand, 4),
+                      c.num(o->kinematic.candidates.front().result.d_SLV, 4), dc, out});
+    }
+  }
+  auto h = [](const std::string& t) {
+    Cell y(t);
+    y.numeric = true;
+    return y;
+  };
+  c.d.add_cell_table({Cell(c.t("dyn.candidate")), Cell(c.t("dyn.records_used")), Cell(c.t("dyn.restitution")),
+                      h(c.t("dyn.collapses")), h(c.t("dyn.d_demand")), h("d_SLV (m)"), h(c.t("dyn.dc_slv")),
+                      Cell(c.t("checks.outcome"))},
+                     rows, c.t("dyn.others_cap"));
+}
+
+}  // namespace
+
+void add_record_set(Ctx& c, const FacadeAssessment& x, const std::string& id) {
+  add_records(c, x);
+  add_compatibility(c, x, id);
+}
+
+void add_dynamic(Ctx& c) {
+  const FacadeAssessment& a = c.a;
+  if (!a.dynamic) return;
+  c.d.add_heading(c.t("dyn.heading"));
+  if (!a.dynamic_applies) {
+    c.d.add_paragraph(c.t("dyn.na") + ": " + c.loc(a.dynamic_note));
+    return;
+  }
+  const FacadeAssessment& x = governing_dynamics(a);
+  const std::string label = c.loc(x.kinematic.candidates.front().label);
+  c.d.add_paragraph(msgf(c.L, &x == &a ? "dyn.developed_gov" : "dyn.developed_other", label));
+  c.d.add_heading(c.t("dyn.model_heading"), 3, false);
+  add_model(c, x);
+  c.d.add_heading(c.t("dyn.input_heading"), 3, false);
+  add_records(c, x);
+  if (c.o.shared_records.empty()) add_compatibility(c, x);
+  add_floor_spectra(c, x);
+  c.d.add_heading(c.t("dyn.results_heading"), 3, false);
+  add_histories(c, x);
+  add_summary(c, x);
+  add_others(c, x);
+}
+
+}  // namespace assess::relazione

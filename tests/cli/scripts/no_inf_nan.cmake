@@ -1,0 +1,51 @@
+# Issue 31: a report never prints inf or nan. Runs one shipped example
+# (CASE) the ways a user reads it: `assess run` as text, as --json and as the
+# HTML relazione (--html), or `assess kinematic` (text and --json) for a case
+# without a site, and fails on "inf", "-inf", "nan" or "-nan" as a word in any
+# of them (an unbounded quantity is shown with its meaning or "—",
+# report/text_format.hpp). Release suite only (docs/reliability.md, "CI time").
+#   cmake -DEXE=assess -DCASE=mechanisms/x.json -DWORK=dir -P no_inf_nan.cmake
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+set(outputs "")
+execute_process(COMMAND ${EXE} run ${CASE} --html ${WORK}/report.html RESULT_VARIABLE rc OUTPUT_VARIABLE text ERROR_VARIABLE err)
+if(rc EQUAL 0)
+  execute_process(COMMAND ${EXE} run ${CASE} --json RESULT_VARIABLE rc2 OUTPUT_VARIABLE json ERROR_VARIABLE err2)
+  file(READ ${WORK}/report.html html)
+  set(kinds "text;json;html;stderr")
+  set(contents_text "${text}")
+  set(contents_json "${json}")
+  set(contents_html "${html}")
+  set(contents_stderr "${err}${err2}")
+  if(NOT rc2 EQUAL 0)
+    message(FATAL_ERROR "assess run ${CASE} --json failed (${rc2}):\n${err2}")
+  endif()
+elseif(err MATCHES "/site: missing")
+  # A mechanism without a site (mechanisms/explicit_blocks.json): the kinematic report.
+  execute_process(COMMAND ${EXE} kinematic ${CASE} RESULT_VARIABLE rc OUTPUT_VARIABLE text ERROR_VARIABLE err)
+  execute_process(COMMAND ${EXE} kinematic ${CASE} --json RESULT_VARIABLE rc2 OUTPUT_VARIABLE json ERROR_VARIABLE err2)
+  if(NOT rc EQUAL 0 OR NOT rc2 EQUAL 0)
+    message(FATAL_ERROR "assess kinematic ${CASE} failed:\n${err}${err2}")
+  endif()
+  set(kinds "text;json;stderr")
+  set(contents_text "${text}")
+  set(contents_json "${json}")
+  set(contents_stderr "${err}${err2}")
+else()
+  message(FATAL_ERROR "assess run ${CASE} failed (${rc}):\n${err}")
+endif()
+set(bad "")
+foreach(k ${kinds})
+  string(TOLOWER "${contents_${k}}" lower)
+  # A word inf or nan: not part of a longer word (info, infisso, finanza)
+  # nor of a file name (no_inf_nan/, inf_g.txt).
+  string(REGEX MATCHALL "(^|[^a-z_./])-?(inf|nan)([^a-z_./]|$)" hits "${lower}")
+  if(hits)
+    string(REGEX MATCH "[^\n]*[^a-z_./]-?(inf|nan)[^a-z_./][^\n]*" line "${lower}")
+    string(APPEND bad "${k}: ${hits} in: ${line}\n")
+  endif()
+endforeach()
+if(bad)
+  message(FATAL_ERROR "${CASE}: inf or nan in the outputs:\n${bad}")
+endif()
+message(STATUS "${CASE}: no inf or nan in ${kinds}")

@@ -1,0 +1,38 @@
+# Reads the dynamic section of each of FILES (readelf -d) and fails on an
+# RPATH/RUNPATH entry that is empty (the current directory: a library
+# planted there is loaded), relative, or inside BUILD_DIR (when given: an
+# installed binary must not look into the build tree). Issue 31.
+#   cmake -DREADELF=readelf "-DFILES=a;b" [-DBUILD_DIR=dir] -P check_runpath.cmake
+set(bad "")
+foreach(f ${FILES})
+  execute_process(COMMAND ${READELF} -d ${f} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "readelf -d ${f} failed: ${err}")
+  endif()
+  string(REGEX MATCHALL "\\((RPATH|RUNPATH)\\)[^\n]*" lines "${out}")
+  foreach(line ${lines})
+    string(REGEX REPLACE ".*\\[(.*)\\].*" "\\1" value "${line}")
+    message(STATUS "${f}: ${line}")
+    # Each entry of the :-separated list (an empty one at either end or between two colons).
+    string(REPLACE ":" ";" entries "x${value}x")
+    set(i 0)
+    foreach(e ${entries})
+      string(REGEX REPLACE "^x" "" e "${e}")
+      string(REGEX REPLACE "x$" "" e "${e}")
+      if(e STREQUAL "")
+        string(APPEND bad "${f}: an empty entry in '${value}' (the current directory)\n")
+      elseif(NOT e MATCHES "^/" AND NOT e MATCHES "^\\$ORIGIN")
+        string(APPEND bad "${f}: a relative entry '${e}' in '${value}'\n")
+      elseif(BUILD_DIR AND e MATCHES "^${BUILD_DIR}")
+        string(APPEND bad "${f}: an entry into the build tree '${e}'\n")
+      endif()
+    endforeach()
+    if(value MATCHES "::" OR value MATCHES "^:" OR value MATCHES ":$")
+      string(APPEND bad "${f}: an empty entry in '${value}' (the current directory)\n")
+    endif()
+  endforeach()
+endforeach()
+if(bad)
+  message(FATAL_ERROR "${bad}")
+endif()
+message(STATUS "RUNPATH of ${FILES}: no empty, relative or build-tree entry")
