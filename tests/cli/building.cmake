@@ -74,10 +74,10 @@ set_tests_properties(cli.building_ties_exit2 PROPERTIES LABELS cli)
 # The summary of a building with ties: each mechanism without and with its ties, the building index before/after,
 # each mechanism's tie section; --mechanism runs the single case with its ties.
 assess_cli_test(building_ties_text ARGS run mechanisms/building-house-ties.json
-  PASS "stato di fatto.*M1   - +\\| +0\\.847 \\| +NO.*M2   exist\\. 3x diam\\. 16 S275, pl\\. 200x200x15 +\\| +0\\.811 \\| +NO.*building index, stato di fatto \\(the smallest mechanism zetaE\\): 0\\.811 \\(M2\\).*stato di progetto.*M1   new 6x diam\\. 16 S275, pl\\. 400x400x25 +\\| +2\\.700 \\| +ok.*building index, stato di progetto \\(the smallest mechanism zetaE\\): 0\\.811 \\(M2\\).*M1 Facciata su strada: .*Tie rods \\(catene\\).*design: the smallest rod and plate.*M2 Facciata su strada: .*Tie rods")
+  PASS "stato di fatto.*M1   - +\\| +0\\.847 \\| +NO.*M2   exist\\. 3x diam\\. 16 S275, pl\\. 200x200x15 +\\| +0\\.811 \\| +NO.*building index, stato di fatto \\(the smallest mechanism zetaE\\): 0\\.811 \\(M2\\).*stato di progetto.*M1   new 6x diam\\. 16 S275, pl\\. 350x350x25 \\+1 lev\\. +\\| +3\\.575 \\| +ok.*building index, stato di progetto \\(the smallest mechanism zetaE\\): 0\\.811 \\(M2\\).*M1 Facciata su strada: .*Tie rods \\(catene\\).*design: the smallest rod and plate.*M2 Facciata su strada: .*Tie rods")
 # Issue 29: punching governs the house's tie: the first plates break in the dynamics and the design moves on.
 assess_cli_test(building_ties_punching_moves_on ARGS run mechanisms/building-house-ties.json --mechanism M1
-  PASS "tried diam\\. 16 S275 M16, plate 150 x 12: T_Rd 29\\.3 kN \\(punching\\): broken \\(punching\\).*plate 400 x 25: T_Rd 41\\.4 kN \\(punching\\): accepted.*NOT DUCTILE.*each analysis of the stato di progetto")
+  PASS "tried diam\\. 16 S275 M16, plate 150 x 12: T_Rd 29\\.3 kN \\(punching\\): broken \\(punching\\).*plate 350 x 25: T_Rd 39\\.0 kN \\(punching\\): accepted.*NOT DUCTILE.*each analysis of the stato di progetto")
 assess_cli_test(building_ties_one_mechanism ARGS run mechanisms/building-house-ties.json --mechanism M2
   PASS "Tie rods \\(catene\\).*no intervention: the existing ties are part of the stato di fatto.*level \"catena al sottotetto \\(esistente\\)\" \\(existing\\): rod diam\\. 16 mm S275.*BROKEN: catena al sottotetto \\(esistente\\), punching" FAIL_REGEX "BUILDING ASSESSMENT")
 
@@ -99,9 +99,9 @@ endforeach()
 
 # The relazione of the building with ties (Italian): the stato di fatto's and the stato di progetto's
 # tables with one building index each, each tied mechanism's tie section (ids prefixed by its id,
-# subheadings one level down), 56 figures (the 54 of building-house and the two tie drawings).
+# subheadings one level down), 57 figures (the 55 of building-house and the two tie drawings).
 add_test(NAME cli.building_ties_report_browser
-  COMMAND sh -c "\"$1\" run mechanisms/building-house-ties.json --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 56 'id=\"ties-row-M1\"' 'id=\"M1-ties\"' 'id=\"M2-ties\"' '<h4>Verifiche della catena' 'id=\"ties-existing-row-M2\"' 'Indicatore di rischio dell.edificio nello stato di fatto[^<]*: 0\\.811 \\(M2\\)' 'Indicatore di rischio dell.edificio nello stato di progetto: 0\\.811 \\(M2\\)'"
+  COMMAND sh -c "\"$1\" run mechanisms/building-house-ties.json --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 57 'id=\"M1-ties-drawing\"' 'id=\"M2-ties-drawing\"' '<span class=\"secno\">[0-9.]*</span> Verifiche della catena</h4>' 'catena al sottotetto \\(esistente\\) \\(stato di fatto\\)</h5>' 'Stato di fatto: ogni meccanismo con le sue catene esistenti' 'Indicatore di rischio dell.edificio nello stato di fatto[^<]*: 0,811 \\(M2\\)' 'Indicatore di rischio dell.edificio nello stato di progetto: 0,811 \\(M2\\)'"
           sh $<TARGET_FILE:assess_cli> ${CMAKE_CURRENT_BINARY_DIR}/building-house-ties.it.html
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.building_ties_report_browser PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77 TIMEOUT 300

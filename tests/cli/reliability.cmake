@@ -99,7 +99,7 @@ assess_cli_error_test(rel4_dt_subnormal "dt_subnormal.AT2: the header gives the 
   rocking --model rigid ${_rel_block} --record tests/data/hostile/dt_subnormal.AT2)
 assess_cli_error_test(rel4_hex_value "hex_value.txt:2: hexadecimal value '0x1p-3'"
   rocking --model rigid ${_rel_block} --record tests/data/hostile/hex_value.txt --dt 0.01)
-assess_cli_error_test(rel4_building_tie_spacing "building_tie_spacing.json: /walls/0/mechanisms/1/ties/0/spacing_m: value 1e-300 out of range: expected in \\[0.001, 1000\\] m.*\\[M2 "
+assess_cli_error_test(rel4_building_tie_spacing "building_tie_spacing.json: /walls/0/mechanisms/1/ties/0/spacing_m: value 1e-300 out of range: expected in \\[0\\.1, 500\\] m.*\\[M2 "
   run tests/data/hostile/building_tie_spacing.json)
 assess_cli_error_test(rel4_bow_tie "bow_tie_block.json: /mechanism/blocks/0/polygon: its edges cross"
   kinematic tests/data/hostile/bow_tie_block.json)

@@ -36,7 +36,7 @@ set_tests_properties(cli.ties_exit2 PROPERTIES LABELS cli)
 # storey at height (floor motions, a designed roof tie) and vertical flexure (a
 # chain of two blocks, the tied chain model).
 assess_cli_test(ties_dynamic_church ARGS run mechanisms/church-facade-ties.json
-  PASS "dynamic check, stato di fatto -> stato di progetto.*-0\\.480 +7 mean +4 +0 .*NOT satisfied -> satisfied.*yielded \\(ductile\\), permanent elongation")
+  PASS "dynamic check, stato di fatto -> stato di progetto.*-0\\.480 +7 mean +1 +0 .*NOT satisfied -> satisfied.*yielded \\(ductile\\), permanent elongation")
 assess_cli_test(ties_dynamic_at_height ARGS run tests/cli/ties/upper_storey_tie.json --json
   PASS "\"ties\": {.*\"dynamic\": {[^}]*\"applies\": true")
 assess_cli_test(ties_dynamic_chain ARGS run tests/cli/ties/vertical_flexure_tie.json
@@ -54,7 +54,8 @@ assess_cli_test(ties_given_two_sided ARGS run tests/cli/ties/church_given_ties_t
 assess_cli_error_test(ties_given_half_pi "ties_bad_dynamic/given_half_pi.json: /dynamic/overturn_at: a wall held by tie rods \\(\"ties\" or \"design\"\\) collapses where its net restoring moment"
   run tests/cli/ties_bad_dynamic/given_half_pi.json)
 
-# Issue 29: a case where the threaded end governs: with the 700 mm plate the M16 thread (48.6 kN) is the
-# weakest component and the tie breaks at it in the dynamics; no design is found and the report says why.
-assess_cli_test(ties_thread_breaks ARGS run tests/cli/ties/upper_storey_tie.json
-  PASS "design: NOT FOUND: .*tie broken in a dynamic analysis \\(punching [0-9]+, thread 1\\).*tried diam\\. 16 S275 M16, plate 700 x 40: T_Rd 48\\.6 kN \\(thread\\): broken \\(thread\\)")
+# Issue 29: a case where the threaded end governs: three Ø16 S275 ties with 700 mm plates on the upper
+# storey; the M16 thread (0.9 f_tk A_res / γ_M2 = 48.6 kN) is the weakest component, the tie is not ductile,
+# it breaks at the thread in 8 of the 28 analyses (4 per restitution value) and the dynamic rupture check fails.
+assess_cli_test(ties_thread_breaks ARGS run tests/cli/ties/upper_storey_thread.json
+  PASS "T_Rd = 48\\.6 \\(thread\\).*NOT DUCTILE \\(thread 48\\.6 kN.*dynamic rupture +Circ\\. 2019 C8\\.7\\.1\\.2\\.1\\.9 +8 +0 analyses +- +NOT satisfied.*BROKEN: roof tie, thread at t = [0-9.]+ s")

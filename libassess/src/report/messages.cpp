@@ -177,7 +177,7 @@ const std::map<std::string, Entry>& catalogue() {
                                "Quantities of the governing candidate's derivation, with their formula and source "
                                "(certainty tags as in docs/theory)."}},
       {"mech.bound", {"Capacità di spostamento limitata: la catena rigida darebbe d0* = {} m; il limite è d0* = {} m "
-                      "({}); du*, d_SLV e d_SLC valgono 0.4, 0.4 e 0.6 del limite (docs/theory/mechanisms.md §4.4).",
+                      "({}); du*, d_SLV e d_SLC valgono rispettivamente 0,4; 0,4 e 0,6 volte il limite (docs/theory/mechanisms.md §4.4).",
                       "Displacement capacity bounded: the rigid chain would give d0* = {} m; the bound is d0* = {} m "
                       "({}); du*, d_SLV and d_SLC are 0.4, 0.4 and 0.6 of the bound (docs/theory/mechanisms.md §4.4)."}},
       {"mech.candidates", {"Meccanismi candidati", "Candidate mechanisms"}},

@@ -495,6 +495,14 @@ const std::map<std::string, std::pair<std::string, std::string>>& tie_messages()
       {"tie.reading.14.q", {"Diametro minimo della barra di progetto", "Smallest designed rod"}},
       {"tie.reading.14.r", {"16 mm, modificabile nel file del caso", "16 mm, editable in the case file"}},
       {"tie.reading.14.b", {"prassi per catene in muratura storica [I]", "practice for ties in historic masonry [I]"}},
+      {"tie.reading.caption",
+       {"Catene: grandezze, valori adottati e loro base (certezza: [V-T] letto in una trascrizione del testo ufficiale, "
+        "[V-S] letto in una fonte secondaria, [R] richiamato, non verificato, [I] scelta nostra; docs/theory/ties.md).",
+        "Ties: quantities, values adopted and their basis (certainty: [V-T] seen in a transcription of the official text, "
+        "[V-S] seen in a secondary source, [R] recalled, not verified, [I] our choice; docs/theory/ties.md)."}},
+      {"tie.reading.quantity", {"Grandezza", "Quantity"}},
+      {"tie.reading.reading", {"Valore o formula adottati", "Value or formula adopted"}},
+      {"tie.reading.basis", {"Base", "Basis"}},
   };
   return m;
 }

@@ -4,6 +4,8 @@
 // candidate's checks; the warnings; the legend; the case file.
 #include "report/relazione_context.hpp"
 
+#include "assess/report/tie_report.hpp"
+
 #include "report/report_heading.hpp"
 #include "report/text_format.hpp"
 
@@ -66,6 +68,15 @@ void add_readings_appendix(Ctx& c) {
   for (const std::string& k : keys) items.push_back({Span{c.t(k + ".what") + ": ", true}, Span{c.t(k + ".text")}});
   for (const std::string& r : unknown) items.push_back({Span{r + ": ", true}, Span{c.t("reading.other")}});
   c.d.add_list(items);
+  // The tie rods' formulas and constants with their basis (issue 29): the
+  // section itself cites the clause or "ipotesi del progettista" only.
+  if (c.o.ties) {
+    std::vector<std::vector<Cell>> rows;
+    for (const TieReading& r : tie_readings(*c.o.ties, c.L)) rows.push_back({Cell(r.quantity), Cell(r.reading), Cell(r.basis)});
+    c.d.add_cell_table({Cell(msg(c.L, "tie.reading.quantity")), Cell(msg(c.L, "tie.reading.reading")),
+                        Cell(msg(c.L, "tie.reading.basis"))},
+                       rows, msg(c.L, "tie.reading.caption"));
+  }
 }
 
 void add_candidates_appendix(Ctx& c) {

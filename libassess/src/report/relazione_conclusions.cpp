@@ -147,7 +147,7 @@ void add_interventions(Ctx& c) {
   if (!c.o.ties && !fails) return;
   c.d.add_heading(c.t("int.heading"));
   if (c.o.ties) {
-    c.d.add_raw_html(tie_html_section(*c.o.ties, c.L, c.d.id_prefix(), 3 + c.d.heading_shift()));
+    add_tie_section(c, *c.o.ties);
     return;
   }
   c.d.add_paragraph(msgf(c.L, "int.needed", c.t("method." + m->method), c.n(m->max_dc, 3)));

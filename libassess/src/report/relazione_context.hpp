@@ -6,6 +6,7 @@
 #pragma once
 
 #include "assess/assessment/facade_assessment.hpp"
+#include "assess/assessment/tie_intervention.hpp"
 #include "assess/report/document.hpp"
 #include "assess/report/facade_report.hpp"
 #include "assess/report/messages.hpp"
@@ -87,6 +88,8 @@ void add_dynamic(Ctx& c);                // the dynamic analysis of each candida
 void add_record_set(Ctx& c, const FacadeAssessment& x, const std::string& id);
 void add_comparison(Ctx& c);             // D/C by approach, bars
 void add_interventions(Ctx& c);          // ties, or what a failing mechanism needs
+/// The tie rods' section (relazione_ties.cpp): states, drawing, levels, formulas, checks, dynamics, detailing.
+void add_tie_section(Ctx& c, const TieInterventionResult& t);
 void add_probabilistic(Ctx& c);
 void add_evaluation(Ctx& c);             // valutazione dei risultati (computed)
 void add_conclusions(Ctx& c, bool signature = true);

@@ -192,7 +192,14 @@ nlohmann::json level_json(const TieLevelResult& L) {
                        {"unit", c.unit},         {"satisfied", c.satisfied},   {"reachable", c.reachable}};
     row["demand"] = c.reachable ? num(c.demand * scale(c)) : nlohmann::json(nullptr);
     row["capacity"] = num(c.capacity * scale(c));
-    row["dc"] = c.reachable && c.unit != "analyses" ? num(c.dc) : nlohmann::json(nullptr);
+    // The rupture check counts analyses: no break is D/C 0, a break a failure
+    // whatever the count (null, as a collapse: one rule, issue 28).
+    if (c.unit == "analyses")
+      row["dc"] = c.satisfied ? nlohmann::json(0.0) : nlohmann::json(nullptr);
+    else
+      row["dc"] = c.reachable ? num(c.dc) : nlohmann::json(nullptr);
+    if (row["dc"].is_null())
+      row["dc_meaning"] = c.reachable ? "the tie broke in an analysis: a failure" : "a force no tie can give";
     l["checks"].push_back(row);
   }
   l["satisfied"] = L.satisfied;

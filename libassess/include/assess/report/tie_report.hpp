@@ -4,8 +4,8 @@
 // the mechanism needs, the checks of the tie, the mechanism in both states
 // with zeta_E, the dynamic analyses of both states with each tie's outcome
 // per analysis, the detailing; and the readings adopted (the certainty of
-// each formula and constant, for the appendix). The HTML section is in
-// tie_html.cpp; its sentences are in the message catalogue (messages_ties.cpp).
+// each formula and constant, for the appendix). The relazione's section is in
+// relazione_ties.cpp; its sentences are in the message catalogue (messages_ties.cpp).
 #pragma once
 
 #include "assess/assessment/tie_intervention.hpp"
@@ -39,17 +39,13 @@ struct TieReading {
 };
 std::vector<TieReading> tie_readings(const TieInterventionResult& t, Lang lang);
 
-/// The HTML section of the relazione (tie_html.cpp), below its heading
-/// tie_section_title(): the two states, the ties drawn on the mechanism
-/// (labelled in kN per tie and per level), each level's rod, ends, anchor and
-/// layout, the formulas with their sources, the checks, the force each check
-/// needs, the two states side by side, the dynamic analyses (per analysis:
-/// elastic, yielded, broken and which component) and the detailing. Its
-/// subheadings are <h`heading_level`>; every id in it (the section's "ties",
-/// the drawing's markers) starts with `id_prefix` (the building relazione:
-/// one section per mechanism, "M3-"). No certainty tag: tie_readings().
-std::string tie_html_section(const TieInterventionResult& t, Lang lang, const std::string& id_prefix = "",
-                             int heading_level = 3);
+/// The title of the relazione's section on the ties; the section itself is
+/// built as document blocks by the report layer (relazione_ties.cpp): the two
+/// states, the ties drawn on the mechanism (labelled in kN per tie and per
+/// level), each level's rod, ends, anchor and layout, the formulas with their
+/// sources, the checks, the force each check needs, the two states side by
+/// side, the dynamic analyses (per analysis: elastic, yielded, broken and
+/// which component) and the detailing. No certainty tag: tie_readings().
 std::string tie_section_title(Lang lang);
 
 }  // namespace assess

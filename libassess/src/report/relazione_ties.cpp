@@ -1,0 +1,342 @@
+// relazione_ties.cpp: the section of the relazione on the tie rods (issues
+// 23, 29), as blocks of the document model (issue 28: one document for the
+// HTML, PDF, Word and text writers): the stato di fatto and the stato di
+// progetto, the ties drawn on the mechanism, each level's rod, ends, anchor
+// and layout, the formulas with their sources, the checks (capacity design),
+// the force each check needs, the two states side by side, the dynamic
+// analyses with each tie's outcome, the detailing. Numbers go through the
+// context (decimal comma in Italian, never inf or nan); every sentence is in
+// the message catalogue (messages_ties.cpp, keys "tie.*"); the readings the
+// section rests on are listed in the appendix (tie_readings), the body
+// carries no certainty tag.
+#include "assess/report/tie_report.hpp"
+
+#include "assess/kinematic/tie_catalogue.hpp"
+#include "assess/report/mechanism_drawing.hpp"
+#include "assess/support/units.hpp"
+#include "report/relazione_context.hpp"
+#include "report/text_format.hpp"
+
+#include <cmath>
+
+namespace assess {
+
+std::string tie_section_title(Lang lang) { return msg(lang, "tie.title"); }
+
+std::vector<TieReading> tie_readings(const TieInterventionResult&, Lang lang) {
+  std::vector<TieReading> out;
+  for (int i = 1; i <= 14; ++i) {
+    const std::string k = "tie.reading." + std::to_string(i);
+    out.push_back({msg(lang, k + ".q"), msg(lang, k + ".r"), msg(lang, k + ".b")});
+  }
+  return out;
+}
+
+namespace relazione {
+namespace {
+
+constexpr double kN = units::kN;
+
+// The tie messages ("tie." + key) and the context's numbers.
+struct TieText {
+  const Ctx& c;
+  const std::string& t(const std::string& key) const { return msg(c.L, "tie." + key); }
+  template <class... A>
+  std::string f(const std::string& key, const A&... a) const {
+    return msgf(c.L, "tie." + key, a...);
+  }
+  std::string n(double v, int prec) const { return c.n(v, prec); }
+  Cell num(double v, int prec) const { return c.num(v, prec); }
+  Cell numtext(const std::string& s) const {
+    Cell x(s);
+    x.numeric = true;
+    return x;
+  }
+  Cell ok(bool v) const {
+    Cell x(t(v ? "ok" : "ko"));
+    x.tone = v ? Tone::ok : Tone::fail;
+    return x;
+  }
+  std::string component(const std::string& name) const { return t("component." + name); }
+};
+
+std::string rod_text(const TieText& x, const Tie& t) {
+  return (t.rod.diameter > 0.0 ? "Ø" + x.n(t.rod.diameter * 1e3, 0) + " mm" : "A = " + x.n(t.rod.area * 1e6, 0) + " mm²") +
+         " " + t.rod.grade + " (A = " + x.n(t.rod.area * 1e6, 0) + " mm²)";
+}
+
+std::string ends_text(const TieText& x, const Tie& t) {
+  return x.t("ends." + std::string(to_string(t.rod.ends))) + " M" + x.n(t.rod.thread_diameter * 1e3, 0) +
+         ", A_res = " + x.n(t.rod.thread_area * 1e6, 1) + " mm²";
+}
+
+std::string anchor_text(const TieText& x, const Tie& t) {
+  return t.anchor.type == AnchorType::Plate
+             ? x.t("plate") + " " + x.n(t.anchor.a * 1e3, 0) + " × " + x.n(t.anchor.b * 1e3, 0) + " × " +
+                   x.n(t.anchor.t * 1e3, 0) + " mm " + t.anchor.grade
+             : x.t("bar") + " " + x.n(t.anchor.a * 1e3, 0) + " mm, Ø" + x.n(t.anchor.b * 1e3, 0) + " mm " + t.anchor.grade;
+}
+
+std::string layout_text(const TieText& x, const Tie& t) {
+  const TieLayout& L = t.layout;
+  std::string s = x.f("layout_n", L.count, x.n(L.wall_length, 2));
+  if (L.count > 1) s += ", " + x.f("layout_i", x.n(L.centre_spacing(), 2));
+  return s + ", " + x.f("layout_e", x.n(L.edge_distance, 2));
+}
+
+// The governing candidate's chain of a state with each level drawn as a tie
+// arrow of its design strength, labelled per tie and per level.
+std::string drawing(const TieText& x, const CaseFile& kase, const KinematicCaseResult& r,
+                    const std::vector<TieLevelResult>& levels) {
+  const CandidateResult& cr = r.candidates[r.governing];
+  const Chain& chain = kase.mechanism.candidates[r.governing].chain;
+  std::vector<Load> loads;
+  for (const Load& l : chain.loads())
+    if (l.type != LoadType::SelfWeight) loads.push_back(l);
+  for (const TieWork& w : cr.result.ties) {
+    Load l;
+    l.type = LoadType::Tie;
+    l.name = w.tie.name;
+    l.block = w.tie.block;
+    l.point = w.tie.point;
+    l.force = w.tie.capacity * w.tie.direction;
+    for (const TieLevelResult& v : levels)
+      if (v.tie.name == w.tie.name)
+        l.label = x.f("drawing_label", x.n(v.resistance.design / kN, 1),
+                      x.n(v.resistance.design * v.tie.layout.count / kN, 1));
+    loads.push_back(l);
+  }
+  try {
+    const Chain drawn(chain.blocks(), chain.constraints(), loads);
+    return mechanism_svg(drawn, cr.result, x.c.L);
+  } catch (const std::exception&) {
+    return mechanism_svg(chain, cr.result, x.c.L);
+  }
+}
+
+void levels_table(const TieText& x, const std::vector<TieLevelResult>& levels) {
+  std::vector<std::vector<Cell>> rows;
+  for (const TieLevelResult& L : levels) {
+    const Tie& t = L.tie;
+    Cell name(t.name);
+    name.user = true;
+    rows.push_back({name, Cell(x.t(t.existing ? "existing" : "new")), Cell(rod_text(x, t)), Cell(ends_text(x, t)),
+                    Cell(anchor_text(x, t)), Cell(layout_text(x, t)), x.num(t.free_length, 2), x.num(t.pretension / kN, 1),
+                    Cell(x.n(L.resistance.design / kN, 1) + " (" + x.component(L.resistance.governing) + ")"),
+                    x.num(L.resistance.design * t.layout.count / kN, 1),
+                    Cell(x.t(L.resistance.ductile ? "ductile" : "elastic"))});
+  }
+  x.c.d.add_cell_table({Cell(x.t("level")), Cell(x.t("state")), Cell(x.t("rod")), Cell(x.t("ends")), Cell(x.t("anchor")),
+                        Cell(x.t("layout")), x.numtext(x.t("free_length")), x.numtext(x.t("pretension")),
+                        Cell(x.t("T_Rd_tie")), x.numtext(x.t("T_Rd_level")), Cell(x.t("behaviour"))},
+                       rows, x.t("levels_title"));
+}
+
+void formulas(const TieText& x) {
+  std::vector<Inline> items;
+  for (const char* k : {"f.rod", "f.thread", "f.bearing", "f.punching", "f.plate", "f.bar", "f.hierarchy", "f.elastic",
+                        "f.elongation", "f.capacity", "f.layout"})
+    items.push_back({Span{x.t(k)}});
+  x.c.d.add_list(items);
+  x.c.d.add_paragraph(x.t("f.note"));
+}
+
+void checks_table(const TieText& x, const TieLevelResult& L) {
+  std::vector<std::vector<Cell>> rows;
+  for (const TieCheckRow& r : L.checks) {
+    const double s = r.unit == "mm" ? 1e3 : r.unit == "kN" ? 1.0 / kN : 1.0;
+    const bool count = r.unit == "analyses";
+    const std::string clause = r.clause.empty() ? "" : x.t("clause." + r.check);
+    Cell demand = !r.reachable ? Cell(x.t("unreachable")) : count ? x.num(r.demand, 0) : x.num(r.demand * s, 2);
+    demand.numeric = true;
+    // A D/C read from the check's own verdict (the one rule, issue 28): a break
+    // or a force no tie can give is a failure, printed as such.
+    Cell dc = r.reachable && !count ? x.num(r.dc, 3) : x.numtext(r.satisfied ? "0" : "∞");
+    dc.tone = r.satisfied ? Tone::ok : Tone::fail;
+    dc.strong = true;
+    rows.push_back({Cell(x.t("check." + r.check)), Cell(clause), demand, count ? x.numtext("0") : x.num(r.capacity * s, 2),
+                    Cell(count ? x.t("unit_analyses") : r.unit), dc, x.ok(r.satisfied)});
+  }
+  x.c.d.add_cell_table({Cell(x.t("check")), Cell(x.t("clause")), x.numtext(x.t("demand")), x.numtext(x.t("capacity")),
+                        Cell(x.t("unit")), x.numtext("D/C"), Cell(x.t("outcome"))},
+                       rows, x.t("checks_title") + " — " + L.tie.name);
+}
+
+void required_table(const TieText& x, const TieLevelResult& L) {
+  std::vector<std::vector<Cell>> rows;
+  for (const RequiredTieForce& f : L.required) {
+    std::vector<Cell> row{Cell(f.code), Cell(f.limit_state), Cell(x.t("kind." + f.kind)), Cell(x.t("where." + f.location))};
+    if (f.reachable) {
+      row.push_back(x.num(f.per_tie / kN, 2));
+      row.push_back(x.num(f.per_tie * L.tie.layout.count / kN, 2));
+      row.push_back(x.num(f.per_metre / kN, 2));
+    } else {
+      row.push_back(Cell(x.t("unreachable"), x.t("unreachable_why")));
+      row.push_back(Cell("—"));
+      row.push_back(Cell("—"));
+    }
+    row.push_back(x.num(f.dc_without, 3));
+    rows.push_back(row);
+  }
+  x.c.d.add_cell_table({Cell(x.t("code")), Cell(x.t("ls")), Cell(x.t("kind")), Cell(x.t("where")),
+                        x.numtext(x.t("per_tie")), x.numtext(x.t("per_level")), x.numtext(x.t("per_metre")),
+                        x.numtext(x.t("dc_without"))},
+                       rows, x.t("required_title") + " — " + L.tie.name);
+}
+
+void level_block(const TieText& x, const TieLevelResult& L, const std::string& state) {
+  x.c.d.add_heading(L.tie.name + " (" + state + ")", 4, false);
+  const TieResistance& r = L.resistance;
+  x.c.d.add_paragraph(r.ductile ? x.f("ductile_text", x.n(r.hierarchy_demand / kN, 1), x.component(r.weakest_brittle),
+                                      x.n(r.weakest_brittle_capacity / kN, 1), x.n(r.ultimate_elongation * 1e3, 0))
+                                : x.f("elastic_text", x.component(r.weakest_brittle), x.n(r.weakest_brittle_capacity / kN, 1),
+                                      x.n(r.hierarchy_demand / kN, 1), x.n(L.demand.elastic_demand() / kN, 2)));
+  std::string dem = x.f("demand_static", x.n(L.demand.static_force / kN, 2));
+  if (L.demand.curve_force) dem += "; " + x.f("demand_curve", x.n(*L.demand.curve_force / kN, 2));
+  if (L.demand.dynamic_force)
+    dem += "; " + x.f("demand_dynamic", x.n(*L.demand.dynamic_force / kN, 2), L.demand.dynamic_runs);
+  if (L.demand.dynamic_breaks > 0)
+    dem += "; " + x.f("demand_broken", L.demand.dynamic_breaks, L.demand.dynamic_runs,
+                      x.component(L.demand.dynamic_component));
+  x.c.d.add_paragraph(dem + ".");
+  checks_table(x, L);
+  required_table(x, L);
+}
+
+void states_table(const TieText& x, const TieInterventionResult& t) {
+  const KinematicResult& b = t.before.candidates[t.before.governing].result;
+  const KinematicResult& a = t.after.candidates[t.after.governing].result;
+  auto dk = [&](const KinematicResult& k, double v) { return k.curve_complete() ? x.num(v, 4) : x.numtext("—"); };
+  std::vector<std::vector<Cell>> rows;
+  auto row = [&](const std::string& label, Cell u, Cell v) { rows.push_back({Cell(label), u, v}); };
+  row("α0", x.num(b.alpha0, 4), x.num(a.alpha0, 4));
+  row("a0* (m/s²)", x.num(b.a0_star, 4), x.num(a.a0_star, 4));
+  row("d0* (m)", dk(b, b.d0_star), dk(a, a.d0_star));
+  row(x.t("d_tie"), dk(b, b.d_star_tie_limit), dk(a, a.d_star_tie_limit));
+  row("d_SLV (m)", dk(b, b.d_SLV), dk(a, a.d_SLV));
+  row("d_SLC (m)", dk(b, b.d_SLC), dk(a, a.d_SLC));
+  row(x.t("d_SLV_plastic"), dk(b, b.d_SLV_plastic), dk(a, a.d_SLV_plastic));
+  row(x.t("zeta"), x.num(t.zetaE_before, 3), x.num(t.zetaE_after, 3));
+  row(x.t("all_checks"), x.ok(t.passes_before), x.ok(t.passes_after));
+  const CandidateResult& cb = t.before.candidates[t.before.governing];
+  const CandidateResult& ca = t.after.candidates[t.after.governing];
+  for (const CheckRow& r : cb.checks) {
+    const CheckRow* r2 = nullptr;
+    for (const CheckRow& y : ca.checks)
+      if (y.code == r.code && y.limit_state == r.limit_state && y.kind == r.kind && y.location == r.location) r2 = &y;
+    auto dc = [&](const CheckRow* y) {
+      if (!y) return x.numtext("—");
+      Cell z = x.c.dc_cell(*y);
+      if (y->without_ties) {  // the bare wall's row: said in the cell's second line, the D/C stays a number
+        std::string m = x.t("bare_mark");
+        while (!m.empty() && (m.front() == ' ' || m.front() == '(')) m.erase(0, 1);
+        while (!m.empty() && (m.back() == ' ' || m.back() == ')')) m.pop_back();
+        z.note = m;
+      }
+      return z;
+    };
+    row(r.code + " " + r.limit_state + " " + x.t("kind." + r.kind) + " " + x.t("where." + r.location) + " D/C", dc(&r),
+        dc(r2));
+  }
+  x.c.d.add_cell_table({Cell(""), x.numtext(x.t("before")), x.numtext(x.t("after"))}, rows, x.t("before_after"));
+  x.c.d.add_paragraph(x.t("plastic_note"));
+}
+
+Cell run_outcome(const TieText& x, const TieDynamicRun& r) {
+  if (r.failed) {
+    Cell c(x.t("run_failed"));
+    c.tone = Tone::fail;
+    return c;
+  }
+  for (const TieLevelRun& l : r.levels)
+    if (l.broken) {
+      Cell c(x.f("run_broken", l.name, x.component(l.component), x.n(l.t_broken, 2)));
+      c.tone = Tone::fail;
+      return c;
+    }
+  if (r.yielded) return Cell(x.f("run_yielded", x.n(r.plastic_elongation * 1e3, 1)));
+  return Cell(x.t("run_elastic"));
+}
+
+void dynamics(const TieText& x, const TieInterventionResult& t) {
+  const TieDynamicResult& d = t.dynamics;
+  x.c.d.add_heading(x.t("dyn_title"), 3, false);
+  if (!d.applies) {
+    x.c.d.add_paragraph(x.t("dyn_not"));
+    return;
+  }
+  x.c.d.add_paragraph(x.t(t.intervention ? "dyn_intro" : "dyn_intro_existing"));
+  std::vector<std::vector<Cell>> rows;
+  // d* of a state with a collapse is unbounded: "∞" (the one rule, issue 28).
+  auto pair = [&](double u, double v, int prec) { return x.numtext(x.n(u, prec) + " / " + x.n(v, prec)); };
+  auto count = [&](int u, int v) { return x.numtext(std::to_string(u) + " / " + std::to_string(v)); };
+  for (const TieDynamicSummary& s : d.summaries) {
+    Cell verdict(x.t(s.satisfied_before ? "ok" : "ko") + " → " + x.t(s.satisfied_after ? "ok" : "ko"));
+    verdict.tone = s.satisfied_after ? Tone::ok : Tone::fail;
+    rows.push_back({x.num(s.e, 3), x.numtext(std::to_string(s.records)), count(s.overturned_before, s.overturned_after),
+                    pair(s.d_demand_before, s.d_demand_after, 4), pair(s.d_SLV_before, s.d_SLV_after, 4),
+                    count(s.yielded_before, s.yielded_after), count(s.broken_before, s.broken_after), verdict});
+  }
+  x.c.d.add_cell_table({x.numtext(x.t("dyn_e")), x.numtext(x.t("dyn_N")), x.numtext(x.t("dyn_over")),
+                        x.numtext(x.t("dyn_d")), x.numtext(x.t("dyn_dslv")), x.numtext(x.t("dyn_yield")),
+                        x.numtext(x.t("dyn_broken")), Cell(x.t("dyn_verdict"))},
+                       rows, x.t("dyn_title"));
+  x.c.d.add_paragraph(x.t("dyn_runs_intro"));
+  rows.clear();
+  for (const TieDynamicRun& r : d.runs)
+    rows.push_back({x.numtext(std::to_string(r.record + 1)), x.num(r.e, 3), Cell(x.t(r.reversed ? "reversed" : "normal")),
+                    x.num(r.theta_max, 5), x.num(r.max_force / kN, 2), run_outcome(x, r)});
+  x.c.d.add_cell_table({x.numtext(x.t("dyn_record")), x.numtext(x.t("dyn_e")), Cell(x.t("dyn_polarity")),
+                        x.numtext("θ_max (rad)"), x.numtext(x.t("dyn_fmax")), Cell(x.t("dyn_outcome"))},
+                       rows, x.t("dyn_runs_intro"));
+}
+
+void detailing(const TieText& x, const TieInterventionResult& t) {
+  x.c.d.add_heading(x.t("det_title"), 3, false);
+  std::vector<Inline> items;
+  for (const TieLevelResult& L : t.levels) {
+    const Tie& tie = L.tie;
+    const tie_catalogue::Thread* th = tie_catalogue::find_thread(tie.rod.thread_diameter);
+    std::string item = x.f("det_anchor", anchor_text(x, tie), x.t(tie.anchor.type == AnchorType::Plate ? "det_plate" : "det_bar"));
+    if (th)
+      item += " " + x.f("det_nut", x.n(th->d * 1e3, 0), x.n(th->s * 1e3, 0), x.n(th->m * 1e3, 1),
+                        x.n(th->dw * 1e3, 0) + " × " + x.n(th->hw * 1e3, 1));
+    item += " " + x.t("det_ends." + std::string(to_string(tie.rod.ends)));
+    item += " " + x.f("det_layout", layout_text(x, tie));
+    if (tie.pretension > 0.0)
+      item += " " + x.f("det_pretension", x.n(tie.pretension / kN, 1),
+                        x.n(100.0 * tie.pretension / L.resistance.design, 0));
+    else
+      item += " " + x.t("det_pretension_none");
+    const Span who(tie.name, true, Tone::plain, "", true);
+    items.push_back({who, Span{" (" + x.t(tie.existing ? "existing" : "new") + "): " + item}});
+  }
+  for (const char* k : {"det_far_end", "det_corrosion", "det_execution"}) items.push_back({Span{x.t(k)}});
+  x.c.d.add_list(items);
+}
+
+}  // namespace
+
+void add_tie_section(Ctx& c, const TieInterventionResult& t) {
+  const TieText x{c};
+  c.d.add_paragraph(x.t(t.designed ? "intro_design" : t.intervention ? "intro_given" : "intro_existing"));
+  if (t.designed && t.found) c.d.add_paragraph(x.t(t.regime == "ductile" ? "regime_ductile" : "regime_elastic"));
+  if (t.designed && !t.found) c.d.add_paragraph(Inline{Span{x.t("not_found"), true}});
+  c.d.add_svg(drawing(x, t.intervention ? t.case_after : t.case_before, t.intervention ? t.after : t.before, t.levels),
+              x.t("drawing"), "ties-drawing");
+  c.d.add_heading(x.t("levels_title"), 3, false);
+  levels_table(x, t.levels);
+  c.d.add_heading(x.t("formulas_title"), 3, false);
+  formulas(x);
+  c.d.add_heading(x.t("checks_title"), 3, false);
+  for (const TieLevelResult& L : t.levels_before) level_block(x, L, x.t("state_before"));
+  if (t.intervention)
+    for (const TieLevelResult& L : t.levels) level_block(x, L, x.t("state_after"));
+  c.d.add_heading(x.t("before_after"), 3, false);
+  states_table(x, t);
+  dynamics(x, t);
+  detailing(x, t);
+}
+
+}  // namespace relazione
+}  // namespace assess
