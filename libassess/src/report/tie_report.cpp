@@ -263,10 +263,12 @@ std::string dynamics_text(const TieInterventionResult& t) {
                   "\n";
   s += format("      %7s %4s %-18s %9s %9s %10s %10s %9s %9s %8s %8s\n", "e", "N", "rule", "overt.bef", "overt.aft",
               "d* bef(m)", "d* aft(m)", "dSLV bef", "dSLV aft", "yielded", "broken");
+  // The demand of a state with a collapse is unbounded: "∞" (one column), as its D/C (issue 28).
+  auto dem = [](double v) { return std::isfinite(v) ? format("%10.4f", v) : std::string(9, ' ') + "∞"; };
   for (const TieDynamicSummary& x : d.summaries)
-    s += format("      %7.3f %4d %-18s %9d %9d %10.4f %10.4f %9.4f %9.4f %8d %8d\n        verdict: %s -> %s\n", x.e,
-                x.records, x.rule.c_str(), x.overturned_before, x.overturned_after, x.d_demand_before, x.d_demand_after,
-                x.d_SLV_before, x.d_SLV_after, x.yielded_after, x.broken_after,
+    s += format("      %7.3f %4d %-18s %9d %9d %s %s %9.4f %9.4f %8d %8d\n        verdict: %s -> %s\n", x.e,
+                x.records, x.rule.c_str(), x.overturned_before, x.overturned_after, dem(x.d_demand_before).c_str(),
+                dem(x.d_demand_after).c_str(), x.d_SLV_before, x.d_SLV_after, x.yielded_after, x.broken_after,
                 x.satisfied_before ? "satisfied" : "NOT satisfied", x.satisfied_after ? "satisfied" : "NOT satisfied");
   s += t.intervention ? "    each analysis of the stato di progetto (per tie):\n" : "    each analysis of the stato di fatto (per tie):\n";
   s += format("      %4s %7s %-8s %10s %11s  %s\n", "rec", "e", "polarity", "theta_max", "F max (kN)", "tie outcome");
@@ -289,10 +291,10 @@ std::string level_text(const TieLevelResult& L) {
   const TieResistance& r = L.resistance;
   s += wrap_text(format("    design strengths per tie (kN): rod %.1f, thread %.1f, local compression %.1f, punching "
                         "%.1f, anchor bending %.1f -> T_Rd = %.1f (%s), %.1f kN per level of %d ties; k = EA/L = %.0f "
-                        "kN/m; %.3f ties on the mechanism",
+                        "kN/m; the chain analysed (%.2f m of wall) carries %.3f of them",
                         r.rod / kN, r.thread / kN, r.bearing / kN, r.punching / kN, r.anchor_bending / kN,
                         r.design / kN, r.governing.c_str(), r.design * tie.layout.count / kN, tie.layout.count,
-                        r.stiffness / kN, L.count),
+                        r.stiffness / kN, L.count * tie.layout.wall_length / tie.layout.count, L.count),
                  6) +
        "\n";
   s += wrap_text(r.ductile ? format("    DUCTILE: every brittle capacity >= gamma_Rd gamma_ov A fyk = %.2f x %.2f x %.1f = "
