@@ -114,22 +114,35 @@ std::string drawing(const TieText& x, const CaseFile& kase, const KinematicCaseR
   }
 }
 
+// One column per level (a wall has one or two): the rows read as a schedule.
 void levels_table(const TieText& x, const std::vector<TieLevelResult>& levels) {
-  std::vector<std::vector<Cell>> rows;
+  std::vector<Cell> head{Cell(x.t("level"))};
   for (const TieLevelResult& L : levels) {
-    const Tie& t = L.tie;
-    Cell name(t.name);
+    Cell name(L.tie.name);
     name.user = true;
-    rows.push_back({name, Cell(x.t(t.existing ? "existing" : "new")), Cell(rod_text(x, t)), Cell(ends_text(x, t)),
-                    Cell(anchor_text(x, t)), Cell(layout_text(x, t)), x.num(t.free_length, 2), x.num(t.pretension / kN, 1),
-                    Cell(x.n(L.resistance.design / kN, 1) + " (" + x.component(L.resistance.governing) + ")"),
-                    x.num(L.resistance.design * t.layout.count / kN, 1),
-                    Cell(x.t(L.resistance.ductile ? "ductile" : "elastic"))});
+    head.push_back(name);
   }
-  x.c.d.add_cell_table({Cell(x.t("level")), Cell(x.t("state")), Cell(x.t("rod")), Cell(x.t("ends")), Cell(x.t("anchor")),
-                        Cell(x.t("layout")), x.numtext(x.t("free_length")), x.numtext(x.t("pretension")),
-                        Cell(x.t("T_Rd_tie")), x.numtext(x.t("T_Rd_level")), Cell(x.t("behaviour"))},
-                       rows, x.t("levels_title"));
+  std::vector<std::vector<Cell>> rows;
+  auto row = [&](const std::string& label, auto cell) {
+    std::vector<Cell> r{Cell(label)};
+    for (const TieLevelResult& L : levels) r.push_back(cell(L));
+    rows.push_back(r);
+  };
+  row(x.t("state"), [&](const TieLevelResult& L) { return Cell(x.t(L.tie.existing ? "existing" : "new")); });
+  row(x.t("rod"), [&](const TieLevelResult& L) { return Cell(rod_text(x, L.tie)); });
+  row(x.t("ends"), [&](const TieLevelResult& L) { return Cell(ends_text(x, L.tie)); });
+  row(x.t("anchor"), [&](const TieLevelResult& L) { return Cell(anchor_text(x, L.tie)); });
+  row(x.t("layout"), [&](const TieLevelResult& L) { return Cell(layout_text(x, L.tie)); });
+  row(x.t("free_length"), [&](const TieLevelResult& L) { return Cell(x.n(L.tie.free_length, 2)); });
+  row(x.t("pretension"), [&](const TieLevelResult& L) { return Cell(x.n(L.tie.pretension / kN, 1)); });
+  row(x.t("T_Rd_tie"), [&](const TieLevelResult& L) {
+    return Cell(x.n(L.resistance.design / kN, 1) + " (" + x.component(L.resistance.governing) + ")");
+  });
+  row(x.t("T_Rd_level"), [&](const TieLevelResult& L) {
+    return Cell(x.n(L.resistance.design * L.tie.layout.count / kN, 1));
+  });
+  row(x.t("behaviour"), [&](const TieLevelResult& L) { return Cell(x.t(L.resistance.ductile ? "ductile" : "elastic")); });
+  x.c.d.add_cell_table(head, rows, x.t("levels_title"));
 }
 
 void formulas(const TieText& x) {
@@ -212,7 +225,9 @@ void states_table(const TieText& x, const TieInterventionResult& t) {
   row("α0", x.num(b.alpha0, 4), x.num(a.alpha0, 4));
   row("a0* (m/s²)", x.num(b.a0_star, 4), x.num(a.a0_star, 4));
   row("d0* (m)", dk(b, b.d0_star), dk(a, a.d0_star));
-  row(x.t("d_tie"), dk(b, b.d_star_tie_limit), dk(a, a.d_star_tie_limit));
+  // A state without ties has no such displacement.
+  row(x.t("d_tie"), t.levels_before.empty() ? x.numtext("—") : dk(b, b.d_star_tie_limit),
+      t.levels.empty() ? x.numtext("—") : dk(a, a.d_star_tie_limit));
   row("d_SLV (m)", dk(b, b.d_SLV), dk(a, a.d_SLV));
   row("d_SLC (m)", dk(b, b.d_SLC), dk(a, a.d_SLC));
   row(x.t("d_SLV_plastic"), dk(b, b.d_SLV_plastic), dk(a, a.d_SLV_plastic));
@@ -266,22 +281,24 @@ void dynamics(const TieText& x, const TieInterventionResult& t) {
     return;
   }
   x.c.d.add_paragraph(x.t(t.intervention ? "dyn_intro" : "dyn_intro_existing"));
+  // One row per restitution and state (the stato di progetto's only with an
+  // intervention); d* of a state with a collapse is unbounded: "∞" (issue 28).
   std::vector<std::vector<Cell>> rows;
-  // d* of a state with a collapse is unbounded: "∞" (the one rule, issue 28).
-  auto pair = [&](double u, double v, int prec) { return x.numtext(x.n(u, prec) + " / " + x.n(v, prec)); };
-  auto count = [&](int u, int v) { return x.numtext(std::to_string(u) + " / " + std::to_string(v)); };
-  for (const TieDynamicSummary& s : d.summaries) {
-    Cell verdict(x.t(s.satisfied_before ? "ok" : "ko") + " → " + x.t(s.satisfied_after ? "ok" : "ko"));
-    verdict.tone = s.satisfied_after ? Tone::ok : Tone::fail;
-    rows.push_back({x.num(s.e, 3), x.numtext(std::to_string(s.records)), count(s.overturned_before, s.overturned_after),
-                    pair(s.d_demand_before, s.d_demand_after, 4), pair(s.d_SLV_before, s.d_SLV_after, 4),
-                    count(s.yielded_before, s.yielded_after), count(s.broken_before, s.broken_after), verdict});
-  }
-  x.c.d.add_cell_table({x.numtext(x.t("dyn_e")), x.numtext(x.t("dyn_N")), x.numtext(x.t("dyn_over")),
-                        x.numtext(x.t("dyn_d")), x.numtext(x.t("dyn_dslv")), x.numtext(x.t("dyn_yield")),
+  auto count = [&](int v) { return x.numtext(std::to_string(v)); };
+  for (const TieDynamicSummary& s : d.summaries)
+    for (bool after : {false, true}) {
+      if (after && !t.intervention) continue;
+      rows.push_back({x.num(s.e, 3), Cell(x.t(after ? "state_after" : "state_before")), count(s.records),
+                      count(after ? s.overturned_after : s.overturned_before),
+                      x.num(after ? s.d_demand_after : s.d_demand_before, 4),
+                      x.num(after ? s.d_SLV_after : s.d_SLV_before, 4), count(after ? s.yielded_after : s.yielded_before),
+                      count(after ? s.broken_after : s.broken_before),
+                      x.ok(after ? s.satisfied_after : s.satisfied_before)});
+    }
+  x.c.d.add_cell_table({x.numtext("e"), Cell(x.t("dyn_state")), x.numtext("N"), x.numtext(x.t("dyn_over")),
+                        x.numtext(x.t("dyn_d")), x.numtext("d_SLV (m)"), x.numtext(x.t("dyn_yield")),
                         x.numtext(x.t("dyn_broken")), Cell(x.t("dyn_verdict"))},
                        rows, x.t("dyn_title"));
-  x.c.d.add_paragraph(x.t("dyn_runs_intro"));
   rows.clear();
   for (const TieDynamicRun& r : d.runs)
     rows.push_back({x.numtext(std::to_string(r.record + 1)), x.num(r.e, 3), Cell(x.t(r.reversed ? "reversed" : "normal")),
