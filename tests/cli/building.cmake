@@ -129,7 +129,7 @@ assess_cli_error_test(building_kinematic "a building case \\(key \"walls\"\\): `
 
 # The relazione printed to PDF (A4): summary and one section per mechanism.
 add_test(NAME cli.building_report_pdf
-  COMMAND sh -c "command -v chromium >/dev/null && command -v pdfinfo >/dev/null || exit 77; \"$1\" run mechanisms/building-house.json --pdf \"$2\" > /dev/null || exit 1; p=$(pdfinfo \"$2\" | sed -n 's/^Pages: *//p'); echo pages=$p; [ \"$p\" -ge 30 ] && [ \"$p\" -le 120 ] && pdfinfo \"$2\" | grep -q 'Page size:.*(A4)' "
+  COMMAND sh -c "command -v chromium >/dev/null && command -v pdfinfo >/dev/null || exit 77; \"$1\" run mechanisms/building-house.json --pdf \"$2\" > /dev/null || exit 1; p=$(pdfinfo \"$2\" | sed -n 's/^Pages: *//p'); echo pages=$p; [ \"$p\" -ge 30 ] && [ \"$p\" -le 250 ] && pdfinfo \"$2\" | grep -q 'Page size:.*(A4)' "
           sh $<TARGET_FILE:assess_cli> ${CMAKE_CURRENT_BINARY_DIR}/building-house.pdf
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.building_report_pdf PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77 TIMEOUT 300

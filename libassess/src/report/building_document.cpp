@@ -87,6 +87,14 @@ const std::string& bt(Lang L, const std::string& key) {
       {"years", {"anni", "years"}},
       {"governing", {"Meccanismi che governano", "Governing mechanisms"}},
       {"strength", {"lineare (resistenza)", "linear (strength)"}},
+      {"strength_short", {"lin.", "lin."}},
+      {"displacement_short", {"non lin.", "non-lin."}},
+      {"dynamic_short", {"din.", "dyn."}},
+      {"approach_abbrev",
+       {"lin.: analisi cinematica lineare (resistenza); non lin.: non lineare (spostamento); din.: dinamica non "
+        "lineare. Il valore di a0* di ciascun cinematismo è nella sezione del meccanismo.",
+        "lin.: linear kinematic analysis (strength); non-lin.: non-linear (displacement); dyn.: non-linear dynamic. "
+        "Each candidate's a0* is in the mechanism's section."}},
       {"displacement", {"non lineare (spostamento)", "non-linear (displacement)"}},
       {"dynamic", {"dinamica non lineare", "non-linear dynamic"}},
       {"satisfied_of", {"soddisfatti", "satisfied"}},
@@ -96,12 +104,12 @@ const std::string& bt(Lang L, const std::string& key) {
       {"no_zeta", {"nessun ζE: l'analisi dinamica dà un D/C, non una PGA di capacità",
                    "no ζE: the dynamic analysis gives a D/C, not a PGA capacity"}},
       {"table_cap",
-       {"Tabella di sintesi (NTC 2018). Per ogni approccio: α0 e a0* del cinematismo la cui verifica dà il D/C "
+       {"Tabella di sintesi (NTC 2018). Per ogni approccio: α0 del cinematismo la cui verifica dà il D/C "
         "riportato accanto (il più grande dell'approccio), il D/C e ζE = PGA_C/PGA_D (ag su roccia, verifica SLV o SLC "
         "che governa); ★ = meccanismo che governa l'approccio; in rosso i D/C non verificati e ζE < 1; ∞: collasso in "
         "un'analisi dinamica. Esito: la conclusione del metodo adottato (indicato sotto se non è il non lineare); Acc.: "
         "insieme di accelerogrammi. Il codice del meccanismo porta alla sua sezione.",
-        "Summary table (NTC 2018). For each approach: α0 and a0* of the candidate whose check gives the D/C beside them "
+        "Summary table (NTC 2018). For each approach: α0 of the candidate whose check gives the D/C beside it "
         "(the approach's largest), the D/C and ζE = PGA_C/PGA_D (ag on rock, the governing SLV or SLC check); ★ = the "
         "approach's governing mechanism; red: D/C not satisfied and ζE < 1; ∞: a collapse in a dynamic analysis. "
         "Outcome: the adopted method's conclusion (named below it unless non-linear); Rec.: the record set. The "
@@ -561,14 +569,12 @@ void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d, const 
                       ? ""
                       : relazione::decimal_comma(L == Lang::it ? localise(L, s->dc_candidate) : s->dc_candidate);
         row.push_back(al);
-        row.push_back(num(L, s->dc_a0_star, 3));
         const MethodVerdict* mv = nullptr;
         for (const MethodVerdict& x : r.a.verdict.methods)
           if (x.code == "NTC2018" && x.method == method_of_kind(ap)) mv = &x;
         row.push_back(dc_cell(L, s->dc, s->satisfied, mv && mv->undecided()));
       } else {
         row.push_back(num(L, std::nan(""), 4));
-        row.push_back(num(L, std::nan(""), 3));
         row.push_back(num(L, std::nan(""), 3));
       }
       row.push_back(zeta_cell(L, s, gov_of("NTC2018", ap, i)));
@@ -597,11 +603,13 @@ void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d, const 
     c.numeric = true;
     return c;
   };
-  const std::string lin = bt(L, "strength"), nl = bt(L, "displacement");
-  d.add_cell_table({Cell(bt(L, "id")), Cell(bt(L, "wall_mech")), h("α0", lin), h("a0* (m/s²)", lin), h("D/C", lin),
-                    h("ζE", lin), h("α0", nl), h("a0* (m/s²)", nl), h("D/C", nl), h("ζE", nl),
-                    h("D/C", bt(L, "dynamic")), Cell(bt(L, "records_short")), Cell(bt(L, "outcome"))},
-                   rows, bt(L, "table_cap"), "building-summary");
+  // Short approach names under the headings (the caption spells them out): the
+  // table fits the page at its type size (issue 28, item 9).
+  const std::string lin = bt(L, "strength_short"), nl = bt(L, "displacement_short");
+  d.add_cell_table({Cell(bt(L, "id")), Cell(bt(L, "wall_mech")), h("α0", lin), h("D/C", lin), h("ζE", lin), h("α0", nl),
+                    h("D/C", nl), h("ζE", nl), h("D/C", bt(L, "dynamic_short")), Cell(bt(L, "records_short")),
+                    Cell(bt(L, "outcome"))},
+                   rows, bt(L, "table_cap") + " " + bt(L, "approach_abbrev"), "building-summary");
   bool designed = false;
   const std::string chart = zeta_chart(L, b, &designed);
   d.add_svg(chart, bt(L, designed ? "chart_cap" : "chart_cap_plain"), "fig-zeta");

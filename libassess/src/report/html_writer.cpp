@@ -32,9 +32,9 @@ constexpr const char* kCss = R"(
   table { border-collapse: collapse; margin: 0.5em 0 0.8em 0; font-size: 8.5pt; width: 100%; }
   table.narrow { width: auto; min-width: 60%; }
   caption { caption-side: top; text-align: left; font-style: italic; font-size: 9.5pt; padding-bottom: 0.3em; }
-  th, td { border: 1px solid #bbb; padding: 0.18em 0.35em; text-align: left; vertical-align: top; overflow-wrap: break-word; }
+  th, td { border: 1px solid #bbb; padding: 0.18em 0.35em; text-align: left; vertical-align: top; overflow-wrap: anywhere; }
   th { background: #eee; font-size: 8.5pt; }
-  td.num, th.num { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
+  td.num, th.num { text-align: right; font-variant-numeric: tabular-nums; } td.num { white-space: nowrap; }
   th.num .note, td.num .note { white-space: normal; text-align: left; }
   th .note, td .note { display: block; font-weight: normal; font-size: 8pt; color: #444; }
   .dc-ok, td.dc-ok { color: #11661f; font-weight: bold; } .dc-fail, td.dc-fail { color: #b3001b; font-weight: bold; }
@@ -217,7 +217,7 @@ struct Writer {
       s += "<li class=\"l" + std::to_string(h->level) + "\"><a href=\"#" + xml_escape(h->anchor) +
            "\"><span class=\"secno\">" + n + "</span> " + xml_escape(h->text) + "</a>" +
            (o.page_column ? "<span class=\"fill\"></span><span class=\"page\">" +
-                                (p == o.pages.end() ? std::string("…") : std::to_string(p->second)) + "</span>"
+                                (p == o.pages.end() ? std::string() : std::to_string(p->second)) + "</span>"
                           : std::string()) +
            "</li>\n";
     }
@@ -228,12 +228,32 @@ struct Writer {
 
 }  // namespace
 
+// The contents' page numbers alone (HtmlOptions::contents_overlay): every
+// other box laid out but not painted (no text of it in the PDF), no footer.
+const char* kOverlayCss = R"(
+  body { visibility: hidden; }
+  nav.toc li span.page { visibility: visible; color: #111; }
+  @page { @bottom-right { content: none; } }
+)";
+
 std::string to_html(const Document& d, const HtmlOptions& options) {
   Writer w{d, options, heading_numbers(d)};
-  const std::string body = w.blocks(d.blocks);
+  std::string body;
+  if (options.contents_overlay) {
+    // The blocks up to the contents (the front page, the verdict box) lay it out where the full print has it.
+    std::vector<DocBlock> head;
+    for (const DocBlock& b : d.blocks) {
+      head.push_back(b);
+      if (std::holds_alternative<Contents>(b.value)) break;
+    }
+    body = w.blocks(head);
+  } else {
+    body = w.blocks(d.blocks);
+  }
   return "<!DOCTYPE html>\n<html lang=\"" + xml_escape(d.lang) + "\">\n<head>\n<meta charset=\"utf-8\">\n"
          "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
-         xml_escape(d.title) + "</title>\n<style>" + kCss + page_numbers(d.lang) + "</style>\n</head>\n<body>\n<h1>" +
+         xml_escape(d.title) + "</title>\n<style>" + kCss + page_numbers(d.lang) +
+         (options.contents_overlay ? kOverlayCss : "") + "</style>\n</head>\n<body>\n<h1>" +
          xml_escape(d.title) + "</h1>\n" +
          (d.subtitle.empty() ? "" : "<p class=\"meta\">" + xml_escape(d.subtitle) + "</p>\n") + body +
          "</body>\n</html>\n";

@@ -1,9 +1,11 @@
 // report_files.cpp: a document written to its HTML, PDF and Word files
-// (issue 28): the PDF in two prints (the first, of the page laid out with its
-// figures empty, gives each heading's page through the PDF's bookmarks; the
-// second prints the contents with them), the
-// Word document beside it while Chromium prints; every file written to a
-// temporary file in its folder and renamed.
+// (issue 28): the PDF printed once with the contents' page column empty; its
+// bookmarks give each heading's page; the contents' page numbers are then
+// printed alone (the document up to its contents, every other mark
+// invisible) and laid over those first pages with qpdf (issue 32: one print
+// of the whole document, not two). Without qpdf, a second print of the whole
+// document. The Word document is written beside it while Chromium prints;
+// every file through the guarded writer (support/output_file.hpp).
 #include "assess/report/report_files.hpp"
 
 #include "report/external_tool.hpp"
@@ -62,6 +64,30 @@ void install(const std::string& option, const std::string& path, const fs::path*
   write_output_file(path, from ? read_input_file(from->string(), input_kinds::own_output) : *text, option);
 }
 
+
+// `base` with the pages of `overlay` laid over its first pages (qpdf keeps
+// the base's bookmarks and links). False when qpdf is not installed.
+bool overlay_first_pages(const fs::path& base, const fs::path& overlay, const fs::path& out, const fs::path& dir) {
+  const fs::path log = dir / "qpdf.log";
+  const int code = detail::run_program({"qpdf", "--show-npages", overlay.string()}, log);
+  if (code == 127) return false;
+  const std::string n = detail::read_file(log);
+  int pages = 0;
+  for (char ch : n) {
+    if (ch < '0' || ch > '9') break;
+    pages = pages * 10 + (ch - '0');
+  }
+  if (code != 0 || pages < 1) throw InputError("--pdf: qpdf could not read the contents' page numbers (exit " + std::to_string(code) + ")");
+  const std::string range = "1-" + std::to_string(pages);
+  const int done = detail::run_program({"qpdf", base.string(), "--overlay", overlay.string(), "--from=" + range,
+                                        "--to=" + range, "--", out.string()},
+                                       dir / "qpdf-overlay.log");
+  // qpdf exits 3 for warnings with a written file.
+  if ((done != 0 && done != 3) || !fs::exists(out))
+    throw InputError("--pdf: qpdf could not lay the contents' page numbers over the print (exit " + std::to_string(done) + ")");
+  return true;
+}
+
 }  // namespace
 
 void write_report_files(const Document& d, const ReportFiles& files) {
@@ -74,14 +100,20 @@ void write_report_files(const Document& d, const ReportFiles& files) {
     if (!files.pdf.empty()) {
       HtmlOptions o;
       o.page_column = true;
-      o.layout_only = true;  // the first print only reads where each heading falls
-      const fs::path first = dir.path() / "first.pdf", second = dir.path() / "second.pdf";
+      const fs::path first = dir.path() / "first.pdf", toc = dir.path() / "contents.pdf", final = dir.path() / "final.pdf";
+      // One print of the whole document, the contents' page column empty.
       html_to_pdf(to_html(d, o), first.string());
       o.pages = heading_pages(d, pdf_outline(first.string()));
-      o.layout_only = false;
       const std::string page = to_html(d, o);
-      html_to_pdf(page, second.string());
-      install("--pdf", files.pdf, &second, nullptr);
+      HtmlOptions numbers = o;
+      numbers.contents_overlay = true;
+      html_to_pdf(to_html(d, numbers), toc.string());
+      if (overlay_first_pages(first, toc, final, dir.path())) {
+        install("--pdf", files.pdf, &final, nullptr);
+      } else {
+        html_to_pdf(page, final.string());  // no qpdf: the whole document printed again with its numbers
+        install("--pdf", files.pdf, &final, nullptr);
+      }
       if (!files.html.empty()) install("--html", files.html, nullptr, &page);
     } else if (!files.html.empty()) {
       const std::string page = to_html(d);

@@ -16,14 +16,20 @@ namespace assess {
 
 struct HtmlOptions {
   /// Page of each heading's anchor in the printed PDF (from a first print);
-  /// empty: the contents show no page numbers yet (the same layout, "…").
+  /// a heading without one has an empty page cell of the same width (the same layout).
   std::map<std::string, int> pages;
-  /// Show the contents' page column (a printed edition): "…" where the page is not known.
+  /// Show the contents' page column (a printed edition).
   bool page_column = false;
   /// Each figure's SVG without its content (its root element with the same size and viewBox):
   /// the same layout and pages, printed in a fraction of the time (the first print of a PDF,
   /// which only reads where each heading falls).
   bool layout_only = false;
+  /// The contents' page numbers alone: the document up to the end of its
+  /// contents, every other mark invisible but laid out the same, no page
+  /// footer. Printed and laid over the first pages of the full print
+  /// (report_files.cpp), it puts the page numbers in place without printing
+  /// the whole document a second time.
+  bool contents_overlay = false;
 };
 
 std::string to_html(const Document& d, const HtmlOptions& options = {});
