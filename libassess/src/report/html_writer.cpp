@@ -32,7 +32,7 @@ constexpr const char* kCss = R"(
   table { border-collapse: collapse; margin: 0.5em 0 0.8em 0; font-size: 8.5pt; width: 100%; }
   table.narrow { width: auto; min-width: 60%; }
   caption { caption-side: top; text-align: left; font-style: italic; font-size: 9.5pt; padding-bottom: 0.3em; }
-  th, td { border: 1px solid #bbb; padding: 0.18em 0.35em; text-align: left; vertical-align: top; overflow-wrap: anywhere; }
+  th, td { border: 1px solid #bbb; padding: 0.18em 0.35em; text-align: left; vertical-align: top; overflow-wrap: break-word; }
   th { background: #eee; font-size: 8.5pt; }
   td.num, th.num { text-align: right; font-variant-numeric: tabular-nums; } td.num { white-space: nowrap; }
   th.num .note, td.num .note { white-space: normal; text-align: left; }
@@ -123,9 +123,21 @@ std::string cell_class(const Cell& c) {
   return cls;
 }
 
+// A cell's text with a line-break opportunity after each "_" and "/" (record
+// ids such as RSN286_ITALY_A-BIS000, "fatto / progetto"): a long identifier
+// wraps in its cell instead of widening the table past the page.
+std::string breakable(const std::string& escaped) {
+  std::string s;
+  for (char ch : escaped) {
+    s += ch;
+    if (ch == '_' || ch == '/') s += "<wbr>";
+  }
+  return s;
+}
+
 std::string cell_html(const char* tag, const Cell& c) {
   const std::string cls = cell_class(c);
-  std::string text = xml_escape(c.text);
+  std::string text = c.numeric ? xml_escape(c.text) : breakable(xml_escape(c.text));
   if (!c.link.empty()) text = "<a href=\"#" + xml_escape(c.link) + "\">" + text + "</a>";
   if (c.user) text = "<span class=\"user\">" + text + "</span>";
   std::string s = std::string("<") + tag + (cls.empty() ? "" : " class=\"" + cls + "\"") + ">" + text;

@@ -173,11 +173,11 @@ const std::map<std::string, Entry>& catalogue() {
                             "take part, Circ. C8A.4.1 / C8.7.1.1."}},
       {"mech.derivation", {"Grandezze del meccanismo", "Quantities of the mechanism"}},
       {"mech.derivation_cap", {"Grandezze della derivazione del candidato che governa, con la formula e la fonte "
-                               "(etichette di certezza come in docs/theory).",
+                               "(le letture adottate sono elencate in appendice).",
                                "Quantities of the governing candidate's derivation, with their formula and source "
-                               "(certainty tags as in docs/theory)."}},
+                               "(the readings adopted are listed in the appendix)."}},
       {"mech.bound", {"Capacità di spostamento limitata: la catena rigida darebbe d0* = {} m; il limite è d0* = {} m "
-                      "({}); du*, d_SLV e d_SLC valgono rispettivamente 0,4; 0,4 e 0,6 volte il limite (docs/theory/mechanisms.md §4.4).",
+                      "({}); du*, d_SLV e d_SLC valgono rispettivamente 0,4; 0,4 e 0,6 volte il limite (note teoriche di assess, meccanismi §4.4).",
                       "Displacement capacity bounded: the rigid chain would give d0* = {} m; the bound is d0* = {} m "
                       "({}); du*, d_SLV and d_SLC are 0.4, 0.4 and 0.6 of the bound (docs/theory/mechanisms.md §4.4)."}},
       {"mech.candidates", {"Meccanismi candidati", "Candidate mechanisms"}},
@@ -290,11 +290,12 @@ const std::map<std::string, Entry>& catalogue() {
       {"dyn.mr_series", {"momento stabilizzante", "restoring moment"}},
       {"dyn.mr_fig_tied",
        {"Momento stabilizzante netto della parete con le catene alla loro resistenza (inviluppo rigido-plastico, "
-        "docs/theory/ties.md §6) fino alla rotazione di collasso; l'area sottesa è la capacità energetica.",
+        "note teoriche di assess, catene §6) fino alla rotazione di collasso; l'area sottesa è la capacità energetica.",
         "Net restoring moment of the wall with the ties at their strength (rigid-plastic envelope, "
         "docs/theory/ties.md §6) up to the collapse rotation; the area under it is the energy capacity."}},
       {"dyn.records", {"Accelerogrammi", "Records"}},
       {"dyn.record", {"accelerogramma", "record"}},
+      {"dyn.record_code", {"codice", "record"}},
       {"dyn.event", {"evento", "event"}},
       {"dyn.station", {"stazione", "station"}},
       {"dyn.component", {"componente", "component"}},
@@ -361,7 +362,7 @@ const std::map<std::string, Entry>& catalogue() {
       {"dyn.flags", {"Segnalazioni sugli accelerogrammi e sull'intervallo di periodi (frasi del programma, in inglese "
                      "come nel terminale):",
                      "Flags on the records and the period range:"}},
-      {"dyn.rank", {"posizione", "rank"}},
+      {"dyn.rank", {"rango", "rank"}},
       {"dyn.integrated", {"integrato (s)", "integrated (s)"}},
       {"dyn.records_cap",
        {"Accelerogrammi usati: evento, data, stazione, componente, paese; magnitudo Mw, distanza R (Rjb, Rrup o "
@@ -445,7 +446,7 @@ const std::map<std::string, Entry>& catalogue() {
       {"prob.per_year", {"/anno", "/year"}},
       {"prob.no_risk", {"Nessun valore di rischio", "No risk figure"}},
       {"prob.source", {"Fonte", "Source"}},
-      {"prob.cap", {"Risultato del comando assess fragility (docs/theory/fragility.md), riportato a titolo informativo.",
+      {"prob.cap", {"Risultato del comando assess fragility (note teoriche di assess, fragilità), riportato a titolo informativo.",
                     "Result of the command assess fragility (docs/theory/fragility.md), given for information."}},
       {"warnings.english",
        {"Le avvertenze seguenti sono riportate nella lingua del programma (inglese), come stampate nel terminale.",
@@ -1282,11 +1283,11 @@ const std::vector<std::pair<std::string, std::string>>& phrases_it() {
       {"one-sided model of one body rotating about its ground hinge with the roof thrust's moment exact at every "
        "rotation (Lagrange's equation, docs/theory/chain-dynamics.md), q_u = ",
        "modello monolatero di un corpo ruotante attorno alla cerniera al piede con il momento della spinta della "
-       "copertura esatto a ogni rotazione (equazione di Lagrange, docs/theory/chain-dynamics.md), q_u = "},
+       "copertura esatto a ogni rotazione (equazione di Lagrange, note teoriche di assess, dinamica delle catene), q_u = "},
       {"two-sided model of one body rotating about its ground hinge with the roof thrust's moment exact at every "
        "rotation (Lagrange's equation, docs/theory/chain-dynamics.md), q_u = ",
        "modello bilatero di un corpo ruotante attorno alla cerniera al piede con il momento della spinta della "
-       "copertura esatto a ogni rotazione (equazione di Lagrange, docs/theory/chain-dynamics.md), q_u = "},
+       "copertura esatto a ogni rotazione (equazione di Lagrange, note teoriche di assess, dinamica delle catene), q_u = "},
       // Dynamic check notes (assessment/facade_assessment.cpp).
       {"mean of peak d* over ", "media dei d* di picco su "},
       {"largest peak d* of ", "massimo d* di picco di "},
@@ -1315,9 +1316,9 @@ const std::vector<std::pair<std::string, std::string>>& phrases_it() {
       {" held by ", " trattenuto da "},
       {", held by ", ", trattenuta da "},
       {" tie levels (one-sided elastic-perfectly-plastic restraint, docs/theory/ties.md §6)",
-       " livelli di catene (vincolo monolatero elastico-perfettamente plastico, docs/theory/ties.md §6)"},
+       " livelli di catene (vincolo monolatero elastico-perfettamente plastico, note teoriche di assess, catene §6)"},
       {" tie level (one-sided elastic-perfectly-plastic restraint, docs/theory/ties.md §6)",
-       " livello di catene (vincolo monolatero elastico-perfettamente plastico, docs/theory/ties.md §6)"},
+       " livello di catene (vincolo monolatero elastico-perfettamente plastico, note teoriche di assess, catene §6)"},
       {"floor motions (first-mode filter)", "moti di piano (filtro del primo modo)"},
       {"floor motions given by the user", "moti di piano forniti dall'utente"},
       {" of ", " su "},
@@ -1356,7 +1357,7 @@ const std::vector<std::pair<std::string, std::string>>& phrases_it() {
       {"one-sided chain of ", "catena monolatera di "},
       {"two-sided chain of ", "catena bilatera di "},
       {" blocks, one coordinate q = rotation of block ", " blocchi, una coordinata q = rotazione del blocco "},
-      {"(Lagrange's equation, docs/theory/chain-dynamics.md)", "(equazione di Lagrange, docs/theory/chain-dynamics.md)"},
+      {"(Lagrange's equation, docs/theory/chain-dynamics.md)", "(equazione di Lagrange, note teoriche di assess, dinamica delle catene)"},
       {"; base at Z = ", "; base a Z = "},
       {"floor motions a_Z = ug'' + gamma psi ur'' (first mode: ",
        "moti di piano a_Z = ug'' + gamma psi ur'' (primo modo: "},

@@ -497,7 +497,7 @@ const std::map<std::string, std::pair<std::string, std::string>>& tie_messages()
       {"tie.reading.14.b", {"prassi per catene in muratura storica [I]", "practice for ties in historic masonry [I]"}},
       {"tie.reading.caption",
        {"Catene: grandezze, valori adottati e loro base (certezza: [V-T] letto in una trascrizione del testo ufficiale, "
-        "[V-S] letto in una fonte secondaria, [R] richiamato, non verificato, [I] scelta nostra; docs/theory/ties.md).",
+        "[V-S] letto in una fonte secondaria, [R] richiamato, non verificato, [I] scelta nostra; note teoriche di assess, catene).",
         "Ties: quantities, values adopted and their basis (certainty: [V-T] seen in a transcription of the official text, "
         "[V-S] seen in a secondary source, [R] recalled, not verified, [I] our choice; docs/theory/ties.md)."}},
       {"tie.reading.quantity", {"Grandezza", "Quantity"}},

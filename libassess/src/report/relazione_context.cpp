@@ -155,6 +155,19 @@ std::string Ctx::clause(const std::string& text) const {
     out += text[i++];
   }
   while (!out.empty() && (out.back() == ' ' || out.back() == ',')) out.pop_back();
+  // A reference to the engine's own theory notes ("docs/theory/mechanisms.md
+  // §2.2") is named as such in the report's language, not as a file path.
+  static const std::pair<const char*, const char*> theory[] = {
+      {"building", "edificio"}, {"chain-dynamics", "dinamica delle catene"}, {"facade", "facciata"},
+      {"fragility", "fragilità"}, {"kinematic", "analisi cinematica"}, {"mechanisms", "meccanismi"},
+      {"record-selection", "selezione degli accelerogrammi"}, {"rocking", "dinamica del blocco"},
+      {"spectra", "spettri"}, {"ties", "catene"}};
+  for (const auto& [file, it] : theory) {
+    const std::string path = std::string("docs/theory/") + file + ".md";
+    for (std::size_t at = out.find(path); at != std::string::npos; at = out.find(path, at + 1))
+      out.replace(at, path.size(), L == Lang::it ? std::string("note teoriche di assess, ") + it
+                                                  : std::string("assess theory notes, ") + file);
+  }
   return loc(out);
 }
 

@@ -148,7 +148,7 @@ void add_records(Ctx& c, const FacadeAssessment& x) {
     y.numeric = true;
     return y;
   };
-  c.d.add_cell_table({Cell(c.t("dyn.record")), Cell(c.t("dyn.event_station")), h("Mw"), h(c.t("dyn.distance")),
+  c.d.add_cell_table({Cell(c.t("dyn.record_code")), Cell(c.t("dyn.event_station")), h("Mw"), h(c.t("dyn.distance")),
                       Cell(c.t("dyn.site_class")), h(c.t("dyn.usable")), h(c.t("dyn.scale")), h("PGA (g)"),
                       h(c.t("dyn.deviation")), h(c.t("dyn.rank")), h(c.t("dyn.integrated"))},
                      rows, c.t("dyn.records_cap") + " " + c.t("dyn.flags_cap"));

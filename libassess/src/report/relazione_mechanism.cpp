@@ -379,7 +379,7 @@ void add_quantity_table(Ctx& c, const std::vector<MechanismQuantity>& qs, const 
     Cell v(q.unit.empty() ? "" : c.g(q.value, 4));
     v.numeric = true;
     rows.push_back({Cell(c.loc(q.label)), v, Cell(q.unit == "-" ? "–" : c.unit(q.unit)),
-                    Cell(q.source == "input" ? c.t("data.case") : c.loc(q.source))});
+                    Cell(q.source == "input" ? c.t("data.case") : c.clause(q.source))});
   }
   Cell hv(c.t("kin.value"));
   hv.numeric = true;
