@@ -265,11 +265,15 @@ std::string dynamics_text(const TieInterventionResult& t) {
               "d* bef(m)", "d* aft(m)", "dSLV bef", "dSLV aft", "yielded", "broken");
   // The demand of a state with a collapse is unbounded: "∞" (one column), as its D/C (issue 28).
   auto dem = [](double v) { return std::isfinite(v) ? format("%10.4f", v) : std::string(9, ' ') + "∞"; };
-  for (const TieDynamicSummary& x : d.summaries)
-    s += format("      %7.3f %4d %-18s %9d %9d %s %s %9.4f %9.4f %8d %8d\n        verdict: %s -> %s\n", x.e,
-                x.records, x.rule.c_str(), x.overturned_before, x.overturned_after, dem(x.d_demand_before).c_str(),
-                dem(x.d_demand_after).c_str(), x.d_SLV_before, x.d_SLV_after, x.yielded_after, x.broken_after,
-                x.satisfied_before ? "satisfied" : "NOT satisfied", x.satisfied_after ? "satisfied" : "NOT satisfied");
+  for (const TieDynamicSummary& x : d.summaries) {
+    const char* before = x.satisfied_before ? "satisfied" : "NOT satisfied";
+    const char* after = x.satisfied_after ? "satisfied" : "NOT satisfied";
+    s += format("      %7.3f %4d %-18s %9d %9d %s %s %9.4f %9.4f %8d %8d\n", x.e, x.records, x.rule.c_str(),
+                x.overturned_before, x.overturned_after, dem(x.d_demand_before).c_str(), dem(x.d_demand_after).c_str(),
+                x.d_SLV_before, x.d_SLV_after, x.yielded_after, x.broken_after);
+    // One state without an intervention: its verdict once.
+    s += t.intervention ? format("        verdict: %s -> %s\n", before, after) : format("        verdict: %s\n", after);
+  }
   s += t.intervention ? "    each analysis of the stato di progetto (per tie):\n" : "    each analysis of the stato di fatto (per tie):\n";
   s += format("      %4s %7s %-8s %10s %11s  %s\n", "rec", "e", "polarity", "theta_max", "F max (kN)", "tie outcome");
   for (const TieDynamicRun& r : d.runs)
