@@ -330,6 +330,101 @@ struct Geometry {
   }
 };
 
+
+// ---------------------------------------------------------------- canvas
+// The styles of dimension and extension lines.
+const char* const dim_style = "class=\"dim-line\" stroke=\"#333\" stroke-width=\"0.7\"";
+const char* const ext_style = "class=\"ext-line\" stroke=\"#666\" stroke-width=\"0.5\"";
+
+// A label to place once everything is drawn, with its preferred positions.
+struct LabelReq {
+  std::string text;
+  double fs;
+  std::string attrs;
+  double ax, ay;
+  std::vector<Cand> prefs;
+};
+
+// What the section and the plan drawings share: the graphics drawn so far,
+// the label placer (every line and mark an obstacle), the extent of
+// everything drawn (px), the labels to place once all is drawn (dimension
+// values first, so that they stay by their lines), and the SVG document.
+struct Canvas {
+  std::string o;  // graphics
+  Placer placer;
+  Box ext{kInf, kInf, -kInf, -kInf};
+  std::vector<LabelReq> dim_labels, labels;
+
+  void grow(double x, double y) {
+    ext = {std::min(ext.x0, x), std::min(ext.y0, y), std::max(ext.x1, x), std::max(ext.y1, y)};
+  }
+  void line(double x1, double y1, double x2, double y2, const std::string& style, bool obstacle = true) {
+    o += "<line x1=\"" + f1(x1) + "\" y1=\"" + f1(y1) + "\" x2=\"" + f1(x2) + "\" y2=\"" + f1(y2) + "\" " + style +
+         "/>\n";
+    grow(x1, y1), grow(x2, y2);
+    if (obstacle) placer.segment(x1, y1, x2, y2);
+  }
+  void circle(double x, double y, double rad, const std::string& style) {
+    o += "<circle cx=\"" + f1(x) + "\" cy=\"" + f1(y) + "\" r=\"" + f1(rad) + "\" " + style + "/>\n";
+    grow(x - rad, y - rad), grow(x + rad, y + rad);
+    placer.mark({x - rad, y - rad, x + rad, y + rad});
+  }
+  // The head of an arrow drawn with a marker (7 stroke widths long and wide)
+  // ending at (x2, y2): an obstacle for the labels.
+  void head(double x1, double y1, double x2, double y2, double stroke_width) {
+    const double n = std::hypot(x2 - x1, y2 - y1), h = 3.5 * stroke_width;
+    if (!(n > 0.0)) return;
+    const double cx = x2 - (x2 - x1) / n * h, cy = y2 - (y2 - y1) / n * h;
+    placer.mark({cx - h, cy - h, cx + h, cy + h});
+    grow(cx - h, cy - h), grow(cx + h, cy + h);
+  }
+  // Architectural ticks (45 degree strokes) at the ends of dimension lines.
+  void tick(double x, double y) {
+    line(x - 3.5, y + 3.5, x + 3.5, y - 3.5, "class=\"dim-line\" stroke=\"#333\" stroke-width=\"1\"");
+  }
+  // Places the labels asked for; returns the baseline of a legend under everything.
+  double place_labels() {
+    for (const LabelReq& q : dim_labels) placer.place(q.text, q.fs, q.attrs, q.ax, q.ay, q.prefs);
+    for (const LabelReq& q : labels) placer.place(q.text, q.fs, q.attrs, q.ax, q.ay, q.prefs);
+    double ly = ext.y1;
+    for (const Placed& p : placer.labels()) ly = std::max(ly, p.box.y1);
+    return ly + 16;
+  }
+  // The legend's lines from (x, y) down (their anchor is their position: no leader).
+  void place_legend(const std::vector<std::string>& legend, double x, double y) {
+    for (const std::string& lt : legend) {
+      placer.place(lt, 10, "fill=\"#444\" font-style=\"italic\"", x, y, {{x, y, Anchor::Start}});
+      y += 14;
+    }
+  }
+  // An arrow head for marker-end (7 stroke widths long and wide).
+  static std::string marker(const char* id, const char* fill, const char* orient = "auto") {
+    return std::string("<marker id=\"") + id + "\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" " +
+           "markerHeight=\"7\" orient=\"" + orient + "\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"" + fill +
+           "\"/></marker>";
+  }
+  // The SVG document: the leaders, the placed labels, a viewBox around
+  // everything, at least 640 px wide (centred: the report scales the figure
+  // to the column's width, 170 mm, so a narrow drawing would grow, text and all).
+  std::string document(const std::string& title, const std::string& defs) {
+    for (const auto& l : placer.leaders()) line(l[0], l[1], l[2], l[3], "stroke=\"#777\" stroke-width=\"0.6\"", false);
+    std::string t;
+    for (const Placed& p : placer.labels()) {
+      grow(p.box.x0, p.box.y0), grow(p.box.x1, p.box.y1);
+      t += "<text x=\"" + f1(p.x) + "\" y=\"" + f1(p.y) + "\" font-size=\"" + f1(p.fs) + "\" text-anchor=\"" +
+           anchor_name(p.a) + "\"" + (p.attrs.empty() ? "" : " " + p.attrs) + ">" + xml_escape(p.text) + "</text>\n";
+    }
+    const double m = 8.0;
+    double vx = std::floor(ext.x0 - m), vw = std::ceil(ext.x1 + m) - vx;
+    if (vw < 640.0) vx -= std::floor(0.5 * (640.0 - vw)), vw = 640.0;
+    const double vy = std::floor(ext.y0 - m), vh = std::ceil(ext.y1 + m) - vy;
+    return "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" + f1(vx) + " " + f1(vy) + " " + f1(vw) + " " +
+           f1(vh) + "\" width=\"" + f1(vw) + "\" height=\"" + f1(vh) +
+           "\" font-family=\"sans-serif\" font-size=\"11\">\n<title>" + xml_escape(title) + "</title>\n" + defs + o + t +
+           "</svg>\n";
+  }
+};
+
 long mm(double v) { return std::lround(v * 1000.0); }
 
 // ------------------------------------------------------------------ plan
@@ -353,42 +448,7 @@ std::string plan_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
   const double sx = std::max(s, 24.0 / t);  // thickness exaggerated if thin (said in the legend)
   auto X = [&](double u) { return 120.0 + s * (u - umin); };
   auto Y = [&](double x) { return 200.0 - sx * x; };  // outward (x > 0) up
-  std::string o;
-  Placer placer;
-  Box ext{kInf, kInf, -kInf, -kInf};
-  auto grow = [&](double x, double y) {
-    ext = {std::min(ext.x0, x), std::min(ext.y0, y), std::max(ext.x1, x), std::max(ext.y1, y)};
-  };
-  auto line = [&](double x1, double y1, double x2, double y2, const std::string& style, bool obstacle = true) {
-    o += "<line x1=\"" + f1(x1) + "\" y1=\"" + f1(y1) + "\" x2=\"" + f1(x2) + "\" y2=\"" + f1(y2) + "\" " + style + "/>\n";
-    grow(x1, y1), grow(x2, y2);
-    if (obstacle) placer.segment(x1, y1, x2, y2);
-  };
-  auto circle = [&](double x, double y, double rad, const std::string& style) {
-    o += "<circle cx=\"" + f1(x) + "\" cy=\"" + f1(y) + "\" r=\"" + f1(rad) + "\" " + style + "/>\n";
-    grow(x - rad, y - rad), grow(x + rad, y + rad);
-    placer.mark({x - rad, y - rad, x + rad, y + rad});
-  };
-  auto head = [&](double x1, double y1, double x2, double y2, double w) {
-    const double n = std::hypot(x2 - x1, y2 - y1), h = 3.5 * w;
-    if (!(n > 0.0)) return;
-    const double cx = x2 - (x2 - x1) / n * h, cy = y2 - (y2 - y1) / n * h;
-    placer.mark({cx - h, cy - h, cx + h, cy + h});
-    grow(cx - h, cy - h), grow(cx + h, cy + h);
-  };
-  auto tick = [&](double x, double y) {
-    line(x - 3.5, y + 3.5, x + 3.5, y - 3.5, "class=\"dim-line\" stroke=\"#333\" stroke-width=\"1\"");
-  };
-  const std::string dim_style = "class=\"dim-line\" stroke=\"#333\" stroke-width=\"0.7\"";
-  const std::string ext_style = "class=\"ext-line\" stroke=\"#666\" stroke-width=\"0.5\"";
-  struct LabelReq {
-    std::string text;
-    double fs;
-    std::string attrs;
-    double ax, ay;
-    std::vector<Cand> prefs;
-  };
-  std::vector<LabelReq> dim_labels, labels;
+  Canvas cv;
 
   // The strip's blocks.
   for (std::size_t i = 0; i < blocks.size(); ++i) {
@@ -397,23 +457,24 @@ std::string plan_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
     for (const auto& p : blocks[i].polygon) {
       pts += f1(X(p.y())) + "," + f1(Y(p.x())) + " ";
       px.push_back({X(p.y()), Y(p.x())});
-      grow(X(p.y()), Y(p.x()));
+      cv.grow(X(p.y()), Y(p.x()));
     }
-    o += "<polygon points=\"" + pts + "\" fill=\"" + (i % 2 ? "#d9cbb5" : "#e6dcc8") +
+    cv.o += "<polygon points=\"" + pts + "\" fill=\"" + (i % 2 ? "#d9cbb5" : "#e6dcc8") +
          "\" stroke=\"#5a4a32\" stroke-width=\"1.2\"/>\n";
-    placer.polygon(std::move(px));
+    cv.placer.polygon(std::move(px));
   }
   // The transverse walls at the supports (context, hatched, inward of the strip).
   const double wall_w = std::max(14.0, s * t), wall_d = 70.0;
   for (int side = 0; side < 2; ++side) {
     const double xa = side == 0 ? X(umin) - wall_w : X(umax), xb = xa + wall_w;
     const double ya = Y(xmax), yb = Y(xmin) + wall_d;
-    o += "<rect x=\"" + f1(xa) + "\" y=\"" + f1(ya) + "\" width=\"" + f1(xb - xa) + "\" height=\"" + f1(yb - ya) +
+    cv.o += "<rect x=\"" + f1(xa) + "\" y=\"" + f1(ya) + "\" width=\"" + f1(xb - xa) + "\" height=\"" + f1(yb - ya) +
          "\" fill=\"#cfcfcf\" stroke=\"#555\" stroke-width=\"1\"/>\n";
-    grow(xa, ya), grow(xb, yb);
-    placer.polygon({{xa, ya}, {xb, ya}, {xb, yb}, {xa, yb}});
-    for (double hy = ya + 8; hy < yb; hy += 10) line(xa, hy, xb, hy - 6, "stroke=\"#888\" stroke-width=\"0.5\"", false);
-    labels.push_back({tr(lang, "muro trasversale", "transverse wall"), 10, "fill=\"#444\"", 0.5 * (xa + xb), yb,
+    cv.grow(xa, ya), cv.grow(xb, yb);
+    cv.placer.polygon({{xa, ya}, {xb, ya}, {xb, yb}, {xa, yb}});
+    for (double hy = ya + 8; hy < yb; hy += 10)
+      cv.line(xa, hy, xb, hy - 6, "stroke=\"#888\" stroke-width=\"0.5\"", false);
+    cv.labels.push_back({tr(lang, "muro trasversale", "transverse wall"), 10, "fill=\"#444\"", 0.5 * (xa + xb), yb,
                       {{0.5 * (xa + xb), yb + 14, Anchor::Middle}, {side == 0 ? xa - 4 : xb + 4, yb - 4,
                                                                       side == 0 ? Anchor::End : Anchor::Start}}});
   }
@@ -428,14 +489,14 @@ std::string plan_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
     }
     const double Xp = X(c.point.y()), Yp = Y(c.point.x());
     hinge_px.push_back({Xp, Yp});
-    circle(Xp, Yp, 4.5, "fill=\"#fff\" stroke=\"#b3001b\" stroke-width=\"1.8\"");
-    labels.push_back({msg(lang, "draw.hinge") + " u = " + m2(c.point.y()), 10, "fill=\"#b3001b\"", Xp, Yp,
+    cv.circle(Xp, Yp, 4.5, "fill=\"#fff\" stroke=\"#b3001b\" stroke-width=\"1.8\"");
+    cv.labels.push_back({msg(lang, "draw.hinge") + " u = " + m2(c.point.y()), 10, "fill=\"#b3001b\"", Xp, Yp,
                       {{Xp, Yp - 9, Anchor::Middle}, {Xp, Yp + 16, Anchor::Middle}, {Xp + 8, Yp - 8, Anchor::Start},
                        {Xp - 8, Yp - 8, Anchor::End}}});
   }
   std::sort(hinge_px.begin(), hinge_px.end());
   for (std::size_t k = 0; k + 1 < hinge_px.size(); ++k)
-    line(hinge_px[k][0], hinge_px[k][1], hinge_px[k + 1][0], hinge_px[k + 1][1],
+    cv.line(hinge_px[k][0], hinge_px[k][1], hinge_px[k + 1][0], hinge_px[k + 1][1],
          "stroke=\"#b3001b\" stroke-width=\"1\" stroke-dasharray=\"5 3\"", false);
   // Loads: the arch's thrust (at both supports), the ring beam's force.
   std::set<char> symbols;
@@ -448,28 +509,28 @@ std::string plan_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
       for (int side = 0; side < 2; ++side) {
         const double Xp = X(side == 0 ? umin : umax), Yp = Y(l.point.x());
         const double x1 = side == 0 ? Xp - 46 : Xp + 46;
-        line(x1, Yp - 16, Xp + (side == 0 ? 10 : -10), Yp - 16,
+        cv.line(x1, Yp - 16, Xp + (side == 0 ? 10 : -10), Yp - 16,
              "stroke=\"#8a3ea8\" stroke-width=\"2.2\" marker-end=\"url(#arrowk)\"");
-        head(x1, Yp - 16, Xp + (side == 0 ? 10 : -10), Yp - 16, 2.2);
-        labels.push_back({"H = " + kn(n), 11, "fill=\"#8a3ea8\"", x1, Yp - 16,
+        cv.head(x1, Yp - 16, Xp + (side == 0 ? 10 : -10), Yp - 16, 2.2);
+        cv.labels.push_back({"H = " + kn(n), 11, "fill=\"#8a3ea8\"", x1, Yp - 16,
                           {{x1, Yp - 22, side == 0 ? Anchor::Start : Anchor::End},
                            {side == 0 ? x1 - 4 : x1 + 4, Yp - 12, side == 0 ? Anchor::End : Anchor::Start}}});
       }
     } else {  // a force across the wall (ring beam), inward
       const double Xp = X(l.point.y()), Yp = Y(l.point.x());
-      line(Xp, Yp - 40, Xp, Yp - 4, "stroke=\"#8a3ea8\" stroke-width=\"2.2\" marker-end=\"url(#arrowk)\"");
-      head(Xp, Yp - 40, Xp, Yp - 4, 2.2);
-      labels.push_back({"S = " + kn(n), 11, "fill=\"#8a3ea8\"", Xp, Yp - 40,
+      cv.line(Xp, Yp - 40, Xp, Yp - 4, "stroke=\"#8a3ea8\" stroke-width=\"2.2\" marker-end=\"url(#arrowk)\"");
+      cv.head(Xp, Yp - 40, Xp, Yp - 4, 2.2);
+      cv.labels.push_back({"S = " + kn(n), 11, "fill=\"#8a3ea8\"", Xp, Yp - 40,
                         {{Xp + 5, Yp - 36, Anchor::Start}, {Xp - 5, Yp - 36, Anchor::End}}});
     }
   }
   // Control point.
   if (r.control_block >= 0) {
     const double Xp = X(r.control_point.y()), Yp = Y(r.control_point.x());
-    circle(Xp, Yp, 6, "fill=\"none\" stroke=\"#000\" stroke-width=\"1.5\"");
-    line(Xp - 8, Yp, Xp + 8, Yp, "stroke=\"#000\"");
-    line(Xp, Yp - 8, Xp, Yp + 8, "stroke=\"#000\"");
-    labels.push_back({msg(lang, "draw.control"), 10, "", Xp, Yp,
+    cv.circle(Xp, Yp, 6, "fill=\"none\" stroke=\"#000\" stroke-width=\"1.5\"");
+    cv.line(Xp - 8, Yp, Xp + 8, Yp, "stroke=\"#000\"");
+    cv.line(Xp, Yp - 8, Xp, Yp + 8, "stroke=\"#000\"");
+    cv.labels.push_back({msg(lang, "draw.control"), 10, "", Xp, Yp,
                       {{Xp + 10, Yp + 16, Anchor::Start}, {Xp - 10, Yp + 16, Anchor::End}}});
   }
   // Dimensions below the strip (inside the building, beyond the walls' ends).
@@ -485,14 +546,14 @@ std::string plan_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
     const double yd = row == 0 ? yd1 : yd2;
     const std::vector<double> pts = row == 0 ? uv : std::vector<double>{umin, umax};
     if (row == 0 && pts.size() <= 2) continue;
-    line(X(pts.front()) - 5, yd, X(pts.back()) + 5, yd, dim_style);
+    cv.line(X(pts.front()) - 5, yd, X(pts.back()) + 5, yd, dim_style);
     for (double u : pts) {
-      tick(X(u), yd);
-      line(X(u), Y(xmin) + 3, X(u), yd + 5, ext_style);
+      cv.tick(X(u), yd);
+      cv.line(X(u), Y(xmin) + 3, X(u), yd + 5, ext_style);
     }
     for (std::size_t k = 0; k + 1 < pts.size(); ++k) {
       const double xm = 0.5 * (X(pts[k]) + X(pts[k + 1]));
-      dim_labels.push_back({d2(pts[k + 1] - pts[k]), 10,
+      cv.dim_labels.push_back({d2(pts[k + 1] - pts[k]), 10,
                             std::string("class=\"dim\" data-kind=\"") + (row == 0 ? "level" : "total") + "\" fill=\"#222\"",
                             xm, yd, {{xm, yd - 3, Anchor::Middle}, {xm, yd + 12, Anchor::Middle}}});
     }
@@ -500,31 +561,27 @@ std::string plan_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
   // The thickness, beyond the last support's wall.
   {
     const double xd = X(umax) + wall_w + 40.0;
-    line(xd, Y(xmax) - 5, xd, Y(xmin) + 5, dim_style);
-    tick(xd, Y(xmax)), tick(xd, Y(xmin));
-    line(X(umax) + wall_w + 3, Y(xmax), xd + 5, Y(xmax), ext_style);
-    line(X(umax) + wall_w + 3, Y(xmin), xd + 5, Y(xmin), ext_style);
+    cv.line(xd, Y(xmax) - 5, xd, Y(xmin) + 5, dim_style);
+    cv.tick(xd, Y(xmax)), cv.tick(xd, Y(xmin));
+    cv.line(X(umax) + wall_w + 3, Y(xmax), xd + 5, Y(xmax), ext_style);
+    cv.line(X(umax) + wall_w + 3, Y(xmin), xd + 5, Y(xmin), ext_style);
     const double ym = 0.5 * (Y(xmax) + Y(xmin));
-    dim_labels.push_back({d2(t), 10, "class=\"dim\" data-kind=\"thickness\" fill=\"#222\"", xd, ym,
+    cv.dim_labels.push_back({d2(t), 10, "class=\"dim\" data-kind=\"thickness\" fill=\"#222\"", xd, ym,
                           {{xd + 5, ym + 3.5, Anchor::Start}, {xd - 5, ym + 3.5, Anchor::End}}});
   }
   // Outer face, inside, the seismic action outward.
   {
     const double xa = 0.5 * (X(umin) + X(umax)), ya = Y(xmax) - 70.0;
-    line(xa, ya + 48, xa, ya, "stroke=\"#b3001b\" stroke-width=\"2.5\" marker-end=\"url(#arrowr)\"");
-    head(xa, ya + 48, xa, ya, 2.5);
-    labels.push_back({msg(lang, "draw.seismic"), 11, "fill=\"#b3001b\"", xa, ya,
+    cv.line(xa, ya + 48, xa, ya, "stroke=\"#b3001b\" stroke-width=\"2.5\" marker-end=\"url(#arrowr)\"");
+    cv.head(xa, ya + 48, xa, ya, 2.5);
+    cv.labels.push_back({msg(lang, "draw.seismic"), 11, "fill=\"#b3001b\"", xa, ya,
                       {{xa + 8, ya + 10, Anchor::Start}, {xa - 8, ya + 10, Anchor::End}}});
-    labels.push_back({tr(lang, "esterno", "outside"), 10, "fill=\"#444\" font-style=\"italic\"", X(umin), Y(xmax),
+    cv.labels.push_back({tr(lang, "esterno", "outside"), 10, "fill=\"#444\" font-style=\"italic\"", X(umin), Y(xmax),
                       {{X(umin) + 4, Y(xmax) - 6, Anchor::Start}}});
-    labels.push_back({tr(lang, "interno", "inside"), 10, "fill=\"#444\" font-style=\"italic\"", X(umin), Y(xmin),
+    cv.labels.push_back({tr(lang, "interno", "inside"), 10, "fill=\"#444\" font-style=\"italic\"", X(umin), Y(xmin),
                       {{X(umin) + 4, Y(xmin) + 14, Anchor::Start}}});
   }
-  for (const LabelReq& q : dim_labels) placer.place(q.text, q.fs, q.attrs, q.ax, q.ay, q.prefs);
-  for (const LabelReq& q : labels) placer.place(q.text, q.fs, q.attrs, q.ax, q.ay, q.prefs);
-  double ly = ext.y1;
-  for (const Placed& p : placer.labels()) ly = std::max(ly, p.box.y1);
-  ly += 16;
+  const double ly = cv.place_labels();
   std::vector<std::string> legend = {tr(lang, "pianta della fascia, quote in m", "plan of the strip, dimensions in m")};
   if (sx > s * 1.0001)
     legend.push_back(tr(lang, "spessore esagerato per leggibilità", "thickness exaggerated for legibility"));
@@ -536,32 +593,9 @@ std::string plan_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
         legend.push_back(tr(lang, "S = forza equivalente del cordolo", "S = the ring beam's equivalent force"));
         break;
       }
-  const double gx = X(umin) - wall_w - 60.0;
-  for (const std::string& lt : legend) {
-    placer.place(lt, 10, "fill=\"#444\" font-style=\"italic\"", gx, ly, {{gx, ly, Anchor::Start}});
-    ly += 14;
-  }
-  for (const auto& l : placer.leaders()) line(l[0], l[1], l[2], l[3], "stroke=\"#777\" stroke-width=\"0.6\"", false);
-  std::string tx;
-  for (const Placed& p : placer.labels()) {
-    grow(p.box.x0, p.box.y0), grow(p.box.x1, p.box.y1);
-    tx += "<text x=\"" + f1(p.x) + "\" y=\"" + f1(p.y) + "\" font-size=\"" + f1(p.fs) + "\" text-anchor=\"" +
-          anchor_name(p.a) + "\"" + (p.attrs.empty() ? "" : " " + p.attrs) + ">" + xml_escape(p.text) + "</text>\n";
-  }
-  const double m = 8.0;
-  double vx = std::floor(ext.x0 - m), vw = std::ceil(ext.x1 + m) - vx;
-  if (vw < 640.0) vx -= std::floor(0.5 * (640.0 - vw)), vw = 640.0;
-  const double vy = std::floor(ext.y0 - m), vh = std::ceil(ext.y1 + m) - vy;
-  std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" + f1(vx) + " " + f1(vy) + " " + f1(vw) + " " +
-                    f1(vh) + "\" width=\"" + f1(vw) + "\" height=\"" + f1(vh) +
-                    "\" font-family=\"sans-serif\" font-size=\"11\">\n";
-  svg += "<title>" + xml_escape(msg(lang, "mech.heading")) + "</title>\n";
-  svg += "<defs><marker id=\"arrowr\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" "
-         "orient=\"auto\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#b3001b\"/></marker>"
-         "<marker id=\"arrowk\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" "
-         "orient=\"auto\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#222\"/></marker></defs>\n";
-  svg += o + tx + "</svg>\n";
-  return svg;
+  cv.place_legend(legend, X(umin) - wall_w - 60.0, ly);
+  return cv.document(msg(lang, "mech.heading"), "<defs>" + Canvas::marker("arrowr", "#b3001b") +
+                                                   Canvas::marker("arrowk", "#222") + "</defs>\n");
 }
 
 }  // namespace
@@ -590,49 +624,8 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
   for (const Constraint& c : chain.constraints()) welded = welded || c.type == ConstraintType::Weld;
   const bool many = blocks.size() > 6 || welded;  // a sliced body (gable): joints and slice weights not labelled
 
-  std::string o;   // graphics
-  Placer placer;
-  Box ext{kInf, kInf, -kInf, -kInf};  // extent of everything drawn (px)
-  auto grow = [&](double x, double y) {
-    ext = {std::min(ext.x0, x), std::min(ext.y0, y), std::max(ext.x1, x), std::max(ext.y1, y)};
-  };
-  auto line = [&](double x1, double y1, double x2, double y2, const std::string& style, bool obstacle = true) {
-    o += "<line x1=\"" + f1(x1) + "\" y1=\"" + f1(y1) + "\" x2=\"" + f1(x2) + "\" y2=\"" + f1(y2) + "\" " + style +
-         "/>\n";
-    grow(x1, y1), grow(x2, y2);
-    if (obstacle) placer.segment(x1, y1, x2, y2);
-  };
-  auto circle = [&](double x, double y, double rad, const std::string& style) {
-    o += "<circle cx=\"" + f1(x) + "\" cy=\"" + f1(y) + "\" r=\"" + f1(rad) + "\" " + style + "/>\n";
-    grow(x - rad, y - rad), grow(x + rad, y + rad);
-    placer.mark({x - rad, y - rad, x + rad, y + rad});
-  };
-  // The head of an arrow drawn with a marker (7 stroke widths long and wide)
-  // ending at (x2, y2): an obstacle for the labels.
-  auto head = [&](double x1, double y1, double x2, double y2, double stroke_width) {
-    const double n = std::hypot(x2 - x1, y2 - y1), h = 3.5 * stroke_width;
-    if (!(n > 0.0)) return;
-    const double cx = x2 - (x2 - x1) / n * h, cy = y2 - (y2 - y1) / n * h;
-    placer.mark({cx - h, cy - h, cx + h, cy + h});
-    grow(cx - h, cy - h), grow(cx + h, cy + h);
-  };
-  // Architectural ticks (45 degree strokes) at the ends of dimension lines.
-  auto tick = [&](double x, double y) {
-    line(x - 3.5, y + 3.5, x + 3.5, y - 3.5, "class=\"dim-line\" stroke=\"#333\" stroke-width=\"1\"");
-  };
-  const std::string dim_style = "class=\"dim-line\" stroke=\"#333\" stroke-width=\"0.7\"";
-  const std::string ext_style = "class=\"ext-line\" stroke=\"#666\" stroke-width=\"0.5\"";
+  Canvas cv;
 
-  // Labels, placed once everything is drawn (in this order: dimension values
-  // first, so they stay by their lines).
-  struct LabelReq {
-    std::string text;
-    double fs;
-    std::string attrs;
-    double ax, ay;
-    std::vector<Cand> prefs;
-  };
-  std::vector<LabelReq> dim_labels, labels;
 
   // ---------------------------------------------------------------- blocks
   for (std::size_t i = 0; i < blocks.size(); ++i) {
@@ -642,12 +635,12 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
     for (const auto& p : b.polygon) {
       pts += f1(X(p.x())) + "," + f1(Y(p.y())) + " ";
       px.push_back({X(p.x()), Y(p.y())});
-      grow(X(p.x()), Y(p.y()));
+      cv.grow(X(p.x()), Y(p.y()));
     }
-    o += "<polygon points=\"" + pts + "\" fill=\"" + (i % 2 ? "#d9cbb5" : "#e6dcc8") + "\"" +
+    cv.o += "<polygon points=\"" + pts + "\" fill=\"" + (i % 2 ? "#d9cbb5" : "#e6dcc8") + "\"" +
          (welded ? " fill-opacity=\"0.55\"" : "") + " stroke=\"#5a4a32\" stroke-width=\"" + (many ? "0.6" : "1.2") +
          "\"/>\n";
-    placer.polygon(std::move(px));
+    cv.placer.polygon(std::move(px));
   }
 
   // ---------------------------------------------------------------- levels
@@ -770,9 +763,9 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
   for (std::size_t c = 0; c < cols.size(); ++c) {
     const double cx = col0 + col_step * double(c);
     const Column& col = cols[c];
-    line(cx, Y(col.z.back()) - 5, cx, Y(col.z.front()) + 5, dim_style);
+    cv.line(cx, Y(col.z.back()) - 5, cx, Y(col.z.front()) + 5, dim_style);
     for (double z : col.z) {
-      tick(cx, Y(z));
+      cv.tick(cx, Y(z));
       double& e = ext_to[mm(z)];
       e = std::max(e, cx + 5);
     }
@@ -781,7 +774,7 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
       std::vector<Cand> p = {{cx + 5, ym + 0.35 * fs, Anchor::Start}, {cx - 5, ym + 0.35 * fs, Anchor::End}};
       for (double dy : {-10.0, 10.0, -20.0, 20.0})
         if (ym + dy > y1 + 4 && ym + dy < y2 - 4) p.push_back({cx + 5, ym + dy + 0.35 * fs, Anchor::Start});
-      dim_labels.push_back({d2(col.z[k + 1] - col.z[k]), fs,
+      cv.dim_labels.push_back({d2(col.z[k + 1] - col.z[k]), fs,
                             "class=\"dim\" data-kind=\"" + col.kind + "\" fill=\"#222\"", cx, ym, p});
     }
   }
@@ -793,7 +786,7 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
     double xr = geo.right_at(z);
     const double x0 = (std::isfinite(xr) ? X(xr) : X(xmax)) +
                       (tie_mm.count(e.first) ? tie_len + 6 : slider_mm.count(e.first) ? 16 : 4);
-    line(x0, Y(z), e.second, Y(z), ext_style);
+    cv.line(x0, Y(z), e.second, Y(z), ext_style);
   }
 
   // ------------------------------------------------- horizontal dimensions
@@ -844,15 +837,16 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
     rows.push_back({y, X1, X2});
     const double e1 = up ? std::max(d.zt1, t1) : std::min(d.zb1, b1), e2 = up ? std::max(d.zt2, t2) : std::min(d.zb2, b2);
     const double sgn = up ? -1.0 : 1.0;
-    line(X1, Y(e1) + sgn * 3, X1, y + sgn * 5, ext_style);
-    line(X2, Y(e2) + sgn * 3, X2, y + sgn * 5, ext_style);
-    line(X1 - 5, y, X2 + 5, y, dim_style);
-    tick(X1, y), tick(X2, y);
+    cv.line(X1, Y(e1) + sgn * 3, X1, y + sgn * 5, ext_style);
+    cv.line(X2, Y(e2) + sgn * 3, X2, y + sgn * 5, ext_style);
+    cv.line(X1 - 5, y, X2 + 5, y, dim_style);
+    cv.tick(X1, y), cv.tick(X2, y);
     const double fs = 10, xm = 0.5 * (X1 + X2);
     std::vector<Cand> p = {{xm, y - 3, Anchor::Middle}, {xm, y + 3 + 0.95 * fs, Anchor::Middle},
                            {X1 - 7, y + 0.35 * fs, Anchor::End}, {X2 + 7, y + 0.35 * fs, Anchor::Start},
                            {X1 - 3, y - 3, Anchor::End}, {X2 + 3, y - 3, Anchor::Start}};
-    dim_labels.push_back({d2(d.x2 - d.x1), fs, "class=\"dim\" data-kind=\"" + d.kind + "\" fill=\"#222\"", xm, y, p});
+    cv.dim_labels.push_back(
+        {d2(d.x2 - d.x1), fs, "class=\"dim\" data-kind=\"" + d.kind + "\" fill=\"#222\"", xm, y, p});
   }
 
   // ---------------------------------------------------- level lines, ground
@@ -862,9 +856,9 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
     if (std::abs(z) < 1e-9) continue;
     const double xl = geo.left_at(z);
     const double x2 = std::isfinite(xl) ? X(xl) - 4 : X(xmin) - 4;
-    line(gx1, Y(z), x2, Y(z), "stroke=\"#888\" stroke-dasharray=\"6 4\"");
+    cv.line(gx1, Y(z), x2, Y(z), "stroke=\"#888\" stroke-dasharray=\"6 4\"");
     const std::string t = tr(lang, "piano", "floor") + std::string(" z = ") + m2(z);
-    labels.push_back({t, 11, "fill=\"#555\"", gx1, Y(z),
+    cv.labels.push_back({t, 11, "fill=\"#555\"", gx1, Y(z),
                       {{gx1 + 2, Y(z) - 5, Anchor::Start}, {gx1 + 2, Y(z) + 14, Anchor::Start},
                        {gx1 + 62, Y(z) - 5, Anchor::Start}, {gx1 + 62, Y(z) + 14, Anchor::Start}}});
   }
@@ -873,16 +867,16 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
     if (std::abs(z) < 1e-9) continue;
     const double xl = geo.left_at(z);
     const double x2 = std::isfinite(xl) ? X(xl) - 4 : X(xmin) - 4;
-    line(gx1, Y(z), x2, Y(z), "stroke=\"#b3001b\" stroke-dasharray=\"10 3 2 3\"");
-    labels.push_back({msg(lang, "draw.hinge_level") + " z = " + m2(z), 11, "fill=\"#b3001b\"", gx1, Y(z),
+    cv.line(gx1, Y(z), x2, Y(z), "stroke=\"#b3001b\" stroke-dasharray=\"10 3 2 3\"");
+    cv.labels.push_back({msg(lang, "draw.hinge_level") + " z = " + m2(z), 11, "fill=\"#b3001b\"", gx1, Y(z),
                       {{gx1 + 2, Y(z) - 5, Anchor::Start}, {gx1 + 2, Y(z) + 14, Anchor::Start},
                        {gx1 + 62, Y(z) - 5, Anchor::Start}, {gx1 + 62, Y(z) + 14, Anchor::Start}}});
   }
   const double Y0 = Y(0.0);
-  line(gx1, Y0, right_edge, Y0, "stroke=\"#444\" stroke-width=\"2\"");
+  cv.line(gx1, Y0, right_edge, Y0, "stroke=\"#444\" stroke-width=\"2\"");
   for (double hx = X(xmin) - 24; hx < X(xmax) + 20; hx += 14)
-    line(hx, Y0 + 8, hx + 8, Y0, "stroke=\"#444\"");
-  labels.push_back({msg(lang, "draw.ground") + " z = 0", 11, "fill=\"#444\"", gx1, Y0,
+    cv.line(hx, Y0 + 8, hx + 8, Y0, "stroke=\"#444\"");
+  cv.labels.push_back({msg(lang, "draw.ground") + " z = 0", 11, "fill=\"#444\"", gx1, Y0,
                     {{gx1, Y0 + 22, Anchor::Start}, {gx1, Y0 - 5, Anchor::Start}, {gx1 + 60, Y0 + 22, Anchor::Start}}});
 
   // ------------------------------------------------------------------ loads
@@ -895,22 +889,22 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
       case LoadType::SelfWeight:
         self_total += l.weight, self_x += l.weight * l.point.x(), self_z += l.weight * l.point.y();
         if (!many) {
-          line(Xp, Yp - 24, Xp, Yp, "stroke=\"#222\" stroke-width=\"1.2\" marker-end=\"url(#arrowk)\"");
-          head(Xp, Yp - 24, Xp, Yp, 1.2);
+          cv.line(Xp, Yp - 24, Xp, Yp, "stroke=\"#222\" stroke-width=\"1.2\" marker-end=\"url(#arrowk)\"");
+          cv.head(Xp, Yp - 24, Xp, Yp, 1.2);
           const double xl = geo.left_at(l.point.y()), xr = geo.right_at(l.point.y());
           symbols.insert('P');
-          labels.push_back({"P = " + kn(l.weight), 10, "", Xp, Yp - 12,
+          cv.labels.push_back({"P = " + kn(l.weight), 10, "", Xp, Yp - 12,
                             {{Xp - 5, Yp - 12 + 3.5, Anchor::End}, {Xp + 5, Yp - 12 + 3.5, Anchor::Start},
                              {Xp - 5, Yp - 24, Anchor::End}, {Xp + 5, Yp - 24, Anchor::Start},
                              {X(xl) - 8, Yp - 12 + 3.5, Anchor::End}, {X(xr) + 8, Yp - 12 + 3.5, Anchor::Start}}});
         }
         break;
       case LoadType::Weight: {
-        line(Xp, Yp - arrow, Xp, Yp, "stroke=\"#0b4f9c\" stroke-width=\"2\" marker-end=\"url(#arrowb)\"");
-        head(Xp, Yp - arrow, Xp, Yp, 2.0);
+        cv.line(Xp, Yp - arrow, Xp, Yp, "stroke=\"#0b4f9c\" stroke-width=\"2\" marker-end=\"url(#arrowb)\"");
+        cv.head(Xp, Yp - arrow, Xp, Yp, 2.0);
         const double ay = Yp - arrow;
         symbols.insert('Q');
-        labels.push_back({"Q = " + kn(l.weight) + (l.vertical ? "" : " (m)"), 11,
+        cv.labels.push_back({"Q = " + kn(l.weight) + (l.vertical ? "" : " (m)"), 11,
                           "fill=\"#0b4f9c\"", Xp, ay,
                           {{Xp - 5, ay + 4, Anchor::End}, {Xp + 5, ay + 4, Anchor::Start}, {Xp, ay - 4, Anchor::Middle},
                            {Xp - 5, ay - 6, Anchor::End}, {Xp + 5, ay - 6, Anchor::Start}}});
@@ -931,10 +925,10 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
         const double x1 = xe - ux * len, y1 = Yp + uz * len;
         const double x2 = xe, y2 = Yp;
         const char* colour = l.type == LoadType::Tie ? "#2b7a2b" : "#8a3ea8";
-        line(x1, y1, x2, y2,
+        cv.line(x1, y1, x2, y2,
              std::string("stroke=\"") + colour + "\" stroke-width=\"2.2\" marker-end=\"url(#arrowk)\"" +
                  (l.type == LoadType::Tie ? " stroke-dasharray=\"8 3\"" : ""));
-        head(x1, y1, x2, y2, 2.2);
+        cv.head(x1, y1, x2, y2, 2.2);
         // Anchor: the free end of the arrow (its tail).
         const double ax = x1, ay = y1;
         const double xm = 0.5 * (x1 + x2), ym = std::min(y1, y2);
@@ -945,7 +939,7 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
         std::vector<Cand> p = {{xm, ym - 5, Anchor::Middle}, {sx, ay + 4, side},
                                {xm, std::max(y1, y2) + 14, Anchor::Middle}, {sx, ay - 6, side}, {sx, ay + 15, side}};
         if (tie_out) p.insert(p.begin(), {{x2 + 3, ym - 5, Anchor::Start}, {x2 + 3, ym + 14, Anchor::Start}});
-        labels.push_back({l.label.empty() ? std::string(1, sym) + " = " + kn(n) : l.label, 11,
+        cv.labels.push_back({l.label.empty() ? std::string(1, sym) + " = " + kn(n) : l.label, 11,
                           std::string("fill=\"") + colour + "\"", ax, ay, p});
         break;
       }
@@ -954,15 +948,15 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
   for (const auto& on : offset_notes) {
     const Load& l = chain.loads()[on.first];
     const double Xp = X(l.point.x()), Yp = Y(l.point.y());
-    labels.push_back({"d = " + d2(on.second) + " m", 10, "class=\"dim\" data-kind=\"offset-note\" fill=\"#0b4f9c\"",
+    cv.labels.push_back({"d = " + d2(on.second) + " m", 10, "class=\"dim\" data-kind=\"offset-note\" fill=\"#0b4f9c\"",
                       Xp, Yp,
                       {{Xp - 5, Yp + 13, Anchor::End}, {Xp - 5, Yp - 6, Anchor::End}, {Xp + 5, Yp + 13, Anchor::Start}}});
   }
   if (many && self_total > 0.0) {
     const double Xp = X(self_x / self_total), Yp = Y(self_z / self_total);
-    line(Xp, Yp - 30, Xp, Yp, "stroke=\"#222\" stroke-width=\"1.4\" marker-end=\"url(#arrowk)\"");
-    head(Xp, Yp - 30, Xp, Yp, 1.4);
-    labels.push_back({msg(lang, "draw.self_weights") + " (" + std::to_string(blocks.size()) +
+    cv.line(Xp, Yp - 30, Xp, Yp, "stroke=\"#222\" stroke-width=\"1.4\" marker-end=\"url(#arrowk)\"");
+    cv.head(Xp, Yp - 30, Xp, Yp, 1.4);
+    cv.labels.push_back({msg(lang, "draw.self_weights") + " (" + std::to_string(blocks.size()) +
                           ") ΣP = " + kn(self_total),
                       10, "", Xp, Yp - 15,
                       {{Xp - 5, Yp - 15 + 3.5, Anchor::End}, {Xp + 5, Yp - 15 + 3.5, Anchor::Start},
@@ -976,20 +970,20 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
     if ((c.type == ConstraintType::Hinge && many) || c.type == ConstraintType::Weld) continue;  // joints of a sliced body are not drawn
     if (!drawn.insert({std::lround(Xp), std::lround(Yp)}).second) continue;
     if (c.type == ConstraintType::Slider) {
-      circle(Xp + 6, Yp, 4, "fill=\"#fff\" stroke=\"#222\"");
-      line(Xp + 11, Yp - 12, Xp + 11, Yp + 12, "stroke=\"#222\" stroke-width=\"2\"");
-      labels.push_back({msg(lang, "draw.slider"), 10, "", Xp + 11, Yp,
+      cv.circle(Xp + 6, Yp, 4, "fill=\"#fff\" stroke=\"#222\"");
+      cv.line(Xp + 11, Yp - 12, Xp + 11, Yp + 12, "stroke=\"#222\" stroke-width=\"2\"");
+      cv.labels.push_back({msg(lang, "draw.slider"), 10, "", Xp + 11, Yp,
                         {{Xp + 15, Yp - 8, Anchor::Start}, {Xp + 15, Yp + 16, Anchor::Start},
                          {Xp + 15, Yp + 3.5, Anchor::Start}}});
     } else if (c.type == ConstraintType::GroundHinge) {
-      circle(Xp, Yp, 5, "fill=\"#fff\" stroke=\"#b3001b\" stroke-width=\"2\"");
-      labels.push_back({msg(lang, "draw.hinge") + " z = " + m2(c.point.y()), 10, "fill=\"#b3001b\"", Xp, Yp,
+      cv.circle(Xp, Yp, 5, "fill=\"#fff\" stroke=\"#b3001b\" stroke-width=\"2\"");
+      cv.labels.push_back({msg(lang, "draw.hinge") + " z = " + m2(c.point.y()), 10, "fill=\"#b3001b\"", Xp, Yp,
                         {{Xp + 8, Yp + 14, Anchor::Start}, {Xp - 8, Yp + 14, Anchor::End},
                          {Xp + 8, Yp - 7, Anchor::Start}, {Xp - 8, Yp - 7, Anchor::End},
                          {Xp, Yp + 17, Anchor::Middle}}});
     } else {
-      circle(Xp, Yp, 4, "fill=\"#fff\" stroke=\"#b3001b\" stroke-width=\"1.5\"");
-      labels.push_back({msg(lang, "draw.hinge"), 10, "fill=\"#b3001b\"", Xp, Yp,
+      cv.circle(Xp, Yp, 4, "fill=\"#fff\" stroke=\"#b3001b\" stroke-width=\"1.5\"");
+      cv.labels.push_back({msg(lang, "draw.hinge"), 10, "fill=\"#b3001b\"", Xp, Yp,
                         {{Xp + 7, Yp + 3.5, Anchor::Start}, {Xp - 7, Yp + 3.5, Anchor::End},
                          {Xp + 6, Yp + 14, Anchor::Start}, {Xp - 6, Yp + 14, Anchor::End},
                          {Xp + 6, Yp - 6, Anchor::Start}, {Xp - 6, Yp - 6, Anchor::End}}});
@@ -999,10 +993,10 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
   // --------------------------------------------------------- control point
   if (r.control_block >= 0) {
     const double Xp = X(r.control_point.x()), Yp = Y(r.control_point.y());
-    circle(Xp, Yp, 6, "fill=\"none\" stroke=\"#000\" stroke-width=\"1.5\"");
-    line(Xp - 8, Yp, Xp + 8, Yp, "stroke=\"#000\"");
-    line(Xp, Yp - 8, Xp, Yp + 8, "stroke=\"#000\"");
-    labels.push_back({msg(lang, "draw.control") + " (z = " + m2(r.control_point.y()) + ")", 10, "", Xp, Yp,
+    cv.circle(Xp, Yp, 6, "fill=\"none\" stroke=\"#000\" stroke-width=\"1.5\"");
+    cv.line(Xp - 8, Yp, Xp + 8, Yp, "stroke=\"#000\"");
+    cv.line(Xp, Yp - 8, Xp, Yp + 8, "stroke=\"#000\"");
+    cv.labels.push_back({msg(lang, "draw.control") + " (z = " + m2(r.control_point.y()) + ")", 10, "", Xp, Yp,
                       {{Xp + 10, Yp - 8, Anchor::Start}, {Xp - 10, Yp - 8, Anchor::End},
                        {Xp + 10, Yp + 16, Anchor::Start}, {Xp - 10, Yp + 16, Anchor::End},
                        {X(geo.left_at(r.control_point.y())) - 8, Yp + 3.5, Anchor::End},
@@ -1019,19 +1013,15 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
     for (const Row& rw : rows) top = std::min(top, rw.y);
     const std::string st = msg(lang, "draw.seismic");
     const double sy = top - 40.0, sx1 = X(xmax) + 14.0, sx2 = sx1 + std::max(90.0, 0.6 * 11 * code_points(st) + 8);
-    line(sx1, sy, sx2, sy, "stroke=\"#b3001b\" stroke-width=\"2.5\" marker-end=\"url(#arrowr)\"");
-    head(sx1, sy, sx2, sy, 2.5);
-    labels.push_back({st, 11, "fill=\"#b3001b\"", sx1, sy,
+    cv.line(sx1, sy, sx2, sy, "stroke=\"#b3001b\" stroke-width=\"2.5\" marker-end=\"url(#arrowr)\"");
+    cv.head(sx1, sy, sx2, sy, 2.5);
+    cv.labels.push_back({st, 11, "fill=\"#b3001b\"", sx1, sy,
                       {{sx1, sy - 8, Anchor::Start}, {sx1 - 6, sy + 4, Anchor::End}, {sx1, sy + 18, Anchor::Start}}});
-    labels.push_back({"x", 11, "fill=\"#b3001b\"", sx2, sy, {{sx2 + 6, sy + 4, Anchor::Start}}});
+    cv.labels.push_back({"x", 11, "fill=\"#b3001b\"", sx2, sy, {{sx2 + 6, sy + 4, Anchor::Start}}});
   }
   // ------------------------------------------------------------ placement
-  for (const LabelReq& q : dim_labels) placer.place(q.text, q.fs, q.attrs, q.ax, q.ay, q.prefs);
-  for (const LabelReq& q : labels) placer.place(q.text, q.fs, q.attrs, q.ax, q.ay, q.prefs);
-  // The legend under everything (its anchor is its position: no leader).
-  double ly = ext.y1;
-  for (const Placed& p : placer.labels()) ly = std::max(ly, p.box.y1);
-  ly += 16;
+  // The legend under everything.
+  const double ly = cv.place_labels();
   std::vector<std::string> legend = {tr(lang, "quote in m", "dimensions in m")};
   {
     std::string sy;
@@ -1047,40 +1037,13 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
   if (!offset_notes.empty())
     legend.push_back(tr(lang, "d = distanza del carico dal filo interno del muro",
                         "d = distance of the load from the inner face of the wall"));
-  for (const std::string& lt : legend) {
-    placer.place(lt, 10, "fill=\"#444\" font-style=\"italic\"", gx1, ly, {{gx1, ly, Anchor::Start}});
-    ly += 14;
-  }
-  for (const auto& l : placer.leaders()) line(l[0], l[1], l[2], l[3], "stroke=\"#777\" stroke-width=\"0.6\"", false);
-  std::string t;
-  for (const Placed& p : placer.labels()) {
-    grow(p.box.x0, p.box.y0), grow(p.box.x1, p.box.y1);
-    t += "<text x=\"" + f1(p.x) + "\" y=\"" + f1(p.y) + "\" font-size=\"" + f1(p.fs) + "\" text-anchor=\"" +
-         anchor_name(p.a) + "\"" + (p.attrs.empty() ? "" : " " + p.attrs) + ">" + xml_escape(p.text) + "</text>\n";
-  }
+  cv.place_legend(legend, gx1, ly);
 
   // ------------------------------------------------------------- document
-  // At least 640 px wide (centred): the report scales the figure to the
-  // column's width (170 mm), so a narrow drawing would grow, text and all.
-  const double m = 8.0;
-  double vx = std::floor(ext.x0 - m), vw = std::ceil(ext.x1 + m) - vx;
-  if (vw < 640.0) vx -= std::floor(0.5 * (640.0 - vw)), vw = 640.0;
-  const double vy = std::floor(ext.y0 - m), vh = std::ceil(ext.y1 + m) - vy;
-  std::string svg;
-  svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" + f1(vx) + " " + f1(vy) + " " + f1(vw) + " " +
-         f1(vh) + "\" width=\"" + f1(vw) + "\" height=\"" + f1(vh) +
-         "\" font-family=\"sans-serif\" font-size=\"11\">\n";
-  svg += "<title>" + xml_escape(msg(lang, "mech.heading")) + "</title>\n";
-  svg += "<defs><marker id=\"arrow\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" "
-         "orient=\"auto-start-reverse\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"context-stroke\"/></marker>"
-         "<marker id=\"arrowb\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" "
-         "orient=\"auto\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#0b4f9c\"/></marker>"
-         "<marker id=\"arrowr\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" "
-         "orient=\"auto\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#b3001b\"/></marker>"
-         "<marker id=\"arrowk\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" "
-         "orient=\"auto\"><path d=\"M0,0 L10,5 L0,10 z\" fill=\"#222\"/></marker></defs>\n";
-  svg += o + t + "</svg>\n";
-  return svg;
+  return cv.document(msg(lang, "mech.heading"),
+                     "<defs>" + Canvas::marker("arrow", "context-stroke", "auto-start-reverse") +
+                         Canvas::marker("arrowb", "#0b4f9c") + Canvas::marker("arrowr", "#b3001b") +
+                         Canvas::marker("arrowk", "#222") + "</defs>\n");
 }
 
 }  // namespace assess
