@@ -307,12 +307,34 @@ TEST_CASE("friction overturning: the friction ends when the steps disengage; pas
 }
 
 // -------------------------------------------------------------- roof thrust
-TEST_CASE("roof thrust: V and H of the schemes, alpha0 with and without the thrust (notes §3.4, re-derived)") {
+namespace {
+// The notes' roof (§3.4): an A-frame of 3 m at 35 deg, 1.5 kN/m^2, seated
+// 0.2 m from the inner face (0.40 m from the outer face of a 0.6 m wall).
+assess::RoofSpec notes_roof() {
   assess::RoofSpec roof;
   roof.load = 1.5 * kN;
   roof.span = 3.0;
   roof.pitch_deg = 35.0;
-  roof.seat_from_inner_face = 0.2;  // 0.40 m from the outer face of a 0.6 m wall
+  roof.seat_from_inner_face = 0.2;
+  return roof;
+}
+
+// The notes' wall under it, per metre: h = 4 m, t = 0.6 m, 18 kN/m^3 (W = 43.2 kN/m).
+assess::SimpleOverturningParams roof_wall(const assess::RoofSpec& roof) {
+  assess::SimpleOverturningParams p;
+  assess::Storey s;
+  s.height = 4.0;
+  s.thickness = 0.6;
+  p.storeys = {s};
+  p.unit_weight = 18.0 * kN;
+  p.length = 1.0;
+  p.roof = roof;
+  return p;
+}
+}  // namespace
+
+TEST_CASE("roof thrust: V and H of the schemes, alpha0 with and without the thrust (notes §3.4, re-derived)") {
+  assess::RoofSpec roof = notes_roof();
   // A-frame: V = q l = 4.5 kN/m, H = V/(2 tan 35) = 3.21333 kN/m; strut: H = V/tan 35.
   const assess::RoofLoads af = assess::roof_loads(roof);
   CHECK_CLOSE(af.V, 4.5 * kN, rel_tol(tol_force));
@@ -326,14 +348,7 @@ TEST_CASE("roof thrust: V and H of the schemes, alpha0 with and without the thru
   roof.scheme = assess::RoofScheme::AFrame;
   // Wall h = 4 m, t = 0.6 m, gamma 18: W = 43.2 kN/m;
   // alpha0 = (W t/2 + V e - H h)/(W h/2 + V h) = (12.96 + 1.8 - 12.8533)/104.4 = 0.018263.
-  assess::SimpleOverturningParams p;
-  assess::Storey s;
-  s.height = 4.0;
-  s.thickness = 0.6;
-  p.storeys = {s};
-  p.unit_weight = 18.0 * kN;
-  p.length = 1.0;
-  p.roof = roof;
+  assess::SimpleOverturningParams p = roof_wall(roof);
   const auto set = assess::roof_thrust_overturning(p);
   CHECK(set.type == "roof_thrust");
   const double W = 43.2 * kN, V = af.V, H = af.H;
@@ -363,19 +378,8 @@ TEST_CASE("roof thrust: the capacity curve has the thrust constant (it does not 
   // M = W (t/2 cos - h/2 sin) + V (e cos - h sin) - P_H (e sin + h cos)
   // (notes §3.2, re-derived): 0.013192, 0.008128, 0.003071 at 0.005, 0.010,
   // 0.015 rad; theta_u: tan = 0.018041.
-  assess::SimpleOverturningParams p;
-  assess::Storey s;
-  s.height = 4.0;
-  s.thickness = 0.6;
-  p.storeys = {s};
-  p.unit_weight = 18.0 * kN;
-  p.length = 1.0;
-  assess::RoofSpec roof;
-  roof.load = 1.5 * kN;
-  roof.span = 3.0;
-  roof.pitch_deg = 35.0;
-  roof.seat_from_inner_face = 0.2;
-  p.roof = roof;
+  const assess::RoofSpec roof = notes_roof();
+  assess::SimpleOverturningParams p = roof_wall(roof);
   const auto set = assess::roof_thrust_overturning(p);
   const assess::KinematicResult r = analyse(set.candidates[0].chain);
   REQUIRE(r.curve_complete());
@@ -406,19 +410,8 @@ TEST_CASE("roof thrust: the chain model's restoring moment is the exact one, P_H
   // The rocking body of the one-block fast path holds a constant external
   // moment P_H h; the chain.s potential V(q) = sum W z - F . x gives, as its
   // slope dV/dq, the exact M(q) of notes §3.2 at every rotation (docs/theory/mechanisms.md §3.3).
-  assess::SimpleOverturningParams p;
-  assess::Storey s;
-  s.height = 4.0;
-  s.thickness = 0.6;
-  p.storeys = {s};
-  p.unit_weight = 18.0 * kN;
-  p.length = 1.0;
-  assess::RoofSpec roof;
-  roof.load = 1.5 * kN;
-  roof.span = 3.0;
-  roof.pitch_deg = 35.0;
-  roof.seat_from_inner_face = 0.2;
-  p.roof = roof;
+  const assess::RoofSpec roof = notes_roof();
+  assess::SimpleOverturningParams p = roof_wall(roof);
   const auto set = assess::roof_thrust_overturning(p);
   const assess::ChainDynamics cd(set.candidates[0].chain, assess::Foundation::rigid());
   const double W = 43.2 * kN, V = 4.5 * kN, PH = assess::roof_loads(roof).H, h = 4.0, t = 0.6, e = 0.4;
