@@ -598,16 +598,11 @@ void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d, const 
     }
     rows.push_back(row);
   }
-  auto h = [](const std::string& t, const std::string& note = "") {
-    Cell c(t, note);
-    c.numeric = true;
-    return c;
-  };
   // Short approach names under the headings (the caption spells them out): the
   // table fits the page at its type size (issue 28, item 9).
   const std::string lin = bt(L, "strength_short"), nl = bt(L, "displacement_short");
-  d.add_cell_table({Cell(bt(L, "id")), Cell(bt(L, "wall_mech")), h("α0", lin), h("D/C", lin), h("ζE", lin), h("α0", nl),
-                    h("D/C", nl), h("ζE", nl), h("D/C", bt(L, "dynamic_short")), Cell(bt(L, "records_short")),
+  d.add_cell_table({Cell(bt(L, "id")), Cell(bt(L, "wall_mech")), numeric_cell("α0", lin), numeric_cell("D/C", lin), numeric_cell("ζE", lin), numeric_cell("α0", nl),
+                    numeric_cell("D/C", nl), numeric_cell("ζE", nl), numeric_cell("D/C", bt(L, "dynamic_short")), Cell(bt(L, "records_short")),
                     Cell(bt(L, "outcome"))},
                    rows, bt(L, "table_cap") + " " + bt(L, "approach_abbrev"), "building-summary");
   bool designed = false;
@@ -626,8 +621,8 @@ void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d, const 
       }
       rows08.push_back(row);
     }
-    d.add_cell_table({Cell(bt(L, "id")), Cell(bt(L, "wall_mech")), h("D/C", lin), h("ζE", lin), h("PGA_C (g)", lin),
-                      h("D/C", nl), h("ζE", nl), h("PGA_C (g)", nl)},
+    d.add_cell_table({Cell(bt(L, "id")), Cell(bt(L, "wall_mech")), numeric_cell("D/C", lin), numeric_cell("ζE", lin), numeric_cell("PGA_C (g)", lin),
+                      numeric_cell("D/C", nl), numeric_cell("ζE", nl), numeric_cell("PGA_C (g)", nl)},
                      rows08, bt(L, "table08_cap"));
   }
   d.add_heading(bt(L, "sets"), 3, false);

@@ -54,14 +54,9 @@ std::vector<std::vector<Cell>> check_rows(const Ctx& c, const std::vector<CheckR
 }
 
 std::vector<Cell> check_head(const Ctx& c, bool with_candidate) {
-  auto h = [](const std::string& t) {
-    Cell x(t);
-    x.numeric = true;
-    return x;
-  };
   std::vector<Cell> head{Cell(c.t("checks.code")), Cell(c.t("checks.check"))};
   if (with_candidate) head.push_back(Cell(c.t("mech.candidate")));
-  for (Cell x : {h(c.t("checks.demand")), h(c.t("checks.capacity")), Cell(c.t("kin.unit")), h("D/C"), h(c.t("checks.ag")),
+  for (Cell x : {numeric_cell(c.t("checks.demand")), numeric_cell(c.t("checks.capacity")), Cell(c.t("kin.unit")), numeric_cell("D/C"), numeric_cell(c.t("checks.ag")),
                  Cell(c.t("checks.outcome"))})
     head.push_back(x);
   return head;
@@ -122,14 +117,9 @@ void add_safety_indices(Ctx& c) {
     rows.push_back({Cell(code_name(s.code)), Cell(method), Cell(where), c.num(s.ag_capacity_g, 4), c.num(s.ag_demand_g, 4),
                     zeta, trc, c.num(s.TR_demand, 0), ratio, Cell(note)});
   }
-  auto h = [](const std::string& t) {
-    Cell x(t);
-    x.numeric = true;
-    return x;
-  };
-  c.d.add_cell_table({Cell(c.t("checks.code")), Cell(c.t("cmp.method")), Cell(c.t("zeta.check")), h("PGA_C (g)"),
-                      h("PGA_D (g)"), h("ζE"), h("TR_C (" + c.t("site.years") + ")"), h("TR_D (" + c.t("site.years") + ")"),
-                      h("TR_C/TR_D"), Cell(c.t("zeta.notes"))},
+  c.d.add_cell_table({Cell(c.t("checks.code")), Cell(c.t("cmp.method")), Cell(c.t("zeta.check")), numeric_cell("PGA_C (g)"),
+                      numeric_cell("PGA_D (g)"), numeric_cell("ζE"), numeric_cell("TR_C (" + c.t("site.years") + ")"), numeric_cell("TR_D (" + c.t("site.years") + ")"),
+                      numeric_cell("TR_C/TR_D"), Cell(c.t("zeta.notes"))},
                      rows, c.t("zeta.cap"));
   if (any_extrapolated) c.d.add_paragraph(c.t("zeta.extrapolated"), "note");
   if (c.a.kase.report.heritage) {

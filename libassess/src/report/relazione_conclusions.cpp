@@ -128,13 +128,8 @@ void add_comparison(Ctx& c) {
                      Cell(c.t("method." + m.method) + (m.method == v.adopted ? " (" + c.t("verdict.adopted") + ")" : "")),
                      outcome, counts, c.num(m.no_verdict, 0), c.dc_cell(m.max_dc, m.satisfied, m.undecided())});
   }
-  auto h = [](const std::string& t) {
-    Cell y(t);
-    y.numeric = true;
-    return y;
-  };
-  c.d.add_cell_table({Cell(c.t("checks.code")), Cell(c.t("cmp.method")), Cell(c.t("cmp.overall")), h(c.t("cmp.failing")),
-                      h(c.t("verdict.no_verdict")), h(c.t("cmp.max_dc"))},
+  c.d.add_cell_table({Cell(c.t("checks.code")), Cell(c.t("cmp.method")), Cell(c.t("cmp.overall")), numeric_cell(c.t("cmp.failing")),
+                      numeric_cell(c.t("verdict.no_verdict")), numeric_cell(c.t("cmp.max_dc"))},
                      orows, c.t("cmp.methods_cap"));
 }
 

@@ -143,14 +143,9 @@ void add_records(Ctx& c, const FacadeAssessment& x) {
                     c.num(r.pga / g, 4), c.num(r.deviation, 3), r.rank > 0 ? c.num(r.rank, 0) : c.num(std::nan(""), 0),
                     c.num(r.integrated_s, 1)});
   }
-  auto h = [](const std::string& t) {
-    Cell y(t);
-    y.numeric = true;
-    return y;
-  };
-  c.d.add_cell_table({Cell(c.t("dyn.record_code")), Cell(c.t("dyn.event_station")), h("Mw"), h(c.t("dyn.distance")),
-                      Cell(c.t("dyn.site_class")), h(c.t("dyn.usable")), h(c.t("dyn.scale")), h("PGA (g)"),
-                      h(c.t("dyn.deviation")), h(c.t("dyn.rank")), h(c.t("dyn.integrated"))},
+  c.d.add_cell_table({Cell(c.t("dyn.record_code")), Cell(c.t("dyn.event_station")), numeric_cell("Mw"), numeric_cell(c.t("dyn.distance")),
+                      Cell(c.t("dyn.site_class")), numeric_cell(c.t("dyn.usable")), numeric_cell(c.t("dyn.scale")), numeric_cell("PGA (g)"),
+                      numeric_cell(c.t("dyn.deviation")), numeric_cell(c.t("dyn.rank")), numeric_cell(c.t("dyn.integrated"))},
                      rows, c.t("dyn.records_cap") + " " + c.t("dyn.flags_cap"));
   for (const std::string& w : x.selection_warnings) c.d.add_paragraph(c.t("dyn.selection_warning") + ": " + c.loc(w));
   for (const std::string& f : x.record_failures) c.d.add_paragraph(c.t("dyn.skipped") + ": " + f);
@@ -324,14 +319,9 @@ void add_summary(Ctx& c, const FacadeAssessment& x) {
     rows.push_back({Cell(restitution_text(c, x, s)), c.num(s.analyses, 0), coll, energy, c.num(s.mean_d_star, 4),
                     c.num(s.max_d_star, 4), Cell(c.loc(s.rule)), c.num(s.d_demand, 4), dc, out});
   }
-  auto h = [](const std::string& t) {
-    Cell y(t);
-    y.numeric = true;
-    return y;
-  };
-  c.d.add_cell_table({Cell(c.t("dyn.restitution")), h(c.t("dyn.analyses")), h(c.t("dyn.collapses")),
-                      h(c.t("dyn.energy_dc")), h(c.t("dyn.mean_d")), h(c.t("dyn.max_d")), Cell(c.t("dyn.rule")),
-                      h(c.t("dyn.d_demand")), h(c.t("dyn.dc_slv")), Cell(c.t("checks.outcome"))},
+  c.d.add_cell_table({Cell(c.t("dyn.restitution")), numeric_cell(c.t("dyn.analyses")), numeric_cell(c.t("dyn.collapses")),
+                      numeric_cell(c.t("dyn.energy_dc")), numeric_cell(c.t("dyn.mean_d")), numeric_cell(c.t("dyn.max_d")), Cell(c.t("dyn.rule")),
+                      numeric_cell(c.t("dyn.d_demand")), numeric_cell(c.t("dyn.dc_slv")), Cell(c.t("checks.outcome"))},
                      rows, c.t("dyn.summary_cap2"));
 }
 
@@ -367,13 +357,8 @@ void add_others(Ctx& c, const FacadeAssessment& shown) {
                       c.num(o->kinematic.candidates.front().result.d_SLV, 4), dc, out});
     }
   }
-  auto h = [](const std::string& t) {
-    Cell y(t);
-    y.numeric = true;
-    return y;
-  };
   c.d.add_cell_table({Cell(c.t("dyn.candidate")), Cell(c.t("dyn.records_used")), Cell(c.t("dyn.restitution")),
-                      h(c.t("dyn.collapses")), h(c.t("dyn.d_demand")), h("d_SLV (m)"), h(c.t("dyn.dc_slv")),
+                      numeric_cell(c.t("dyn.collapses")), numeric_cell(c.t("dyn.d_demand")), numeric_cell("d_SLV (m)"), numeric_cell(c.t("dyn.dc_slv")),
                       Cell(c.t("checks.outcome"))},
                      rows, c.t("dyn.others_cap"));
 }

@@ -109,14 +109,9 @@ void add_bodies(Ctx& c, const Chain& chain) {
                     same_L ? c.num(L0, 3) : Cell(c.t("data.variable_length")), c.num(V, 4),
                     c.num(W / units::kN, 2), c.num(xg, 3), c.num(zg, 3)});
   }
-  auto h = [](const std::string& t) {
-    Cell x(t);
-    x.numeric = true;
-    return x;
-  };
-  c.d.add_cell_table({Cell(c.t("data.body_col")), h("z₀ (m)"), h("z₁ (m)"), h(c.t("data.thickness_col")),
-                      h(c.t("data.area_col")), h("L (m)"), h(c.t("data.volume_col")), h("W (kN)"), h("x_G (m)"),
-                      h("z_G (m)")},
+  c.d.add_cell_table({Cell(c.t("data.body_col")), numeric_cell("z₀ (m)"), numeric_cell("z₁ (m)"), numeric_cell(c.t("data.thickness_col")),
+                      numeric_cell(c.t("data.area_col")), numeric_cell("L (m)"), numeric_cell(c.t("data.volume_col")), numeric_cell("W (kN)"), numeric_cell("x_G (m)"),
+                      numeric_cell("z_G (m)")},
                      rows, c.t("data.bodies_cap"));
 }
 
@@ -197,16 +192,11 @@ void add_virtual_work(Ctx& c, const Chain& chain, const KinematicResult& k) {
   label.highlight = true;
   rows.push_back({label, blank, blank, blank, blank, sum(k.sum_W / units::kN, 2), blank, blank,
                   sum(k.sum_W_dx / units::kN, 3), sum(k.sum_W_dx2 / units::kN, 3), sum(k.work_other / units::kN, 3)});
-  auto h = [](const std::string& t) {
-    Cell x(t);
-    x.numeric = true;
-    return x;
-  };
   std::string cap = c.t(chain.plan() ? "mech.vw_cap_plan" : "mech.vw_cap");
   if (W_other > 0.0) cap += " " + msgf(c.L, "vw.non_seismic", c.n(W_other, 2));
-  c.d.add_cell_table({Cell(c.t("mech.load")), Cell(c.t("mech.kind")), Cell(c.t("vw.seismic")), h("x (m)"), h("z (m)"),
-                      h("W, F (kN)"), h("δx (m)"), h("δz (m)"), h("W·δx (kN m)"), h("W·δx² (kN m²)"),
-                      h(c.t("mech.work") + " (kN m)")},
+  c.d.add_cell_table({Cell(c.t("mech.load")), Cell(c.t("mech.kind")), Cell(c.t("vw.seismic")), numeric_cell("x (m)"), numeric_cell("z (m)"),
+                      numeric_cell("W, F (kN)"), numeric_cell("δx (m)"), numeric_cell("δz (m)"), numeric_cell("W·δx (kN m)"), numeric_cell("W·δx² (kN m²)"),
+                      numeric_cell(c.t("mech.work") + " (kN m)")},
                      rows, cap);
 }
 
@@ -272,12 +262,7 @@ void add_curve_table(Ctx& c, const KinematicResult& k) {
       rows.push_back({c.num(q.dk, 4), c.num(q.alpha, 5), c.num(q.d_star, 4), c.num(q.a_star, 4)});
     }
   }
-  auto h = [](const std::string& t) {
-    Cell x(t);
-    x.numeric = true;
-    return x;
-  };
-  c.d.add_cell_table({h("d_k (m)"), h("α (–)"), h("d* (m)"), h("a* (m/s²)")}, rows, c.t("kin.curve_cap"));
+  c.d.add_cell_table({numeric_cell("d_k (m)"), numeric_cell("α (–)"), numeric_cell("d* (m)"), numeric_cell("a* (m/s²)")}, rows, c.t("kin.curve_cap"));
 }
 
 double a_on_curve(const KinematicResult& k, double d) {
@@ -486,15 +471,10 @@ void add_mechanism(Ctx& c) {
   // Every candidate examined (C8.7.1: the most unfavourable governs).
   if (a.kinematic.candidates.size() > 1) {
     c.d.add_heading(c.t("mech.candidates"), 3, false);
-    auto h = [](const std::string& t) {
-      Cell x(t);
-      x.numeric = true;
-      return x;
-    };
-    std::vector<Cell> head{Cell(c.t("mech.candidate")), h(c.loc(a.kase.mechanism.parameter_name)), h("Z (m)"),
-                           h("α0 (–)"), h("a0* (m/s²)")};
-    for (const auto& [code, gi] : a.kinematic.governing_by_code) head.push_back(h("D/C " + code_name(code)));
-    if (!a.kinematic.governing_by_code.empty()) head.push_back(h("ag,cap (g)"));
+    std::vector<Cell> head{Cell(c.t("mech.candidate")), numeric_cell(c.loc(a.kase.mechanism.parameter_name)), numeric_cell("Z (m)"),
+                           numeric_cell("α0 (–)"), numeric_cell("a0* (m/s²)")};
+    for (const auto& [code, gi] : a.kinematic.governing_by_code) head.push_back(numeric_cell("D/C " + code_name(code)));
+    if (!a.kinematic.governing_by_code.empty()) head.push_back(numeric_cell("ag,cap (g)"));
     head.push_back(Cell(c.t("mech.where")));
     std::vector<std::vector<Cell>> rows;
     for (std::size_t i = 0; i < a.kinematic.candidates.size(); ++i) {

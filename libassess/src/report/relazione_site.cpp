@@ -37,13 +37,8 @@ void add_site(Ctx& c) {
                     c.num(s.Tc_star(), 3), c.num(s.SS(), 3), c.num(s.CC(), 3), c.num(s.ST(), 2), c.num(s.S(), 3),
                     c.num(s.TB(), 3), c.num(s.TC(), 3), c.num(s.TD(), 3)});
   }
-  auto h = [](const std::string& t, const std::string& note = "") {
-    Cell x(t, note);
-    x.numeric = true;
-    return x;
-  };
-  c.d.add_cell_table({Cell(c.t("site.ls")), h("P_VR (%)"), h("TR", c.t("site.years")), h("ag (g)"), h("F0"),
-                      h("TC* (s)"), h("SS"), h("CC"), h("ST"), h("S"), h("TB (s)"), h("TC (s)"), h("TD (s)")},
+  c.d.add_cell_table({Cell(c.t("site.ls")), numeric_cell("P_VR (%)"), numeric_cell("TR", c.t("site.years")), numeric_cell("ag (g)"), numeric_cell("F0"),
+                      numeric_cell("TC* (s)"), numeric_cell("SS"), numeric_cell("CC"), numeric_cell("ST"), numeric_cell("S"), numeric_cell("TB (s)"), numeric_cell("TC (s)"), numeric_cell("TD (s)")},
                      rows, c.t("site.table"));
   c.d.add_paragraph(c.t("site.formulas"), "note");
   Plot p = c.plot();

@@ -47,11 +47,6 @@ struct TieText {
   }
   std::string n(double v, int prec) const { return c.n(v, prec); }
   Cell num(double v, int prec) const { return c.num(v, prec); }
-  Cell numtext(const std::string& s) const {
-    Cell x(s);
-    x.numeric = true;
-    return x;
-  }
   Cell ok(bool v) const {
     Cell x(t(v ? "ok" : "ko"));
     x.tone = v ? Tone::ok : Tone::fail;
@@ -164,14 +159,14 @@ void checks_table(const TieText& x, const TieLevelResult& L) {
     demand.numeric = true;
     // A D/C read from the check's own verdict (the one rule, issue 28): a break
     // or a force no tie can give is a failure, printed as such.
-    Cell dc = r.reachable && !count ? x.num(r.dc, 3) : x.numtext(r.satisfied ? "0" : "∞");
+    Cell dc = r.reachable && !count ? x.num(r.dc, 3) : numeric_cell(r.satisfied ? "0" : "∞");
     dc.tone = r.satisfied ? Tone::ok : Tone::fail;
     dc.strong = true;
-    rows.push_back({Cell(x.t("check." + r.check)), Cell(clause), demand, count ? x.numtext("0") : x.num(r.capacity * s, 2),
+    rows.push_back({Cell(x.t("check." + r.check)), Cell(clause), demand, count ? numeric_cell("0") : x.num(r.capacity * s, 2),
                     Cell(count ? x.t("unit_analyses") : r.unit), dc, x.ok(r.satisfied)});
   }
-  x.c.d.add_cell_table({Cell(x.t("check")), Cell(x.t("clause")), x.numtext(x.t("demand")), x.numtext(x.t("capacity")),
-                        Cell(x.t("unit")), x.numtext("D/C"), Cell(x.t("outcome"))},
+  x.c.d.add_cell_table({Cell(x.t("check")), Cell(x.t("clause")), numeric_cell(x.t("demand")), numeric_cell(x.t("capacity")),
+                        Cell(x.t("unit")), numeric_cell("D/C"), Cell(x.t("outcome"))},
                        rows, x.t("checks_title") + " — " + L.tie.name);
 }
 
@@ -192,8 +187,8 @@ void required_table(const TieText& x, const TieLevelResult& L) {
     rows.push_back(row);
   }
   x.c.d.add_cell_table({Cell(x.t("code")), Cell(x.t("ls")), Cell(x.t("kind")), Cell(x.t("where")),
-                        x.numtext(x.t("per_tie")), x.numtext(x.t("per_level")), x.numtext(x.t("per_metre")),
-                        x.numtext(x.t("dc_without"))},
+                        numeric_cell(x.t("per_tie")), numeric_cell(x.t("per_level")), numeric_cell(x.t("per_metre")),
+                        numeric_cell(x.t("dc_without"))},
                        rows, x.t("required_title") + " — " + L.tie.name);
 }
 
@@ -219,15 +214,15 @@ void level_block(const TieText& x, const TieLevelResult& L, const std::string& s
 void states_table(const TieText& x, const TieInterventionResult& t) {
   const KinematicResult& b = t.before.candidates[t.before.governing].result;
   const KinematicResult& a = t.after.candidates[t.after.governing].result;
-  auto dk = [&](const KinematicResult& k, double v) { return k.curve_complete() ? x.num(v, 4) : x.numtext("—"); };
+  auto dk = [&](const KinematicResult& k, double v) { return k.curve_complete() ? x.num(v, 4) : numeric_cell("—"); };
   std::vector<std::vector<Cell>> rows;
   auto row = [&](const std::string& label, Cell u, Cell v) { rows.push_back({Cell(label), u, v}); };
   row("α0", x.num(b.alpha0, 4), x.num(a.alpha0, 4));
   row("a0* (m/s²)", x.num(b.a0_star, 4), x.num(a.a0_star, 4));
   row("d0* (m)", dk(b, b.d0_star), dk(a, a.d0_star));
   // A state without ties has no such displacement.
-  row(x.t("d_tie"), t.levels_before.empty() ? x.numtext("—") : dk(b, b.d_star_tie_limit),
-      t.levels.empty() ? x.numtext("—") : dk(a, a.d_star_tie_limit));
+  row(x.t("d_tie"), t.levels_before.empty() ? numeric_cell("—") : dk(b, b.d_star_tie_limit),
+      t.levels.empty() ? numeric_cell("—") : dk(a, a.d_star_tie_limit));
   row("d_SLV (m)", dk(b, b.d_SLV), dk(a, a.d_SLV));
   row("d_SLC (m)", dk(b, b.d_SLC), dk(a, a.d_SLC));
   row(x.t("d_SLV_plastic"), dk(b, b.d_SLV_plastic), dk(a, a.d_SLV_plastic));
@@ -240,7 +235,7 @@ void states_table(const TieText& x, const TieInterventionResult& t) {
     for (const CheckRow& y : ca.checks)
       if (y.code == r.code && y.limit_state == r.limit_state && y.kind == r.kind && y.location == r.location) r2 = &y;
     auto dc = [&](const CheckRow* y) {
-      if (!y) return x.numtext("—");
+      if (!y) return numeric_cell("—");
       Cell z = x.c.dc_cell(*y);
       if (y->without_ties) {  // the bare wall's row: said in the cell's second line, the D/C stays a number
         std::string m = x.t("bare_mark");
@@ -253,7 +248,7 @@ void states_table(const TieText& x, const TieInterventionResult& t) {
     row(r.code + " " + r.limit_state + " " + x.t("kind." + r.kind) + " " + x.t("where." + r.location) + " D/C", dc(&r),
         dc(r2));
   }
-  x.c.d.add_cell_table({Cell(""), x.numtext(x.t("before")), x.numtext(x.t("after"))}, rows, x.t("before_after"));
+  x.c.d.add_cell_table({Cell(""), numeric_cell(x.t("before")), numeric_cell(x.t("after"))}, rows, x.t("before_after"));
   x.c.d.add_paragraph(x.t("plastic_note"));
 }
 
@@ -284,7 +279,7 @@ void dynamics(const TieText& x, const TieInterventionResult& t) {
   // One row per restitution and state (the stato di progetto's only with an
   // intervention); d* of a state with a collapse is unbounded: "∞" (issue 28).
   std::vector<std::vector<Cell>> rows;
-  auto count = [&](int v) { return x.numtext(std::to_string(v)); };
+  auto count = [&](int v) { return numeric_cell(std::to_string(v)); };
   for (const TieDynamicSummary& s : d.summaries)
     for (bool after : {false, true}) {
       if (after && !t.intervention) continue;
@@ -295,16 +290,16 @@ void dynamics(const TieText& x, const TieInterventionResult& t) {
                       count(after ? s.broken_after : s.broken_before),
                       x.ok(after ? s.satisfied_after : s.satisfied_before)});
     }
-  x.c.d.add_cell_table({x.numtext("e"), Cell(x.t("dyn_state")), x.numtext("N"), x.numtext(x.t("dyn_over")),
-                        x.numtext(x.t("dyn_d")), x.numtext("d_SLV (m)"), x.numtext(x.t("dyn_yield")),
-                        x.numtext(x.t("dyn_broken")), Cell(x.t("dyn_verdict"))},
+  x.c.d.add_cell_table({numeric_cell("e"), Cell(x.t("dyn_state")), numeric_cell("N"), numeric_cell(x.t("dyn_over")),
+                        numeric_cell(x.t("dyn_d")), numeric_cell("d_SLV (m)"), numeric_cell(x.t("dyn_yield")),
+                        numeric_cell(x.t("dyn_broken")), Cell(x.t("dyn_verdict"))},
                        rows, x.t("dyn_title"));
   rows.clear();
   for (const TieDynamicRun& r : d.runs)
-    rows.push_back({x.numtext(std::to_string(r.record + 1)), x.num(r.e, 3), Cell(x.t(r.reversed ? "reversed" : "normal")),
+    rows.push_back({numeric_cell(std::to_string(r.record + 1)), x.num(r.e, 3), Cell(x.t(r.reversed ? "reversed" : "normal")),
                     x.num(r.theta_max, 5), x.num(r.max_force / kN, 2), run_outcome(x, r)});
-  x.c.d.add_cell_table({x.numtext(x.t("dyn_record")), x.numtext(x.t("dyn_e")), Cell(x.t("dyn_polarity")),
-                        x.numtext("θ_max (rad)"), x.numtext(x.t("dyn_fmax")), Cell(x.t("dyn_outcome"))},
+  x.c.d.add_cell_table({numeric_cell(x.t("dyn_record")), numeric_cell(x.t("dyn_e")), Cell(x.t("dyn_polarity")),
+                        numeric_cell("θ_max (rad)"), numeric_cell(x.t("dyn_fmax")), Cell(x.t("dyn_outcome"))},
                        rows, x.t("dyn_runs_intro"));
 }
 

@@ -46,6 +46,13 @@ struct Cell {
   Cell(std::string t, std::string n) : text(std::move(t)), note(std::move(n)) {}
 };
 
+/// A right-aligned cell of figures: a number, or the heading of a column of numbers.
+inline Cell numeric_cell(std::string text, std::string note = "") {
+  Cell c(std::move(text), std::move(note));
+  c.numeric = true;
+  return c;
+}
+
 struct Heading {
   int level = 2;           ///< 2 section, 3 subsection, 4, 5 (1 is the title)
   std::string text;
