@@ -264,7 +264,7 @@ std::string dynamics_text(const TieInterventionResult& t) {
   s += format("      %7s %4s %-18s %9s %9s %10s %10s %9s %9s %8s %8s\n", "e", "N", "rule", "overt.bef", "overt.aft",
               "d* bef(m)", "d* aft(m)", "dSLV bef", "dSLV aft", "yielded", "broken");
   // The demand of a state with a collapse is unbounded: "∞" (one column), as its D/C (issue 28).
-  auto dem = [](double v) { return std::isfinite(v) ? format("%10.4f", v) : std::string(9, ' ') + "∞"; };
+  auto dem = [](double v) { return finite_or(v, "%10.4f", "         ∞"); };
   for (const TieDynamicSummary& x : d.summaries) {
     const char* before = x.satisfied_before ? "satisfied" : "NOT satisfied";
     const char* after = x.satisfied_after ? "satisfied" : "NOT satisfied";
