@@ -25,15 +25,6 @@ namespace {
 
 constexpr double g = units::g;
 
-PlotSeries series(std::string name, PlotSeries::Style style, std::vector<double> x = {}, std::vector<double> y = {}) {
-  PlotSeries s;
-  s.name = std::move(name);
-  s.style = style;
-  s.x = std::move(x);
-  s.y = std::move(y);
-  return s;
-}
-
 // The assessment whose dynamic analysis governs the dynamic verdict (the
 // governing candidate's own, or one of the other candidates').
 const FacadeAssessment& governing_dynamics(const FacadeAssessment& a) {
@@ -97,7 +88,7 @@ void add_model(Ctx& c, const FacadeAssessment& x) {
     mr.title = c.t("dyn.mr_title");
     mr.x_label = "θ (rad)";
     mr.y_label = "M (kN m/m)";
-    PlotSeries s = series(c.t("dyn.mr_series"), PlotSeries::Style::Line, x.mr_theta);
+    PlotSeries s = plot_series(c.t("dyn.mr_series"), PlotSeries::Style::Line, x.mr_theta);
     for (double v : x.mr_moment) s.y.push_back(v / units::kN);
     s.highlight = true;
     mr.series.push_back(s);
@@ -178,7 +169,7 @@ void add_compatibility(Ctx& c, const FacadeAssessment& x, const std::string& id 
   p.y_label = "Se, PSA (g)";
   const PeriodRange& rg = x.compatibility.computed ? x.compatibility.range : x.selection_range;
   if (rg.T_max > rg.T_min) {
-    PlotSeries band = series(c.t("dyn.band"), PlotSeries::Style::Band);
+    PlotSeries band = plot_series(c.t("dyn.band"), PlotSeries::Style::Band);
     for (std::size_t i = 0; i < x.periods.size(); ++i) {
       const double T = x.periods[i];
       if (T < rg.T_min || T > rg.T_max) continue;
@@ -189,19 +180,19 @@ void add_compatibility(Ctx& c, const FacadeAssessment& x, const std::string& id 
     band.color = "#1f5fbf";
     if (!band.x.empty()) p.series.push_back(band);
   }
-  PlotSeries target = series("Se SLV", PlotSeries::Style::Line, x.periods);
+  PlotSeries target = plot_series("Se SLV", PlotSeries::Style::Line, x.periods);
   for (double v : se->second) target.y.push_back(v / g);
   target.color = "#1f5fbf";
   target.highlight = true;
   p.series.push_back(target);
   for (std::size_t i = 0; i < x.record_psa.size(); ++i) {
-    PlotSeries s = series(i == 0 ? c.t("site.records_scaled") : "", PlotSeries::Style::Line, x.periods);
+    PlotSeries s = plot_series(i == 0 ? c.t("site.records_scaled") : "", PlotSeries::Style::Line, x.periods);
     for (double v : x.record_psa[i]) s.y.push_back(v / g);
     s.color = "#aaaaaa";
     p.series.push_back(s);
   }
   if (!x.mean_psa.empty()) {
-    PlotSeries s = series(c.t("site.records_mean"), PlotSeries::Style::Line, x.periods);
+    PlotSeries s = plot_series(c.t("site.records_mean"), PlotSeries::Style::Line, x.periods);
     for (double v : x.mean_psa) s.y.push_back(v / g);
     s.color = "#000000";
     s.highlight = true;
@@ -211,8 +202,8 @@ void add_compatibility(Ctx& c, const FacadeAssessment& x, const std::string& id 
   for (double v : se->second) top = std::max(top, 1.3 * v / g);
   for (double v : x.mean_psa) top = std::max(top, v / g);
   if (rg.T_max > rg.T_min) {
-    PlotSeries l1 = series(c.t("dyn.range"), PlotSeries::Style::Dashed, {rg.T_min, rg.T_min}, {0.0, 1.2 * top});
-    PlotSeries l2 = series("", PlotSeries::Style::Dashed, {rg.T_max, rg.T_max}, {0.0, 1.2 * top});
+    PlotSeries l1 = plot_series(c.t("dyn.range"), PlotSeries::Style::Dashed, {rg.T_min, rg.T_min}, {0.0, 1.2 * top});
+    PlotSeries l2 = plot_series("", PlotSeries::Style::Dashed, {rg.T_max, rg.T_max}, {0.0, 1.2 * top});
     l1.color = l2.color = "#444444";
     p.series.push_back(l1);
     p.series.push_back(l2);
@@ -231,10 +222,10 @@ void add_floor_spectra(Ctx& c, const FacadeAssessment& x) {
   fp.title = c.t("dyn.floor_title");
   fp.x_label = "T (s)";
   fp.y_label = "Sa (g)";
-  PlotSeries fm = series(c.t("dyn.floor_series"), PlotSeries::Style::Line, x.periods);
+  PlotSeries fm = plot_series(c.t("dyn.floor_series"), PlotSeries::Style::Line, x.periods);
   for (double v : x.floor_mean_psa) fm.y.push_back(v / g);
   fm.highlight = true;
-  PlotSeries cf = series("S_eZ [C7.2.6]", PlotSeries::Style::Dashed, x.periods);
+  PlotSeries cf = plot_series("S_eZ [C7.2.6]", PlotSeries::Style::Dashed, x.periods);
   for (double v : x.code_floor_Se) cf.y.push_back(v / g);
   fp.series.push_back(fm);
   fp.series.push_back(cf);
@@ -261,7 +252,7 @@ void add_histories(Ctx& c, const FacadeAssessment& x) {
     bool overturned = false;
     for (const DynamicRun& r : x.runs) {
       if (r.record != ir || r.result.history.t.empty()) continue;
-      PlotSeries s = series("", r.reversed ? PlotSeries::Style::Dashed : PlotSeries::Style::Line);
+      PlotSeries s = plot_series("", r.reversed ? PlotSeries::Style::Dashed : PlotSeries::Style::Line);
       const std::vector<double>& t = r.result.history.t;
       const std::size_t n = std::size_t(std::upper_bound(t.begin(), t.end(), p.x_max) - t.begin());
       const std::size_t step = std::max<std::size_t>(1, n / 600);
@@ -273,7 +264,7 @@ void add_histories(Ctx& c, const FacadeAssessment& x) {
       s.color = colours[r.restitution % 4];
       p.series.push_back(s);
       if (r.result.overturned && r.result.t_overturn) {
-        PlotSeries o = series("", PlotSeries::Style::Points, {*r.result.t_overturn}, {1.0});
+        PlotSeries o = plot_series("", PlotSeries::Style::Points, {*r.result.t_overturn}, {1.0});
         o.point_type = 2;
         o.point_size = 2.0;
         o.color = "#b3001b";
@@ -282,7 +273,7 @@ void add_histories(Ctx& c, const FacadeAssessment& x) {
       }
     }
     if (p.series.empty()) continue;
-    PlotSeries one = series("", PlotSeries::Style::Dashed, {0.0, p.x_max}, {1.0, 1.0});
+    PlotSeries one = plot_series("", PlotSeries::Style::Dashed, {0.0, p.x_max}, {1.0, 1.0});
     one.color = "#b3001b";
     p.series.push_back(one);
     p.y_min = -1.1;

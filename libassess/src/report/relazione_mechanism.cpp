@@ -26,15 +26,6 @@ namespace {
 constexpr double pi = units::pi;
 constexpr double g = units::g;
 
-PlotSeries series(std::string name, PlotSeries::Style style, std::vector<double> x = {}, std::vector<double> y = {}) {
-  PlotSeries s;
-  s.name = std::move(name);
-  s.style = style;
-  s.x = std::move(x);
-  s.y = std::move(y);
-  return s;
-}
-
 bool any_at_height(const FacadeAssessment& a) {
   for (const CandidateResult& cr : a.kinematic.candidates)
     if (cr.Z > 0.0) return true;
@@ -286,7 +277,7 @@ void add_adrs(Ctx& c, std::size_t ci, const std::string& id) {
   p.title = c.t("kin.adrs_title");
   p.x_label = c.t("kin.adrs_x");
   p.y_label = c.t("kin.adrs_y");
-  PlotSeries cap = series(c.t("kin.adrs_curve"), PlotSeries::Style::Line);
+  PlotSeries cap = plot_series(c.t("kin.adrs_curve"), PlotSeries::Style::Line);
   for (const CapacityPoint& q : k.curve) cap.x.push_back(q.d_star), cap.y.push_back(q.a_star);
   cap.highlight = true;
   cap.color = "#000000";
@@ -306,7 +297,7 @@ void add_adrs(Ctx& c, std::size_t ci, const std::string& id) {
     const AdrsDemand& dem = (*curves)[i];
     const std::string who = code_name(row.code) + " " + row.limit_state +
                             (row.location == "height" ? " (" + c.t("where.height") + ")" : "");
-    PlotSeries s = series(msgf(c.L, "kin.adrs_spectrum", code_name(row.code),
+    PlotSeries s = plot_series(msgf(c.L, "kin.adrs_spectrum", code_name(row.code),
                                row.limit_state + (row.location == "height" ? " (" + c.t("where.height") + ")" : std::string()),
                                c.n(dem.xi_pct, 0)),
                           row.code == "NTC2008" ? PlotSeries::Style::Dashed : PlotSeries::Style::Line, dem.Sd, dem.Sa);
@@ -316,18 +307,18 @@ void add_adrs(Ctx& c, std::size_t ci, const std::string& id) {
     if (T > 0.0 && row.secant_d > 0.0 && std::isfinite(row.demand)) {
       const double slope = std::pow(2.0 * pi / T, 2);
       const double x_end = 1.1 * std::max({row.demand, row.capacity, row.secant_d});
-      PlotSeries line = series(i == 0 ? msgf(c.L, "kin.adrs_secant", "") : "", PlotSeries::Style::Dashed, {0.0, x_end},
+      PlotSeries line = plot_series(i == 0 ? msgf(c.L, "kin.adrs_secant", "") : "", PlotSeries::Style::Dashed, {0.0, x_end},
                                {0.0, slope * x_end});
       line.color = "#888888";
       p.series.push_back(line);
-      PlotSeries d = series(msgf(c.L, "kin.adrs_demand", who), PlotSeries::Style::Points, {row.demand},
+      PlotSeries d = plot_series(msgf(c.L, "kin.adrs_demand", who), PlotSeries::Style::Points, {row.demand},
                             {row.demand * slope});
       d.color = colour(row);
       d.point_size = 1.3;
       d.point_type = 7;
       p.series.push_back(d);
       if (row.code == "NTC2008") {
-        PlotSeries q = series("", PlotSeries::Style::Points, {row.secant_d}, {row.secant_a});
+        PlotSeries q = plot_series("", PlotSeries::Style::Points, {row.secant_d}, {row.secant_a});
         q.color = colour(row);
         q.point_type = 9;
         q.point_size = 1.1;
@@ -335,7 +326,7 @@ void add_adrs(Ctx& c, std::size_t ci, const std::string& id) {
       }
       d_show = std::max(d_show, x_end);
     }
-    PlotSeries q = series(msgf(c.L, "kin.adrs_capacity", who), PlotSeries::Style::Points, {row.capacity},
+    PlotSeries q = plot_series(msgf(c.L, "kin.adrs_capacity", who), PlotSeries::Style::Points, {row.capacity},
                           {a_on_curve(k, row.capacity)});
     q.color = colour(row);
     q.point_type = 5;

@@ -7,18 +7,6 @@
 
 namespace assess::relazione {
 
-namespace {
-
-PlotSeries series(std::string name, PlotSeries::Style style, std::vector<double> x = {}) {
-  PlotSeries s;
-  s.name = std::move(name);
-  s.style = style;
-  s.x = std::move(x);
-  return s;
-}
-
-}  // namespace
-
 void add_site(Ctx& c) {
   if (!c.a.kase.site) return;
   const FacadeAssessment& a = c.a;
@@ -46,19 +34,19 @@ void add_site(Ctx& c) {
   p.x_label = "T (s)";
   p.y_label = "Se, PSA (g)";
   for (const auto& [ls, se] : a.site_Se) {
-    PlotSeries s = series("Se " + to_string(ls), PlotSeries::Style::Line, a.periods);
+    PlotSeries s = plot_series("Se " + to_string(ls), PlotSeries::Style::Line, a.periods);
     for (double v : se) s.y.push_back(v / units::g);
     s.highlight = ls == LimitState::SLV;
     p.series.push_back(s);
   }
   for (std::size_t i = 0; i < a.record_psa.size(); ++i) {
-    PlotSeries s = series(i == 0 ? c.t("site.records_scaled") : "", PlotSeries::Style::Dashed, a.periods);
+    PlotSeries s = plot_series(i == 0 ? c.t("site.records_scaled") : "", PlotSeries::Style::Dashed, a.periods);
     for (double v : a.record_psa[i]) s.y.push_back(v / units::g);
     s.color = "#999999";
     p.series.push_back(s);
   }
   if (!a.mean_psa.empty()) {
-    PlotSeries s = series(c.t("site.records_mean"), PlotSeries::Style::Line, a.periods);
+    PlotSeries s = plot_series(c.t("site.records_mean"), PlotSeries::Style::Line, a.periods);
     for (double v : a.mean_psa) s.y.push_back(v / units::g);
     s.highlight = true;
     s.color = "#000000";

@@ -87,13 +87,6 @@ std::string file_fnv1a64(const std::string& path) {
   }
 }
 
-PlotSeries series(std::string name, PlotSeries::Style style) {
-  PlotSeries s;
-  s.name = std::move(name);
-  s.style = style;
-  return s;
-}
-
 // Return period (years) at which the site's ag reaches a check's ag capacity
 // (log-log on the ag hazard curve; outside [30, 2475] years extrapolated).
 double capacity_tr(const FragilityStudy& st, const CheckRow& c) {
@@ -314,12 +307,12 @@ FragilityReportFiles write_fragility_report(const FragilityStudy& st, const Frag
       for (FragilityState s : all_fragility_states) {
         const FragilityCurve& c = r.curve(e, s);
         const std::string col = colours[int(s)];
-        PlotSeries pts = series(to_string(s) + " (stripes)", PlotSeries::Style::Points);
+        PlotSeries pts = plot_series(to_string(s) + " (stripes)", PlotSeries::Style::Points);
         pts.color = col;
         for (const auto& x : c.stripes) pts.x.push_back(x.im / units::g), pts.y.push_back(x.n ? double(x.k) / x.n : NAN);
         p.series.push_back(pts);
         if (c.fit.ok()) {
-          PlotSeries fit = series(to_string(s) + " (lognormal)", PlotSeries::Style::Line);
+          PlotSeries fit = plot_series(to_string(s) + " (lognormal)", PlotSeries::Style::Line);
           fit.color = col;
           fit.highlight = s == FragilityState::overturning;
           const auto& grid = c.bounds && c.bounds->fitted > 0 ? c.bounds->band_im : std::vector<double>{};
@@ -330,7 +323,7 @@ FragilityReportFiles write_fragility_report(const FragilityStudy& st, const Frag
           for (double x : xs) fit.x.push_back(x / units::g), fit.y.push_back(c.fit.fragility.probability(x));
           p.series.push_back(fit);
           if (!grid.empty()) {
-            PlotSeries lo = series("", PlotSeries::Style::Dashed), hi = series("", PlotSeries::Style::Dashed);
+            PlotSeries lo = plot_series("", PlotSeries::Style::Dashed), hi = plot_series("", PlotSeries::Style::Dashed);
             lo.color = hi.color = col;
             for (std::size_t i = 0; i < grid.size(); ++i) {
               lo.x.push_back(grid[i] / units::g), lo.y.push_back(c.bounds->band_lo[i]);
@@ -352,7 +345,7 @@ FragilityReportFiles write_fragility_report(const FragilityStudy& st, const Frag
       h.x_label = "PGA (g)";
       h.y_label = "lambda (1/year)";
       h.log_x = h.log_y = true;
-      PlotSeries pts = series("grid return periods", PlotSeries::Style::Points), line = series("log-log interpolation/extrapolation", PlotSeries::Style::Line);
+      PlotSeries pts = plot_series("grid return periods", PlotSeries::Style::Points), line = plot_series("log-log interpolation/extrapolation", PlotSeries::Style::Line);
       for (const auto& q : st.hazard->points()) pts.x.push_back(q.im / units::g), pts.y.push_back(q.lambda);
       const double a = 0.5 * st.hazard->points().front().im, b = 2.0 * st.hazard->points().back().im;
       for (int i = 0; i <= 60; ++i) {
@@ -369,7 +362,7 @@ FragilityReportFiles write_fragility_report(const FragilityStudy& st, const Frag
         q.x_label = "PGA (g)";
         q.y_label = "P(C|PGA) |d lambda / d PGA| (1/year per g)";
         q.log_x = true;
-        PlotSeries s = series("integrand", PlotSeries::Style::Line);
+        PlotSeries s = plot_series("integrand", PlotSeries::Style::Line);
         s.highlight = true;
         const double t = gov.fit.fragility.theta, be = std::max(gov.fit.fragility.beta, 0.05);
         std::vector<double> xs;

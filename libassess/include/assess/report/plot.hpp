@@ -39,6 +39,17 @@ struct PlotSeries {
   double point_size = 0.6;     ///< marker half-size in units of 0.375 font sizes, (0, 10]
 };
 
+/// A series with its legend entry, style and (optionally) its points.
+inline PlotSeries plot_series(std::string name, PlotSeries::Style style, std::vector<double> x = {},
+                              std::vector<double> y = {}) {
+  PlotSeries s;
+  s.name = std::move(name);
+  s.style = style;
+  s.x = std::move(x);
+  s.y = std::move(y);
+  return s;
+}
+
 /// A 2-D plot. Axis labels should state the unit, e.g. "T (s)".
 struct Plot {
   std::string title;
