@@ -392,22 +392,17 @@ std::string zeta_chart(Lang L, const BuildingAssessment& b, bool* designed_out) 
 // The tie rods of a mechanism in one state in a few words (issue 29): the
 // existing ties, then the new ones (count, rod, anchor; "n levels").
 std::string tie_label(Lang L, const TieInterventionResult& t, bool after) {
-  const std::vector<TieLevelResult>& lv = after ? t.levels : t.levels_before;
   std::string out;
-  for (bool existing : {true, false}) {
-    int n = 0;
-    const Tie* x = nullptr;
-    for (const TieLevelResult& l : lv)
-      if (l.tie.existing == existing && n++ == 0) x = &l.tie;
-    if (!x) continue;
-    std::string s = msg(L, existing ? "tie.existing" : "tie.new") + ": " + std::to_string(x->layout.count) + " × " +
+  for (const TieGroup& g : tie_groups(t, after)) {
+    const Tie* x = g.first;
+    std::string s = msg(L, g.existing ? "tie.existing" : "tie.new") + ": " + std::to_string(x->layout.count) + " × " +
                     (x->rod.diameter > 0.0 ? "Ø" + fx(L, x->rod.diameter * 1e3, 0) + " mm " + x->rod.grade
                                            : "A = " + fx(L, x->rod.area * 1e6, 0) + " mm² " + x->rod.grade);
     s += x->anchor.type == AnchorType::Plate
              ? ", " + bt(L, "ties_plate") + " " + fx(L, x->anchor.a * 1e3, 0) + " × " + fx(L, x->anchor.b * 1e3, 0) +
                    " × " + fx(L, x->anchor.t * 1e3, 0) + " mm"
              : ", " + bt(L, "ties_bar") + " " + fx(L, x->anchor.a * 1e3, 0) + " mm";
-    if (n > 1) s += " (" + std::to_string(n) + " " + bt(L, "ties_levels") + ")";
+    if (g.levels > 1) s += " (" + std::to_string(g.levels) + " " + bt(L, "ties_levels") + ")";
     out += (out.empty() ? "" : "; ") + s;
   }
   if (after && t.designed && !t.found) out = bt(L, "ties_not_found") + " (" + out + ")";

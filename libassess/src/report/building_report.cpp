@@ -76,22 +76,17 @@ std::string record_set_text(const BuildingAssessment& b, const BuildingMechanism
 // first level's count, rod and anchor (a design gives every level the same),
 // "+n lev." for the others; existing and new apart.
 std::string tie_label(const TieInterventionResult& t, bool after) {
-  const std::vector<TieLevelResult>& lv = after ? t.levels : t.levels_before;
-  if (lv.empty()) return "-";
+  if ((after ? t.levels : t.levels_before).empty()) return "-";
   std::string out;
-  for (bool existing : {true, false}) {
-    int n = 0;
-    const Tie* x = nullptr;
-    for (const TieLevelResult& l : lv)
-      if (l.tie.existing == existing && n++ == 0) x = &l.tie;
-    if (!x) continue;
-    std::string s = std::string(existing ? "exist. " : "new ") + format("%dx ", x->layout.count) +
+  for (const TieGroup& g : tie_groups(t, after)) {
+    const Tie* x = g.first;
+    std::string s = std::string(g.existing ? "exist. " : "new ") + format("%dx ", x->layout.count) +
                     (x->rod.diameter > 0.0 ? format("diam. %.0f %s", x->rod.diameter * 1e3, x->rod.grade)
                                            : format("A %.0f mm2 %s", x->rod.area * 1e6, x->rod.grade));
     s += x->anchor.type == AnchorType::Plate
              ? format(", pl. %.0fx%.0fx%.0f", x->anchor.a * 1e3, x->anchor.b * 1e3, x->anchor.t * 1e3)
              : format(", bar %.0f", x->anchor.a * 1e3);
-    if (n > 1) s += format(" +%d lev.", n - 1);
+    if (g.levels > 1) s += format(" +%d lev.", g.levels - 1);
     out += (out.empty() ? "" : "; ") + s;
   }
   if (after && t.designed && !t.found) out = "NOT FOUND (" + out + ")";

@@ -340,6 +340,17 @@ std::string level_text(const TieLevelResult& L) {
 
 }  // namespace
 
+std::vector<TieGroup> tie_groups(const TieInterventionResult& t, bool after) {
+  std::vector<TieGroup> out;
+  for (bool existing : {true, false}) {
+    TieGroup g{existing, nullptr, 0};
+    for (const TieLevelResult& l : after ? t.levels : t.levels_before)
+      if (l.tie.existing == existing && g.levels++ == 0) g.first = &l.tie;
+    if (g.first) out.push_back(g);
+  }
+  return out;
+}
+
 std::string tie_text(const TieInterventionResult& t) {
   std::string s = "\nTie rods (catene): stato di fatto and stato di progetto\n";
   if (t.designed) {

@@ -30,6 +30,17 @@ std::string tie_text(const TieInterventionResult& t);
 /// the keys). Never a non-finite number: null, with a reason where it matters.
 nlohmann::json tie_json(const TieInterventionResult& t);
 
+/// The tie levels of one state (`after`: the stato di progetto) grouped for a
+/// one-line summary: the existing ties, then the new ones, each group by its
+/// first level (a design gives every level the same rod and plate) and its
+/// number of levels; a group without levels is left out.
+struct TieGroup {
+  bool existing = false;
+  const Tie* first = nullptr;
+  int levels = 0;
+};
+std::vector<TieGroup> tie_groups(const TieInterventionResult& t, bool after);
+
 /// A reading adopted by the tie section (issue 29): the quantity, the value
 /// or formula adopted, and its basis with its certainty ([V-T], [V-S], [R],
 /// [I] as in docs/theory/ties.md). The signed body of the relazione carries
