@@ -140,4 +140,17 @@ std::vector<std::string> heading_numbers(const Document& d) {
   return out;
 }
 
+std::vector<ContentsEntry> contents_entries(const Document& d, int depth) {
+  const std::vector<std::string> numbers = heading_numbers(d);
+  std::vector<ContentsEntry> out;
+  std::size_t k = 0;
+  for (const DocBlock& b : d.blocks) {
+    const Heading* h = std::get_if<Heading>(&b.value);
+    if (!h) continue;
+    const std::string& n = numbers[k++];
+    if (!n.empty() && h->level <= depth) out.push_back({h, n});
+  }
+  return out;
+}
+
 }  // namespace assess

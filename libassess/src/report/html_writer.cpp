@@ -218,13 +218,7 @@ struct Writer {
   }
   std::string block(const Contents& c) {
     std::string s = "<nav class=\"toc\">\n<h2 class=\"toc-heading\">" + xml_escape(c.title) + "</h2>\n<ol>\n";
-    std::size_t k = 0;
-    for (const DocBlock& b : d.blocks) {
-      const Heading* h = std::get_if<Heading>(&b.value);
-      if (!h) continue;
-      const std::string n = k < numbers.size() ? numbers[k] : "";
-      ++k;
-      if (n.empty() || h->level > c.depth) continue;
+    for (const auto& [h, n] : contents_entries(d, c.depth)) {
       const auto p = o.pages.find(h->anchor);
       s += "<li class=\"l" + std::to_string(h->level) + "\"><a href=\"#" + xml_escape(h->anchor) +
            "\"><span class=\"secno\">" + n + "</span> " + xml_escape(h->text) + "</a>" +

@@ -123,13 +123,7 @@ struct Writer {
   }
   std::string block(const Contents& c, const std::string& indent) {
     std::string s = "\n" + indent + c.title + "\n";
-    std::size_t k = 0;
-    for (const DocBlock& b : d.blocks) {
-      const Heading* h = std::get_if<Heading>(&b.value);
-      if (!h) continue;
-      const std::string n = k < numbers.size() ? numbers[k] : "";
-      ++k;
-      if (n.empty() || h->level > c.depth) continue;
+    for (const auto& [h, n] : contents_entries(d, c.depth)) {
       s += wrap(n + " " + h->text, width, indent + std::string(std::size_t(2 * (h->level - 1)), ' '),
                 indent + std::string(std::size_t(2 * (h->level - 2)), ' '));
     }

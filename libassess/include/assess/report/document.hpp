@@ -198,4 +198,13 @@ std::string plain_text(const Inline& text);
 /// unnumbered one): one numbering for every writer and for the contents.
 std::vector<std::string> heading_numbers(const Document& d);
 
+/// A line of the contents: a numbered heading and its section number.
+struct ContentsEntry {
+  const Heading* heading;
+  std::string number;
+};
+/// The contents of `d`: its numbered headings down to level `depth`, in order
+/// (every writer lists the same).
+std::vector<ContentsEntry> contents_entries(const Document& d, int depth);
+
 }  // namespace assess
