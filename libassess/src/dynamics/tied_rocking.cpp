@@ -223,14 +223,7 @@ class TiedSystem : public HybridSystem {
       push_history(t, y);
       return EventAction::proceed;
     }
-    if (k == 1) {
-      out_.overturned = true;
-      out_.t_overturn = t;
-      out_.kinetic_energy_overturn = 0.5 * b_.inertia(y[0]) * y[1] * y[1];
-      consider_peak(t, y[0]);
-      push_history(t, y);
-      return EventAction::stop;
-    }
+    if (k == 1) return overturn(t, y);
     if (k >= 2 + lv_.size()) {  // a ductile rod at its ultimate elongation
       const std::size_t i = k - 2 - lv_.size();
       mode &= ~(1 << i);
@@ -302,15 +295,17 @@ class TiedSystem : public HybridSystem {
     r.t_broken = t;
     r.max_elongation = std::max(r.max_elongation, lv_[i].e(y[0]));
     q_c_ = collapse_of_(broken_);
-    if (y[0] >= q_c_) {
-      out_.overturned = true;
-      out_.t_overturn = t;
-      out_.kinetic_energy_overturn = 0.5 * b_.inertia(y[0]) * y[1] * y[1];
-      consider_peak(t, y[0]);
-      push_history(t, y);
-      return EventAction::stop;
-    }
+    if (y[0] >= q_c_) return overturn(t, y);
     return EventAction::proceed;
+  }
+  // The wall overturns at t: recorded, the analysis stops.
+  EventAction overturn(double t, const double* y) {
+    out_.overturned = true;
+    out_.t_overturn = t;
+    out_.kinetic_energy_overturn = 0.5 * b_.inertia(y[0]) * y[1] * y[1];
+    consider_peak(t, y[0]);
+    push_history(t, y);
+    return EventAction::stop;
   }
   void consider_peak(double t, double q) {
     if (q > out_.theta_max) {
