@@ -14,6 +14,8 @@
 #include <cstdlib>
 #include <string>
 
+#include "fuzz_support.hpp"
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
@@ -22,8 +24,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       doc.erase("site");
     const assess::CaseFile c = assess::parse_case(doc, "fuzz.json");
     const assess::KinematicCaseResult r = assess::run_kinematic_case(c);
-    for (const auto& cand : r.candidates)
-      if (!std::isfinite(cand.result.alpha0)) std::abort();
+    fuzz::require_finite_alpha0(r);
   } catch (const assess::InputError&) {
   }
   return 0;

@@ -19,12 +19,7 @@
 #include <cstdlib>
 #include <string>
 
-namespace {
-const char* const kHazard = R"({"hazard": {
-  "SLD": {"ag_g": 0.089, "F0": 2.37, "Tc_star": 0.28, "TR": 50},
-  "SLV": {"ag_g": 0.252, "F0": 2.37, "Tc_star": 0.33, "TR": 475},
-  "SLC": {"ag_g": 0.327, "F0": 2.41, "Tc_star": 0.34, "TR": 975}}, "soil": "B"})";
-}  // namespace
+#include "fuzz_support.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
@@ -32,14 +27,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     nlohmann::json doc = assess::parse_json_text(text, "fuzz.json");
     if (doc.is_object()) {
       if (!(doc.contains("site") && doc["site"].is_object() && doc["site"].contains("hazard")))
-        doc["site"] = nlohmann::json::parse(kHazard);
+        doc["site"] = nlohmann::json::parse(fuzz::kHazard);
       doc.erase("dynamic");
       if (doc.value("method", "") == "dynamic") doc.erase("method");
     }
     const assess::CaseFile c = assess::parse_case(doc, "fuzz.json");
     const assess::KinematicCaseResult r = assess::run_kinematic_case(c);
-    for (const auto& cand : r.candidates)
-      if (!std::isfinite(cand.result.alpha0)) std::abort();
+    fuzz::require_finite_alpha0(r);
     if (assess::has_ties(c)) (void)assess::run_tie_intervention(c);
   } catch (const assess::InputError&) {
   }
