@@ -32,6 +32,8 @@
 #include <sstream>
 #include <string>
 
+#include "test_files.hpp"
+
 using namespace assess;
 using assess::test::rel_tol;
 
@@ -45,13 +47,6 @@ constexpr double tol_zero_abs = 1e-12;
 constexpr double tol_gamma_psi_rel = 1e-14;
 
 namespace {
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 std::string fresh_dir(const std::string& name) {
   const auto p = std::filesystem::temp_directory_path() / ("assess_fragility_mechanisms_" + name);

@@ -19,6 +19,8 @@
 #include <sstream>
 #include <string>
 
+#include "test_files.hpp"
+
 using namespace assess;
 using assess::test::rel_tol;
 
@@ -27,13 +29,6 @@ using assess::test::rel_tol;
 constexpr double tol_pga_rel = 1e-13;
 
 namespace {
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 std::string fresh_dir(const std::string& name) {
   const auto p = std::filesystem::temp_directory_path() / ("assess_fragility_runs_" + name);

@@ -18,19 +18,14 @@
 #include <sstream>
 #include <string>
 
+#include "test_files.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
 
 const std::string kTiny = std::string(ASSESS_TEST_DATA_DIR) + "/tests/data/campaign/tiny.json";
 const std::string kBad = std::string(ASSESS_TEST_DATA_DIR) + "/tests/data/campaign/bad_record.json";
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 // A fresh temporary directory per test, removed at the end.
 struct TempDir {

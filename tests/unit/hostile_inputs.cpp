@@ -26,6 +26,8 @@
 
 #include <unistd.h>
 
+#include "test_files.hpp"
+
 using namespace assess;
 using assess::test::rel_tol;
 
@@ -36,18 +38,6 @@ namespace fs = std::filesystem;
 const std::string kRoot = std::string(ASSESS_TEST_DATA_DIR);
 const std::string kCampaignDir = kRoot + "/tests/data/campaign";
 const std::string kStu = kRoot + "/spectra/records/RSN292_ITALY_A-STU270.AT2";
-
-std::string temp_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("assess_hostile_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d.string();
-}
-
-std::string write(const std::string& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-  return path;
-}
 
 // A minimal valid campaign; `extra` replaces or adds top-level members.
 nlohmann::json campaign_json() {

@@ -36,6 +36,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "test_files.hpp"
+
 using namespace assess;
 
 namespace {
@@ -43,23 +45,6 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::string kRoot = std::string(ASSESS_TEST_DATA_DIR);
-
-std::string temp_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("assess_round4_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d.string();
-}
-
-std::string write(const std::string& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-  return path;
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
 
 // The message of the InputError `f` throws ("" if none).
 template <class F>

@@ -20,6 +20,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "test_files.hpp"
+
 using namespace assess;
 using assess::test::abs_tol;
 using assess::test::rel_tol;
@@ -33,13 +35,6 @@ constexpr double kPgaRelTol = 5e-6;
 constexpr double kHeaderPgaRelTol = 1e-5;
 // Arias closed form vs the exact per-step integral: round-off (-).
 constexpr double kAriasRelTol = 1e-12;
-
-std::string slurp(const std::string& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 }  // namespace
 

@@ -21,19 +21,14 @@
 #include <sstream>
 #include <thread>
 
+#include "test_files.hpp"
+
 using namespace assess;
 namespace fs = std::filesystem;
 
 namespace {
 
 const std::string kMini = std::string(ASSESS_TEST_DATA_DIR) + "/tests/data/records_mini/metadata.csv";
-
-std::string slurp(const std::string& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 void spit(const std::string& p, const std::string& bytes) {
   std::ofstream o(p, std::ios::binary | std::ios::trunc);
