@@ -179,7 +179,7 @@ void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_tex
   if (a.json) {
     nlohmann::json j = facade_json(res);
     // zetaE = PGA_C/PGA_D and TR_C/TR_D per approach (docs/theory/building.md §4), as the building report gives them.
-    j["safety_indices"] = safety_indices_json(safety_indices(res));
+    j["safety_indices"] = safety_indices_json(res.indices);
     if (frag) {
       nlohmann::json f = probabilistic_result_json(*prob);
       f["line"] = fragility_line(*frag);

@@ -27,8 +27,8 @@ std::string fx(double v, int prec) {
 
 // TR_C/TR_D: a return period extrapolated beyond the grid's 30-2475 years is a bound, never a number (issue 28).
 std::string tr_ratio(const SafetyIndex& s) {
-  if (!s.TR_extrapolated) return fx(s.TR_ratio, 2);
-  return s.TR_capacity > 2475.0 ? ">" + fx(2475.0 / s.TR_demand, 1) : "<" + fx(30.0 / s.TR_demand, 2);
+  if (!s.index.extrapolated) return fx(s.index.TR_ratio, 2);
+  return s.index.TR_capacity > 2475.0 ? ">" + fx(2475.0 / s.index.TR_demand, 1) : "<" + fx(30.0 / s.index.TR_demand, 2);
 }
 
 std::string rstrip(std::string s) {
@@ -111,8 +111,7 @@ nlohmann::json safety_indices_json(const std::vector<SafetyIndex>& indices) {
     j["code"] = s.code;
     j["approach"] = s.approach;
     j["dc"] = num(s.dc);
-    // No failing check but some without a verdict: no verdict (issue 28).
-    j["satisfied"] = s.failing == 0 && s.no_verdict > 0 ? nlohmann::json(nullptr) : nlohmann::json(s.satisfied);
+    add_outcome(j, s.outcome());  // no failing check but some without a verdict: no verdict (null)
     j["checks"] = s.checks;
     if (!s.dc_candidate.empty()) {  // the candidate whose check gives the D/C, and its alpha0 and a0* (issue 28)
       j["dc_candidate"] = s.dc_candidate;
@@ -126,14 +125,9 @@ nlohmann::json safety_indices_json(const std::vector<SafetyIndex>& indices) {
       j["limit_state"] = s.limit_state;
       j["location"] = s.location;
       j["candidate"] = s.candidate;
-      j["ag_capacity_g"] = num(s.ag_capacity_g);
-      j["ag_capacity_reached"] = std::isfinite(s.ag_capacity_g);
-      j["ag_demand_g"] = num(s.ag_demand_g);
-      j["zeta_E"] = num(s.zeta);
-      j["TR_capacity_years"] = num(s.TR_capacity);
-      j["TR_demand_years"] = num(s.TR_demand);
-      j["TR_ratio"] = num(s.TR_ratio);
-      j["TR_extrapolated"] = s.TR_extrapolated;
+      // The index of that check (kinematic/check_index.hpp): zeta_E, PGA_C, PGA_D, TR_C, TR_D ...
+      j.update(to_json(s.index));
+      j.erase("note");
     }
     if (!s.note.empty()) j["note"] = s.note;
     arr.push_back(j);
@@ -186,14 +180,18 @@ nlohmann::json building_json(const BuildingAssessment& b) {
     if (r.a.dynamic && r.a.dynamic_applies) {
       rs["records"] = r.a.records.size();
       rs["period_range_s"] = {r.a.selection_range.T_min, r.a.selection_range.T_max};
+      // The records it used (issue 41: a mechanism alone is its building line).
+      nlohmann::json used = nlohmann::json::array();
+      for (const RecordUsed& u : r.a.records) used.push_back({{"name", u.name}, {"file", u.file}, {"scale", u.scale}});
+      rs["used"] = used;
     }
     mj["record_set"] = rs;
-    mj["safety_indices"] = safety_indices_json(r.indices);
+    mj["safety_indices"] = safety_indices_json(r.a.indices);
     if (const MethodVerdict* c = r.a.verdict.conclusion()) {
       nlohmann::json v;
       v["adopted"] = r.a.verdict.adopted;
       v["code"] = c->code;
-      v["satisfied"] = c->satisfied && std::isfinite(c->max_dc);
+      add_outcome(v, c->outcome());
       v["dc"] = num(c->max_dc);
       mj["conclusion"] = v;
     }
@@ -224,7 +222,7 @@ nlohmann::json building_json(const BuildingAssessment& b) {
     x["zeta_E"] = num(g.zeta);
     x["dc"] = num(g.dc);
     x["assessed"] = g.assessed;
-    x["satisfied"] = g.satisfied;
+    x["satisfied_count"] = g.satisfied;
     x["failing"] = g.failing;
     x["no_verdict"] = g.no_verdict;
     gv.push_back(x);
@@ -233,7 +231,7 @@ nlohmann::json building_json(const BuildingAssessment& b) {
   // The building's verdict (issue 28): every mechanism by its adopted method.
   const BuildingVerdict& bv = b.verdict;
   nlohmann::json vj;
-  vj["satisfied"] = bv.satisfied;
+  add_outcome(vj, bv.outcome());  // null without a verdict (issue 41): "undecided" says which
   vj["mechanisms"] = bv.mechanisms;
   nlohmann::json failing = nlohmann::json::array(), undecided = nlohmann::json::array();
   for (int i : bv.failing) failing.push_back(bc.mechanisms[std::size_t(i)].id);
@@ -353,7 +351,7 @@ std::string building_text(const BuildingAssessment& b, TextWidth width) {
         const BuildingGoverning* g = b.governing_of(code, approach);
         const std::string star = g && g->mechanism == int(i) ? "*" : " ";
         if (!s || !s->has_checks) return format(" %6s %6s %7s", "-", "-", "-");
-        return " " + detail::pad(fx(s->dc, 3), 6) + " " + detail::pad(s->defined ? fx(s->zeta, 3) : "-", 6) + star +
+        return " " + detail::pad(fx(s->dc, 3), 6) + " " + detail::pad(s->defined ? fx(s->index.zeta, 3) : "-", 6) + star +
                detail::pad(s->defined ? tr_ratio(*s) : "-", 7);
       };
       // alpha0 and a0* of the candidate whose check gives the linear D/C beside them (issue 28); the
@@ -386,10 +384,10 @@ std::string building_text(const BuildingAssessment& b, TextWidth width) {
     std::string line = "  " + code_name(g.code) + ", " + approach_name(g.approach) + ": " + m.id + " " + m.wall + ": " +
                        m.name;
     if (s && s->defined)
-      line += ", zetaE = " + fx(s->zeta, 3) + " (PGA_C " + fx(s->ag_capacity_g, 4) + " g / PGA_D " +
-              fx(s->ag_demand_g, 4) + " g, " + s->limit_state + "), TR_C = " +
-              (s->TR_extrapolated ? (s->TR_capacity > 2475.0 ? "> 2475" : "< 30") : fx(s->TR_capacity, 0)) +
-              " / TR_D = " + fx(s->TR_demand, 0) + " years" + (s->TR_extrapolated ? " (beyond the grid: a bound)" : "");
+      line += ", zetaE = " + fx(s->index.zeta, 3) + " (PGA_C " + fx(s->index.ag_capacity_g, 4) + " g / PGA_D " +
+              fx(s->index.ag_demand_g, 4) + " g, " + s->limit_state + "), TR_C = " +
+              (s->index.extrapolated ? (s->index.TR_capacity > 2475.0 ? "> 2475" : "< 30") : fx(s->index.TR_capacity, 0)) +
+              " / TR_D = " + fx(s->index.TR_demand, 0) + " years" + (s->index.extrapolated ? " (beyond the grid: a bound)" : "");
     else
       line += ", D/C = " + fx(g.dc, 3) + " (no zetaE: no PGA capacity)";
     line += "; " + std::to_string(g.satisfied) + " of " + std::to_string(g.assessed) + " satisfied, " +

@@ -2,6 +2,7 @@
 // string of the HTML/PDF relazione is here; facade_html only looks keys up).
 // Code terms follow the Italian text of NTC 2018 and Circ. 2019 C8.7.1.
 #include "assess/report/messages.hpp"
+#include "assess/report/verdict_style.hpp"
 
 #include "assess/support/error.hpp"
 #include "report/messages_ties.hpp"
@@ -265,7 +266,7 @@ const std::map<std::string, Entry>& catalogue() {
       {"checks.demand", {"domanda", "demand"}},
       {"checks.capacity", {"capacità", "capacity"}},
       {"checks.outcome", {"esito", "outcome"}},
-      {"checks.ag", {"ag,cap / ag,sito (g)", "ag,cap / ag,site (g)"}},
+      {"checks.ag", {"ζE (PGA_C / PGA_D)", "ζE (PGA_C / PGA_D)"}},
       {"kind.strength", {"lineare (resistenza)", "linear (strength)"}},
       {"kind.displacement", {"non lineare (spostamento)", "non-linear (displacement)"}},
       {"kind.dynamic", {"dinamica non lineare", "non-linear dynamic"}},
@@ -1445,6 +1446,21 @@ std::string mechanism_name(Lang lang, const std::string& type) {
   const auto it = names.find(type);
   if (it == names.end()) return type;
   return lang == Lang::it ? it->second.it : it->second.en;
+}
+
+}  // namespace assess
+
+// ------------------------------------------------------------------ verdicts
+// The words of a verdict's three states (verdict_style.hpp), from the catalogue above.
+namespace assess {
+
+const std::string& verdict_word(Lang lang, Outcome o) {
+  return msg(lang, o == Outcome::satisfied ? "ok" : o == Outcome::not_satisfied ? "fail" : "verdict.no_verdict_short");
+}
+
+const std::string& verdict_title(Lang lang, Outcome o) {
+  return msg(lang, o == Outcome::satisfied ? "verdict.ok" : o == Outcome::not_satisfied ? "verdict.fail"
+                                                                                       : "verdict.undecided");
 }
 
 }  // namespace assess
