@@ -34,6 +34,7 @@ using detail::xml_escape;
 const std::string& bt(Lang L, const std::string& key) {
   static const std::map<std::string, std::pair<std::string, std::string>> m = {
       {"verdict_heading", {"Esito della verifica dell'edificio", "Outcome of the building's assessment"}},
+      {"sum_title", {"Sintesi della verifica dei meccanismi locali dell'edificio", "Summary of the assessment of the building's local mechanisms"}},
       {"verdict_ok", {"L'edificio soddisfa la verifica dei meccanismi locali: tutti i {} meccanismi sono verificati con il metodo adottato",
                       "The building satisfies the check of its local mechanisms: all {} mechanisms are satisfied by the adopted method"}},
       {"verdict_fail", {"L'edificio non soddisfa la verifica dei meccanismi locali: {} meccanismi su {} non sono verificati con il metodo adottato ({})",
@@ -108,21 +109,19 @@ const std::string& bt(Lang L, const std::string& key) {
       {"table_cap",
        {"Tabella di sintesi (NTC 2018). Per ogni approccio: α0 del cinematismo la cui verifica dà il D/C "
         "riportato accanto (il più grande dell'approccio), il D/C e ζE = PGA_C/PGA_D (ag su roccia, verifica SLV o SLC "
-        "che governa); ★ = meccanismo che governa l'approccio; in rosso i D/C non verificati e ζE < 1; ∞: collasso in "
+        "che governa); ★ = meccanismo che governa l'approccio; in rosso i D/C e gli ζE non verificati; ∞: collasso in "
         "un'analisi dinamica. Esito: la conclusione del metodo adottato (indicato sotto se non è il non lineare); Acc.: "
         "insieme di accelerogrammi. Il codice del meccanismo porta alla sua sezione.",
         "Summary table (NTC 2018). For each approach: α0 of the candidate whose check gives the D/C beside it "
         "(the approach's largest), the D/C and ζE = PGA_C/PGA_D (ag on rock, the governing SLV or SLC check); ★ = the "
-        "approach's governing mechanism; red: D/C not satisfied and ζE < 1; ∞: a collapse in a dynamic analysis. "
+        "approach's governing mechanism; red: D/C and ζE not satisfied; ∞: a collapse in a dynamic analysis. "
         "Outcome: the adopted method's conclusion (named below it unless non-linear); Rec.: the record set. The "
         "mechanism's code links to its section."}},
       {"table08_cap",
-       {"NTC 2008 (Circ. 617/2009 C8A.4), a titolo di confronto. PGA_C con la lettura delle verifiche NTC 2018: "
-        "resistenza, q per l'ag dello SLV a cui la domanda senza q eguaglia a0*; spostamento, l'ag dello SLV a cui il "
-        "D/C della verifica vale 1.",
-        "NTC 2008 (Circ. 617/2009 C8A.4), for comparison. PGA_C with the reading of the NTC 2018 checks: strength, q "
-        "times the SLV ag at which the demand without q equals a0*; displacement, the SLV ag at which the check's D/C "
-        "equals 1."}},
+       {"NTC 2008 (Circ. 617/2009 C8A.4), a titolo di confronto. PGA_C = ag(TR_C), TR_C il periodo di ritorno a cui "
+        "la verifica NTC 2008 stessa raggiunge D/C = 1, come per le NTC 2018.",
+        "NTC 2008 (Circ. 617/2009 C8A.4), for comparison. PGA_C = ag(TR_C), TR_C the return period at which the NTC "
+        "2008 check itself reaches D/C = 1, as for NTC 2018."}},
       {"id", {"Cod.", "Id"}},
       {"wall_mech", {"Parete: meccanismo", "Wall: mechanism"}},
       {"records", {"Accelerogrammi", "Records"}},
@@ -673,7 +672,31 @@ void add_interventions(Lang L, const BuildingAssessment& b, DocumentBuilder& d) 
   }
 }
 
+void add_warnings(Lang L, const BuildingAssessment& b, DocumentBuilder& d) {
+  if (b.warnings.empty()) return;
+  d.add_heading(bt(L, "warnings"));
+  d.add_paragraph(msg(L, "warnings.intro"));
+  std::vector<Inline> items;
+  for (const std::string& w : b.warnings)
+    items.push_back({Span{L == Lang::it ? relazione::decimal_comma(localise(L, w)) : w}});
+  d.add_list(items, "warnings");
+}
+
 }  // namespace
+
+Document building_summary(const BuildingAssessment& b, const ReportOptions& options) {
+  const Lang L = options.lang;
+  const BuildingCase& bc = b.building;
+  DocumentBuilder d(bt(L, "sum_title"), to_string(L));
+  d.set_subtitle((bc.project.empty() ? "" : bc.project + ". ") + msg(L, "front.case_file") + ": " +
+                 detail::shown_file(bc.file) + ". " + msg(L, "sum.full"));
+  add_verdict(L, b, d);
+  facade_site_section(b.results.front().a, options, d);
+  add_summary(L, b, d, options);
+  add_interventions(L, b, d);
+  add_warnings(L, b, d);
+  return d.document();
+}
 
 Document building_document(const BuildingAssessment& b, const ReportOptions& options) {
   const Lang L = options.lang;
@@ -791,14 +814,7 @@ Document building_document(const BuildingAssessment& b, const ReportOptions& opt
     }
     d.set_id_prefix("");
   }
-  if (!b.warnings.empty()) {
-    d.add_heading(bt(L, "warnings"));
-    d.add_paragraph(msg(L, "warnings.intro"));
-    std::vector<Inline> items;
-    for (const std::string& w : b.warnings)
-      items.push_back({Span{L == Lang::it ? relazione::decimal_comma(localise(L, w)) : w}});
-    d.add_list(items, "warnings");
-  }
+  add_warnings(L, b, d);
   {
     relazione::Ctx c{a0, mo, L, d, &readings};
     relazione::add_legend(c);

@@ -106,15 +106,19 @@ void add_safety_indices(Ctx& c) {
     Cell zeta = c.num(s.index.zeta, 3);
     zeta.tone = verdict_tone(s.outcome());  // by the verdict of its approach (issue 41)
     Cell trc = c.num(s.index.TR_capacity, 0), ratio = c.num(s.index.TR_ratio, 2);
-    std::string note;
+    std::vector<std::string> notes;
     if (s.index.extrapolated) {
       any_extrapolated = true;
-      const bool above = s.index.TR_capacity > 2475.0;
+      const bool above = s.index.TR_capacity > tr_max_years;
       trc.text = above ? "> 2475" : "< 30";
-      ratio.text = (above ? "> " : "< ") + c.n((above ? 2475.0 : 30.0) / s.index.TR_demand, 2);
-      note = c.t(above ? "zeta.tr_above" : "zeta.tr_below");
+      ratio.text = (above ? "> " : "< ") + c.n((above ? tr_max_years : tr_min_years) / s.index.TR_demand, 2);
+      notes.push_back(c.t(above ? "zeta.tr_above" : "zeta.tr_below"));
     }
-    if (!std::isfinite(s.index.ag_capacity_g)) note = c.t("zeta.never");
+    if (s.index.bound != 0) notes.push_back(c.t(s.index.bound > 0 ? "zeta.bound_above" : "zeta.bound_below"));
+    if (s.index.shape_held) notes.push_back(c.t("zeta.shape_held"));
+    if (s.index.non_monotonic) notes.push_back(msgf(c.L, "zeta.non_monotonic", c.n(s.index.other_crossing_TR, 0)));
+    std::string note;
+    for (const std::string& n : notes) note += (note.empty() ? "" : "; ") + n;
     rows.push_back({Cell(code_name(s.code)), Cell(method), Cell(where), c.num(s.index.ag_capacity_g, 4), c.num(s.index.ag_demand_g, 4),
                     zeta, trc, c.num(s.index.TR_demand, 0), ratio, Cell(note)});
   }

@@ -88,6 +88,7 @@ void add_mechanism(Ctx& c);              // each candidate that governs a method
 void add_checks(Ctx& c);                 // the checks tables
 void add_safety_indices(Ctx& c);         // zetaE and TR_C/TR_D
 void add_dynamic(Ctx& c);                // the dynamic analysis of each candidate that governs it
+void add_dynamic_summary(Ctx& c);        // its model in one line, records, results per restitution, other candidates
 /// The records of `x` (table, flags, selection, compatibility figure `id`): a building's shared set, once.
 void add_record_set(Ctx& c, const FacadeAssessment& x, const std::string& id);
 void add_comparison(Ctx& c);             // D/C by approach, bars

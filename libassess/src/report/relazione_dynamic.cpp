@@ -359,6 +359,24 @@ void add_record_set(Ctx& c, const FacadeAssessment& x, const std::string& id) {
   add_compatibility(c, x, id);
 }
 
+void add_dynamic_summary(Ctx& c) {
+  const FacadeAssessment& a = c.a;
+  if (!a.dynamic) return;
+  c.d.add_heading(c.t("dyn.heading"));
+  if (!a.dynamic_applies) {
+    c.d.add_paragraph(c.t("dyn.na") + ": " + c.loc(a.dynamic_note));
+    return;
+  }
+  const FacadeAssessment& x = governing_dynamics(a);
+  c.d.add_paragraph(c.t("dyn.model_heading") + ": " + c.loc(x.dynamic_note) + ".");
+  c.d.add_heading(c.t("dyn.input_heading"), 3, false);
+  add_records(c, x);
+  if (c.o.shared_records.empty()) add_compatibility(c, x);
+  c.d.add_heading(c.t("dyn.results_heading"), 3, false);
+  add_summary(c, x);
+  add_others(c, x);
+}
+
 void add_dynamic(Ctx& c) {
   const FacadeAssessment& a = c.a;
   if (!a.dynamic) return;
