@@ -41,12 +41,16 @@ struct RunArgs {
 // The terminal summary's width: 120 columns, or one line per table row (--wide).
 std::size_t text_width(const RunArgs& a) { return a.wide ? std::size_t(100000) : std::size_t(120); }
 
-// The files the run wrote, one line each, in the summary's language.
+ReportFiles report_files(const RunArgs& a) { return {a.html, a.pdf, a.docx, a.txt}; }
+
+// The files the run wrote, one line each, in the summary's language: the
+// relazione's and, beside each, its tabulati di calcolo (issue 36).
 std::string files_written(const RunArgs& a) {
   const Lang L = parse_lang(a.lang);
   std::string s;
   for (const auto& [file, key] : {std::pair{a.html, "out.html"}, {a.pdf, "out.pdf"}, {a.docx, "out.docx"}, {a.txt, "out.txt"}})
-    if (!file.empty()) s += (s.empty() ? "\n" : "") + msg(L, key) + ": " + file + "\n";
+    if (!file.empty())
+      s += (s.empty() ? "\n" : "") + msg(L, key) + ": " + file + "; " + msg(L, "out.tabulati") + ": " + tabulati_path(file) + "\n";
   return s;
 }
 
@@ -64,11 +68,13 @@ std::string read_text(const std::string& path) { return read_input_file(path, in
 // --pdf, --docx or --txt that names an input of the run (the case file itself), a directory,
 // a link out of its folder (output_file.hpp; written the same way at the end).
 void check_outputs(const RunArgs& a) {
-  if (!a.html.empty()) check_output_file(a.html, "--html");
-  if (!a.pdf.empty()) check_output_file(a.pdf, "--pdf");
-  if (!a.docx.empty()) check_output_file(a.docx, "--docx");
-  if (!a.txt.empty()) check_output_file(a.txt, "--txt");
-  if (!a.html.empty() && a.html == a.pdf) throw InputError("--html and --pdf name the same file '" + a.html + "'");
+  // Each file of the relazione and of its tabulati (NAME-tabulati.EXT beside it, issue 36).
+  const std::vector<std::pair<std::string, std::string>> outs = report_outputs(report_files(a));
+  for (const auto& [option, path] : outs) check_output_file(path, option);
+  for (std::size_t i = 0; i < outs.size(); ++i)
+    for (std::size_t j = i + 1; j < outs.size(); ++j)
+      if (outs[i].second == outs[j].second)
+        throw InputError(outs[i].first + " and " + outs[j].first + " name the same file '" + outs[i].second + "'");
 }
 
 // --expand DIR: each expanded case as DIR/<id>.json, written whole through
@@ -110,6 +116,9 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
   FacadeOptions opt;
   opt.keep_going = a.keep_going;
   opt.histories = a.wants_report();
+  // The review (issue 36) is what the summary and the relazione print; --json alone does not need it.
+  opt.review = !a.json || a.wants_report();
+  opt.review_records = a.wants_report();
   const BuildingAssessment res = assess_building(std::move(bc), opt);
   print_warnings(res.warnings);
   if (!a.expand.empty()) {
@@ -121,7 +130,7 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
     ReportOptions ro;
     ro.lang = lang;
     ro.case_text = read_text(a.file);
-    write_report_files(building_document(res, ro), {a.html, a.pdf, a.docx, a.txt});
+    write_report_files(building_relazione(res, ro), report_files(a));
   }
   if (a.json) {
     nlohmann::json j = building_json(res);
@@ -150,6 +159,8 @@ void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_tex
   FacadeOptions opt;
   opt.keep_going = a.keep_going;
   opt.histories = a.wants_report();
+  opt.review = !a.json || a.wants_report();
+  opt.review_records = a.wants_report();
   FacadeAssessment res = assess_facade(c, opt);
   // Issue 23: the tie rods ("ties" or "design"): before/after and their checks;
   // given ties also decide the dynamic check rows.
@@ -183,7 +194,7 @@ void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_tex
     ro.fragility = prob;
     if (ties) ro.ties = &*ties;
     ro.case_text = case_text;
-    write_report_files(facade_document(res, ro), {a.html, a.pdf, a.docx, a.txt});
+    write_report_files(facade_relazione(res, ro), report_files(a));
   }
   if (a.json) {
     nlohmann::json j = facade_json(res);
@@ -214,11 +225,16 @@ void add_run_command(CLI::App& app) {
                                        "a building case (key \"walls\"): every mechanism, safety indices, one relazione");
   cmd->add_option("case", args->file, "case file (JSON, see docs/user/case-file.md)")->required()->check(CLI::ExistingFile);
   cmd->add_flag("--json", args->json, "print the report as JSON");
-  cmd->add_option("--html", args->html, "also write a self-contained HTML report with plots to this file");
-  cmd->add_option("--pdf", args->pdf, "also print the same report to a PDF file (A4, headless Chromium)");
+  cmd->add_option("--html", args->html,
+                  "also write the relazione as a self-contained HTML page to this file, and its tabulati di calcolo "
+                  "beside it (NAME-tabulati.html)");
+  cmd->add_option("--pdf", args->pdf,
+                  "also print the relazione to a PDF file (A4, headless Chromium), its tabulati to NAME-tabulati.pdf");
   cmd->add_option("--docx", args->docx,
-                  "also write the same relazione as an editable Word document (pandoc, Debian package pandoc)");
-  cmd->add_option("--txt", args->txt, "also write the same relazione as plain text (120 columns)");
+                  "also write the relazione as an editable Word document (pandoc, Debian package pandoc), its tabulati "
+                  "to NAME-tabulati.docx");
+  cmd->add_option("--txt", args->txt,
+                  "also write the relazione as plain text (120 columns), its tabulati to NAME-tabulati.txt");
   cmd->add_option("--lang", args->lang,
                   "language of the terminal summary and of the report: it (default: the relazione is filed in Italy) or en")
 ;

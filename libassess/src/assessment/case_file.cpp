@@ -16,6 +16,7 @@
 #include "assess/support/units.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -946,7 +947,41 @@ CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
   // Hook for the façade issue (dynamic rocking): kept raw, parsed there.
   if (root.has("dynamic")) c.dynamic = doc.at("dynamic");
   c.defaults = case_defaults(doc, c);
+  // Issue 36, item 5: the knowledge level has one source, the case key; the
+  // investigations' text is compared with it (C8.5.4: LC and FC go together).
+  for (std::size_t at = c.report.investigations.find("LC"); at != std::string::npos;
+       at = c.report.investigations.find("LC", at + 2)) {
+    const std::string& t = c.report.investigations;
+    const bool word_start = at == 0 || !std::isalnum(static_cast<unsigned char>(t[at - 1]));
+    std::size_t d = at + 2;
+    while (d < t.size() && t[d] == ' ') ++d;
+    if (!word_start || d >= t.size() || t[d] < '1' || t[d] > '3') continue;
+    if (d + 1 < t.size() && std::isalnum(static_cast<unsigned char>(t[d + 1]))) continue;
+    const std::string lc = std::string("LC") + t[d];
+    if (std::find(c.knowledge_levels_stated.begin(), c.knowledge_levels_stated.end(), lc) ==
+        c.knowledge_levels_stated.end())
+      c.knowledge_levels_stated.push_back(lc);
+  }
+  char fc[32];
+  std::snprintf(fc, sizeof fc, "%.2f", c.options.FC);
+  for (const std::string& lc : knowledge_level_conflict(c))
+    c.warnings.push_back("the investigations' text (/report/investigations) names " + lc + " but the case adopts " +
+                         (c.knowledge_level == "given" ? std::string("FC = ") + fc : c.knowledge_level + " (FC = " + fc + ")") +
+                         ": the knowledge level is the case key \"knowledge_level\" (or \"FC\"); correct the text or the key");
+  c.source = doc;
   return c;
+}
+
+std::vector<std::string> knowledge_level_conflict(const CaseFile& c) {
+  std::vector<std::string> out;
+  for (const std::string& lc : c.knowledge_levels_stated) {
+    const code_rules::KnowledgeLevel k = lc == "LC1"   ? code_rules::KnowledgeLevel::LC1
+                                         : lc == "LC2" ? code_rules::KnowledgeLevel::LC2
+                                                       : code_rules::KnowledgeLevel::LC3;
+    const bool differs = c.knowledge_level == "given" ? code_rules::confidence_factor(k) != c.options.FC : lc != c.knowledge_level;
+    if (differs) out.push_back(lc);
+  }
+  return out;
 }
 
 CaseFile read_case_file(const std::string& path) { return parse_case(read_json_file(path), path); }

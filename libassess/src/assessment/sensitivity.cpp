@@ -59,20 +59,24 @@ std::vector<SensitivityRow> adopted_sensitivity(const FacadeAssessment& a) {
     out.push_back(row("FC", fc, fc == FC0, fc == FC0 ? m->max_dc : rerun(c)));
   }
   if (method != "nonlinear") return out;
-  const double f0 = a.kase.options.dSLV_over_d0;
-  for (double f : {0.30, f0, 0.50}) {
+  // The readings of the limit state whose check governs the method (issue 36:
+  // varying d_SLV and xi at SLV where an SLC check governs moved nothing).
+  const bool slc = m->governing >= 0 && a.verdict.rows[std::size_t(m->governing)].limit_state == "SLC";
+  const double f0 = slc ? a.kase.options.dSLC_over_d0 : a.kase.options.dSLV_over_d0;
+  const std::vector<double> fs = slc ? std::vector<double>{0.50, f0, 0.70} : std::vector<double>{0.30, f0, 0.50};
+  for (double f : fs) {
     CaseFile c = a.kase;
-    c.options.dSLV_over_d0 = f;
-    out.push_back(row("dSLV_over_d0", f, f == f0, f == f0 ? m->max_dc : rerun(c)));
+    (slc ? c.options.dSLC_over_d0 : c.options.dSLV_over_d0) = f;
+    out.push_back(row(slc ? "dSLC_over_d0" : "dSLV_over_d0", f, f == f0, f == f0 ? m->max_dc : rerun(c)));
   }
-  const double xi0 = a.kase.checks.damping_SLV_pct;
-  std::vector<double> xis{5.0, xi0, 10.0};
+  const double xi0 = slc ? a.kase.checks.damping_SLC_pct : a.kase.checks.damping_SLV_pct;
+  std::vector<double> xis{5.0, xi0, slc ? 15.0 : 10.0};
   std::sort(xis.begin(), xis.end());
   xis.erase(std::unique(xis.begin(), xis.end()), xis.end());
   for (double xi : xis) {
     CaseFile c = a.kase;
-    c.checks.damping_SLV_pct = xi;
-    out.push_back(row("xi_SLV_pct", xi, xi == xi0, xi == xi0 ? m->max_dc : rerun(c)));
+    (slc ? c.checks.damping_SLC_pct : c.checks.damping_SLV_pct) = xi;
+    out.push_back(row(slc ? "xi_SLC_pct" : "xi_SLV_pct", xi, xi == xi0, xi == xi0 ? m->max_dc : rerun(c)));
   }
   return out;
 }

@@ -75,6 +75,7 @@ void KinematicOptions::validate() const {
   if (!(d_SLV_cap > 0.0)) throw InputError("d_SLV cap: expected > 0 m");
   if (!(d_SLC_cap > 0.0)) throw InputError("d_SLC cap: expected > 0 m");
   if (!(dSLV_over_d0 > 0.0 && dSLV_over_d0 < 1.0)) throw InputError("d_SLV / d0*: expected in (0, 1)");
+  if (!(dSLC_over_d0 > 0.0 && dSLC_over_d0 < 1.0)) throw InputError("d_SLC / d0*: expected in (0, 1)");
   if (!(rotation_cap > 0.0)) throw InputError("rotation cap: expected > 0 rad");
 }
 
@@ -171,6 +172,9 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
 
   // Linear kinematic analysis.
   R.loads = load_works(chain, q0);
+  if (opt.lumped_masses)  // the alternative of the relazione's modelling choices (issue 36)
+    for (LoadWork& w : R.loads)
+      if (w.load.type == LoadType::SelfWeight && w.load.seismic) w.W_dx2 = w.load.weight * w.dx * w.dx;
   Eigen::Vector2d Wp(0.0, 0.0);
   for (const LoadWork& w : R.loads) {
     R.sum_W_dx += w.W_dx;
@@ -316,7 +320,7 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
     if (R.d0_star_bound < R.d0_star) {
       capped.du_cap = std::min(opt.du_cap, code_rules::du_over_d0_2008 * R.d0_star_bound);
       capped.d_SLV_cap = std::min(opt.d_SLV_cap, opt.dSLV_over_d0 * R.d0_star_bound);
-      capped.d_SLC_cap = std::min(opt.d_SLC_cap, code_rules::dSLC_over_d0_2018 * R.d0_star_bound);
+      capped.d_SLC_cap = std::min(opt.d_SLC_cap, opt.dSLC_over_d0 * R.d0_star_bound);
     }
   }
 
@@ -401,7 +405,7 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
     c.dSLV = std::min({opt.dSLV_over_d0 * R.d0_star, capped.d_SLV_cap, d_tie});
     c.aSLV = a_star_at(c.dSLV);
     c.TSLV = code_rules::T_SLV_factor_of_pi * units::pi * std::sqrt(c.dSLV / c.aSLV);
-    c.dSLC = std::min({code_rules::dSLC_over_d0_2018 * R.d0_star, capped.d_SLC_cap, d_tie});
+    c.dSLC = std::min({opt.dSLC_over_d0 * R.d0_star, capped.d_SLC_cap, d_tie});
     c.aSLC = a_star_at(c.dSLC);
     c.TSLC = code_rules::T_SLC_factor_of_pi * units::pi * std::sqrt(c.dSLC / c.aSLC);
     return c;

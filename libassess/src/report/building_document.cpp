@@ -42,6 +42,14 @@ const std::string& bt(Lang L, const std::string& key) {
       {"verdict_none", {"L'edificio è senza esito: nessun meccanismo fallisce, ma {} meccanismi su {} sono senza esito con il metodo adottato",
                         "The building has no verdict: no mechanism fails, but {} of {} mechanisms have no verdict by the adopted method"}},
       {"verdict_undecided", {"senza esito: {}", "without a verdict: {}"}},
+      {"verdict_fragile", {"esiti non solidi secondo la valutazione dei risultati: {} (si vedano gli interventi e le conclusioni)",
+                           "verdicts the evaluation calls not sound: {} (see the interventions and the conclusions)"}},
+      {"int_fragile", {"I meccanismi seguenti hanno un esito che la valutazione dei risultati giudica non solido: si raccomanda di approfondire il rilievo e le indagini che lo decidono o di considerare un intervento di presidio.",
+                       "The mechanisms below have a verdict the evaluation of the results calls not sound: a deeper survey of what decides it, or a preventive intervention, is recommended."}},
+      {"concl_all_robust", {"La valutazione dei risultati giudica solido l'esito di ogni meccanismo.",
+                            "The evaluation of the results calls every mechanism's verdict sound."}},
+      {"concl_fragile", {"L'esito dei meccanismi seguenti non è solido secondo la valutazione dei risultati; le conclusioni valgono con questa riserva:",
+                         "The verdict of the mechanisms below is not sound by the evaluation of the results; the conclusions hold with this qualification:"}},
       {"verdict_zeta", {"indicatore di rischio dell'edificio ζE,edificio = {} ({}), il più piccolo ζE dei meccanismi nel loro approccio adottato",
                         "the building's safety index ζE,building = {} ({}), the smallest ζE of the mechanisms in their adopted approach"}},
       {"verdict_dc", {"D/C massimo del metodo adottato: {} ({})", "largest D/C of the adopted method: {} ({})"}},
@@ -486,6 +494,13 @@ Inline verdict_sentence(Lang L, const BuildingAssessment& b) {
     tail += "; " + fmt::format(fmt::runtime(bt(L, "verdict_zeta")), fx(L, v.zeta, 3), bc.mechanisms[std::size_t(v.zeta_mechanism)].id);
   if (v.dc_mechanism >= 0)
     tail += "; " + fmt::format(fmt::runtime(bt(L, "verdict_dc")), fx(L, v.max_dc, 3), bc.mechanisms[std::size_t(v.dc_mechanism)].id);
+  // The verdicts the judgement calls not robust (issue 36, item 4).
+  std::string fragile;
+  for (std::size_t i = 0; i < b.results.size(); ++i) {
+    const std::optional<Judgement>& j = b.results[i].a.judgement;
+    if (j && !j->robust && j->outcome != Outcome::no_verdict) fragile += (fragile.empty() ? "" : ", ") + bc.mechanisms[i].id;
+  }
+  if (!fragile.empty()) tail += "; " + fmt::format(fmt::runtime(bt(L, "verdict_fragile")), fragile);
   out.push_back(Span{tail + "."});
   return out;
 }
@@ -577,6 +592,7 @@ void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d, const 
     if (dy && dy->has_checks) {
       Cell c = dc_cell(L, dy->dc, dy->outcome());
       if (gov_of("NTC2018", "dynamic", i)) c.text = "★ " + c.text;
+      if (dy->dc == 0.0) c.note = msg(L, "dyn.no_uplift");  // the wall never lifted: a computed zero, said why
       row.push_back(c);
     } else {
       row.push_back(num(L, std::nan(""), 3));
@@ -644,10 +660,31 @@ void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d, const 
   if (b.tie_index.any_ties) add_ties_summary(L, b, d);
 }
 
-// Interventions (issue 28, item 4): where any mechanism fails, which and what it needs.
-void add_interventions(Lang L, const BuildingAssessment& b, DocumentBuilder& d) {
-  d.add_heading(bt(L, "interventions"));
-  if (b.verdict.failing.empty() && !b.tie_index.any_ties) {
+// The mechanisms whose verdict the judgement calls not robust (issue 36, item
+// 4): each with its verdict and why, as the building's interventions and
+// conclusions state them.
+std::vector<Inline> fragile_items(Lang L, const BuildingAssessment& b, const ReportOptions& options) {
+  std::vector<Inline> items;
+  for (std::size_t i = 0; i < b.results.size(); ++i) {
+    const FacadeAssessment& a = b.results[i].a;
+    if (!a.judgement || a.judgement->robust || a.judgement->outcome == Outcome::no_verdict) continue;
+    DocumentBuilder scratch("", to_string(L));
+    relazione::Ctx c{a, options, L, scratch, nullptr};
+    const BuildingMechanism& m = b.building.mechanisms[i];
+    Span id(m.id, true);
+    id.link = m.id;
+    items.push_back({id, Span{" (" + m.wall + ": " + m.name + "): "}, c.outcome_span(a.judgement->outcome),
+                     Span{", D/C = " + fx(L, a.judgement->dc, 3) + " — " + relazione::judgement_qualifier(c, *a.judgement)}});
+  }
+  return items;
+}
+
+// Interventions (issues 28, 36): where any mechanism fails, which and what it
+// needs; where a verdict is not robust, which and why.
+void add_interventions(Lang L, const BuildingAssessment& b, DocumentBuilder& d, const ReportOptions& options) {
+  d.add_heading(bt(L, "interventions"), 2, true, true, "interventions");
+  const std::vector<Inline> fragile = fragile_items(L, b, options);
+  if (b.verdict.failing.empty() && !b.tie_index.any_ties && fragile.empty()) {
     d.add_paragraph(bt(L, "int_none"));
     return;
   }
@@ -666,10 +703,90 @@ void add_interventions(Lang L, const BuildingAssessment& b, DocumentBuilder& d) 
     }
   }
   if (!items.empty()) d.add_list(items);
+  if (!fragile.empty()) {
+    d.add_paragraph(bt(L, "int_fragile"));
+    d.add_list(fragile);
+  }
   if (b.tie_index.any_ties) {
     d.add_paragraph(tie_index_text(L, b, false));
     d.add_paragraph(tie_index_text(L, b, true));
   }
+}
+
+// The modelling choices of the building (issue 36, item 3): one table, each
+// choice and alternative with the mechanisms it applies to, the largest
+// change of their adopted D/C and the mechanisms whose verdict it changes;
+// each mechanism's choices in full in the tabulati; the defaults the case did
+// not give, once.
+void add_building_choices(Lang L, const BuildingAssessment& b, DocumentBuilder& d, const ReportOptions& options) {
+  d.add_heading(msg(L, "choice.heading"), 2, false, true, "choices");
+  d.add_paragraph(msg(L, "choice.intro_building"));
+  struct Group {
+    std::string key, alternative, adopted;
+    bool same_adopted = true;
+    std::vector<std::string> members, flips;
+    double worst = 0.0;  // the largest |D/C change|
+    std::string worst_text;
+  };
+  std::vector<Group> groups;
+  for (std::size_t i = 0; i < b.results.size(); ++i) {
+    const FacadeAssessment& a = b.results[i].a;
+    DocumentBuilder scratch("", to_string(L));
+    relazione::Ctx c{a, options, L, scratch, nullptr};
+    for (const ModellingChoice& x : a.choices) {
+      static const std::set<std::string> by_value{"FC", "dSLV_over_d0", "dSLC_over_d0", "xi_SLV_pct", "xi_SLC_pct",
+                                                  "friction_activation", "seat_friction", "selection_window"};
+      const std::string alt = by_value.count(x.key) ? relazione::choice_value(c, x, true) : msg(L, "choice." + x.key + ".alt");
+      const std::string adopted = by_value.count(x.key) ? relazione::choice_value(c, x, false) : msg(L, "choice." + x.key + ".adopted");
+      auto g = std::find_if(groups.begin(), groups.end(), [&](const Group& y) { return y.key == x.key && y.alternative == alt; });
+      if (g == groups.end()) {
+        groups.push_back({x.key, alt, adopted, true, {}, {}, -1.0, ""});
+        g = groups.end() - 1;
+      }
+      if (g->adopted != adopted) g->same_adopted = false;
+      const std::string id = b.building.mechanisms[i].id;
+      g->members.push_back(id);
+      if (x.flips()) g->flips.push_back(id);
+      if (x.computed()) {
+        const double change = std::isfinite(x.dc) && std::isfinite(x.dc_alternative) ? std::abs(x.dc_alternative - x.dc)
+                                                                                      : std::numeric_limits<double>::infinity();
+        if (change > g->worst) {
+          g->worst = change;
+          g->worst_text = id + ": " + fx(L, x.dc, 3) + " → " + fx(L, x.dc_alternative, 3) + " (" + msg(L, "method." + x.method) + ")";
+        }
+      }
+    }
+  }
+  auto join = [](const std::vector<std::string>& xs) {
+    std::string s;
+    for (const std::string& x : xs) s += (s.empty() ? "" : ", ") + x;
+    return s;
+  };
+  std::vector<std::vector<Cell>> rows;
+  for (const Group& g : groups) {
+    Cell flips(g.flips.empty() ? msg(L, "choice.none_changes") : join(g.flips));
+    if (!g.flips.empty()) flips.tone = Tone::fail;
+    rows.push_back({Cell(relazione::choice_name(L, g.key), relazione::choice_where(L, g.key)),
+                    Cell(g.same_adopted ? g.adopted : msg(L, "choice.per_mechanism")), Cell(g.alternative), Cell(join(g.members)),
+                    Cell(g.worst_text.empty() ? "—" : g.worst_text), flips});
+  }
+  // The defaults the case did not give (issue 41), once for the building.
+  std::vector<std::string> seen;
+  for (const BuildingMechanismResult& r : b.results)
+    for (const CaseDefault& x : assessment_defaults(r.a)) {
+      if (std::find(seen.begin(), seen.end(), x.path) != seen.end()) continue;
+      seen.push_back(x.path);
+      bool covered = false;
+      for (const BuildingMechanismResult& q : b.results)
+        for (const ModellingChoice& y : q.a.choices) covered = covered || y.case_key == x.path;
+      if (covered) continue;
+      Cell name(msg(L, x.effect), msgf(L, "choice.case_key", x.path));
+      Cell value(L == Lang::it ? relazione::decimal_comma(localise(L, x.value)) : x.value, msg(L, "choice.default"));
+      rows.push_back({name, value, Cell("—"), Cell("—"), Cell("—"), Cell(msg(L, "choice.no_alternative"))});
+    }
+  d.add_cell_table({Cell(msg(L, "choice.col_choice")), Cell(msg(L, "choice.col_adopted")), Cell(msg(L, "choice.col_alternative")),
+                    Cell(msg(L, "choice.col_members")), Cell(msg(L, "choice.col_largest")), Cell(msg(L, "choice.col_changes"))},
+                   rows, msg(L, "choice.cap_building"), "choices");
 }
 
 void add_warnings(Lang L, const BuildingAssessment& b, DocumentBuilder& d) {
@@ -693,15 +810,19 @@ Document building_summary(const BuildingAssessment& b, const ReportOptions& opti
   add_verdict(L, b, d);
   facade_site_section(b.results.front().a, options, d);
   add_summary(L, b, d, options);
-  add_interventions(L, b, d);
+  add_interventions(L, b, d, options);
   add_warnings(L, b, d);
   return d.document();
 }
 
-Document building_document(const BuildingAssessment& b, const ReportOptions& options) {
+Relazione building_relazione(const BuildingAssessment& b, const ReportOptions& options) {
   const Lang L = options.lang;
   const BuildingCase& bc = b.building;
   DocumentBuilder d(bt(L, "title"), to_string(L));
+  DocumentBuilder t(msg(L, "tab.title"), to_string(L));
+  d.set_key(relazione_key);
+  t.set_key(tabulati_key);
+  t.set_number_prefix("T");
   std::set<std::string> readings;
   const ReportInfo& info = bc.report;
   std::string meta;
@@ -709,6 +830,7 @@ Document building_document(const BuildingAssessment& b, const ReportOptions& opt
   meta += bt(L, "generated") + " " + ASSESS_VERSION + ", " + bt(L, "date") + " " +
           (options.date.empty() ? detail::today_utc() : options.date) + ".";
   d.set_subtitle(meta);
+  t.set_subtitle(meta);
   {
     std::vector<std::vector<Cell>> rows;
     auto row = [&](const char* key, const std::string& v) {
@@ -731,16 +853,17 @@ Document building_document(const BuildingAssessment& b, const ReportOptions& opt
   add_verdict(L, b, d);
   d.add_contents(msg(L, "doc.contents"), 2);
 
-  // The opening sections, as the single relazione writes them, from the first mechanism's case.
+  // The general part, as the single relazione writes it, from the first mechanism's case.
   const FacadeAssessment& a0 = b.results.front().a;
   ReportOptions mo = options;
   mo.case_text.clear();
   mo.fragility.reset();
   {
-    relazione::Ctx c{a0, mo, L, d, &readings};
-    d.add_heading(bt(L, "premessa"), 2, false);
+    relazione::Ctx c{a0, mo, L, d, &readings, true, true};
+    d.add_heading(bt(L, "premessa"), 2, false, true, "premessa");
     d.add_paragraph(bt(L, "premessa_text"));
     d.add_paragraph(bt(L, "intro"));
+    d.add_paragraph(relazione::tabulati_sentence(L));
     relazione::add_normativa(c);
     relazione::add_building_description(c);
     add_mechanism_list(L, b, d);
@@ -754,32 +877,50 @@ Document building_document(const BuildingAssessment& b, const ReportOptions& opt
     if (!(m.record_set == RecordSetKind::shared && m.record_group == bc.mechanisms.front().record_group)) one_set = false;
   }
   if (!one_set && !a0.record_psa.empty()) d.add_paragraph(bt(L, "site_records_note"));
+  add_building_choices(L, b, d, mo);
   {
-    relazione::Ctx c{a0, mo, L, d, &readings};
+    relazione::Ctx c{a0, mo, L, d, &readings, true, true};
     relazione::add_formulas(c);
   }
   add_summary(L, b, d, options);
 
+  // The tabulati: what they hold, then each mechanism's part in the order of the body.
+  t.add_contents(msg(L, "doc.contents"), 2);
+  {
+    relazione::Ctx x{a0, mo, L, t, &readings, true, true};
+    relazione::add_tab_intro(x);
+  }
+  const TieInterventionResult* any_ties = nullptr;
   for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
     const BuildingMechanism& m = bc.mechanisms[i];
     const BuildingMechanismResult& r = b.results[i];
-    d.set_id_prefix("");
+    for (DocumentBuilder* x : {&d, &t}) {
+      x->set_id_prefix("");
+      x->set_heading_shift(0);
+    }
     d.add_heading(m.id + " — " + m.wall + ": " + m.name, 2, true, true, m.id);
     d.add_paragraph(bt(L, "mech_type") + ": " + mechanism_name(L, m.kase.mechanism.type) + ". " + bt(L, "mech_path") +
                     ": " + m.json_path + ". " + bt(L, "mech_records") + ": " + record_set_text(L, b, i) + ".");
-    d.set_id_prefix(m.id + "-");
-    d.set_heading_shift(1);
+    t.add_heading(m.id + " — " + m.wall + ": " + m.name, 2, true, true, m.id);
+    t.add_paragraph(Inline{reference(msg(L, "tab.mechanism_in_body"), m.id, relazione_key)}, "note");
+    for (DocumentBuilder* x : {&d, &t}) {
+      x->set_id_prefix(m.id + "-");
+      x->set_heading_shift(1);
+    }
     mo.ties = r.ties ? &*r.ties : nullptr;
+    if (r.ties && !any_ties) any_ties = &*r.ties;
     mo.shared_records = m.record_set == RecordSetKind::shared ? m.record_group : "";
-    facade_mechanism_sections(r.a, mo, d, &readings);
-    d.set_heading_shift(0);
-    d.set_id_prefix("");
+    facade_mechanism_sections(r.a, mo, d, &t, &readings);
+  }
+  for (DocumentBuilder* x : {&d, &t}) {
+    x->set_heading_shift(0);
+    x->set_id_prefix("");
   }
   mo.ties = nullptr;
   mo.shared_records.clear();
-  add_interventions(L, b, d);
+  add_interventions(L, b, d, options);
 
-  d.add_heading(bt(L, "conclusioni"));
+  d.add_heading(bt(L, "conclusioni"), 2, true, true, "conclusions");
   d.add_paragraph(verdict_sentence(L, b));
   for (const BuildingGoverning& g : b.governing) {
     if (g.code != "NTC2018") continue;
@@ -790,44 +931,47 @@ Document building_document(const BuildingAssessment& b, const ReportOptions& opt
                     bt(L, "satisfied_of") + ": " + std::to_string(g.satisfied) + " " + bt(L, "of") + " " +
                     std::to_string(g.assessed) + ".");
   }
+  // The mechanisms' judgements reach the conclusions (issue 36, item 4).
+  const std::vector<Inline> fragile = fragile_items(L, b, options);
+  if (fragile.empty()) {
+    d.add_paragraph(bt(L, "concl_all_robust"));
+  } else {
+    d.add_paragraph(bt(L, "concl_fragile"));
+    d.add_list(fragile);
+  }
   if (b.tie_index.any_ties) {
     d.add_paragraph(tie_index_text(L, b, false));
     d.add_paragraph(tie_index_text(L, b, true));
+  }
+  {
+    std::vector<std::pair<std::string, const FacadeAssessment*>> ms;
+    for (std::size_t i = 0; i < bc.mechanisms.size(); ++i)
+      ms.push_back({bc.mechanisms[i].id + " " + bc.mechanisms[i].wall + ": " + bc.mechanisms[i].name, &b.results[i].a});
+    relazione::Ctx c{a0, mo, L, d, &readings, true, true};
+    relazione::add_code_chapter(c, ms);
+  }
+  add_warnings(L, b, d);
+  {
+    relazione::Ctx c{a0, mo, L, d, &readings, true, true};
+    relazione::add_legend(c);
   }
   d.add_signature({bt(L, "place_date") + ": " + (info.place.empty() ? "______________________" : info.place + ", ______________"),
                    bt(L, "engineer") + ": " + (info.engineer.empty() ? "______________________" : info.engineer) +
                        (info.registration.empty() ? "" : " (" + info.registration + ")")});
 
-  // Appendices.
-  bool any_candidates = false;
-  for (const BuildingMechanismResult& r : b.results) any_candidates = any_candidates || r.a.kinematic.candidates.size() > 1;
-  if (any_candidates) {
-    d.add_heading(bt(L, "appendix_candidates"));
-    for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
-      const BuildingMechanismResult& r = b.results[i];
-      if (r.a.kinematic.candidates.size() < 2) continue;
-      d.set_id_prefix(bc.mechanisms[i].id + "-app-");
-      d.add_heading(bc.mechanisms[i].id + " — " + bc.mechanisms[i].wall + ": " + bc.mechanisms[i].name, 3, false);
-      d.set_heading_shift(1);
-      facade_candidates_appendix(r.a, mo, d, &readings);
-      d.set_heading_shift(0);
-    }
-    d.set_id_prefix("");
-  }
-  add_warnings(L, b, d);
+  // The tabulati's readings (with the tie rods' when a mechanism has ties) and the case file.
   {
-    relazione::Ctx c{a0, mo, L, d, &readings};
-    relazione::add_legend(c);
-    relazione::add_readings_appendix(c);
+    mo.ties = any_ties;
+    relazione::Ctx x{a0, mo, L, t, &readings, true, true};
+    relazione::add_readings_appendix(x);
+    mo.ties = nullptr;
   }
-  d.add_heading(bt(L, "appendix"));
-  d.add_paragraph(detail::shown_file(bc.file));
-  d.add_pre(options.case_text);
-  return d.document();
-}
-
-std::string building_html(const BuildingAssessment& b, const ReportOptions& options) {
-  return to_html(building_document(b, options));
+  t.add_heading(bt(L, "appendix"), 2, false, true, "case-file");
+  t.add_paragraph(detail::shown_file(bc.file));
+  t.add_pre(options.case_text);
+  Relazione r{d.document(), t.document()};
+  resolve_references({&r.body, &r.tabulati});
+  return r;
 }
 
 }  // namespace assess

@@ -4,7 +4,9 @@
 #include "assess/support/error.hpp"
 
 #include <algorithm>
+#include <map>
 #include <regex>
+#include <stdexcept>
 
 namespace assess {
 
@@ -22,7 +24,7 @@ std::string DocumentBuilder::add_heading(const std::string& text, int level, boo
   h.level = level;
   h.text = text;
   ++anchors_;
-  h.anchor = anchor.empty() ? id_prefix_ + "sec-" + std::to_string(anchors_) : anchor;
+  h.anchor = id_prefix_ + (anchor.empty() ? "sec-" + std::to_string(anchors_) : anchor);
   h.numbered = numbered;
   if (level == 2) {
     h.new_page = has_section_ && new_page;
@@ -135,9 +137,86 @@ std::vector<std::string> heading_numbers(const Document& d) {
     for (int l = h->level + 1; l < 7; ++l) count[l] = 0;
     std::string n;
     for (int l = 2; l <= h->level; ++l) n += (n.empty() ? "" : ".") + std::to_string(count[l]);
-    out.push_back(n);
+    out.push_back(d.number_prefix + n);
   }
   return out;
+}
+
+namespace {
+
+// The anchors of a document: a heading's with its number, a figure's with none.
+struct Anchors {
+  std::map<std::string, std::string> number;  // anchor -> section number ("" unnumbered, figure)
+  std::map<std::string, bool> heading;
+};
+
+// (heading_numbers counts the document's own headings, not those of a box.)
+void collect(const std::vector<DocBlock>& blocks, const std::vector<std::string>& numbers, std::size_t& k, Anchors& a,
+             bool top = true) {
+  for (const DocBlock& b : blocks) {
+    if (const Heading* h = std::get_if<Heading>(&b.value)) {
+      a.number[h->anchor] = top && k < numbers.size() ? numbers[k] : "";
+      a.heading[h->anchor] = true;
+      if (top) ++k;
+    } else if (const Figure* f = std::get_if<Figure>(&b.value)) {
+      a.number[f->id] = "";
+      a.heading[f->id] = false;
+    } else if (const Box* x = std::get_if<Box>(&b.value)) {
+      collect(x->content, numbers, k, a, false);
+    }
+  }
+}
+
+struct Resolver {
+  const std::map<std::string, Anchors>& anchors;
+  const Document& self;
+
+  void fix(std::string& text, const std::string& link, const std::string& doc) const {
+    if (link.empty()) {
+      if (text.find(section_number_mark) != std::string::npos)
+        throw std::logic_error("report: '" + text + "' asks for a section number without a link");
+      return;
+    }
+    const std::string key = doc.empty() ? self.key : doc;
+    const auto d = anchors.find(key);
+    if (d == anchors.end()) throw std::logic_error("report: reference '" + text + "' to an unknown document '" + doc + "'");
+    const auto n = d->second.number.find(link);
+    if (n == d->second.number.end())
+      throw std::logic_error("report: reference '" + text + "' to '#" + link + "'" + (doc.empty() ? "" : " of '" + doc + "'") +
+                             " does not resolve");
+    const std::size_t at = text.find(section_number_mark);
+    if (at == std::string::npos) return;
+    if (n->second.empty())
+      throw std::logic_error("report: reference '" + text + "' asks the number of '#" + link + "', which has none");
+    text.replace(at, std::string(section_number_mark).size(), n->second);
+  }
+  void blocks(std::vector<DocBlock>& bs) const {
+    for (DocBlock& b : bs) {
+      if (Paragraph* p = std::get_if<Paragraph>(&b.value)) spans(p->text);
+      else if (List* l = std::get_if<List>(&b.value))
+        for (Inline& i : l->items) spans(i);
+      else if (Table* t = std::get_if<Table>(&b.value)) {
+        for (Cell& c : t->header) fix(c.text, c.link, c.doc);
+        for (auto& r : t->rows)
+          for (Cell& c : r) fix(c.text, c.link, c.doc);
+      } else if (Box* x = std::get_if<Box>(&b.value))
+        blocks(x->content);
+    }
+  }
+  void spans(Inline& text) const {
+    for (Span& s : text) fix(s.text, s.link, s.doc);
+  }
+};
+
+}  // namespace
+
+void resolve_references(const std::vector<Document*>& docs) {
+  std::map<std::string, Anchors> anchors;
+  for (const Document* d : docs) {
+    std::size_t k = 0;
+    collect(d->blocks, heading_numbers(*d), k, anchors[d->key]);
+  }
+  for (Document* d : docs) Resolver{anchors, *d}.blocks(d->blocks);
 }
 
 std::vector<ContentsEntry> contents_entries(const Document& d, int depth) {

@@ -4,6 +4,7 @@
 #include "report/external_tool.hpp"
 #include "report/xml_escape.hpp"
 
+#include "assess/report/build_info.hpp"
 #include "assess/support/error.hpp"
 
 namespace assess {
@@ -14,19 +15,29 @@ using detail::xml_escape;
 
 std::string figure_file(const std::string& id, std::size_t k) { return id + "-" + std::to_string(k) + ".svg"; }
 
+// A verdict's colour as the Word character style of the reference document
+// (tools/docx/make_reference_docx.py): "Verdetto OK" green, "Verdetto KO" red.
+std::string toned(const std::string& escaped, Tone tone, bool strong) {
+  if (tone == Tone::ok) return "<span data-custom-style=\"Verdetto OK\">" + escaped + "</span>";
+  if (tone == Tone::fail) return "<span data-custom-style=\"Verdetto KO\">" + escaped + "</span>";
+  return strong ? "<strong>" + escaped + "</strong>" : escaped;
+}
+
+// A link within the document becomes a Word hyperlink to the heading's
+// bookmark; a link into the other document (the tabulati) stays text.
+std::string linked(const std::string& html, const std::string& link, const std::string& doc) {
+  return link.empty() || !doc.empty() ? html : "<a href=\"#" + xml_escape(link) + "\">" + html + "</a>";
+}
+
 std::string inline_html(const Inline& text) {
   std::string s;
-  for (const Span& x : text) {
-    const std::string t = xml_escape(x.text);
-    s += x.strong || x.tone == Tone::fail ? "<strong>" + t + "</strong>" : t;
-  }
+  for (const Span& x : text) s += linked(toned(xml_escape(x.text), x.tone, x.strong), x.link, x.doc);
   return s;
 }
 
 std::string cell(const char* tag, const Cell& c) {
-  std::string s = xml_escape(c.text);
-  if (c.strong || c.tone == Tone::fail) s = "<strong>" + s + "</strong>";
-  if (!c.note.empty()) s += "<br><em>" + xml_escape(c.note) + "</em>";
+  std::string s = linked(toned(xml_escape(c.text), c.tone, c.strong), c.link, c.doc);
+  if (!c.note.empty()) s += "<br><span data-custom-style=\"Nota\">" + xml_escape(c.note) + "</span>";
   return std::string("<") + tag + (c.numeric ? " style=\"text-align:right\"" : "") + ">" + s + "</" + tag + ">";
 }
 
@@ -44,9 +55,15 @@ struct Writer {
     ++heading;
     // Word's Heading 1 is the section (the title is the document's title).
     const std::string tag = "h" + std::to_string(std::max(1, h.level - 1));
-    return "<" + tag + ">" + (n.empty() ? "" : n + " ") + xml_escape(h.text) + "</" + tag + ">\n";
+    return "<" + tag + " id=\"" + xml_escape(h.anchor) + "\">" + (n.empty() ? "" : n + " ") + xml_escape(h.text) + "</" + tag +
+           ">\n";
   }
-  std::string block(const Paragraph& p) { return "<p>" + inline_html(p.text) + "</p>\n"; }
+  std::string block(const Paragraph& p) {
+    const std::string t = inline_html(p.text);
+    // Notes and meta lines in the small grey type of the PDF.
+    return p.style == "note" || p.style == "meta" ? "<p><span data-custom-style=\"Nota\">" + t + "</span></p>\n"
+                                                  : "<p>" + t + "</p>\n";
+  }
   std::string block(const List& l) {
     std::string s = "<ul>\n";
     for (const Inline& i : l.items) s += "<li>" + inline_html(i) + "</li>\n";
@@ -115,8 +132,12 @@ void write_docx(const Document& d, const std::string& path) {
   detail::TempDir dir("assess_docx_");
   write_figures(d.blocks, dir.path());
   detail::write_file(dir.path() / "report.html", to_pandoc_html(d), "--docx");
+  // The page, margins, page numbers, type and verdict colours of the PDF (issue 36, item 6).
+  const std::string_view ref = docx_reference(d.lang == "it" ? Lang::it : Lang::en);
+  detail::write_file(dir.path() / "reference.docx", std::string(ref), "--docx");
   const std::filesystem::path out = dir.path() / "report.docx", log = dir.path() / "pandoc.log";
   const int code = detail::run_program({"pandoc", "--from=html", "--to=docx", "--toc", "--toc-depth=3",
+                                        "--reference-doc=" + (dir.path() / "reference.docx").string(),
                                         "--metadata=title:" + d.title, "--metadata=lang:" + d.lang,
                                         "--resource-path=" + dir.path().string(), "--output=" + out.string(),
                                         (dir.path() / "report.html").string()},

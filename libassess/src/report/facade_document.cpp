@@ -1,6 +1,7 @@
-// facade_document.cpp: the relazione of a façade assessment as a document
-// (issue 28, item 12): the sections of relazione_*.cpp in the order of a
-// relazione di calcolo (relazione.md §2), built once; the writers render it.
+// facade_document.cpp: the relazione of a façade assessment as its two
+// documents (issues 28, 36): the body — the sections of relazione_*.cpp in
+// the order of a relazione di calcolo (relazione.md §2) — and the tabulati di
+// calcolo, built once from the same assessment; the writers render them.
 #include "assess/report/facade_report.hpp"
 
 #include "report/relazione_context.hpp"
@@ -12,16 +13,24 @@
 
 namespace assess {
 
-Document facade_document(const FacadeAssessment& a, const ReportOptions& options) {
+Relazione facade_relazione(const FacadeAssessment& a, const ReportOptions& options) {
   const Lang L = options.lang;
   DocumentBuilder d(msg(L, "doc.title"), to_string(L));
+  DocumentBuilder t(msg(L, "tab.title"), to_string(L));
+  d.set_key(relazione_key);
+  t.set_key(tabulati_key);
+  t.set_number_prefix("T");
   std::set<std::string> readings;
-  relazione::Ctx c{a, options, L, d, &readings};
+  relazione::Ctx c{a, options, L, d, &readings, true, false};
+  relazione::Ctx x{a, options, L, t, &readings, true, false};
+  // The body: general part, the mechanism, the checks and results, the
+  // judgement, the conclusions, the §10.2 chapter.
   relazione::add_front_matter(c);
   relazione::add_premessa(c);
   relazione::add_normativa(c);
   relazione::add_building_description(c);
   relazione::add_site(c);
+  relazione::add_choices(c);
   relazione::add_formulas(c);
   relazione::add_mechanism(c);
   relazione::add_checks(c);
@@ -31,14 +40,27 @@ Document facade_document(const FacadeAssessment& a, const ReportOptions& options
   relazione::add_interventions(c);
   relazione::add_probabilistic(c);
   relazione::add_evaluation(c);
-  relazione::add_conclusions(c);
-  // Appendices: the candidates' checks first (they may cite readings), the readings last but one.
-  relazione::add_candidates_appendix(c);
+  relazione::add_conclusions(c, false);
+  relazione::add_code_chapter(c, {{mechanism_name(L, a.kase.mechanism.type), &a}});
   relazione::add_warnings(c);
   relazione::add_legend(c);
-  relazione::add_readings_appendix(c);
-  relazione::add_case_file(c);
-  return d.document();
+  relazione::add_signature(c);
+  // The tabulati: the candidates, the dynamic analysis, the comparison, then
+  // the readings (the clauses cited above collected them) and the case file.
+  t.set_subtitle(d.document().subtitle);
+  t.add_contents(msg(L, "doc.contents"), 3);
+  relazione::add_tab_intro(x);
+  relazione::add_tab_candidates(x);
+  relazione::add_tab_dynamic(x);
+  if (!a.verdict.rows.empty()) {
+    t.add_heading(msg(L, "cmp.heading"), 2, false);
+    relazione::add_tab_comparison(x);
+  }
+  relazione::add_readings_appendix(x);
+  relazione::add_case_file(x);
+  Relazione r{d.document(), t.document()};
+  resolve_references({&r.body, &r.tabulati});
+  return r;
 }
 
 Document facade_summary(const FacadeAssessment& a, const ReportOptions& options) {
@@ -60,18 +82,14 @@ Document facade_summary(const FacadeAssessment& a, const ReportOptions& options)
   return d.document();
 }
 
-std::string facade_html(const FacadeAssessment& a, const ReportOptions& options) {
-  return to_html(facade_document(a, options));
-}
-
 void facade_site_section(const FacadeAssessment& a, const ReportOptions& options, DocumentBuilder& d) {
   relazione::Ctx c{a, options, options.lang, d, nullptr};
   relazione::add_site(c);
 }
 
 void facade_mechanism_sections(const FacadeAssessment& a, const ReportOptions& options, DocumentBuilder& d,
-                               std::set<std::string>* readings) {
-  relazione::Ctx c{a, options, options.lang, d, readings};
+                               DocumentBuilder* tabulati, std::set<std::string>* readings) {
+  relazione::Ctx c{a, options, options.lang, d, readings, tabulati != nullptr, true};
   relazione::add_verdict_box(c);
   relazione::add_mechanism(c);
   relazione::add_checks(c);
@@ -80,14 +98,13 @@ void facade_mechanism_sections(const FacadeAssessment& a, const ReportOptions& o
   // The methods compared: in the building's summary (one table for every mechanism), not repeated here.
   relazione::add_interventions(c);
   relazione::add_evaluation(c);
-  relazione::add_conclusions(c, false);
   relazione::add_warnings(c);
-}
-
-void facade_candidates_appendix(const FacadeAssessment& a, const ReportOptions& options, DocumentBuilder& d,
-                                std::set<std::string>* readings) {
-  relazione::Ctx c{a, options, options.lang, d, readings};
-  relazione::add_candidates_appendix(c);
+  if (!tabulati) return;
+  relazione::Ctx x{a, options, options.lang, *tabulati, readings, true, true};
+  relazione::add_tab_candidates(x);
+  relazione::add_tab_dynamic(x);
+  relazione::add_tab_comparison(x);
+  relazione::add_tab_choices(x);
 }
 
 }  // namespace assess

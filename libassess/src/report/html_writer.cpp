@@ -84,13 +84,23 @@ std::string page_numbers(const std::string& lang) {
 
 const char* tone_class(Tone t) { return t == Tone::ok ? "ok" : t == Tone::fail ? "fail" : ""; }
 
-std::string inline_html(const Inline& text) {
+// The href of a link into `doc` ("" this page): "#a", "other.html#a", or ""
+// when that document has no file beside this one (HtmlOptions::documents).
+std::string href(const HtmlOptions& o, const std::string& link, const std::string& doc) {
+  if (link.empty()) return "";
+  if (doc.empty()) return "#" + link;
+  const auto f = o.documents.find(doc);
+  return f == o.documents.end() ? "" : f->second + "#" + link;
+}
+
+std::string inline_html(const Inline& text, const HtmlOptions& o) {
   std::string s;
   for (const Span& x : text) {
     std::string t = xml_escape(x.text);
     if (x.strong) t = "<strong>" + t + "</strong>";
     if (x.tone != Tone::plain) t = std::string("<span class=\"") + tone_class(x.tone) + "\">" + t + "</span>";
-    if (!x.link.empty()) t = "<a href=\"#" + xml_escape(x.link) + "\">" + t + "</a>";
+    const std::string h = href(o, x.link, x.doc);
+    if (!h.empty()) t = "<a href=\"" + xml_escape(h) + "\"" + (x.doc.empty() ? "" : " class=\"xref\"") + ">" + t + "</a>";
     if (x.user) t = "<span class=\"user\">" + t + "</span>";
     s += t;
   }
@@ -135,10 +145,11 @@ std::string breakable(const std::string& escaped) {
   return s;
 }
 
-std::string cell_html(const char* tag, const Cell& c) {
+std::string cell_html(const char* tag, const Cell& c, const HtmlOptions& o) {
   const std::string cls = cell_class(c);
   std::string text = c.numeric ? xml_escape(c.text) : breakable(xml_escape(c.text));
-  if (!c.link.empty()) text = "<a href=\"#" + xml_escape(c.link) + "\">" + text + "</a>";
+  const std::string h = href(o, c.link, c.doc);
+  if (!h.empty()) text = "<a href=\"" + xml_escape(h) + "\"" + (c.doc.empty() ? "" : " class=\"xref\"") + ">" + text + "</a>";
   if (c.user) text = "<span class=\"user\">" + text + "</span>";
   std::string s = std::string("<") + tag + (cls.empty() ? "" : " class=\"" + cls + "\"") + ">" + text;
   if (!c.note.empty()) s += "<span class=\"note\">" + xml_escape(c.note) + "</span>";
@@ -168,22 +179,22 @@ struct Writer {
     std::string attrs;
     if (!p.style.empty()) attrs += " class=\"" + xml_escape(p.style) + "\"";
     if (!p.lang.empty()) attrs += " lang=\"" + xml_escape(p.lang) + "\"";
-    return "<p" + attrs + ">" + inline_html(p.text) + "</p>\n";
+    return "<p" + attrs + ">" + inline_html(p.text, o) + "</p>\n";
   }
   std::string block(const List& l) {
     std::string s = "<ul" + (l.style.empty() ? std::string() : " class=\"" + xml_escape(l.style) + "\"") + ">\n";
-    for (const Inline& i : l.items) s += "<li>" + inline_html(i) + "</li>\n";
+    for (const Inline& i : l.items) s += "<li>" + inline_html(i, o) + "</li>\n";
     return s + "</ul>\n";
   }
   std::string block(const Table& t) {
     std::string s = t.style.empty() ? "<table>\n" : "<table class=\"" + xml_escape(t.style) + "\">\n";
     if (!t.caption.empty()) s += "<caption>" + xml_escape(t.caption) + "</caption>\n";
     s += "<thead><tr>";
-    for (const Cell& h : t.header) s += cell_html("th", h);
+    for (const Cell& h : t.header) s += cell_html("th", h, o);
     s += "</tr></thead>\n<tbody>\n";
     for (const auto& r : t.rows) {
       s += "<tr>";
-      for (const Cell& c : r) s += cell_html("td", c);
+      for (const Cell& c : r) s += cell_html("td", c, o);
       s += "</tr>\n";
     }
     return s + "</tbody>\n</table>\n";

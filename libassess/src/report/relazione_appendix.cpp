@@ -15,8 +15,6 @@ namespace assess::relazione {
 
 namespace {
 
-std::vector<CheckRow> appendix_rows(const FacadeAssessment& a, std::size_t i) { return a.kinematic.candidates[i].checks; }
-
 // The catalogue key of a reading noted by Ctx::clause ("C8A.4.11 [R]" ...).
 std::string reading_key(const std::string& r) {
   static const std::vector<std::pair<std::string, std::string>> keys{
@@ -33,7 +31,7 @@ std::string reading_key(const std::string& r) {
 
 void add_readings_appendix(Ctx& c) {
   const FacadeAssessment& a = c.a;
-  c.d.add_heading(c.t("reading.heading"));
+  c.d.add_heading(c.t("reading.heading"), 2, false, true, "readings");
   c.d.add_paragraph(c.t("reading.intro"));
   std::vector<std::string> keys;
   auto add = [&](const std::string& k) {
@@ -70,39 +68,21 @@ void add_readings_appendix(Ctx& c) {
   c.d.add_list(items);
   // The tie rods' formulas and constants with their basis (issue 29): the
   // section itself cites the clause or "ipotesi del progettista" only.
+  // The certainty tags of the engine ([R], [I] ...) are not printed (issue 36: no code tokens in the
+  // tabulati either): the caption says what the basis column holds.
   if (c.o.ties) {
     std::vector<std::vector<Cell>> rows;
-    for (const TieReading& r : tie_readings(*c.o.ties, c.L)) rows.push_back({Cell(r.quantity), Cell(r.reading), Cell(r.basis)});
+    for (const TieReading& r : tie_readings(*c.o.ties, c.L))
+      rows.push_back({Cell(r.quantity), Cell(r.reading), Cell(c.clause(r.basis))});
     c.d.add_cell_table({Cell(msg(c.L, "tie.reading.quantity")), Cell(msg(c.L, "tie.reading.reading")),
                         Cell(msg(c.L, "tie.reading.basis"))},
-                       rows, msg(c.L, "tie.reading.caption"));
-  }
-}
-
-void add_candidates_appendix(Ctx& c) {
-  const FacadeAssessment& a = c.a;
-  const std::vector<std::size_t> dev = developed_candidates(a);
-  bool any = false;
-  for (std::size_t i = 0; i < a.kinematic.candidates.size(); ++i)
-    any = any || (std::find(dev.begin(), dev.end(), i) == dev.end() && !appendix_rows(a, i).empty());
-  if (!any) return;
-  c.d.add_heading(c.t("checks_all.heading"));
-  c.d.add_paragraph(c.t("checks_all.note2"));
-  for (std::size_t i = 0; i < a.kinematic.candidates.size(); ++i) {
-    if (std::find(dev.begin(), dev.end(), i) != dev.end()) continue;
-    const std::vector<CheckRow> rows = appendix_rows(a, i);
-    if (rows.empty()) continue;
-    const CandidateResult& cr = a.kinematic.candidates[i];
-    c.d.add_heading(c.loc(cr.label) + " (α0 = " + c.n(cr.result.alpha0, 4) + ", a0* = " + c.n(cr.result.a0_star, 3) +
-                        " m/s²)",
-                    3, false, false);
-    c.d.add_cell_table(check_head(c, false), check_rows(c, rows, false), "", "checks");
+                       rows, c.t("reading.ties_caption"));
   }
 }
 
 void add_warnings(Ctx& c) {
   if (c.a.warnings.empty()) return;
-  c.d.add_heading(c.t("warnings.heading"), 2, false);
+  c.d.add_heading(c.t("warnings.heading"), 2, false, true, "warnings");
   c.d.add_paragraph(c.t("warnings.intro"));
   std::vector<Inline> items;
   for (const std::string& w : c.a.warnings) items.push_back({Span{c.loc(w)}});
@@ -110,14 +90,14 @@ void add_warnings(Ctx& c) {
 }
 
 void add_legend(Ctx& c) {
-  c.d.add_heading(c.t("legend.heading2"), 2, false);
+  c.d.add_heading(c.t("legend.heading2"), 2, false, true, "legend");
   std::vector<Inline> items;
   for (const char* k : {"legend.dc2", "legend.inf", "legend.dash", "legend.tables"}) items.push_back({Span{c.t(k)}});
   c.d.add_list(items, "legend");
 }
 
 void add_case_file(Ctx& c) {
-  c.d.add_heading(c.t("appendix.heading"));
+  c.d.add_heading(c.t("appendix.heading"), 2, false, true, "case-file");
   c.d.add_paragraph(c.t("appendix.note") + " (" + detail::shown_file(c.a.kase.file) + ")");
   c.d.add_pre(c.o.case_text.empty() ? c.t("appendix.missing") : c.o.case_text);
 }

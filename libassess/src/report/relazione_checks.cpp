@@ -43,7 +43,9 @@ std::vector<std::vector<Cell>> check_rows(const Ctx& c, const std::vector<CheckR
     row.push_back(c.num(r.demand, 4));
     row.push_back(c.num(r.capacity, 4));
     row.push_back(Cell(c.unit(r.unit)));
-    row.push_back(c.dc_cell(r));
+    Cell dc = c.dc_cell(r);
+    if (r.kind == "dynamic" && r.analyses > 0 && r.dc == 0.0) dc.note = c.t("dyn.no_uplift");  // a computed zero, said why
+    row.push_back(dc);
     // The check's own safety index (issue 41), coloured by the check's verdict.
     Cell zeta = c.num(r.index.defined ? r.index.zeta : std::nan(""), 3);
     if (r.index.defined) zeta.tone = verdict_tone(r.outcome());
@@ -66,21 +68,27 @@ std::vector<Cell> check_head(const Ctx& c, bool with_candidate) {
 void add_checks(Ctx& c) {
   const FacadeAssessment& a = c.a;
   if (a.checks.empty() && a.kinematic.candidates.front().checks.empty()) return;
-  c.d.add_heading(c.t("checks.heading"));
-  const std::vector<std::size_t> dev = developed_candidates(a);
-  const bool several = dev.size() > 1;
-  // Every check of the developed candidates (NTC 2018 first: the conclusion's
-  // code), then every dynamic check; the other candidates' checks are in the
-  // appendix, so that the verdict box's counts are the rows of the two.
+  c.d.add_heading(c.t("checks.heading"), 2, true, true, "checks");
+  const std::size_t ci = body_candidate(a);
+  // Every check of the candidate the body develops (NTC 2018 first: the
+  // conclusion's code), then every dynamic check; the other candidates'
+  // checks are in the tabulati, so that the verdict box's counts are the rows
+  // of the two (issue 36).
   std::vector<CheckRow> rows;
   for (const char* code : {"NTC2018", "NTC2008"})
-    for (std::size_t ci : dev)
-      for (const CheckRow& r : c.candidate(ci).checks)
-        if (r.code == code) rows.push_back(r);
+    for (const CheckRow& r : c.candidate(ci).checks)
+      if (r.code == code) rows.push_back(r);
   for (const CheckRow& r : a.checks)
     if (r.kind == "dynamic") rows.push_back(r);
-  c.d.add_paragraph(c.t(dev.size() < a.kinematic.candidates.size() ? "checks.body_note2" : "checks.body_note_all"));
-  c.d.add_cell_table(check_head(c, several), check_rows(c, rows, several), c.t("checks.table_cap"), "checks");
+  const bool others = a.kinematic.candidates.size() > 1;
+  const bool several_dynamic = !a.other_dynamics.empty();
+  if (others && c.tabulati)
+    c.d.add_paragraph(Inline{Span{c.t("checks.body_note_tab") + " "},
+                             reference(c.t("checks.see_tab"), c.here("candidates"), tabulati_key)});
+  else
+    c.d.add_paragraph(c.t(others ? "checks.body_note_summary" : "checks.body_note_all"));
+  c.d.add_cell_table(check_head(c, several_dynamic), check_rows(c, rows, several_dynamic), c.t("checks.table_cap"), "checks");
+  add_choice_notes(c, {"height_demand", "xi_SLV_pct", "xi_SLC_pct"});
 }
 
 // Safety indices (issue 28, item 3; docs/theory/building.md §4): per method

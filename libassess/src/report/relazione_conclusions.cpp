@@ -8,7 +8,6 @@
 #include "report/text_format.hpp"
 
 #include "assess/assessment/building_assessment.hpp"
-#include "assess/assessment/sensitivity.hpp"
 #include "assess/report/plot.hpp"
 #include "assess/report/tie_report.hpp"
 #include "assess/support/units.hpp"
@@ -46,10 +45,11 @@ std::string collapses_text(const Ctx& c) {
 
 }  // namespace
 
-void add_comparison(Ctx& c) {
+namespace {
+
+// The comparison by approach: the bars (figure `id`, "" none) and every row's table (`rows_table`).
+void comparison(Ctx& c, bool figure, bool rows_table) {
   const Verdict& v = c.a.verdict;
-  if (v.rows.empty()) return;
-  c.d.add_heading(c.t("cmp.heading"));
   Plot p = c.plot();
   p.title = c.t("cmp.title");
   p.y_label = "D/C (–)";
@@ -112,11 +112,13 @@ void add_comparison(Ctx& c) {
   p.x_max = x - 0.4;
   p.y_min = 0.0;
   p.y_max = top;
-  c.d.add_svg(render_svg(p), c.t("cmp.fig"), "fig-dc");
+  if (figure) c.d.add_svg(render_svg(p), c.t("cmp.fig"), "fig-dc");
   Cell hdc("D/C");
   hdc.numeric = true;
-  c.d.add_cell_table({Cell(c.t("checks.code")), Cell(c.t("cmp.approach")), hdc, Cell(c.t("checks.outcome"))}, rows,
-                     c.t("cmp.table_cap"));
+  if (rows_table)
+    c.d.add_cell_table({Cell(c.t("checks.code")), Cell(c.t("cmp.approach")), hdc, Cell(c.t("checks.outcome"))}, rows,
+                       c.t("cmp.table_cap"));
+  if (!figure) return;
   std::vector<std::vector<Cell>> orows;
   for (const MethodVerdict& m : v.methods) {
     Cell outcome(verdict_title(c.L, m.outcome()));
@@ -130,6 +132,22 @@ void add_comparison(Ctx& c) {
   c.d.add_cell_table({Cell(c.t("checks.code")), Cell(c.t("cmp.method")), Cell(c.t("cmp.overall")), numeric_cell(c.t("cmp.failing")),
                       numeric_cell(c.t("verdict.no_verdict")), numeric_cell(c.t("cmp.max_dc"))},
                      orows, c.t("cmp.methods_cap"));
+}
+
+}  // namespace
+
+void add_comparison(Ctx& c) {
+  if (c.a.verdict.rows.empty()) return;
+  c.d.add_heading(c.t("cmp.heading"), 2, true, true, "comparison");
+  if (c.tabulati)
+    c.d.add_paragraph(Inline{reference(c.t("cmp.rows_in_tab"), c.here("comparison"), tabulati_key)}, "note");
+  comparison(c, true, !c.tabulati);
+}
+
+void add_tab_comparison(Ctx& c) {
+  if (c.a.verdict.rows.empty()) return;
+  c.d.add_heading(c.t("cmp.heading_tab"), 3, false, true, "comparison");
+  comparison(c, false, true);
 }
 
 // Interventions (issue 28, item 4; relazione.md §2.11): the ties' section
@@ -188,15 +206,16 @@ void add_probabilistic(Ctx& c) {
   c.d.add_box(std::move(b));
 }
 
-// Valutazione dei risultati (issue 28, item 4): the adopted check's margin,
-// the methods that disagree and by how much, the sensitivity of the adopted
-// D/C to FC, d_SLV and xi (recomputed), the dynamic collapses; then one
-// sentence of judgement drawn from them.
+// Valutazione dei risultati (issues 28, 36): the adopted check's margin, the
+// methods that disagree and by how much, the dynamic collapses, the
+// alternatives of the modelling choices that change the verdict, the checks
+// of acceptability that fail; then the judgement, decided by the assessment
+// (assessment/judgement.hpp) and read here.
 void add_evaluation(Ctx& c) {
   const Verdict& v = c.a.verdict;
   const MethodVerdict* m = v.conclusion();
   if (!m) return;
-  c.d.add_heading(c.t("eval.heading"));
+  c.d.add_heading(c.t("eval.heading"), 2, true, true, "evaluation");
   // Margin.
   const double dc = m->max_dc;
   std::string margin;
@@ -209,7 +228,7 @@ void add_evaluation(Ctx& c) {
   std::vector<std::string> disagree, agree;
   for (const MethodVerdict& o : v.methods) {
     if (o.code != m->code || o.method == m->method) continue;
-    (o.satisfied == m->satisfied && !o.undecided() ? agree : disagree).push_back(method_phrase(c, o));
+    (o.outcome() == m->outcome() ? agree : disagree).push_back(method_phrase(c, o));
   }
   auto join = [](const std::vector<std::string>& xs) {
     std::string s;
@@ -220,50 +239,25 @@ void add_evaluation(Ctx& c) {
   if (!agree.empty()) c.d.add_paragraph(msgf(c.L, "eval.agree", join(agree)));
   const std::string coll = collapses_text(c);
   if (!coll.empty()) c.d.add_paragraph(msgf(c.L, "eval.collapses", coll));
-  // Sensitivity.
-  const std::vector<SensitivityRow> sens = adopted_sensitivity(c.a);
-  bool flips = false;
-  std::vector<std::string> flipping;
-  if (!sens.empty()) {
-    std::vector<std::vector<Cell>> rows;
-    for (const SensitivityRow& s : sens) {
-      const bool flip = s.satisfied != m->satisfied;
-      flips = flips || flip;
-      const std::string value = s.parameter == "xi_SLV_pct" ? c.n(s.value, 0) + " %" : c.n(s.value, 2);
-      if (flip) flipping.push_back(c.t("sens." + s.parameter) + " = " + value);
-      const Outcome so = outcome_of(s.satisfied, false);
-      Cell dcs = c.dc_cell(s.dc, so);
-      Cell out = c.outcome_cell(so);
-      Cell val(value + (s.adopted ? " (" + c.t("sens.case") + ")" : ""));
-      val.numeric = true;
-      for (Cell* x : {&dcs, &out, &val}) x->highlight = s.adopted;
-      Cell name(c.t("sens." + s.parameter));
-      name.highlight = s.adopted;
-      rows.push_back({name, val, dcs, out});
-    }
-    Cell hv(c.t("kin.value")), hd("D/C");
-    hv.numeric = hd.numeric = true;
-    c.d.add_cell_table({Cell(c.t("sens.parameter")), hv, hd, Cell(c.t("checks.outcome"))}, rows,
-                       msgf(c.L, "sens.cap", c.t("method." + m->method)));
+  if (!c.a.judgement) return;
+  const Judgement& j = *c.a.judgement;
+  // The modelling choices whose computed alternative changes the adopted verdict.
+  std::vector<std::string> flips;
+  for (std::size_t i : j.flips) flips.push_back(choice_flip_text(c, c.a.choices[i]));
+  Inline choices{Span{flips.empty() ? c.t("eval.choices_none") : msgf(c.L, "eval.choices_flip", join(flips))}};
+  if (c.tabulati && !c.a.choices.empty()) {
+    choices.push_back(Span{" "});
+    choices.push_back(c.building ? reference(c.t("choice.see_tab"), c.here("choices"), tabulati_key)
+                                 : reference(c.t("choice.see_body"), c.here("choices")));
   }
-  // Judgement.
-  const bool thin = std::isfinite(dc) && std::abs(1.0 - dc) < 0.10;
-  std::string judgement;
-  if (m->satisfied && disagree.empty() && !flips && !thin && coll.empty()) judgement = c.t("eval.robust_ok");
-  else if (!m->satisfied && disagree.empty() && !flips && !thin) judgement = c.t("eval.robust_fail");
-  else {
-    std::vector<std::string> why;
-    if (thin) why.push_back(c.t("eval.why_thin"));
-    if (!disagree.empty()) why.push_back(c.t("eval.why_disagree"));
-    if (flips) {
-      std::string list;
-      for (const std::string& x : flipping) list += (list.empty() ? "" : ", ") + x;
-      why.push_back(msgf(c.L, "eval.why_flips", list));
-    }
-    if (!coll.empty() && m->method != "dynamic") why.push_back(c.t("eval.why_collapses"));
-    judgement = msgf(c.L, m->satisfied ? "eval.fragile_ok" : "eval.fragile_fail", join(why));
+  if (!c.a.choices.empty()) c.d.add_paragraph(choices);
+  for (const std::string& k : j.implausible) {
+    for (const AcceptabilityCheck& x : c.a.acceptability)
+      if (x.key == k)
+        c.d.add_paragraph(Inline{Span{msgf(c.L, "eval.implausible_" + k, c.n(x.value, 3), c.n(x.reference, 3)), false,
+                                      Tone::fail}});
   }
-  c.d.add_paragraph(Inline{Span{c.t("eval.judgement") + ": ", true}, Span{judgement}});
+  c.d.add_paragraph(Inline{Span{c.t("eval.judgement") + ": ", true}, Span{judgement_text(c, j)}});
 }
 
 void add_conclusions(Ctx& c, bool signature) {
@@ -282,13 +276,27 @@ void add_conclusions(Ctx& c, bool signature) {
     for (const SafetyIndex& s : c.a.indices)
       if (s.code == m->code && method_of_kind(s.approach) == m->method && s.defined)
         zeta = msgf(c.L, "concl.zeta", c.n(s.index.zeta, 3));
-    c.d.add_paragraph(Inline{Span{msgf(c.L, "concl.adopted", c.t("method." + m->method), code_name(m->code))},
-                             c.outcome_span(m->outcome()),
-                             Span{", D/C = " + c.n(m->max_dc, 3) + zeta + ". " + c.t("concl.see_eval")}});
+    // The judgement beside the verdict (issue 36, item 4): a verdict it calls
+    // not robust is concluded with that qualification, never plainly.
+    Inline line{Span{msgf(c.L, "concl.adopted", c.t("method." + m->method), code_name(m->code))}, c.outcome_span(m->outcome()),
+                Span{", D/C = " + c.n(m->max_dc, 3) + zeta}};
+    if (c.a.judgement) {
+      const std::string q = judgement_qualifier(c, *c.a.judgement);
+      if (!q.empty())
+        line.push_back(Span{" — " + msgf(c.L, m->outcome() == Outcome::satisfied ? "concl.not_robust_ok" : "concl.not_robust_fail", q),
+                            true});
+      else if (c.a.judgement->robust)
+        line.push_back(Span{" — " + c.t(m->outcome() == Outcome::satisfied ? "concl.robust_ok" : "concl.robust_fail")});
+    }
+    line.push_back(Span{". " + c.t("concl.see_eval")});
+    c.d.add_paragraph(line);
   } else {
     c.d.add_paragraph(c.t("verdict.no_method_checks") + ".");
   }
-  if (!signature) return;
+  if (signature) add_signature(c);
+}
+
+void add_signature(Ctx& c) {
   const ReportInfo& r = c.a.kase.report;
   c.d.add_signature({c.t("doc.place_date") + ": " + (r.place.empty() ? "______________________" : r.place + ", ______________"),
                      c.t("doc.engineer") + ": " + (r.engineer.empty() ? "______________________" : r.engineer) +

@@ -83,6 +83,11 @@ std::string typeset(const std::string& text) {
 
 int dc_decimals(double dc, bool satisfied) {
   int prec = 3;
+  // A small D/C keeps two significant digits (issue 36: "0,000" read as a value never computed).
+  if (std::isfinite(dc) && dc > 0.0 && dc < 0.01) {
+    while (prec < 9 && dc * std::pow(10.0, prec) < 10.0) ++prec;
+    return prec;
+  }
   if (satisfied || !std::isfinite(dc) || !(dc > 1.0)) return prec;
   while (prec < 9 && std::round(dc * std::pow(10.0, prec)) <= std::pow(10.0, prec)) ++prec;
   return prec;

@@ -7,6 +7,8 @@
 // other candidate analysed.
 #include "report/relazione_context.hpp"
 
+#include "assess/report/relazione.hpp"
+
 #include "report/report_heading.hpp"
 #include "report/text_format.hpp"
 
@@ -281,7 +283,7 @@ void add_histories(Ctx& c, const FacadeAssessment& x) {
     panels.push_back({render_svg(p), x.records[ir].name + (overturned ? " — " + c.t("dyn.overturning") : "")});
   }
   if (panels.empty()) return;
-  c.d.add_heading(c.t("dyn.histories"), 4, false);
+  c.d.add_heading(c.t("dyn.histories"), 3, false);
   c.d.add_svg_grid(panels, c.t("dyn.histories_fig"), "fig-histories");
 }
 
@@ -289,7 +291,7 @@ void add_histories(Ctx& c, const FacadeAssessment& x) {
 // convention (+inf, the figure over the analyses without a collapse apart),
 // the energy D/C the same way, and the outcome read from the check.
 void add_summary(Ctx& c, const FacadeAssessment& x) {
-  c.d.add_heading(c.t("dyn.summary"), 4, false);
+  c.d.add_heading(c.t("dyn.summary"), 3, false);
   std::vector<std::vector<Cell>> rows;
   for (const RestitutionSummary& s : x.summaries) {
     bool uplift = false;
@@ -303,6 +305,7 @@ void add_summary(Ctx& c, const FacadeAssessment& x) {
     Cell dc = c.dc_cell(s.dc_slv, s.outcome());
     if (!std::isfinite(s.dc_slv) && std::isfinite(s.dc_survivors))
       dc.note = msgf(c.L, "dc.survivors", c.n(s.dc_survivors, 3));
+    if (!uplift) energy.note = dc.note = c.t("dyn.no_uplift");  // a computed zero, said why
     Cell out = c.outcome_cell(s.outcome());
     if (s.collapsed > 0) out.note = msgf(c.L, "dc.collapse", s.collapsed, s.analyses);
     else if (!uplift) out.note = c.t("dyn.no_uplift");
@@ -323,7 +326,7 @@ void add_others(Ctx& c, const FacadeAssessment& shown) {
   for (std::size_t k = 0; k < a.other_dynamics.size(); ++k)
     if (&a.other_dynamics[k] != &shown) list.push_back({&a.other_dynamics[k], a.other_dynamics_candidate[k]});
   if (list.empty()) return;
-  c.d.add_heading(c.t("dyn.others"), 3, false);
+  c.d.add_heading(c.t("dyn.others"), 3, false, true, "dynamic-others");
   c.d.add_paragraph(c.t("dyn.others_text"));
   std::vector<std::vector<Cell>> rows;
   for (const auto& [o, ci] : list) {
@@ -341,6 +344,7 @@ void add_others(Ctx& c, const FacadeAssessment& shown) {
       Cell dc = c.dc_cell(s.dc_slv, s.outcome());
       if (!std::isfinite(s.dc_slv) && std::isfinite(s.dc_survivors))
         dc.note = msgf(c.L, "dc.survivors", c.n(s.dc_survivors, 3));
+      if (s.dc_slv == 0.0 && s.analyses > 0) dc.note = c.t("dyn.no_uplift");
       Cell out = c.outcome_cell(s.outcome());
       rows.push_back({Cell(label), Cell(recs), Cell(restitution_text(c, *o, s)), coll, c.num(s.d_demand, 4),
                       c.num(o->kinematic.candidates.front().result.d_SLV, 4), dc, out});
@@ -377,10 +381,15 @@ void add_dynamic_summary(Ctx& c) {
   add_others(c, x);
 }
 
+// The dynamic analysis in the body (issue 36): the candidate analysed, its
+// model in one sentence, the records (a building's shared set: by name), the
+// summary per restitution value, the other candidates in one sentence; the
+// model's parameters, the records' table, the histories and every other
+// candidate are in the tabulati.
 void add_dynamic(Ctx& c) {
   const FacadeAssessment& a = c.a;
   if (!a.dynamic) return;
-  c.d.add_heading(c.t("dyn.heading"));
+  c.d.add_heading(c.t("dyn.heading"), 2, false, true, "dynamic");
   if (!a.dynamic_applies) {
     c.d.add_paragraph(c.t("dyn.na") + ": " + c.loc(a.dynamic_note));
     return;
@@ -388,15 +397,67 @@ void add_dynamic(Ctx& c) {
   const FacadeAssessment& x = governing_dynamics(a);
   const std::string label = c.loc(x.kinematic.candidates.front().label);
   c.d.add_paragraph(msgf(c.L, &x == &a ? "dyn.developed_gov" : "dyn.developed_other", label));
+  const DynamicSpec& d = *x.dynamic;
+  std::string what = c.t(d.smooth ? "dyn.smooth" : "dyn.rigid") + ", ";
+  if (x.model) what += c.t(x.model->sidedness() == Sidedness::one_sided ? "dyn.one_sided" : "dyn.two_sided") + ". ";
+  Inline model{Span{what + c.t("dyn.model") + ": " + c.loc(x.mechanism_dynamics->describe()) + "."}};
+  if (c.tabulati) {
+    model.push_back(Span{" "});
+    model.push_back(reference(c.t("dyn.params_in_tab"), c.here("dynamic"), tabulati_key));
+  }
+  c.d.add_paragraph(model);
+  // The records: by name and scale (the full table in the tabulati, or the building's set).
+  std::string names;
+  for (const RecordUsed& r : x.records) names += (names.empty() ? "" : ", ") + r.name + " (" + c.n(r.scale, 3) + ")";
+  if (!c.o.shared_records.empty()) {
+    c.d.add_paragraph(msgf(c.L, "dyn.shared_set", c.o.shared_records, names));
+  } else {
+    Inline recs{Span{msgf(c.L, "dyn.records_body", x.records.size(), names)}};
+    if (c.tabulati) {
+      recs.push_back(Span{" "});
+      recs.push_back(reference(c.t("dyn.records_in_tab"), c.here("records"), tabulati_key));
+    }
+    c.d.add_paragraph(recs);
+    if (x.selection)
+      c.d.add_paragraph(msgf(c.L, "dyn.selection", c.n(x.selection_range.T_min, 2), c.n(x.selection_range.T_max, 2)) +
+                        c.loc(x.selection->message));
+    if (x.compatibility.computed) c.d.add_paragraph(c.t("dyn.compat_msg") + ": " + c.loc(x.compatibility.message) + ".");
+  }
+  add_choice_notes(c, {"selection_window"});
+  add_summary(c, x);
+  // The other candidates analysed: one sentence here, their table in the tabulati.
+  std::size_t others = a.other_dynamics.size() + (&x == &a ? 0 : 1);
+  if (others > 0) {
+    double worst = -1.0;
+    for (const CheckRow& r : a.checks)
+      if (r.kind == "dynamic") worst = std::max(worst, std::isfinite(r.dc) ? r.dc : 1e300);
+    Inline o{Span{msgf(c.L, "dyn.others_body", others, worst >= 1e300 ? "∞" : c.n(worst, 3))}};
+    if (c.tabulati) {
+      o.push_back(Span{" "});
+      o.push_back(reference(c.t("dyn.others_in_tab"), c.here("dynamic-others"), tabulati_key));
+    }
+    c.d.add_paragraph(o);
+  }
+}
+
+// The dynamic analysis in the tabulati: the model (equation of motion, every
+// parameter, the moment-rotation curve), the records with their metadata and
+// flags, the selection, the compatibility, the floor spectra, the histories
+// of every analysis, and every other candidate analysed.
+void add_tab_dynamic(Ctx& c) {
+  const FacadeAssessment& a = c.a;
+  if (!a.dynamic || !a.dynamic_applies) return;
+  c.d.add_heading(c.t("dyn.heading"), 2, false, true, "dynamic");
+  const FacadeAssessment& x = governing_dynamics(a);
+  if (c.tabulati)
+    c.d.add_paragraph(Inline{reference(c.t("dyn.summary_in_body"), c.here("dynamic"), relazione_key)}, "note");
   c.d.add_heading(c.t("dyn.model_heading"), 3, false);
   add_model(c, x);
-  c.d.add_heading(c.t("dyn.input_heading"), 3, false);
+  c.d.add_heading(c.t("dyn.input_heading"), 3, false, true, "records");
   add_records(c, x);
   if (c.o.shared_records.empty()) add_compatibility(c, x);
   add_floor_spectra(c, x);
-  c.d.add_heading(c.t("dyn.results_heading"), 3, false);
   add_histories(c, x);
-  add_summary(c, x);
   add_others(c, x);
 }
 

@@ -112,11 +112,16 @@ void add_verdict_box(Ctx& c) {
   c.d.add_paragraph(c.t("verdict.note"), "meta");
 }
 
+Inline tabulati_sentence(Lang L) {
+  return {Span{msg(L, "doc.tabulati") + " "}, reference(msg(L, "doc.tabulati_ref"), "tabulati-intro", tabulati_key)};
+}
+
 void add_premessa(Ctx& c) {
   const FacadeAssessment& a = c.a;
-  c.d.add_heading(c.t("doc.premessa"), 2, false);
+  c.d.add_heading(c.t("doc.premessa"), 2, false, true, "premessa");
   c.d.add_paragraph(c.t("doc.premessa_text") + " " + mechanism_name(c.L, a.kase.mechanism.type) + ".");
   c.d.add_paragraph(c.t("doc.procedures") + " " + c.t("method." + a.verdict.adopted) + ". " + c.t("doc.procedures_why"));
+  if (c.tabulati) c.d.add_paragraph(tabulati_sentence(c.L));
 }
 
 void add_normativa(Ctx& c) {
@@ -140,13 +145,7 @@ void add_building_description(Ctx& c) {
     const BuildingModel& b = *a.kase.building;
     c.d.add_paragraph(msgf(c.L, "desc.model", c.n(b.H, 2), b.storeys, c.n(b.T1, 3), c.n(b.damping_pct, 0)));
   }
-  c.d.add_heading(c.t("survey.heading"), 2, false);
-  if (r.investigations.empty()) c.d.add_paragraph(c.t("survey.none"));
-  else c.d.add_paragraph(Inline{Span{r.investigations, false, Tone::plain, "", true}});
-  if (a.kase.knowledge_level == "given")
-    c.d.add_paragraph(msgf(c.L, "survey.fc_given", c.n(a.kase.options.FC, 2)));
-  else
-    c.d.add_paragraph(msgf(c.L, "survey.lc", a.kase.knowledge_level, c.n(a.kase.options.FC, 2)));
+  add_knowledge_level(c);
   std::vector<std::vector<Cell>> rows;
   Cell type(r.masonry.empty() ? c.t("masonry.none") : r.masonry);
   type.user = !r.masonry.empty();
@@ -170,21 +169,26 @@ void add_building_description(Ctx& c) {
   std::string which = msgf(c.L, "criteria.engine", mechanism_name(c.L, ms.type), a.kinematic.candidates.size());
   if (a.kinematic.candidates.size() > 1) which += " " + msgf(c.L, "criteria.parameter", c.loc(ms.parameter_name));
   c.d.add_paragraph(which);
-  add_defaults(c);
 }
 
-// The values the case did not give and the engine assumed (issue 41): each
-// with its key in the case file and what it sets.
-void add_defaults(Ctx& c) {
-  const std::vector<CaseDefault> all = assessment_defaults(c.a);
-  if (all.empty()) return;
-  c.d.add_heading(c.t("defaults.heading"), 3, false);
-  c.d.add_paragraph(c.t("defaults.intro"));
-  std::vector<std::vector<Cell>> rows;
-  for (const CaseDefault& x : all)
-    rows.push_back({Cell(x.path), Cell(c.loc(x.value)), Cell(c.t(x.effect))});
-  c.d.add_cell_table({Cell(c.t("defaults.key")), Cell(c.t("defaults.value")), Cell(c.t("defaults.effect"))}, rows,
-                     c.t("defaults.cap"));
+// Rilievo, indagini e livello di conoscenza (C8.5.4): the engineer's text and
+// the level the case adopts, which has one source, the case key; a text that
+// names another level is flagged here (issue 36, item 5).
+void add_knowledge_level(Ctx& c) {
+  const FacadeAssessment& a = c.a;
+  const ReportInfo& r = a.kase.report;
+  c.d.add_heading(c.t("survey.heading"), 2, false);
+  if (r.investigations.empty()) c.d.add_paragraph(c.t("survey.none"));
+  else c.d.add_paragraph(Inline{Span{r.investigations, false, Tone::plain, "", true}});
+  if (a.kase.knowledge_level == "given")
+    c.d.add_paragraph(msgf(c.L, "survey.fc_given", c.n(a.kase.options.FC, 2)));
+  else
+    c.d.add_paragraph(msgf(c.L, "survey.lc", a.kase.knowledge_level, c.n(a.kase.options.FC, 2)));
+  for (const std::string& lc : knowledge_level_conflict(a.kase))
+    c.d.add_paragraph(Inline{Span{msgf(c.L, "survey.conflict", lc,
+                                       a.kase.knowledge_level == "given" ? "FC = " + c.n(a.kase.options.FC, 2)
+                                                                         : a.kase.knowledge_level),
+                                  true, Tone::fail}});
 }
 
 }  // namespace assess::relazione

@@ -5,6 +5,8 @@
 // capacity curve and ADRS plot; then the table of every candidate examined.
 #include "report/relazione_context.hpp"
 
+#include "assess/report/relazione.hpp"
+
 #include "report/report_heading.hpp"
 #include "report/text_format.hpp"
 
@@ -117,7 +119,7 @@ std::string load_name(const Ctx& c, const Load& l) {
   return c.loc(l.name);
 }
 
-void add_virtual_work(Ctx& c, const Chain& chain, const KinematicResult& k) {
+void virtual_work_table(Ctx& c, const Chain& chain, const KinematicResult& k) {
   std::vector<std::vector<Cell>> rows;
   double W_other = 0.0;
   // The self weights of a body made of several blocks (the gable's
@@ -135,10 +137,15 @@ void add_virtual_work(Ctx& c, const Chain& chain, const KinematicResult& k) {
     const double W = (weight ? w.load.weight : w.load.force.norm()) / units::kN;
     const bool seismic = weight && w.load.seismic;
     if (weight && !seismic) W_other += W;
+    // A block's weight distributed over its area (issue 36): W·δx² is W δx_G² plus
+    // the term of its rotation, printed beside it so that the row can be redone.
+    Cell wdx2 = c.num(w.W_dx2 / units::kN, 3);
+    const double lumped = weight && seismic ? W * w.dx * w.dx : 0.0;
+    if (w.load.type == LoadType::SelfWeight && seismic && std::abs(w.W_dx2 / units::kN - lumped) > 5e-4)
+      wdx2.note = msgf(c.L, "vw.distributed", c.n(lumped, 3), c.n(w.W_dx2 / units::kN - lumped, 3));
     rows.push_back({Cell(name), Cell(c.t("load." + to_string(w.load.type))), Cell(c.t(seismic ? "vw.yes" : "vw.no")),
                     c.num(w.load.point.x(), 3), c.num(w.load.point.y(), 3), c.num(W, 2), c.num(w.dx, 4),
-                    c.num(w.dz, 4), c.num(w.W_dx / units::kN, 3), c.num(w.W_dx2 / units::kN, 3),
-                    c.num(w.work / units::kN, 3)});
+                    c.num(w.dz, 4), c.num(w.W_dx / units::kN, 3), wdx2, c.num(w.work / units::kN, 3)});
   };
   for (const LoadWork& w : k.loads) {
     const int b = w.load.type == LoadType::SelfWeight && w.load.block >= 0 ? body_of[std::size_t(w.load.block)] : -1;
@@ -193,7 +200,7 @@ void add_virtual_work(Ctx& c, const Chain& chain, const KinematicResult& k) {
 
 // The kinematic quantities, each with the numbers it is computed from (the
 // formulas of §Formule) so that it can be redone by hand.
-void add_quantities(Ctx& c, const KinematicResult& k) {
+void quantities_table(Ctx& c, const KinematicResult& k) {
   const double SW = k.sum_W / units::kN, SWdx = k.sum_W_dx / units::kN, SWdx2 = k.sum_W_dx2 / units::kN;
   const double Lo = k.work_other / units::kN, M = k.M_star / units::tonne;
   std::vector<std::vector<Cell>> rows;
@@ -241,7 +248,7 @@ void add_quantities(Ctx& c, const KinematicResult& k) {
 }
 
 // The capacity curve at a few points (d*, a*), to read a*(d) by hand.
-void add_curve_table(Ctx& c, const KinematicResult& k) {
+void curve_table(Ctx& c, const KinematicResult& k) {
   if (k.curve.size() < 3) return;
   std::vector<std::vector<Cell>> rows;
   const std::size_t n = k.curve.size(), step = std::max<std::size_t>(1, (n - 1) / 10);
@@ -269,7 +276,7 @@ double a_on_curve(const KinematicResult& k, double d) {
 // ADRS: the capacity curve and, for each displacement check of the candidate,
 // its demand curve (its damping, floor spectrum at height), the line of the
 // period at which the demand is read, the demand and the capacity points.
-void add_adrs(Ctx& c, std::size_t ci, const std::string& id) {
+void adrs_figure(Ctx& c, std::size_t ci, const std::string& id) {
   const CandidateResult& cr = c.candidate(ci);
   const KinematicResult& k = cr.result;
   if (!k.curve_complete() || k.curve.empty()) return;
@@ -362,37 +369,6 @@ void add_quantity_table(Ctx& c, const std::vector<MechanismQuantity>& qs, const 
   c.d.add_cell_table({Cell(c.t("kin.quantity")), hv, Cell(c.t("kin.unit")), Cell(c.t("data.source"))}, rows, caption);
 }
 
-// One candidate developed: bodies, drawing, derivation, virtual work, quantities, curve, ADRS.
-void add_candidate(Ctx& c, std::size_t ci, std::size_t k, int level) {
-  const CandidateResult& cr = c.candidate(ci);
-  const MechanismCandidate& mc = c.a.kase.mechanism.candidates.at(ci);
-  const Chain& chain = mc.chain;
-  const std::string suffix = k == 0 ? "" : "-" + std::to_string(k + 1);
-  c.d.add_heading(c.t("mech.bodies"), level, false);
-  if (!c.a.kase.mechanism.data.empty()) add_quantity_table(c, c.a.kase.mechanism.data, c.t("data.caption_mechanism"));
-  else add_bodies(c, chain);
-  bool welded = false;  // issue 33: the corner's pieces, projected on the plane normal to the axis
-  for (const Constraint& x : chain.constraints()) welded = welded || x.type == ConstraintType::Weld;
-  c.d.add_svg(mechanism_svg(chain, cr.result, c.L),
-              c.t(chain.plan() ? "mech.fig_plan" : welded ? "mech.fig_projection" : "mech.fig"), "fig-mechanism" + suffix);
-  if (!mc.quantities.empty()) {
-    c.d.add_heading(c.t("mech.derivation"), level, false);
-    add_quantity_table(c, mc.quantities, c.t("mech.derivation_cap"));
-  }
-  const KinematicResult& kr = cr.result;
-  if (std::isfinite(kr.d0_star_bound) && kr.d0_star_bound < kr.d0_star)
-    c.d.add_paragraph(msgf(c.L, "mech.bound", c.n(kr.d0_star, 3), c.n(kr.d0_star_bound, 3), c.loc(mc.rotation_bound_reason)));
-  c.d.add_heading(c.t("mech.vw"), level, false);
-  add_virtual_work(c, chain, cr.result);
-  c.d.add_heading(c.t("kin.heading_linear"), level, false);
-  add_quantities(c, cr.result);
-  if (cr.result.curve_complete()) {
-    c.d.add_heading(c.t("kin.heading_curve"), level, false);
-    add_curve_table(c, cr.result);
-    add_adrs(c, ci, "fig-adrs" + suffix);
-  }
-}
-
 // The methods a candidate governs, in words ("lineare, non lineare (NTC 2018)").
 std::string governs_text(const Ctx& c, std::size_t ci) {
   std::string out;
@@ -405,6 +381,40 @@ std::string governs_text(const Ctx& c, std::size_t ci) {
 }
 
 }  // namespace
+
+std::size_t body_candidate(const FacadeAssessment& a) {
+  if (const MethodVerdict* m = a.verdict.conclusion())
+    if (m->governing >= 0) return candidate_of(a, a.verdict.rows[std::size_t(m->governing)].candidate);
+  return a.kinematic.governing;
+}
+
+void add_candidate_data(Ctx& c, std::size_t ci, const std::string& fig, int level) {
+  const CandidateResult& cr = c.candidate(ci);
+  const MechanismCandidate& mc = c.a.kase.mechanism.candidates.at(ci);
+  const Chain& chain = mc.chain;
+  if (!c.a.kase.mechanism.data.empty()) add_quantity_table(c, c.a.kase.mechanism.data, c.t("data.caption_mechanism"));
+  else add_bodies(c, chain);
+  if (!fig.empty()) {
+    bool welded = false;  // issue 33: the corner's pieces, projected on the plane normal to the axis
+    for (const Constraint& x : chain.constraints()) welded = welded || x.type == ConstraintType::Weld;
+    c.d.add_svg(mechanism_svg(chain, cr.result, c.L),
+                c.t(chain.plan() ? "mech.fig_plan" : welded ? "mech.fig_projection" : "mech.fig"), fig);
+  }
+  if (!mc.quantities.empty()) {
+    c.d.add_heading(c.t("mech.derivation"), level, false);
+    add_quantity_table(c, mc.quantities, c.t("mech.derivation_cap"));
+  }
+  const KinematicResult& kr = cr.result;
+  if (std::isfinite(kr.d0_star_bound) && kr.d0_star_bound < kr.d0_star)
+    c.d.add_paragraph(msgf(c.L, "mech.bound", c.n(kr.d0_star, 3), c.n(kr.d0_star_bound, 3), c.loc(mc.rotation_bound_reason)));
+}
+
+void add_virtual_work(Ctx& c, std::size_t ci) {
+  virtual_work_table(c, c.a.kase.mechanism.candidates.at(ci).chain, c.candidate(ci).result);
+}
+void add_quantities(Ctx& c, std::size_t ci) { quantities_table(c, c.candidate(ci).result); }
+void add_curve_table(Ctx& c, std::size_t ci) { curve_table(c, c.candidate(ci).result); }
+void add_adrs(Ctx& c, std::size_t ci, const std::string& id) { adrs_figure(c, ci, id); }
 
 void add_formulas(Ctx& c) {
   c.d.add_heading(c.t("formulas.heading"));
@@ -440,27 +450,39 @@ void add_formulas(Ctx& c) {
 
 void add_mechanism(Ctx& c) {
   const FacadeAssessment& a = c.a;
-  c.d.add_heading(c.t("mech.heading"));
-  const std::vector<std::size_t> dev = developed_candidates(a);
-  std::string which;
-  for (std::size_t ci : dev) which += (which.empty() ? "" : "; ") + c.loc(c.candidate(ci).label);
-  c.d.add_paragraph(c.t("mech.type") + ": " + mechanism_name(c.L, a.kase.mechanism.type) + ". " +
-                    msgf(c.L, dev.size() == 1 ? "mech.developed1" : "mech.developed", which));
-  for (std::size_t k = 0; k < dev.size(); ++k) {
-    const std::size_t ci = dev[k];
-    int level = 3;
-    if (dev.size() > 1) {
-      c.d.add_heading(c.loc(c.candidate(ci).label) + " — " + c.t("mech.governs_methods") + ": " + governs_text(c, ci), 3,
-                      false);
-      level = 4;
-    } else {
-      const std::string gov = governs_text(c, ci);
-      if (!gov.empty()) c.d.add_paragraph(c.t("mech.governs_methods") + ": " + gov + ".", "note");
-    }
-    add_candidate(c, ci, k, level);
+  c.d.add_heading(c.t("mech.heading"), 2, true, true, "mechanism");
+  const std::size_t ci = body_candidate(a);
+  const std::size_t n = a.kinematic.candidates.size();
+  // The body develops the candidate whose check decides the conclusion
+  // (issue 36: one section of a few pages per mechanism); every candidate,
+  // with its virtual work and capacity curve, is in the tabulati.
+  Inline intro{Span{c.t("mech.type") + ": " + mechanism_name(c.L, a.kase.mechanism.type) + ". " +
+                    msgf(c.L, n > 1 ? "mech.body_one" : "mech.body_single", c.loc(c.candidate(ci).label), n)}};
+  if (c.tabulati) {
+    intro.push_back(Span{" "});
+    intro.push_back(reference(c.t("mech.see_tab_candidates"), c.here("candidates"), tabulati_key));
   }
-  // Every candidate examined (C8.7.1: the most unfavourable governs).
-  if (a.kinematic.candidates.size() > 1) {
+  c.d.add_paragraph(intro);
+  const std::string gov = governs_text(c, ci);
+  if (!gov.empty()) c.d.add_paragraph(c.t("mech.governs_methods") + ": " + gov + ".", "note");
+  c.d.add_heading(c.t("mech.bodies"), 3, false);
+  add_candidate_data(c, ci, "fig-mechanism", 3);
+  c.d.add_heading(c.t("mech.vw"), 3, false);
+  add_virtual_work(c, ci);
+  c.d.add_heading(c.t("kin.heading_linear"), 3, false);
+  add_quantities(c, ci);
+  add_choice_notes(c, {"FC", "lumped_masses", "displacement_bound", "friction_activation", "seat_friction", "dSLV_over_d0",
+                   "dSLC_over_d0"});
+  if (c.candidate(ci).result.curve_complete()) {
+    c.d.add_heading(c.t("kin.heading_curve"), 3, false);
+    if (c.tabulati)
+      c.d.add_paragraph(Inline{reference(c.t("kin.curve_in_tab"), c.here("cand-" + std::to_string(ci)), tabulati_key)}, "note");
+    else
+      add_curve_table(c, ci);
+    add_adrs(c, ci, "fig-adrs");
+  }
+  // Every candidate examined (C8.7.1: the most unfavourable governs), each with where it is developed.
+  if (n > 1) {
     c.d.add_heading(c.t("mech.candidates"), 3, false);
     std::vector<Cell> head{Cell(c.t("mech.candidate")), numeric_cell(c.loc(a.kase.mechanism.parameter_name)), numeric_cell("Z (m)"),
                            numeric_cell("α0 (–)"), numeric_cell("a0* (m/s²)")};
@@ -472,9 +494,8 @@ void add_mechanism(Ctx& c) {
     if (!zcode.empty()) head.push_back(numeric_cell("ζE " + code_name(zcode)));
     head.push_back(Cell(c.t("mech.where")));
     std::vector<std::vector<Cell>> rows;
-    for (std::size_t i = 0; i < a.kinematic.candidates.size(); ++i) {
+    for (std::size_t i = 0; i < n; ++i) {
       const CandidateResult& cr = a.kinematic.candidates[i];
-      const bool developed = std::find(dev.begin(), dev.end(), i) != dev.end();
       std::vector<Cell> row{Cell(c.loc(cr.label)), c.num(cr.parameter, 3), c.num(cr.Z, 2), c.num(cr.result.alpha0, 4),
                             c.num(cr.result.a0_star, 3)};
       for (const auto& [code, gi] : a.kinematic.governing_by_code) {
@@ -489,9 +510,15 @@ void add_mechanism(Ctx& c) {
         if (d != cr.max_dc.end()) zc.tone = verdict_tone(outcome_of(check_satisfied(d->second, false), false));
         row.push_back(zc);
       }
-      const std::string gov = governs_text(c, i);
-      row.push_back(Cell(developed ? c.t("mech.in_body") + (gov.empty() ? "" : " (" + gov + ")") : c.t("mech.in_appendix")));
-      for (Cell& x : row) x.highlight = developed;
+      const std::string g = governs_text(c, i);
+      Cell where(i == ci ? c.t("mech.in_body") : c.t("mech.in_tab"), g);
+      if (c.tabulati && i != ci) {
+        where.text = c.t("mech.in_tab_ref");
+        where.link = c.here("cand-" + std::to_string(i));
+        where.doc = tabulati_key;
+      }
+      row.push_back(where);
+      for (Cell& x : row) x.highlight = i == ci;
       rows.push_back(row);
     }
     c.d.add_cell_table(head, rows, msgf(c.L, "mech.candidates_cap2", c.loc(a.kase.mechanism.parameter_name)));

@@ -1,10 +1,12 @@
-// report_files.cpp: a document written to its HTML, PDF and Word files
-// (issue 28): the PDF printed once with the contents' page column empty; its
-// bookmarks give each heading's page; the contents' page numbers are then
-// printed alone (the document up to its contents, every other mark
-// invisible) and laid over those first pages with qpdf (issue 32: one print
-// of the whole document, not two). Without qpdf, a second print of the whole
-// document. The Word document is written beside it while Chromium prints;
+// report_files.cpp: a relazione written to its HTML, PDF, Word and text files
+// (issues 28, 36): the body and its tabulati, each file of the body with the
+// tabulati's beside it (NAME-tabulati.EXT). Each PDF is printed once with the
+// contents' page column empty; its bookmarks give each heading's page; the
+// contents' page numbers are then printed alone (the document up to its
+// contents, every other mark invisible) and laid over those first pages with
+// qpdf (issue 32: one print of the whole document, not two). Without qpdf, a
+// second print of the whole document. The two PDFs print side by side and
+// the Word documents are written by pandoc meanwhile (issue 36, item 7);
 // every file through the guarded writer (support/output_file.hpp).
 #include "assess/report/report_files.hpp"
 
@@ -23,6 +25,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <future>
+#include <map>
 
 namespace assess {
 
@@ -88,48 +91,100 @@ bool overlay_first_pages(const fs::path& base, const fs::path& overlay, const fs
   return true;
 }
 
+// The PDF of one document: printed once with the contents' page column
+// empty, its bookmarks giving each heading's page, the page numbers printed
+// alone and laid over the first pages (without qpdf: a second print). Returns
+// the heading pages (for the HTML edition) and writes `final`.
+std::map<std::string, int> print_pdf(const Document& d, const fs::path& dir, const fs::path& final) {
+  fs::create_directories(dir);
+  HtmlOptions o;
+  o.page_column = true;
+  const fs::path first = dir / "first.pdf", toc = dir / "contents.pdf";
+  html_to_pdf(to_html(d, o), first.string());
+  o.pages = heading_pages(d, pdf_outline(first.string()));
+  HtmlOptions numbers = o;
+  numbers.contents_overlay = true;
+  html_to_pdf(to_html(d, numbers), toc.string());
+  if (!overlay_first_pages(first, toc, final, dir)) html_to_pdf(to_html(d, o), final.string());
+  return o.pages;
+}
+
+std::string file_name(const std::string& path) { return fs::path(path).filename().string(); }
+
 }  // namespace
 
-void write_report_files(const Document& d, const ReportFiles& files) {
-  // The Word document is written by pandoc while Chromium prints.
-  std::future<void> docx;
-  detail::TempDir dir("assess_report_");
-  const fs::path docx_tmp = dir.path() / "report.docx";
-  if (!files.docx.empty()) docx = std::async(std::launch::async, [&] { write_docx(d, docx_tmp.string()); });
-  try {
-    if (!files.pdf.empty()) {
-      HtmlOptions o;
-      o.page_column = true;
-      const fs::path first = dir.path() / "first.pdf", toc = dir.path() / "contents.pdf", final = dir.path() / "final.pdf";
-      // One print of the whole document, the contents' page column empty.
-      html_to_pdf(to_html(d, o), first.string());
-      o.pages = heading_pages(d, pdf_outline(first.string()));
-      const std::string page = to_html(d, o);
-      HtmlOptions numbers = o;
-      numbers.contents_overlay = true;
-      html_to_pdf(to_html(d, numbers), toc.string());
-      if (overlay_first_pages(first, toc, final, dir.path())) {
-        install("--pdf", files.pdf, &final, nullptr);
-      } else {
-        html_to_pdf(page, final.string());  // no qpdf: the whole document printed again with its numbers
-        install("--pdf", files.pdf, &final, nullptr);
-      }
-      if (!files.html.empty()) install("--html", files.html, nullptr, &page);
-    } else if (!files.html.empty()) {
-      const std::string page = to_html(d);
-      install("--html", files.html, nullptr, &page);
+std::string tabulati_path(const std::string& path) {
+  const fs::path p(path);
+  const std::string ext = p.extension().string();
+  const std::string stem = p.stem().string();
+  // "r.pdf" -> "r-tabulati.pdf"; a name without an extension (or ".hidden") gets the suffix at its end.
+  if (ext.empty() || stem.empty()) return path + "-tabulati";
+  return (p.parent_path() / (stem + "-tabulati" + ext)).string();
+}
+
+std::vector<std::pair<std::string, std::string>> report_outputs(const ReportFiles& files) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const auto& [option, path] : {std::pair<std::string, std::string>{"--html", files.html}, {"--pdf", files.pdf},
+                                     {"--docx", files.docx}, {"--txt", files.txt}})
+    if (!path.empty()) {
+      out.push_back({option, path});
+      out.push_back({option, tabulati_path(path)});
     }
+  return out;
+}
+
+void write_report_files(const Relazione& r, const ReportFiles& files) {
+  const Document* docs[2] = {&r.body, &r.tabulati};
+  auto path_of = [](const std::string& body_path, int k) { return k == 0 ? body_path : tabulati_path(body_path); };
+  detail::TempDir dir("assess_report_");
+  // Side by side (issue 36, item 7): the Word documents (pandoc) and the
+  // tabulati's PDF while the body's PDF prints.
+  std::vector<std::future<void>> jobs;
+  std::map<std::string, int> pages[2];
+  auto wait_all = [&] {
+    for (auto& j : jobs)
+      if (j.valid()) j.wait();
+  };
+  try {
+    for (int k = 0; k < 2 && !files.docx.empty(); ++k)
+      jobs.push_back(std::async(std::launch::async, [&, k] {
+        write_docx(*docs[k], (dir.path() / ("report-" + std::to_string(k) + ".docx")).string());
+      }));
+    if (!files.pdf.empty()) {
+      jobs.push_back(std::async(std::launch::async, [&] {
+        pages[1] = print_pdf(*docs[1], dir.path() / "pdf-1", dir.path() / "final-1.pdf");
+      }));
+      pages[0] = print_pdf(*docs[0], dir.path() / "pdf-0", dir.path() / "final-0.pdf");
+    }
+    for (auto& j : jobs) j.get();  // rethrows the first failure
   } catch (...) {
-    if (docx.valid()) docx.wait();
+    wait_all();
     throw;
   }
-  if (!files.txt.empty()) {
-    const std::string text = to_text(d);
-    install("--txt", files.txt, nullptr, &text);
-  }
-  if (docx.valid()) {
-    docx.get();
-    install("--docx", files.docx, &docx_tmp, nullptr);
+  for (int k = 0; k < 2; ++k) {
+    if (!files.pdf.empty()) {
+      const fs::path final = dir.path() / ("final-" + std::to_string(k) + ".pdf");
+      install("--pdf", path_of(files.pdf, k), &final, nullptr);
+    }
+    if (!files.html.empty()) {
+      HtmlOptions o;
+      if (!files.pdf.empty()) {
+        o.page_column = true;
+        o.pages = pages[k];
+      }
+      // The two pages link each other by file name (they are written side by side).
+      o.documents[k == 0 ? tabulati_key : relazione_key] = file_name(path_of(files.html, 1 - k));
+      const std::string page = to_html(*docs[k], o);
+      install("--html", path_of(files.html, k), nullptr, &page);
+    }
+    if (!files.txt.empty()) {
+      const std::string text = to_text(*docs[k]);
+      install("--txt", path_of(files.txt, k), nullptr, &text);
+    }
+    if (!files.docx.empty()) {
+      const fs::path docx = dir.path() / ("report-" + std::to_string(k) + ".docx");
+      install("--docx", path_of(files.docx, k), &docx, nullptr);
+    }
   }
 }
 

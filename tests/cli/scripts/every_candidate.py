@@ -128,6 +128,8 @@ close(max(dc_of(c["dc"]) for c in full["checks"] + [k for c in cands for k in c[
 
 # 3. The relazione's checks tables hold exactly the checks the verdict counts.
 text = open(html, encoding="utf-8").read()
+# Issue 36: the other candidates' checks are in the tabulati di calcolo beside the relazione.
+text += open(html[:-len(".html")] + "-tabulati.html", encoding="utf-8").read()
 tables = re.findall(r'<table class="checks">(.*?)</table>', text, re.S)
 body_rows = 0
 per_code = {}

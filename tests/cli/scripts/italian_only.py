@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
-"""The Italian relazione is entirely Italian (issues 24, 28): renders the Italian
-HTML of every shipped case and scans its text for English words and code
-tokens (ASCII spellings of Greek letters and units, internal names, paths),
+"""The Italian relazione is entirely Italian (issues 24, 28, 36): renders the
+Italian HTML of every shipped case — the body and its tabulati di calcolo — and
+scans their text for English words and code tokens (ASCII spellings of Greek
+letters and units, internal names and block names, paths, certainty tags, notes
+addressed to developers),
 and for a decimal point (the Italian edition writes the decimal comma), outside
 the input appendix (<pre>), the project line and the engineer's own words
 (<span class="user">: the project, names of walls, descriptions). Also:
@@ -30,13 +32,17 @@ ENGLISH = ["the", "of", "and", "hinge", "records", "record", "analyses", "mean",
            "docs/", "inf", "nan", "design", "tie", "ties", "case", "key", "block", "load", "pulse", "near-fault",
            # issue 33: the labels of horizontal flexure, the side walls' friction, the roof thrust, the corner
            "strip", "arch", "thrust", "friction", "roof", "axis", "pier", "arm", "half", "sliding", "walls", "side",
-           "without", "bare", "supports", "crushing", "restraint", "lever", "seat", "deg"]
+           "without", "bare", "supports", "crushing", "restraint", "lever", "seat", "deg",
+           # issue 36: a record's class, developers' words, the engine's certainty tags and notes
+           "class", "classes", "issue", "TODO", "[R]", "[I]", "[V-T]", "[V-S]", "[D]", "scelta nostra",
+           "richiamato, non verificato", "sliders", "hinge", "Wedge", "wall"]
 # A decimal point: a number "0.991" that is not a clause or section number ("C8.7.1", "§3.2", "[3.2.10]").
 DECIMAL_POINT = re.compile(r"(?<![\w§.\[/-])\d+\.\d+(?![.\d\w])")
 
 
 def text_of(page):
     page = page.split("Appendice — file del caso")[0]  # the input appendix: the user's file
+    page = page.split("Appendice: file del caso dell'edificio")[0]
     page = re.sub(r"<style.*?</style>", " ", page, flags=re.S)
     page = re.sub(r"<pre>.*?</pre>", " ", page, flags=re.S)
     page = re.sub(r'<p class="meta">.*?</p>', " ", page, flags=re.S)  # project, file: the user's words
@@ -67,6 +73,9 @@ def main():
             continue
         with open(page_file, encoding="utf-8") as f:
             page = f.read()
+        # The tabulati di calcolo beside it (issue 36): the same rules.
+        with open(page_file[:-len(".html")] + "-tabulati.html", encoding="utf-8") as f:
+            page += f.read()
         text = text_of(page)
         for m in re.finditer(r'class="[^"]*dc-(fail|ok)[^"]*">(?:D/C = )?([0-9.,]+|∞)<', page):
             v = float("inf") if m.group(2) == "∞" else float(m.group(2).replace(",", "."))  # printed to 3 decimals: 1.000 may be 1.0004 (> 1, red)
@@ -74,7 +83,9 @@ def main():
                 failures.append(f"{name}: D/C {v} shown as dc-{m.group(1)}")
         found = {}
         for w in ENGLISH:
-            for m in re.finditer(r"(?<![\w'./-])" + re.escape(w) + r"(?![\w'-])", text):
+            edge_l = r"(?<![\w'./-])" if w[0].isalnum() else ""
+            edge_r = r"(?![\w'-])" if w[-1].isalnum() else ""
+            for m in re.finditer(edge_l + re.escape(w) + edge_r, text):
                 ctx = text[max(0, m.start() - 50):m.end() + 50].replace("\n", " ")
                 found.setdefault(w, ctx)
         for w, ctx in found.items():

@@ -12,7 +12,7 @@ For every case (single façade cases and building cases) runs `assess run CASE
   - HTML: every D/C cell is green only with a number <= 1 and red only with a
     number > 1 or "∞", and the outcome in the same row agrees with its colour;
   - HTML: each method box of the verdict box counts exactly the rows of the
-    checks tables ("checks" tables of the body and the appendix) of that code
+    checks tables ("checks" tables of the body and of the tabulati di calcolo) of that code
     and method, and its failing count the red rows among them;
   - building JSON: each approach's counts equal its mechanisms' verdicts.
 Exit 0 when every case passes, 1 otherwise (every defect printed).
@@ -115,6 +115,9 @@ KIND_OF = {"lineare (resistenza)": "linear", "non lineare (spostamento)": "nonli
 def check_html(case, path):
     p = Tables()
     p.feed(open(path, encoding="utf-8").read())
+    # Issue 36: the other candidates' checks are in the tabulati di calcolo beside the relazione.
+    p.owner = ""
+    p.feed(open(path[:-len(".html")] + "-tabulati.html", encoding="utf-8").read())
     counts = {}
     for t in p.tables:
         for row in t["rows"]:

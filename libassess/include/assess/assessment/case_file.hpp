@@ -82,7 +82,21 @@ struct CaseFile {
   nlohmann::json dynamic;
   /// Plausibility warnings of the input (field, value, unit, why); the run goes on.
   std::vector<std::string> warnings;
+  /// Issue 36: the knowledge levels the engineer's text of the investigations
+  /// ("report"/"investigations") names ("LC1" ...), in order, each once. The
+  /// level has one source, the case key: a text that names another level
+  /// than knowledge_level (or one whose FC differs from a given "FC") is
+  /// flagged in the warnings and in the relazione (knowledge_level_conflict).
+  std::vector<std::string> knowledge_levels_stated;
+  /// The document the case was parsed from (issue 36): the modelling
+  /// choices' alternatives are this case with one key changed
+  /// (assessment/modelling_choices.hpp), named by its JSON path.
+  nlohmann::json source;
 };
+
+/// The levels of c.knowledge_levels_stated that contradict the adopted one
+/// (another level; with a given FC, a level whose FC of Tab. C8.5.IV differs).
+std::vector<std::string> knowledge_level_conflict(const CaseFile& c);
 
 /// Parses a case document; errors name `file` and the JSON path.
 CaseFile parse_case(const nlohmann::json& doc, const std::string& file);

@@ -6,7 +6,10 @@
 
 #include "assess/assessment/case_file.hpp"
 #include "assess/assessment/dynamic_case.hpp"
+#include "assess/assessment/acceptability.hpp"
+#include "assess/assessment/judgement.hpp"
 #include "assess/assessment/mechanism_dynamics.hpp"
+#include "assess/assessment/modelling_choices.hpp"
 #include "assess/assessment/safety_index.hpp"
 #include "assess/assessment/verdict.hpp"
 #include "assess/records/record_selection.hpp"
@@ -26,6 +29,16 @@ struct FacadeOptions {
   bool keep_going = false;
   /// Keep theta(t) of every analysis (for plots). Default true.
   bool histories = true;
+  /// Issue 36: the review of the result a relazione and its summary print:
+  /// the modelling choices with their alternatives computed, the checks of
+  /// acceptability (NTC 2018 §10.2) and the judgement (review.hpp). Off for
+  /// the analyses that only need the verdict (`--json`, the alternatives
+  /// themselves, the other candidates' dynamics, campaigns).
+  bool review = true;
+  /// With the review, the records' alternative (the selection's windows)
+  /// even when it cannot change the adopted verdict: the relazione's table of
+  /// the modelling choices (`assess run` with a report file).
+  bool review_records = true;
 };
 
 /// A record used by the dynamic analysis.
@@ -199,6 +212,12 @@ struct FacadeAssessment {
   std::vector<SafetyIndex> indices;
   /// Plausibility and compatibility warnings (field, value, unit, why).
   std::vector<std::string> warnings;
+  /// Issue 36 (FacadeOptions::review): the modelling choices with their
+  /// alternatives computed, the checks of acceptability, and the judgement
+  /// of the adopted verdict drawn from them (absent without the review).
+  std::vector<ModellingChoice> choices;
+  std::vector<AcceptabilityCheck> acceptability;
+  std::optional<Judgement> judgement;
 
   // Curves for the report (computed here so the report never recomputes physics).
   std::vector<double> periods;                         ///< s (0 first, then log-spaced to 4 s)

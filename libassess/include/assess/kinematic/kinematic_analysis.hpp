@@ -48,6 +48,15 @@ struct KinematicOptions {
   /// d_SLV / d0* (-): the code's 0.40 (Circ. 2019 C8.7.1.2.1.6); another
   /// value only for the relazione's sensitivity study (assessment/sensitivity.hpp).
   double dSLV_over_d0 = code_rules::dSLV_over_d0_2018;
+  /// d_SLC / d0* (-): the code's 0.60 (C8.7.1.2.1.6); another value only for
+  /// the relazione's modelling choices (issue 36: the reading of the limit
+  /// state that governs is the one varied).
+  double dSLC_over_d0 = code_rules::dSLC_over_d0_2018;
+  /// Issue 36 (the relazione's modelling choices): each block's weight
+  /// lumped at its centroid in sum W dx^2 (M*, e*, d*/d_k), instead of
+  /// distributed over its area (the default: integral dx^2 dW, C8A.4.2 for a
+  /// block of continuous mass). Only the alternative shown to the reviewer.
+  bool lumped_masses = false;
   /// Issue 33: a bound on the rotation (rad) of a mechanism that turns as one
   /// rigid body about its single ground hinge (the corner pier's own
   /// overturning, the pull-out of the side walls' interlocking): d0* is

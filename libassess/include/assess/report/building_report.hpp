@@ -25,25 +25,26 @@ nlohmann::json building_json(const BuildingAssessment& b);
 /// The safety indices of one mechanism as JSON (an array; non-finite numbers null).
 nlohmann::json safety_indices_json(const std::vector<SafetyIndex>& indices);
 
-/// The relazione of the building as a document (issue 28): frontespizio, the
-/// building's verdict (one sentence: verdict, zetaE,edificio, the mechanisms
-/// that fail) and the governing mechanism of each approach, contents;
-/// premessa, normativa, description, survey, the mechanisms examined; the
-/// seismic action; the formulas; the summary (per-approach alpha0, a0*, D/C
-/// and zetaE of every mechanism, the zetaE chart, NTC 2008, the record sets,
-/// the ties); one section per mechanism (the façade relazione's sections,
-/// anchors and figure ids prefixed with the mechanism's id); interventions;
-/// conclusions and signature; appendices (other candidates, warnings,
-/// legend, readings adopted, the case file).
-Document building_document(const BuildingAssessment& b, const ReportOptions& options = {});
+/// The relazione of the building (issues 28, 36) as its two documents. The
+/// body: frontespizio, the building's verdict (one sentence: verdict,
+/// zetaE,edificio, the mechanisms that fail and those whose verdict is not
+/// robust) and the governing mechanism of each approach, contents; premessa,
+/// normativa, description, survey, the mechanisms examined; the seismic
+/// action; the modelling choices of every mechanism in one table; the
+/// formulas; the summary (per-approach alpha0, D/C and zetaE of every
+/// mechanism, the zetaE chart, NTC 2008, the record sets, the ties); one
+/// section of a few pages per mechanism (the façade relazione's sections,
+/// anchors and figure ids prefixed with the mechanism's id); interventions
+/// and conclusions with the mechanisms' judgements; the NTC 2018 §10.2
+/// chapter; warnings, legend, signature. The tabulati di calcolo: each
+/// mechanism's candidates, dynamic analysis, comparison and modelling
+/// choices in full; the readings adopted; the case file.
+Relazione building_relazione(const BuildingAssessment& b, const ReportOptions& options = {});
 
 /// The summary of the building's assessment (issue 41): what `assess run
 /// BUILDING.json` prints in the terminal, in the language of the options,
 /// from the relazione's own sections (the building's verdict, the seismic
 /// action, the mechanisms' table, the interventions, the warnings).
 Document building_summary(const BuildingAssessment& b, const ReportOptions& options = {});
-
-/// to_html(building_document(b, options)).
-std::string building_html(const BuildingAssessment& b, const ReportOptions& options = {});
 
 }  // namespace assess

@@ -16,16 +16,33 @@ namespace assess {
 /// How a piece of text reads as a verdict: plain, satisfied (green) or failing (red).
 enum class Tone { plain, ok, fail };
 
-/// A run of inline text. `link` is an anchor of the document ("sec-3") or "".
+/// The place in the text of a reference where the writer puts the section
+/// number of its target (resolve_references, relazione.hpp): "§{§}" -> "§T3.2".
+inline constexpr const char* section_number_mark = "{§}";
+
+/// A run of inline text. `link` is an anchor ("sec-3", "M3", a figure id) of
+/// the document `doc` ("": this one; else another document of the same
+/// relazione by its key, Document::key: the body and its tabulati di calcolo
+/// refer to each other, issue 36); every link is checked to resolve.
 struct Span {
   std::string text;
   bool strong = false;
   Tone tone = Tone::plain;
   std::string link;
   bool user = false;  ///< the engineer's own words (project, names, descriptions): any language, printed as written
+  std::string doc;    ///< the document `link` points into ("" this one)
   Span(std::string t = "", bool strong_ = false, Tone tone_ = Tone::plain, std::string link_ = "", bool user_ = false)
       : text(std::move(t)), strong(strong_), tone(tone_), link(std::move(link_)), user(user_) {}
 };
+
+/// A reference to a section: `text` holds section_number_mark where the
+/// target's number goes ("tabulati di calcolo, §{§}"), `anchor` the target's
+/// anchor, `doc` its document ("" this one).
+inline Span reference(std::string text, std::string anchor, std::string doc = "") {
+  Span s(std::move(text), false, Tone::plain, std::move(anchor));
+  s.doc = std::move(doc);
+  return s;
+}
 using Inline = std::vector<Span>;
 
 /// A table cell: text, an optional second line in small type (formula,
@@ -38,7 +55,8 @@ struct Cell {
   Tone tone = Tone::plain;
   bool strong = false;
   bool highlight = false;
-  std::string link;        ///< an anchor of the document the text links to ("M3"), or ""
+  std::string link;        ///< an anchor the text links to ("M3"), or ""; section_number_mark in the text: its number
+  std::string doc;         ///< the document of `link` ("" this one; Span::doc)
   bool user = false;       ///< the engineer's own words (Span::user)
   Cell() = default;
   Cell(std::string t) : text(std::move(t)) {}
@@ -133,6 +151,12 @@ struct Document {
   std::string title;
   std::string subtitle;
   std::string lang = "en";  ///< "it" | "en"
+  /// Which document of a relazione this is ("" alone; "relazione", "tabulati"):
+  /// the key other documents' references name (Span::doc).
+  std::string key;
+  /// Put before the number of every section ("T": the tabulati's "T3.2"), so
+  /// that a section number names one place in either document.
+  std::string number_prefix;
   std::vector<DocBlock> blocks;
 };
 
@@ -144,7 +168,8 @@ class DocumentBuilder {
   explicit DocumentBuilder(std::string title, std::string lang = "en");
 
   /// A heading; level 2 opens a section (a new printed page unless new_page is
-  /// false), 3-5 subsections. Returns its anchor. InputError outside 2..5.
+  /// false), 3-5 subsections. `anchor` (with the id prefix before it) names
+  /// it for references; "" gives one. Returns its anchor. InputError outside 2..5.
   std::string add_heading(const std::string& text, int level = 2, bool new_page = true, bool numbered = true,
                           const std::string& anchor = "");
   void add_paragraph(const std::string& text, const std::string& style = "");
@@ -168,6 +193,8 @@ class DocumentBuilder {
   void add_block(DocBlock b);
 
   void set_subtitle(const std::string& text) { doc_.subtitle = text; }
+  void set_key(const std::string& key) { doc_.key = key; }
+  void set_number_prefix(const std::string& prefix) { doc_.number_prefix = prefix; }
   void set_lang(const std::string& lang) { doc_.lang = lang; }
   /// A prefix put before every figure id and anchor from now on ("M3-": a building's mechanism).
   void set_id_prefix(const std::string& prefix) { id_prefix_ = prefix; }
@@ -195,8 +222,19 @@ class DocumentBuilder {
 std::string plain_text(const Inline& text);
 
 /// The section number of every heading of `d`, in order ("3", "3.2"; "" for an
-/// unnumbered one): one numbering for every writer and for the contents.
+/// unnumbered one; with Document::number_prefix "T3.2"): one numbering for
+/// every writer and for the contents.
 std::vector<std::string> heading_numbers(const Document& d);
+
+/// Resolves the references of documents that refer to each other (a
+/// relazione and its tabulati di calcolo, issue 36): every Span and Cell with
+/// a `link` must name an anchor (a heading's or a figure's id) of its
+/// document (`doc`: "" the one it is in, else the document of that key);
+/// section_number_mark in its text is replaced by the target heading's number
+/// ("§{§}" -> "§T3.2"). @throws std::logic_error naming the reference when
+/// a link does not resolve or a number is asked of a figure or an unnumbered
+/// heading (a defect of the relazione's code, never of the input).
+void resolve_references(const std::vector<Document*>& docs);
 
 /// A line of the contents: a numbered heading and its section number.
 struct ContentsEntry {

@@ -9,6 +9,7 @@
 #include "assess/report/document.hpp"
 #include "assess/report/messages.hpp"
 #include "assess/report/probabilistic_result.hpp"
+#include "assess/report/relazione.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -42,19 +43,25 @@ struct ReportOptions {
   std::string shared_records;
 };
 
-/// The relazione of the assessment as a document (issue 28): frontespizio,
-/// verdict box and contents; premessa, normativa, description of the building,
-/// survey and knowledge level, masonry, criteria of the mechanisms' choice;
-/// seismic action; the formulas with their clauses; each candidate that
-/// governs a method developed (bodies, drawing, virtual work, kinematic
-/// quantities with their numbers, capacity curve, ADRS); the checks; the
-/// dynamic analysis of the candidate that governs it; safety indices; the
-/// methods compared; interventions; the probabilistic result when given;
-/// the evaluation of the results; conclusions and signature; appendices
-/// (other candidates' checks, warnings, legend, the readings adopted, the
-/// case file). Render it with to_html (html_writer.hpp), write_docx
-/// (docx_writer.hpp) or the report files (report_files.hpp).
-Document facade_document(const FacadeAssessment& a, const ReportOptions& options = {});
+/// The relazione of the assessment (issues 28, 36) as its two documents.
+/// The body: frontespizio, verdict box and contents; premessa (with the
+/// tabulati it comes with), normativa, description of the building, survey
+/// and knowledge level (its source checked), masonry, criteria; the seismic
+/// action; the modelling choices with their alternatives computed (and the
+/// defaults the case did not give); the formulas with their clauses; the
+/// candidate whose check decides the conclusion developed (bodies, drawing,
+/// virtual work, kinematic quantities with their numbers, ADRS) and every
+/// candidate examined with where it is developed; the checks; the dynamic
+/// analysis; safety indices; the methods compared; interventions; the
+/// probabilistic result when given; the evaluation and the judgement;
+/// conclusions; the NTC 2018 §10.2 chapter; warnings, legend and signature.
+/// The tabulati di calcolo ("T" sections): every candidate's virtual work,
+/// capacity curve and checks; the dynamic analysis in full (model, records,
+/// histories, every candidate); every row of the comparison; the readings
+/// adopted; the case file. Each refers to the other by section number.
+/// Render them with to_html (html_writer.hpp), write_docx (docx_writer.hpp)
+/// or the report files (report_files.hpp).
+Relazione facade_relazione(const FacadeAssessment& a, const ReportOptions& options = {});
 
 /// The summary of the assessment (issue 41): what `assess run` prints in the
 /// terminal, in the language of the options, built from the relazione's own
@@ -63,23 +70,19 @@ Document facade_document(const FacadeAssessment& a, const ReportOptions& options
 /// the evaluation, the conclusions, the warnings): one result, one wording.
 Document facade_summary(const FacadeAssessment& a, const ReportOptions& options = {});
 
-/// to_html(facade_document(a, options)).
-std::string facade_html(const FacadeAssessment& a, const ReportOptions& options = {});
-
 /// The seismic-action section (site, limit states, spectra), added to `d`:
 /// the building relazione shows it once (issue 22).
 void facade_site_section(const FacadeAssessment& a, const ReportOptions& options, DocumentBuilder& d);
 
 /// One mechanism's sections (verdict box, mechanism, checks, dynamic analysis,
-/// safety indices, interventions (the methods compared are in the building's summary), evaluation, conclusions without
-/// signature, warnings), added to `d`: the building relazione nests them
-/// under each mechanism's heading (DocumentBuilder::set_id_prefix and
-/// set_heading_shift). `readings` collects the readings its clauses rely on.
+/// safety indices, interventions (the methods compared are in the building's
+/// summary), evaluation and judgement, warnings), added to `d`, and its part
+/// of the tabulati (candidates, dynamic analysis, comparison, modelling
+/// choices) added to `tabulati` (none: no tabulati, no references to them):
+/// the building relazione nests them under each mechanism's heading
+/// (DocumentBuilder::set_id_prefix and set_heading_shift, the same in both).
+/// `readings` collects the readings its clauses rely on.
 void facade_mechanism_sections(const FacadeAssessment& a, const ReportOptions& options, DocumentBuilder& d,
-                               std::set<std::string>* readings);
-
-/// The appendix of the checks of the candidates the body does not develop.
-void facade_candidates_appendix(const FacadeAssessment& a, const ReportOptions& options, DocumentBuilder& d,
-                                std::set<std::string>* readings);
+                               DocumentBuilder* tabulati, std::set<std::string>* readings);
 
 }  // namespace assess

@@ -30,6 +30,11 @@ struct HtmlOptions {
   /// (report_files.cpp), it puts the page numbers in place without printing
   /// the whole document a second time.
   bool contents_overlay = false;
+  /// The file of each other document a link may point into (Span::doc ->
+  /// "casa-tabulati.html", relative to this page; issue 36). A link into a
+  /// document not listed is printed as its text alone (a PDF: its links
+  /// would name the printer's temporary folder).
+  std::map<std::string, std::string> documents;
 };
 
 std::string to_html(const Document& d, const HtmlOptions& options = {});

@@ -1,0 +1,145 @@
+// relazione_choices.cpp: the modelling choices that move a result (issue 36,
+// item 3): one table ("scelte di modellazione") with each choice, where it
+// acts, the value adopted and the alternative, the adopted method's D/C with
+// each and whether the verdict changes — the alternatives computed by the
+// assessment (assessment/modelling_choices.hpp), none here — the defaults the
+// case did not give (issue 41) in the same table; the notes that state each
+// choice where it acts; and the judgement's words (assessment/judgement.hpp).
+#include "report/relazione_context.hpp"
+#include "report/text_format.hpp"
+
+#include "report/report_heading.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace assess::relazione {
+
+std::string choice_name(Lang L, const std::string& key) { return msg(L, "choice." + key + ".name"); }
+std::string choice_where(Lang L, const std::string& key) { return msg(L, "choice." + key + ".where"); }
+
+std::string choice_value(const Ctx& c, const ModellingChoice& x, bool alt) {
+  const double v = alt ? x.alternative : x.adopted;
+  const std::string& label = alt ? x.alternative_label : x.adopted_label;
+  if (x.key == "FC") return (label.empty() ? "" : label + ", ") + "FC = " + c.n(v, 2);
+  if (x.key == "lumped_masses") return msgf(c.L, alt ? "choice.lumped" : "choice.distributed", c.n(v, 4));
+  if (x.key == "displacement_bound") return msgf(c.L, alt ? "choice.unbounded" : "choice.bounded", c.n(v, 4));
+  if (x.key == "height_demand") return alt ? c.t("choice.ground") : msgf(c.L, "choice.height", c.n(v, 2));
+  if (x.key == "friction_activation") return "κ = " + c.n(v, 2);
+  if (x.key == "seat_friction") return "μ = " + c.n(v, 2);
+  if (x.key == "dSLV_over_d0" || x.key == "dSLC_over_d0") return c.n(v, 2) + " d0*";
+  if (x.key == "xi_SLV_pct" || x.key == "xi_SLC_pct") return "ξ = " + c.n(v, 0) + " %";
+  if (x.key == "selection_window") {
+    const double mw0 = alt ? x.alternative_b : x.adopted_b, r0 = alt ? x.alternative_c : x.adopted_c,
+                 r1 = alt ? x.alternative_d : x.adopted_d;
+    return "Mw " + c.n(mw0, 1) + "–" + c.n(v, 1) + ", R " + c.n(r0, 0) + "–" + c.n(r1, 0) + " km";
+  }
+  return c.g(v, 4);
+}
+
+std::vector<Cell> choice_head(const Ctx& c) {
+  return {Cell(c.t("choice.col_choice")), Cell(c.t("choice.col_where")), Cell(c.t("choice.col_adopted")),
+          Cell(c.t("choice.col_alternative")), numeric_cell(c.t("choice.col_dc")), numeric_cell(c.t("choice.col_dc_alt")),
+          Cell(c.t("choice.col_outcome"))};
+}
+
+std::vector<std::vector<Cell>> choice_rows(const Ctx& c, const std::vector<ModellingChoice>& choices) {
+  std::vector<std::vector<Cell>> rows;
+  for (const ModellingChoice& x : choices) {
+    Cell name(choice_name(c.L, x.key), x.case_key.empty() ? c.t("choice.engine_reading") : msgf(c.L, "choice.case_key", x.case_key));
+    Cell dc = c.dc_cell(x.dc, x.outcome);
+    dc.note = c.t("method." + x.method);
+    Cell dc_alt = x.computed() ? c.dc_cell(x.dc_alternative, x.outcome_alternative) : numeric_cell("—");
+    Cell out = x.computed() ? c.outcome_cell(x.outcome_alternative) : Cell(c.t("choice.not_computed." + x.not_computed));
+    if (x.computed()) out.note = c.t(x.flips() ? "choice.changes" : "choice.same");
+    rows.push_back({name, Cell(choice_where(c.L, x.key)), Cell(choice_value(c, x, false)), Cell(choice_value(c, x, true)), dc,
+                    dc_alt, out});
+  }
+  return rows;
+}
+
+std::string choice_flip_text(const Ctx& c, const ModellingChoice& x) {
+  return choice_name(c.L, x.key) + " " + choice_value(c, x, true) + ": D/C " + c.n(x.dc, 3) + " → " +
+         c.n(x.dc_alternative, 3) + ", " + verdict_word(c.L, x.outcome_alternative);
+}
+
+void add_choice_notes(Ctx& c, const std::vector<std::string>& keys) {
+  std::vector<Inline> items;
+  for (const ModellingChoice& x : c.a.choices) {
+    if (std::find(keys.begin(), keys.end(), x.key) == keys.end()) continue;
+    std::string s = choice_name(c.L, x.key) + ": " + choice_value(c, x, false) + "; " + c.t("choice.alternative") + " " +
+                    choice_value(c, x, true);
+    if (x.computed()) {
+      s += ": " + c.t("method." + x.method) + ", D/C " + c.n(x.dc, 3) + " → " + c.n(x.dc_alternative, 3);
+      if (x.flips()) s += " (" + verdict_word(c.L, x.outcome_alternative) + ")";
+    }
+    items.push_back({Span{s}});
+  }
+  if (items.empty()) return;
+  Inline head{Span{c.t("choice.acting")}};
+  if (c.tabulati) {
+    head.push_back(Span{" "});
+    head.push_back(c.building ? reference(c.t("choice.see_tab"), c.here("choices"), tabulati_key)
+                              : reference(c.t("choice.see_body"), c.here("choices")));
+  }
+  head.push_back(Span{":"});
+  c.d.add_paragraph(head, "note");
+  c.d.add_list(items, "notes");
+}
+
+void add_choices(Ctx& c) {
+  c.d.add_heading(c.t("choice.heading"), 2, true, true, "choices");
+  c.d.add_paragraph(c.t("choice.intro"));
+  std::vector<std::vector<Cell>> rows = choice_rows(c, c.a.choices);
+  // The values the case did not give (issue 41), each in the same table: with
+  // its computed alternative where the choice has one, else as it is.
+  for (const CaseDefault& d : assessment_defaults(c.a)) {
+    bool covered = false;
+    for (std::size_t i = 0; i < c.a.choices.size(); ++i)
+      if (!c.a.choices[i].case_key.empty() && c.a.choices[i].case_key == d.path) {
+        rows[i][2].note = c.t("choice.default");
+        covered = true;
+      }
+    if (covered) continue;
+    Cell name(c.t(d.effect), msgf(c.L, "choice.case_key", d.path));
+    Cell value(c.loc(d.value), c.t("choice.default"));
+    rows.push_back({name, Cell("—"), value, Cell("—"), numeric_cell("—"), numeric_cell("—"), Cell(c.t("choice.no_alternative"))});
+  }
+  if (rows.empty()) {
+    c.d.add_paragraph(c.t("choice.none"));
+    return;
+  }
+  c.d.add_cell_table(choice_head(c), rows, c.t("choice.cap"), "choices");
+}
+
+void add_tab_choices(Ctx& c) {
+  if (c.a.choices.empty()) return;
+  c.d.add_heading(c.t("choice.heading_mech"), 3, false, true, "choices");
+  c.d.add_cell_table(choice_head(c), choice_rows(c, c.a.choices), c.t("choice.cap"), "choices");
+}
+
+std::string judgement_qualifier(const Ctx& c, const Judgement& j) {
+  if (j.robust || j.outcome == Outcome::no_verdict) return "";
+  std::vector<std::string> why;
+  if (j.thin) why.push_back(c.t("eval.why_thin"));
+  if (!j.disagree.empty()) why.push_back(c.t("eval.why_disagree"));
+  if (!j.flips.empty()) {
+    std::string list;
+    for (std::size_t i : j.flips) list += (list.empty() ? "" : ", ") + choice_name(c.L, c.a.choices[i].key) + " " +
+                                          choice_value(c, c.a.choices[i], true);
+    why.push_back(msgf(c.L, "eval.why_flips", list));
+  }
+  if (j.outcome == Outcome::satisfied && j.collapses_count()) why.push_back(c.t("eval.why_collapses"));
+  for (const std::string& k : j.implausible) why.push_back(c.t("eval.why_" + k));
+  std::string s;
+  for (const std::string& w : why) s += (s.empty() ? "" : "; ") + w;
+  return s;
+}
+
+std::string judgement_text(const Ctx& c, const Judgement& j) {
+  if (j.outcome == Outcome::no_verdict) return c.t("eval.undecided_judgement");
+  if (j.robust) return c.t(j.outcome == Outcome::satisfied ? "eval.robust_ok" : "eval.robust_fail");
+  return msgf(c.L, j.outcome == Outcome::satisfied ? "eval.fragile_ok" : "eval.fragile_fail", judgement_qualifier(c, j));
+}
+
+}  // namespace assess::relazione
