@@ -154,6 +154,8 @@ const std::string& bt(Lang L, const std::string& key) {
         "range that spans them all (the union of the mechanisms' own ranges); the same range is written into each "
         "mechanism's expanded case (assess run --expand), which run alone finds the same records and results."}},
       {"set", {"Insieme", "Set"}},
+      {"sets_in_tab", {"Ogni insieme condiviso (accelerogrammi, fattori di scala, selezione, compatibilità spettrale) è descritto nei tabulati, §{§}.",
+        "Each shared set (records, scale factors, selection, spectral compatibility) is described in the tabulati, §{§}."}},
       {"range", {"Intervallo di periodi (s)", "Period range (s)"}},
       {"members", {"Meccanismi", "Mechanisms"}},
       {"set_none", {"nessuna analisi dinamica", "no dynamic analysis"}},
@@ -554,6 +556,15 @@ void add_mechanism_list(Lang L, const BuildingAssessment& b, DocumentBuilder& d)
                    rows, bt(L, "mechanisms_cap"));
 }
 
+// A shared record set used by a mechanism's dynamic analysis (described in the tabulati).
+bool has_shared_set(const BuildingAssessment& b) {
+  for (std::size_t i = 0; i < b.building.mechanisms.size(); ++i) {
+    const FacadeAssessment& a = b.results[i].a;
+    if (b.building.mechanisms[i].record_set == RecordSetKind::shared && a.dynamic && a.dynamic_applies) return true;
+  }
+  return false;
+}
+
 void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d, const ReportOptions& options) {
   const BuildingCase& bc = b.building;
   d.add_heading(bt(L, "summary"), 2, true, true, "summary");
@@ -644,20 +655,29 @@ void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d, const 
   d.add_cell_table({Cell(bt(L, "id")), Cell(bt(L, "wall_mech")), Cell(bt(L, "records"))}, srows, "");
   for (const SharedSelection& s : bc.selections)
     if (s.fell_back) d.add_paragraph(s.id + ": " + (L == Lang::it ? relazione::decimal_comma(localise(L, s.note)) : s.note));
-  // Each shared set described once (its first member's records, flags, selection and compatibility):
-  // the mechanisms' dynamic sections refer to it (issue 28, item 11).
+  // Each shared set is described in the tabulati (add_record_sets; issue 36: the body's length).
+  if (has_shared_set(b))
+    d.add_paragraph(Inline{reference(bt(L, "sets_in_tab"), "record-sets", tabulati_key)}, "note");
+  if (b.tie_index.any_ties) add_ties_summary(L, b, d);
+}
+
+// Each shared set described once (its first member's records, flags, selection and compatibility),
+// in the tabulati: the mechanisms' dynamic sections refer to it (issue 28, item 11; issue 36).
+void add_record_sets(Lang L, const BuildingAssessment& b, DocumentBuilder& t, const ReportOptions& options) {
+  if (!has_shared_set(b)) return;
+  const BuildingCase& bc = b.building;
+  t.add_heading(bt(L, "sets"), 2, false, true, "record-sets");
   std::set<std::string> shown;
   for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
     const BuildingMechanism& m = bc.mechanisms[i];
     const FacadeAssessment& a = b.results[i].a;
     if (m.record_set != RecordSetKind::shared || !a.dynamic || !a.dynamic_applies || !shown.insert(m.record_group).second)
       continue;
-    d.add_heading(bt(L, "set") + " " + m.record_group, 4, false, true, "set-" + m.record_group);
+    t.add_heading(bt(L, "set") + " " + m.record_group, 3, false, true, "set-" + m.record_group);
     ReportOptions ro = options;
-    relazione::Ctx c{a, ro, L, d, nullptr};
+    relazione::Ctx c{a, ro, L, t, nullptr};
     relazione::add_record_set(c, a, "fig-compatibility-" + m.record_group);
   }
-  if (b.tie_index.any_ties) add_ties_summary(L, b, d);
 }
 
 // The mechanisms whose verdict the judgement calls not robust (issue 36, item
@@ -890,6 +910,7 @@ Relazione building_relazione(const BuildingAssessment& b, const ReportOptions& o
     relazione::Ctx x{a0, mo, L, t, &readings, true, true};
     relazione::add_tab_intro(x);
   }
+  add_record_sets(L, b, t, options);
   const TieInterventionResult* any_ties = nullptr;
   for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
     const BuildingMechanism& m = bc.mechanisms[i];
@@ -898,7 +919,8 @@ Relazione building_relazione(const BuildingAssessment& b, const ReportOptions& o
       x->set_id_prefix("");
       x->set_heading_shift(0);
     }
-    d.add_heading(m.id + " — " + m.wall + ": " + m.name, 2, true, true, m.id);
+    // No new page per mechanism (issue 36: the body of a building at most 60 pages).
+    d.add_heading(m.id + " — " + m.wall + ": " + m.name, 2, false, true, m.id);
     d.add_paragraph(bt(L, "mech_type") + ": " + mechanism_name(L, m.kase.mechanism.type) + ". " + bt(L, "mech_path") +
                     ": " + m.json_path + ". " + bt(L, "mech_records") + ": " + record_set_text(L, b, i) + ".");
     t.add_heading(m.id + " — " + m.wall + ": " + m.name, 2, true, true, m.id);

@@ -993,6 +993,8 @@ const std::map<std::string, Entry>& catalogue() {
         "the verdict changes with {}"}},
       {"eval.why_collapses", {"collassi nell'analisi dinamica",
         "collapses in the dynamic analysis"}},
+      {"eval.not_robust_box", {"Esito non solido (vedi la valutazione dei risultati)",
+        "Verdict not robust (see the evaluation of the results)"}},
 
       // Issue 36: the relazione and its tabulati di calcolo.
       {"doc.tabulati", {"La relazione è accompagnata dai tabulati di calcolo, un documento separato con lo stesso nome e il suffisso «-tabulati» (sezioni numerate T1, T2 …): vi si trovano, per ogni meccanismo, ogni cinematismo candidato con il suo lavoro virtuale, la curva di capacità per punti e le verifiche, ogni accelerogramma e storia temporale, le ipotesi adottate e il file del caso; qui ciascuno è richiamato dove serve.",
@@ -1017,6 +1019,12 @@ const std::map<std::string, Entry>& catalogue() {
         "Kinematic quantities of every candidate (the report's formulas; highlighted: the one developed in the report)."}},
       {"tab.in_body", {"Sviluppato nella relazione (§{§}): geometria, lavori virtuali, grandezze, verifiche. Qui la sua curva di capacità per punti.",
         "Developed in the report (§{§}): geometry, virtual work, quantities, checks. Here its capacity curve by points."}},
+      {"tab.in_body_brief", {"Sviluppato nella relazione (§{§}): geometria, grandezze, verifiche. Qui la tabella dei lavori virtuali, la curva di capacità per punti e il piano ADRS.",
+        "Developed in the report (§{§}): geometry, quantities, checks. Here its virtual work, its capacity curve by points and the ADRS plot."}},
+      {"mech.vw_in_tab", {"La tabella dei lavori virtuali (W δx² di ogni carico), la curva di capacità per punti e il piano ADRS di questo cinematismo sono nei tabulati, §{§}.",
+        "The virtual-work table (W δx² of every load), the capacity curve by points and the ADRS plot of this candidate are in the tabulati, §{§}."}},
+      {"mech.candidates_omitted", {"Gli altri {} cinematismi esaminati, con tutte le verifiche soddisfatte, sono elencati con le loro grandezze nei tabulati, §{{§}}.",
+        "The other {} candidates examined, every check satisfied, are listed with their quantities in the tabulati, §{{§}}."}},
       {"tab.checks_cap", {"Verifiche del cinematismo (contate nel riquadro degli esiti della relazione).",
         "Checks of the candidate (counted in the report's verdict box)."}},
       {"tab.mechanism_in_body", {"Sezione del meccanismo nella relazione: §{§}.", "The mechanism's section in the report: §{§}."}},

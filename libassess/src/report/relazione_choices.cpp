@@ -82,9 +82,13 @@ void add_choice_notes(Ctx& c, const std::vector<std::string>& keys) {
     head.push_back(c.building ? reference(c.t("choice.see_tab"), c.here("choices"), tabulati_key)
                               : reference(c.t("choice.see_body"), c.here("choices")));
   }
-  head.push_back(Span{":"});
+  // One note paragraph (issue 36: the body's length), the alternatives separated by ";".
+  head.push_back(Span{": "});
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    for (Span& x : items[i]) head.push_back(std::move(x));
+    head.push_back(Span{i + 1 < items.size() ? "; " : "."});
+  }
   c.d.add_paragraph(head, "note");
-  c.d.add_list(items, "notes");
 }
 
 void add_choices(Ctx& c) {

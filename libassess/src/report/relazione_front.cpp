@@ -68,12 +68,20 @@ void add_verdict_box(Ctx& c) {
                                    c.outcome_span(m->outcome()),
                                    Span{", D/C = " + c.n(m->max_dc, 3), true, tone}},
                                   "outcome-line", ""});
+    // A verdict the judgement calls not robust carries that qualification where it is stated (issue 36, item 4).
+    if (c.a.judgement) {
+      const std::string q = judgement_qualifier(c, *c.a.judgement);
+      if (!q.empty()) b.content.push_back(Paragraph{{Span{c.t("eval.not_robust_box") + ": " + q + "."}}, "note", ""});
+    }
     c.d.add_box(std::move(b));
   } else if (!v.overall.empty()) {
     c.d.add_box(Box{"conclusion", Tone::fail, {}, {Paragraph{{Span{c.t("verdict.conclusion"), true},
                                                               Span{": " + c.t("verdict.no_method_checks") + "."}},
                                                              "", ""}}});
   }
+  // A building's mechanism: the conclusion alone (every method's checks are in
+  // its checks table, the building's summary compares them; issue 36: length).
+  if (c.building && c.tabulati) return;
   Box all{"verdicts", Tone::plain, {}, {}};
   for (const CodeVerdict& cv : v.overall) {
     const MethodVerdict* adopted = nullptr;

@@ -467,13 +467,21 @@ void add_mechanism(Ctx& c) {
   if (!gov.empty()) c.d.add_paragraph(c.t("mech.governs_methods") + ": " + gov + ".", "note");
   c.d.add_heading(c.t("mech.bodies"), 3, false);
   add_candidate_data(c, ci, "fig-mechanism", 3);
-  c.d.add_heading(c.t("mech.vw"), 3, false);
-  add_virtual_work(c, ci);
+  // A building's mechanism (issue 36: 2-4 pages each): the virtual-work table
+  // and the ADRS plot of the candidate are in the tabulati, referred to here;
+  // the body keeps its data, drawing, kinematic quantities and checks.
+  const bool brief = c.building && c.tabulati;
+  if (brief) {
+    c.d.add_paragraph(Inline{reference(c.t("mech.vw_in_tab"), c.here("cand-" + std::to_string(ci)), tabulati_key)}, "note");
+  } else {
+    c.d.add_heading(c.t("mech.vw"), 3, false);
+    add_virtual_work(c, ci);
+  }
   c.d.add_heading(c.t("kin.heading_linear"), 3, false);
   add_quantities(c, ci);
   add_choice_notes(c, {"FC", "lumped_masses", "displacement_bound", "friction_activation", "seat_friction", "dSLV_over_d0",
                    "dSLC_over_d0"});
-  if (c.candidate(ci).result.curve_complete()) {
+  if (c.candidate(ci).result.curve_complete() && !brief) {
     c.d.add_heading(c.t("kin.heading_curve"), 3, false);
     if (c.tabulati)
       c.d.add_paragraph(Inline{reference(c.t("kin.curve_in_tab"), c.here("cand-" + std::to_string(ci)), tabulati_key)}, "note");
@@ -494,8 +502,20 @@ void add_mechanism(Ctx& c) {
     if (!zcode.empty()) head.push_back(numeric_cell("ζE " + code_name(zcode)));
     head.push_back(Cell(c.t("mech.where")));
     std::vector<std::vector<Cell>> rows;
+    std::size_t omitted = 0;
     for (std::size_t i = 0; i < n; ++i) {
       const CandidateResult& cr = a.kinematic.candidates[i];
+      // A building's body lists the candidate developed, those that govern a
+      // method and those whose check is not satisfied; the others (every check
+      // satisfied) are counted and listed in the tabulati (issue 36: length).
+      if (brief && i != ci && governs_text(c, i).empty()) {
+        bool all_ok = !cr.max_dc.empty();
+        for (const auto& [code, dc] : cr.max_dc) all_ok = all_ok && check_satisfied(dc, false);
+        if (all_ok) {
+          ++omitted;
+          continue;
+        }
+      }
       std::vector<Cell> row{Cell(c.loc(cr.label)), c.num(cr.parameter, 3), c.num(cr.Z, 2), c.num(cr.result.alpha0, 4),
                             c.num(cr.result.a0_star, 3)};
       for (const auto& [code, gi] : a.kinematic.governing_by_code) {
@@ -522,6 +542,8 @@ void add_mechanism(Ctx& c) {
       rows.push_back(row);
     }
     c.d.add_cell_table(head, rows, msgf(c.L, "mech.candidates_cap2", c.loc(a.kase.mechanism.parameter_name)));
+    if (omitted > 0)
+      c.d.add_paragraph(Inline{reference(msgf(c.L, "mech.candidates_omitted", omitted), c.here("candidates"), tabulati_key)}, "note");
   }
 }
 

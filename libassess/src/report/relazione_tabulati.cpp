@@ -58,8 +58,12 @@ void add_tab_candidates(Ctx& c) {
                     3, false, true, "cand-" + suffix);
     if (i == body) {
       // Developed in the body: its capacity curve by points here.
-      c.d.add_paragraph(Inline{reference(c.t("tab.in_body"), c.here("mechanism"), relazione_key)}, "note");
+      c.d.add_paragraph(Inline{reference(c.t(c.building ? "tab.in_body_brief" : "tab.in_body"), c.here("mechanism"), relazione_key)},
+                        "note");
+      // A building's body leaves its virtual work and ADRS plot here (relazione_mechanism.cpp).
+      if (c.building) add_virtual_work(c, i);
       add_curve_table(c, i);
+      if (c.building && cr.result.curve_complete()) add_adrs(c, i, "fig-adrs-" + suffix);
       continue;
     }
     const bool governs = std::find(dev.begin(), dev.end(), i) != dev.end();
