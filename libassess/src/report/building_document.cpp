@@ -48,6 +48,10 @@ const std::string& bt(Lang L, const std::string& key) {
                        "The mechanisms below have a verdict the evaluation of the results calls not sound: a deeper survey of what decides it, or a preventive intervention, is recommended."}},
       {"concl_all_robust", {"La valutazione dei risultati giudica solido l'esito di ogni meccanismo.",
                             "The evaluation of the results calls every mechanism's verdict sound."}},
+      {"concl_fragile_ids", {"Secondo la valutazione dei risultati l'esito dei meccanismi seguenti non è solido:",
+                             "By the evaluation of the results the verdict of the mechanisms below is not sound:"}},
+      {"concl_fragile_tail", {"(i motivi di ciascuno agli interventi, §{§}); le conclusioni valgono con questa riserva.",
+                              "(the reasons of each in the interventions, §{§}); the conclusions hold with this qualification."}},
       {"concl_fragile", {"L'esito dei meccanismi seguenti non è solido secondo la valutazione dei risultati; le conclusioni valgono con questa riserva:",
                          "The verdict of the mechanisms below is not sound by the evaluation of the results; the conclusions hold with this qualification:"}},
       {"verdict_zeta", {"indicatore di rischio dell'edificio ζE,edificio = {} ({}), il più piccolo ζE dei meccanismi nel loro approccio adottato",
@@ -801,7 +805,7 @@ void add_building_choices(Lang L, const BuildingAssessment& b, DocumentBuilder& 
         for (const ModellingChoice& y : q.a.choices) covered = covered || y.case_key == x.path;
       if (covered) continue;
       Cell name(msg(L, x.effect), msgf(L, "choice.case_key", x.path));
-      Cell value(L == Lang::it ? relazione::decimal_comma(localise(L, x.value)) : x.value, msg(L, "choice.default"));
+      Cell value(relazione::default_value_text(L, x), msg(L, "choice.default"));
       rows.push_back({name, value, Cell("—"), Cell("—"), Cell("—"), Cell(msg(L, "choice.no_alternative"))});
     }
   d.add_cell_table({Cell(msg(L, "choice.col_choice")), Cell(msg(L, "choice.col_adopted")), Cell(msg(L, "choice.col_alternative")),
@@ -942,7 +946,7 @@ Relazione building_relazione(const BuildingAssessment& b, const ReportOptions& o
   mo.shared_records.clear();
   add_interventions(L, b, d, options);
 
-  d.add_heading(bt(L, "conclusioni"), 2, true, true, "conclusions");
+  d.add_heading(bt(L, "conclusioni"), 2, false, true, "conclusions");  // after the interventions, on their page
   d.add_paragraph(verdict_sentence(L, b));
   for (const BuildingGoverning& g : b.governing) {
     if (g.code != "NTC2018") continue;
@@ -958,8 +962,17 @@ Relazione building_relazione(const BuildingAssessment& b, const ReportOptions& o
   if (fragile.empty()) {
     d.add_paragraph(bt(L, "concl_all_robust"));
   } else {
-    d.add_paragraph(bt(L, "concl_fragile"));
-    d.add_list(fragile);
+    // One sentence naming them (their reasons are listed in the interventions, issue 36: length).
+    Inline p{Span{bt(L, "concl_fragile_ids") + " "}};
+    bool first = true;
+    for (const Inline& item : fragile) {
+      if (!first) p.push_back(Span{", "});
+      first = false;
+      p.push_back(item.front());  // the mechanism's id, linked to its section
+    }
+    p.push_back(Span{" "});
+    p.push_back(reference(bt(L, "concl_fragile_tail"), "interventions"));
+    d.add_paragraph(p);
   }
   if (b.tie_index.any_ties) {
     d.add_paragraph(tie_index_text(L, b, false));

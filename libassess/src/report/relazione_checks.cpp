@@ -82,12 +82,15 @@ void add_checks(Ctx& c) {
     if (r.kind == "dynamic") rows.push_back(r);
   const bool others = a.kinematic.candidates.size() > 1;
   const bool several_dynamic = !a.other_dynamics.empty();
-  if (others && c.tabulati)
+  const bool brief = c.building && c.tabulati;  // a building's mechanism: one note (issue 36: length)
+  if (brief)
+    c.d.add_paragraph(Inline{reference(c.t("checks.brief_note"), c.here("candidates"), tabulati_key)}, "note");
+  else if (others && c.tabulati)
     c.d.add_paragraph(Inline{Span{c.t("checks.body_note_tab") + " "},
                              reference(c.t("checks.see_tab"), c.here("candidates"), tabulati_key)});
   else
     c.d.add_paragraph(c.t(others ? "checks.body_note_summary" : "checks.body_note_all"));
-  c.d.add_cell_table(check_head(c, several_dynamic), check_rows(c, rows, several_dynamic), c.t("checks.table_cap"), "checks");
+  c.d.add_cell_table(check_head(c, several_dynamic), check_rows(c, rows, several_dynamic), brief ? std::string() : c.t("checks.table_cap"), "checks");
   add_choice_notes(c, {"height_demand", "xi_SLV_pct", "xi_SLC_pct"});
 }
 
@@ -98,10 +101,16 @@ void add_safety_indices(Ctx& c) {
   const std::vector<SafetyIndex>& idx = c.a.indices;  // computed once by the assessment (issue 41)
   if (idx.empty()) return;
   c.d.add_heading(c.t("zeta.heading"));
-  c.d.add_paragraph(c.t("zeta.intro"));
+  // A building's mechanism: the code of the conclusion alone (the other
+  // edition's indices are in the building's summary; issue 36: length), its
+  // definition in one sentence.
+  const MethodVerdict* concl = c.a.verdict.conclusion();
+  const bool brief = c.building && c.tabulati && concl;
+  c.d.add_paragraph(c.t(brief ? "zeta.intro_brief" : "zeta.intro"));
   std::vector<std::vector<Cell>> rows;
   bool any_extrapolated = false;
   for (const SafetyIndex& s : idx) {
+    if (brief && s.code != concl->code) continue;
     const std::string method = c.t("method." + method_of_kind(s.approach));
     if (!s.defined) {
       Cell why(s.approach == "dynamic" ? c.t("zeta.no_dynamic") : c.loc(s.note));

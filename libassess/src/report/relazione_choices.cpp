@@ -37,6 +37,23 @@ std::string choice_value(const Ctx& c, const ModellingChoice& x, bool alt) {
   return c.g(v, 4);
 }
 
+std::string default_value_text(Lang L, const CaseDefault& d) {
+  // The engine's words for a value the case did not give, in the report's
+  // language (issue 36, item 5: no code tokens in the Italian body).
+  const bool it = L == Lang::it;
+  const std::string& v = d.value;
+  if (d.path == "/method" && (v == "linear" || v == "nonlinear" || v == "dynamic")) return msg(L, "method." + v);
+  if (v == "false") return it ? "no" : "no";
+  if (v == "true") return it ? "sì" : "yes";
+  if (v == "one-sided") return msg(L, "dyn.one_sided");
+  if (v == "two-sided") return msg(L, "dyn.two_sided");
+  if (v == "smooth") return msg(L, "dyn.smooth");
+  if (v == "normal") return it ? "normale" : "normal";
+  if (v == "exclude") return it ? "esclusi" : "excluded";
+  if (v == "= /site/soil") return it ? "quella del sito" : "the site's";
+  return it ? decimal_comma(localise(L, v)) : v;
+}
+
 std::vector<Cell> choice_head(const Ctx& c) {
   return {Cell(c.t("choice.col_choice")), Cell(c.t("choice.col_where")), Cell(c.t("choice.col_adopted")),
           Cell(c.t("choice.col_alternative")), numeric_cell(c.t("choice.col_dc")), numeric_cell(c.t("choice.col_dc_alt")),
@@ -106,7 +123,7 @@ void add_choices(Ctx& c) {
       }
     if (covered) continue;
     Cell name(c.t(d.effect), msgf(c.L, "choice.case_key", d.path));
-    Cell value(c.loc(d.value), c.t("choice.default"));
+    Cell value(default_value_text(c.L, d), c.t("choice.default"));
     rows.push_back({name, Cell("—"), value, Cell("—"), numeric_cell("—"), numeric_cell("—"), Cell(c.t("choice.no_alternative"))});
   }
   if (rows.empty()) {
@@ -129,8 +146,8 @@ std::string judgement_qualifier(const Ctx& c, const Judgement& j) {
   if (!j.disagree.empty()) why.push_back(c.t("eval.why_disagree"));
   if (!j.flips.empty()) {
     std::string list;
-    for (std::size_t i : j.flips) list += (list.empty() ? "" : ", ") + choice_name(c.L, c.a.choices[i].key) + " " +
-                                          choice_value(c, c.a.choices[i], true);
+    for (std::size_t i : j.flips) list += (list.empty() ? "" : ", ") + choice_name(c.L, c.a.choices[i].key) + " (" +
+                                          choice_value(c, c.a.choices[i], true) + ")";
     why.push_back(msgf(c.L, "eval.why_flips", list));
   }
   if (j.outcome == Outcome::satisfied && j.collapses_count()) why.push_back(c.t("eval.why_collapses"));

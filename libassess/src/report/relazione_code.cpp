@@ -125,7 +125,7 @@ void acceptability(Ctx& c, const std::vector<std::pair<std::string, const Facade
 }  // namespace
 
 void add_code_chapter(Ctx& c, const std::vector<std::pair<std::string, const FacadeAssessment*>>& mechanisms) {
-  c.d.add_heading(c.t("code.heading"), 2, true, true, "code");
+  c.d.add_heading(c.t("code.heading"), 2, !c.building, true, "code");  // a building's: after its conclusions (length)
   c.d.add_paragraph(c.t("code.intro"));
   identity(c);
   validation(c);

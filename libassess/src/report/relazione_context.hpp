@@ -152,6 +152,8 @@ void add_adrs(Ctx& c, std::size_t ci, const std::string& id);
 std::string choice_name(Lang L, const std::string& key);
 std::string choice_where(Lang L, const std::string& key);
 std::string choice_value(const Ctx& c, const ModellingChoice& x, bool alternative);
+/// A value the case did not give (issue 41's defaults) in the report's words ("nonlinear" -> "analisi cinematica non lineare").
+std::string default_value_text(Lang L, const CaseDefault& d);
 /// The rows of the choices table of one mechanism (choice, where, adopted, alternative, D/C, outcome).
 std::vector<std::vector<Cell>> choice_rows(const Ctx& c, const std::vector<ModellingChoice>& choices);
 std::vector<Cell> choice_head(const Ctx& c);

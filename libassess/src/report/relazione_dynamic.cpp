@@ -291,7 +291,8 @@ void add_histories(Ctx& c, const FacadeAssessment& x) {
 // convention (+inf, the figure over the analyses without a collapse apart),
 // the energy D/C the same way, and the outcome read from the check.
 void add_summary(Ctx& c, const FacadeAssessment& x) {
-  c.d.add_heading(c.t("dyn.summary"), 3, false);
+  const bool brief = c.building && c.tabulati;  // a building's mechanism: the caption in short (issue 36: length)
+  if (!brief) c.d.add_heading(c.t("dyn.summary"), 3, false);
   std::vector<std::vector<Cell>> rows;
   for (const RestitutionSummary& s : x.summaries) {
     bool uplift = false;
@@ -315,7 +316,7 @@ void add_summary(Ctx& c, const FacadeAssessment& x) {
   c.d.add_cell_table({Cell(c.t("dyn.restitution")), numeric_cell(c.t("dyn.analyses")), numeric_cell(c.t("dyn.collapses")),
                       numeric_cell(c.t("dyn.energy_dc")), numeric_cell(c.t("dyn.mean_d")), numeric_cell(c.t("dyn.max_d")), Cell(c.t("dyn.rule")),
                       numeric_cell(c.t("dyn.d_demand")), numeric_cell(c.t("dyn.dc_slv")), Cell(c.t("checks.outcome"))},
-                     rows, c.t("dyn.summary_cap2"));
+                     rows, c.t(brief ? "dyn.summary_cap_brief" : "dyn.summary_cap2"));
 }
 
 // The other candidates analysed (each as the case restricted to it).
