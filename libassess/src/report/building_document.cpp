@@ -795,6 +795,7 @@ void add_building_choices(Lang L, const BuildingAssessment& b, DocumentBuilder& 
                     Cell(g.worst_text.empty() ? "—" : g.worst_text), flips});
   }
   // The defaults the case did not give (issue 41), once for the building.
+  std::vector<std::vector<Cell>> defaults;
   std::vector<std::string> seen;
   for (const BuildingMechanismResult& r : b.results)
     for (const CaseDefault& x : assessment_defaults(r.a)) {
@@ -804,13 +805,15 @@ void add_building_choices(Lang L, const BuildingAssessment& b, DocumentBuilder& 
       for (const BuildingMechanismResult& q : b.results)
         for (const ModellingChoice& y : q.a.choices) covered = covered || y.case_key == x.path;
       if (covered) continue;
-      Cell name(msg(L, x.effect), msgf(L, "choice.case_key", x.path));
-      Cell value(relazione::default_value_text(L, x), msg(L, "choice.default"));
-      rows.push_back({name, value, Cell("—"), Cell("—"), Cell("—"), Cell(msg(L, "choice.no_alternative"))});
+      defaults.push_back({Cell(msg(L, x.effect)), Cell(x.path), Cell(relazione::default_value_text(L, x))});
     }
   d.add_cell_table({Cell(msg(L, "choice.col_choice")), Cell(msg(L, "choice.col_adopted")), Cell(msg(L, "choice.col_alternative")),
                     Cell(msg(L, "choice.col_members")), Cell(msg(L, "choice.col_largest")), Cell(msg(L, "choice.col_changes"))},
                    rows, msg(L, "choice.cap_building"), "choices");
+  // The values assumed without an alternative, in a table of their own (issue 36: one line each).
+  if (!defaults.empty())
+    d.add_cell_table({Cell(msg(L, "choice.col_default")), Cell(msg(L, "choice.col_key")), Cell(msg(L, "choice.col_value"))}, defaults,
+                     msg(L, "choice.defaults_cap"), "defaults");
 }
 
 void add_warnings(Lang L, const BuildingAssessment& b, DocumentBuilder& d) {

@@ -105,6 +105,7 @@ void facade_mechanism_sections(const FacadeAssessment& a, const ReportOptions& o
   relazione::add_tab_dynamic(x);
   relazione::add_tab_comparison(x);
   relazione::add_tab_choices(x);
+  relazione::add_tab_ties(x);
 }
 
 }  // namespace assess

@@ -10,6 +10,8 @@ namespace assess::detail {
 const std::map<std::string, std::pair<std::string, std::string>>& tie_messages() {
   static const std::map<std::string, std::pair<std::string, std::string>> m{
       {"tie.title", {"Intervento: catene (tiranti)", "Intervention: tie rods"}},
+      {"tie.in_tab", {"Le formule delle resistenze con le loro fonti, la verifica dinamica dopo l'intervento e i dettagli costruttivi delle catene di questo meccanismo sono nei tabulati, §{§}.",
+        "The strength formulas with their sources, the dynamic check after the intervention and the detailing of this mechanism's ties are in the tabulati, §{§}."}},
       {"tie.intro_design",
        {"Stato di fatto: la parete come è, con le catene esistenti. Stato di progetto: con le catene progettate, la più "
         "piccola barra commerciale con la più piccola piastra che soddisfano tutte le verifiche del meccanismo e della "

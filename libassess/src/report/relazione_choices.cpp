@@ -114,6 +114,7 @@ void add_choices(Ctx& c) {
   std::vector<std::vector<Cell>> rows = choice_rows(c, c.a.choices);
   // The values the case did not give (issue 41), each in the same table: with
   // its computed alternative where the choice has one, else as it is.
+  std::vector<std::vector<Cell>> defaults;
   for (const CaseDefault& d : assessment_defaults(c.a)) {
     bool covered = false;
     for (std::size_t i = 0; i < c.a.choices.size(); ++i)
@@ -122,15 +123,17 @@ void add_choices(Ctx& c) {
         covered = true;
       }
     if (covered) continue;
-    Cell name(c.t(d.effect), msgf(c.L, "choice.case_key", d.path));
-    Cell value(default_value_text(c.L, d), c.t("choice.default"));
-    rows.push_back({name, Cell("—"), value, Cell("—"), numeric_cell("—"), numeric_cell("—"), Cell(c.t("choice.no_alternative"))});
+    defaults.push_back({Cell(c.t(d.effect)), Cell(d.path), Cell(default_value_text(c.L, d))});
   }
-  if (rows.empty()) {
+  if (rows.empty() && defaults.empty()) {
     c.d.add_paragraph(c.t("choice.none"));
     return;
   }
-  c.d.add_cell_table(choice_head(c), rows, c.t("choice.cap"), "choices");
+  if (!rows.empty()) c.d.add_cell_table(choice_head(c), rows, c.t("choice.cap"), "choices");
+  // The values assumed without an alternative, in a table of their own (issue 36: one line each).
+  if (!defaults.empty())
+    c.d.add_cell_table({Cell(c.t("choice.col_default")), Cell(c.t("choice.col_key")), Cell(c.t("choice.col_value"))}, defaults,
+                       c.t("choice.defaults_cap"), "defaults");
 }
 
 void add_tab_choices(Ctx& c) {

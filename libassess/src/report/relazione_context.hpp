@@ -134,7 +134,8 @@ void add_tab_intro(Ctx& c);              // what the tabulati hold, and the rela
 void add_tab_candidates(Ctx& c);         // every candidate: virtual work, quantities, capacity curve, checks
 void add_tab_dynamic(Ctx& c);            // the dynamic analysis: model, records, histories, every candidate
 void add_tab_comparison(Ctx& c);         // every row of the comparison by approach
-void add_tab_choices(Ctx& c);            // the modelling choices of one mechanism in full (a building's)
+void add_tab_choices(Ctx& c);
+void add_tab_ties(Ctx& c);               // a building's mechanism with ties: their formulas, dynamic check, detailing            // the modelling choices of one mechanism in full (a building's)
 
 // Pieces of the mechanism's development shared by the body and the tabulati (relazione_mechanism.cpp).
 /// The candidate the body develops: the one whose check governs the adopted method.

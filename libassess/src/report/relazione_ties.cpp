@@ -338,16 +338,34 @@ void add_tie_section(Ctx& c, const TieInterventionResult& t) {
               x.t("drawing"), "ties-drawing");
   c.d.add_heading(x.t("levels_title"), 3, false);
   levels_table(x, t.levels);
-  c.d.add_heading(x.t("formulas_title"), 3, false);
-  formulas(x);
+  // A building's mechanism (issue 36: length): the formulas, the dynamic check
+  // after the intervention and the detailing are in the tabulati (add_tab_ties).
+  const bool brief = c.building && c.tabulati;
+  if (brief) {
+    c.d.add_paragraph(Inline{reference(x.t("in_tab"), c.here("ties"), tabulati_key)}, "note");
+  } else {
+    c.d.add_heading(x.t("formulas_title"), 3, false);
+    formulas(x);
+  }
   c.d.add_heading(x.t("checks_title"), 3, false);
   for (const TieLevelResult& L : t.levels_before) level_block(x, L, x.t("state_before"));
   if (t.intervention)
     for (const TieLevelResult& L : t.levels) level_block(x, L, x.t("state_after"));
   c.d.add_heading(x.t("before_after"), 3, false);
   states_table(x, t);
+  if (brief) return;
   dynamics(x, t);
   detailing(x, t);
+}
+
+void add_tab_ties(Ctx& c) {
+  if (!c.o.ties) return;
+  const TieText x{c};
+  c.d.add_heading(x.t("title"), 2, false, true, "ties");
+  c.d.add_heading(x.t("formulas_title"), 3, false);
+  formulas(x);
+  dynamics(x, *c.o.ties);
+  detailing(x, *c.o.ties);
 }
 
 }  // namespace relazione
