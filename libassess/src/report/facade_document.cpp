@@ -59,6 +59,10 @@ Relazione facade_relazione(const FacadeAssessment& a, const ReportOptions& optio
   relazione::add_readings_appendix(x);
   relazione::add_case_file(x);
   Relazione r{d.document(), t.document()};
+  // A façade's body flows from section to section, the premessa after the
+  // contents (issue 36: the church's body at most 15 pages).
+  for (DocBlock& b : r.body.blocks)
+    if (auto* h = std::get_if<Heading>(&b.value)) h->new_page = false;
   resolve_references({&r.body, &r.tabulati});
   return r;
 }

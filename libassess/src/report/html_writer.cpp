@@ -43,7 +43,7 @@ constexpr const char* kCss = R"(
   tr { break-inside: avoid; page-break-inside: avoid; }
   thead { display: table-header-group; }
   figure { margin: 0.8em 0; break-inside: avoid; page-break-inside: avoid; }
-  figure svg { width: 100%; height: auto; max-width: 170mm; max-height: 160mm; display: block; margin: 0 auto; }
+  figure svg { width: 100%; height: auto; max-width: 170mm; max-height: 115mm; display: block; margin: 0 auto; }
   figure[id$="fig-mechanism"] svg, figure[id$="ties-drawing"] svg { max-height: 105mm; }
   figcaption { font-size: 9.5pt; font-style: italic; margin-top: 0.3em; }
   div.grid { display: grid; grid-template-columns: repeat(3, 1fr); gap: 0.3em; }

@@ -76,7 +76,7 @@ std::vector<std::vector<Cell>> choice_rows(const Ctx& c, const std::vector<Model
 }
 
 std::string choice_flip_text(const Ctx& c, const ModellingChoice& x) {
-  return choice_name(c.L, x.key) + " " + choice_value(c, x, true) + ": D/C " + c.n(x.dc, 3) + " → " +
+  return choice_name(c.L, x.key) + " (" + choice_value(c, x, true) + "): D/C " + c.n(x.dc, 3) + " → " +
          c.n(x.dc_alternative, 3) + ", " + verdict_word(c.L, x.outcome_alternative);
 }
 

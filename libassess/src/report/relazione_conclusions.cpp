@@ -118,7 +118,8 @@ void comparison(Ctx& c, bool figure, bool rows_table) {
   if (rows_table)
     c.d.add_cell_table({Cell(c.t("checks.code")), Cell(c.t("cmp.approach")), hdc, Cell(c.t("checks.outcome"))}, rows,
                        c.t("cmp.table_cap"));
-  if (!figure) return;
+  // The methods' table repeats the verdict box: written where there is no box beside it (issue 36: length).
+  if (!figure || c.tabulati) return;
   std::vector<std::vector<Cell>> orows;
   for (const MethodVerdict& m : v.methods) {
     Cell outcome(verdict_title(c.L, m.outcome()));
