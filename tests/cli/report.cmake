@@ -150,3 +150,30 @@ foreach(case church-facade building-house)
   set_tests_properties(cli.report_files_${case} PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77 TIMEOUT 600 COST 80
     ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
 endforeach()
+
+# Issue 36, item 5: consistency of the relazione and its tabulati di calcolo.
+# Every internal reference resolves (each link, within a page and into the
+# other document, names an id there; each section number a link cites is its
+# target's; no "{§}" left), and no quantity that was not computed is printed
+# as a number (a zero result says why in its own note).
+set(ASSESS_CONSISTENCY_CASES mechanisms/church-facade.json mechanisms/church-facade-ties.json mechanisms/gable.json
+    mechanisms/building-house.json mechanisms/building-house-ties.json)
+add_test(NAME cli.report_references
+  COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/references.py $<TARGET_FILE:assess_cli>
+          ${CMAKE_CURRENT_BINARY_DIR}/references ${ASSESS_CONSISTENCY_CASES}
+  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.report_references PROPERTIES LABELS cli TIMEOUT 600 COST 40
+  ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+add_test(NAME cli.report_not_computed
+  COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/not_computed.py $<TARGET_FILE:assess_cli>
+          ${CMAKE_CURRENT_BINARY_DIR}/not_computed ${ASSESS_CONSISTENCY_CASES}
+  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.report_not_computed PROPERTIES LABELS cli TIMEOUT 600 COST 40
+  ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")
+# The knowledge level has one source (the case key): investigations that name
+# another level are flagged, naming the field, both levels and the keys to correct.
+add_test(NAME cli.report_knowledge_conflict
+  COMMAND assess_cli run ${CMAKE_CURRENT_SOURCE_DIR}/cli/report/knowledge_conflict.json)
+set_tests_properties(cli.report_knowledge_conflict PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "/report/investigations\\) names LC1 but the case adopts LC2 \\(FC = 1[.,]20\\)"
+  ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")

@@ -67,6 +67,9 @@ std::vector<std::vector<Cell>> choice_rows(const Ctx& c, const std::vector<Model
     Cell dc = c.dc_cell(x.dc, x.outcome);
     dc.note = c.t("method." + x.method);
     Cell dc_alt = x.computed() ? c.dc_cell(x.dc_alternative, x.outcome_alternative) : numeric_cell("—");
+    // A dynamic D/C of zero is computed: the wall never lifted (issue 36, item 5: said why).
+    if (x.method == "dynamic" && x.dc == 0.0) dc.note = c.t("dyn.no_uplift");
+    if (x.computed() && x.method == "dynamic" && x.dc_alternative == 0.0) dc_alt.note = c.t("dyn.no_uplift");
     Cell out = x.computed() ? c.outcome_cell(x.outcome_alternative) : Cell(c.t("choice.not_computed." + x.not_computed));
     if (x.computed()) out.note = c.t(x.flips() ? "choice.changes" : "choice.same");
     rows.push_back({name, Cell(choice_where(c.L, x.key)), Cell(choice_value(c, x, false)), Cell(choice_value(c, x, true)), dc,

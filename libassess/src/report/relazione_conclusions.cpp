@@ -48,6 +48,12 @@ std::string collapses_text(const Ctx& c) {
 namespace {
 
 // The comparison by approach: the bars (figure `id`, "" none) and every row's table (`rows_table`).
+// A dynamic D/C of zero is computed (the wall never lifted): its cell says so (issue 36, item 5).
+Cell zero_said(const Ctx& c, Cell dc, const VerdictRow& r) {
+  if (r.dc == 0.0 && r.approach.rfind("dynamic", 0) == 0) dc.note = c.t("dyn.no_uplift");
+  return dc;
+}
+
 void comparison(Ctx& c, bool figure, bool rows_table) {
   const Verdict& v = c.a.verdict;
   Plot p = c.plot();
@@ -94,7 +100,7 @@ void comparison(Ctx& c, bool figure, bool rows_table) {
                       Cell(c.t("kind." + r.approach) + " " + r.limit_state +
                                (r.location == "height" ? " (" + c.t("where.height") + ")" : ""),
                            note),
-                      c.dc_cell(r.dc, r.outcome()), outcome});
+                      zero_said(c, c.dc_cell(r.dc, r.outcome()), r), outcome});
       x += 1.0;
     }
     p.series.push_back(bars);

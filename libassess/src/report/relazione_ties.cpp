@@ -162,6 +162,7 @@ void checks_table(const TieText& x, const TieLevelResult& L) {
     Cell dc = r.reachable && !count ? x.num(r.dc, 3) : numeric_cell(r.satisfied ? "0" : "∞");
     dc.tone = r.satisfied ? Tone::ok : Tone::fail;
     dc.strong = true;
+    if (count && r.satisfied) dc.note = x.t("no_break");  // a counted zero, said why (issue 36, item 5)
     rows.push_back({Cell(x.t("check." + r.check)), Cell(clause), demand, count ? numeric_cell("0") : x.num(r.capacity * s, 2),
                     Cell(count ? x.t("unit_analyses") : r.unit), dc, x.ok(r.satisfied)});
   }
