@@ -1363,8 +1363,8 @@ const std::map<std::string, Entry>& catalogue() {
         "Selection shared by the candidates"}},
       {"dyn.classes_tried", {"Categorie di sottosuolo provate",
         "Site classes tried"}},
-      {"dyn.shared_set", {"Accelerogrammi: l'insieme {} condiviso con gli altri meccanismi della stessa selezione, descritto una volta nella sintesi dell'edificio (metadati, segnalazioni, selezione e compatibilità spettrale); qui con i fattori di scala: {}.",
-        "Records: the set {} shared with the other mechanisms of the same selection, described once in the building's summary (metadata, flags, selection and spectral compatibility); here with the scale factors: {}."}},
+      {"dyn.shared_set", {"Accelerogrammi: l'insieme {} condiviso con gli altri meccanismi della stessa selezione, descritto una volta nei tabulati (metadati, segnalazioni, selezione e compatibilità spettrale); qui con i fattori di scala: {}.",
+        "Records: the set {} shared with the other mechanisms of the same selection, described once in the tabulati (metadata, flags, selection and spectral compatibility); here with the scale factors: {}."}},
       // Units in tables.
       {"unit.kN", {"kN", "kN"}},
   };
@@ -1388,6 +1388,11 @@ const std::vector<std::pair<std::string, std::string>>& phrases_it() {
       {", not the classes asked, ", ", non quelle richieste, "},
       {" (class relaxed)", " (categoria estesa)"},
       {" as stated by the source; its Vs30 ", " dichiarata dalla fonte; la sua Vs30 "},
+      {": a horizontal force larger than the weight is needed to start the mechanism; out-of-plane mechanisms are usually in 0.02-0.5 (a restrained wall under a heavy load can exceed 1): check the thickness (m, not cm), ties and thrusts",
+       ": per attivare il meccanismo serve una forza orizzontale maggiore del peso; i meccanismi fuori piano hanno di solito α0 fra 0.02 e 0.5 (una parete trattenuta e molto caricata può superare 1): controllare lo spessore (in m, non in cm), le catene e le spinte"},
+      {" for the governing ", " per il cinematismo che governa "},
+      {"class ", "categoria "},
+      {"classes ", "categorie "},
       {" m/s would give ", " m/s darebbe "},
       {"misfit ", "scarto "},
       {" (rank ", " (posizione "},

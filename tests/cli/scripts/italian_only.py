@@ -43,6 +43,7 @@ DECIMAL_POINT = re.compile(r"(?<![\w§.\[/-])\d+\.\d+(?![.\d\w])")
 def text_of(page):
     page = page.split("Appendice — file del caso")[0]  # the input appendix: the user's file
     page = page.split("Appendice: file del caso dell'edificio")[0]
+    page = page.replace("<wbr>", "")  # a line-break opportunity inside a word or a case key: invisible
     page = re.sub(r"<style.*?</style>", " ", page, flags=re.S)
     page = re.sub(r"<pre>.*?</pre>", " ", page, flags=re.S)
     page = re.sub(r'<p class="meta">.*?</p>', " ", page, flags=re.S)  # project, file: the user's words
