@@ -186,7 +186,7 @@ def check(h, p, w, tabulati):
         errors.append("Word: the footer does not read 'pag. x di y'")
     # Every verdict word and every D/C coloured as in the PDF: the HTML's coloured text in the Word's styled runs.
     coloured = {"ok": set(), "fail": set()}
-    for m in re.finditer(r'class="(?:[^"]* )?(dc-ok|dc-fail|ok|fail)(?: [^"]*)?">(?:<[^>]+>)*([^<]+)<', page):
+    for m in re.finditer(r'class="(?:[^"]* )?(dc-ok|dc-fail|ok|fail)(?: [^"]*)?">(?:<[^>]+>)*([^<]+)<', page.replace("<wbr>", "")):
         coloured["ok" if m.group(1) in ("ok", "dc-ok") else "fail"].add(html.unescape(m.group(2)).strip())
     styled = {"ok": set(), "fail": set()}
     xml = d.element.xml
