@@ -1205,6 +1205,8 @@ const std::map<std::string, Entry>& catalogue() {
       {"code.group.architecture", {"di architettura", "architecture"}},
       {"code.group.security", {"di sicurezza", "security"}},
       {"code.group.package", {"di installazione", "installation"}},
+      {"code.group.docs", {"della documentazione", "documentation"}},
+      {"code.group.python", {"dell'interfaccia Python", "of the Python interface"}},
       {"code.record_missing", {"Il registro di verifica non è leggibile in questa compilazione.", "The verification record cannot be read in this build."}},
       {"code.area", {"Ambito", "Area"}},
       {"code.compared", {"Grandezze confrontate", "Quantities compared"}},

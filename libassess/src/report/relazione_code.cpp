@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace assess::relazione {
@@ -23,8 +24,13 @@ namespace {
 // "unit 25, numeric 35, cli 301 ..." in the report's words.
 std::string test_groups(const Ctx& c, const BuildInfo& b) {
   std::string s;
-  for (const TestGroup& g : b.tests)
-    s += (s.empty() ? "" : ", ") + msgf(c.L, "code.group", c.t("code.group." + g.group), g.tests);
+  static const std::vector<std::string> keys = message_keys();
+  for (const TestGroup& g : b.tests) {
+    // A group the catalogue does not name (a test group added later) is shown by its own name.
+    const std::string key = "code.group." + g.group;
+    const bool named = std::find(keys.begin(), keys.end(), key) != keys.end();
+    s += (s.empty() ? "" : ", ") + msgf(c.L, "code.group", named ? c.t(key) : g.group, g.tests);
+  }
   return s;
 }
 
