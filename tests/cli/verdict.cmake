@@ -20,7 +20,7 @@ assess_cli_test(verdict_overturn_two_records ARGS run tests/cli/verdict/overturn
 # Plain records (one column with dt and unit, two columns with the unit only)
 # through the same reader as `assess rocking` (before: unknown key "dt").
 assess_cli_test(verdict_plain_records ARGS run tests/cli/verdict/plain_records.json --lang en
-  PASS "elcentro_plain_1col .*elcentro_plain_2col_cms2 .*largest peak d\\* of 3 records")
+  PASS "largest peak d\\* of 3 records.*elcentro_plain_1col .*elcentro_plain_2col_cms2 ")
 # 80 kN thrust: statically unstable, exit 2, alpha0 and the thrust named
 # (before: "never activated: alpha0 = -1.43 <= 0").
 assess_cli_error_test(verdict_thrust_unstable
