@@ -39,7 +39,9 @@ std::size_t governing_mechanism_kinematic(const BuildingCase& b, const std::stri
     CaseFile k = b.mechanisms[i].kase;
     k.dynamic = nlohmann::json();  // kinematic checks only
     if (k.method == "dynamic") k.method = "nonlinear";
-    const FacadeAssessment a = assess_facade(k);
+    FacadeOptions kinematic_only;
+    kinematic_only.sensitivity = false;
+    const FacadeAssessment a = assess_facade(k, kinematic_only);
     for (const char* code : {"NTC2018", "NTC2008"}) {
       for (const SafetyIndex& s : a.indices)
         if (s.code == code && s.approach == approach && s.defined) zeta[i] = s.index.zeta;

@@ -1052,7 +1052,7 @@ std::vector<TieRestraint> case_tie_restraints(const CaseFile& c, const Chain& ch
   return out;
 }
 
-KinematicCaseResult run_kinematic_case(const CaseFile& c) {
+KinematicCaseResult run_kinematic_case(const CaseFile& c, bool indices) {
   KinematicCaseResult out;
   out.warnings = c.warnings;
   for (const MechanismCandidate& m : c.mechanism.candidates) {
@@ -1125,7 +1125,7 @@ KinematicCaseResult run_kinematic_case(const CaseFile& c) {
       double& m = cr.max_dc[row.code];
       m = std::max(m, std::isfinite(row.dc) ? row.dc : std::numeric_limits<double>::infinity());
       // The check's own index: the return period at which it reaches D/C = 1 (issue 41).
-      row.index = check_index(cr.result, in, row, axis);
+      if (indices) row.index = check_index(cr.result, in, row, axis);
       if (row.index.defined) {
         const auto it = cr.zeta_min.find(row.code);
         if (it == cr.zeta_min.end() || row.index.zeta < it->second) cr.zeta_min[row.code] = row.index.zeta;

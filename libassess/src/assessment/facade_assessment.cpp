@@ -560,6 +560,7 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   }
   if (!kase.dynamic.is_null()) add_dynamic_analysis(a, opt);
   finish(a);
+  if (opt.sensitivity) a.sensitivity = adopted_sensitivity(a);
   return a;
 }
 
@@ -766,6 +767,7 @@ void add_dynamic_analysis(FacadeAssessment& a, const FacadeOptions& opt) {
   // 24): each analysed as the case restricted to it, as if run alone.
   if (kase.mechanism.candidates.size() > 1) {
     FacadeOptions sub_opt = opt;  // histories kept as asked: the relazione develops the candidate that governs
+    sub_opt.sensitivity = false;
     for (std::size_t i : others) {
       CaseFile one = kase;
       one.mechanism.candidates = {kase.mechanism.candidates[i]};

@@ -221,7 +221,7 @@ void add_evaluation(Ctx& c) {
   const std::string coll = collapses_text(c);
   if (!coll.empty()) c.d.add_paragraph(msgf(c.L, "eval.collapses", coll));
   // Sensitivity.
-  const std::vector<SensitivityRow> sens = adopted_sensitivity(c.a);
+  const std::vector<SensitivityRow>& sens = c.a.sensitivity;  // computed by the assessment
   bool flips = false;
   std::vector<std::string> flipping;
   if (!sens.empty()) {

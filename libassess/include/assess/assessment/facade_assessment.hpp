@@ -8,6 +8,7 @@
 #include "assess/assessment/dynamic_case.hpp"
 #include "assess/assessment/mechanism_dynamics.hpp"
 #include "assess/assessment/safety_index.hpp"
+#include "assess/assessment/sensitivity.hpp"
 #include "assess/assessment/verdict.hpp"
 #include "assess/records/record_selection.hpp"
 #include "assess/dynamics/rocking_from_chain.hpp"
@@ -26,6 +27,9 @@ struct FacadeOptions {
   bool keep_going = false;
   /// Keep theta(t) of every analysis (for plots). Default true.
   bool histories = true;
+  /// Compute the sensitivity of the adopted verdict (sensitivity.hpp); the
+  /// other candidates' dynamic assessments do without.
+  bool sensitivity = true;
 };
 
 /// A record used by the dynamic analysis.
@@ -197,6 +201,9 @@ struct FacadeAssessment {
   /// The safety indices per code and approach (safety_index.hpp): the lowest
   /// index of the approach's checks beside its verdict, computed once here.
   std::vector<SafetyIndex> indices;
+  /// The adopted method's D/C under the readings a verificatore questions
+  /// first (FC, d_SLV/d0*, xi): sensitivity.hpp, computed once here.
+  std::vector<SensitivityRow> sensitivity;
   /// Plausibility and compatibility warnings (field, value, unit, why).
   std::vector<std::string> warnings;
 
