@@ -91,8 +91,9 @@ StripChain strip_chain(const HorizontalFlexureParams& p, const HorizontalStrip& 
     // theta_B) = F dx_m with dx_m = theta_A u_m = theta_B (L - u_m). The
     // force acts where the beam's hinge is, on the beam's axis: the wall's
     // centre line at u_m (issue 38; docs/theory/mechanisms.md §1.2: at
-    // finite rotation the closest constant force to the exact M_Rd (theta_A
-    // + theta_B), within 0.1 % of it at the worked example's theta_0).
+    // finite rotation the closer constant force to the exact M_Rd (theta_A
+    // + theta_B): within 0.5 % of it up to the worked example's theta_0, a
+    // force at the middle hinge 1.9 %).
     ring_force = p.ring_beam_moment * L / (um * (L - um));
     loads.push_back(force(LoadType::Force, "ring beam", int(im) - 1, V(-0.5 * t, um), V(-ring_force, 0.0)));
   }
