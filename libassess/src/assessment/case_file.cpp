@@ -489,7 +489,12 @@ SiteSpec parse_site(const JsonNode& s) {
         spec.given[parse_limit_state(ls)] = p;
       }
   }
-  if (s.has("soil")) spec.conditions.soil = parse_soil_class(s.choice("soil", {"A", "B", "C", "D", "E"}));
+  // The subsoil category moves every demand (S = SS ST, TC = CC TC*): no
+  // default is assumed (issue 41: a missing soil ran as A, a silent default).
+  if (!s.has("soil"))
+    s.fail_missing("soil", "the subsoil category of NTC 2018 Tab. 3.2.II, \"A\", \"B\", \"C\", \"D\" or \"E\" "
+                           "(it sets S = SS ST and TC = CC TC* of every demand; no default is assumed)");
+  spec.conditions.soil = parse_soil_class(s.choice("soil", {"A", "B", "C", "D", "E"}));
   if (s.has("topography")) spec.conditions.topography = parse_topography(s.choice("topography", {"T1", "T2", "T3", "T4"}));
   spec.conditions.h_over_H = s.number_or("h_over_H", 1.0, "-", 0.0, 1.0);
   spec.vn_years = s.number_or("VN_years", 50.0, rules::nominal_life_years);
@@ -1014,7 +1019,7 @@ KinematicCaseResult run_kinematic_case(const CaseFile& c) {
     KinematicOptions opt = c.options;
     opt.rotation_cap = m.rotation_bound;  // issue 33: the mechanism's own bound on its rotation
     out.candidates.push_back(
-        {m.label, m.parameter, c.Z.value_or(m.Z), analyse_kinematic(m.chain, opt, case_tie_restraints(c, m.chain)), {}, {}, 0.0});
+        {m.label, m.parameter, c.Z.value_or(m.Z), analyse_kinematic(m.chain, opt, case_tie_restraints(c, m.chain)), {}, {}, {}});
   }
   for (const CandidateResult& cr : out.candidates)
     if (!cr.result.activates) statically_unstable(c, cr);
@@ -1051,6 +1056,9 @@ KinematicCaseResult run_kinematic_case(const CaseFile& c) {
   in.site = c.site->conditions;
   in.building = c.building;
   out.check_input = in;
+  // The site's hazard along the return-period axis (none when given per limit state).
+  HazardAxis axis;
+  if (site.has_hazard_curve()) axis = [&site](double tr) { return site.hazard_extrapolated(tr); };
   bool warned_Z = false;
   for (CandidateResult& cr : out.candidates) {
     in.Z = cr.Z;
@@ -1072,12 +1080,16 @@ KinematicCaseResult run_kinematic_case(const CaseFile& c) {
     } catch (const InputError& e) {
       throw InputError(c.file + ": /building: " + e.what());
     }
-    cr.ag_capacity_min_g = std::numeric_limits<double>::infinity();
     for (CheckRow& row : cr.checks) {
       row.candidate = cr.label;
       double& m = cr.max_dc[row.code];
       m = std::max(m, std::isfinite(row.dc) ? row.dc : std::numeric_limits<double>::infinity());
-      if (row.has_pga) cr.ag_capacity_min_g = std::min(cr.ag_capacity_min_g, row.ag_capacity_g);
+      // The check's own index: the return period at which it reaches D/C = 1 (issue 41).
+      row.index = check_index(cr.result, in, row, axis);
+      if (row.index.defined) {
+        const auto it = cr.zeta_min.find(row.code);
+        if (it == cr.zeta_min.end() || row.index.zeta < it->second) cr.zeta_min[row.code] = row.index.zeta;
+      }
     }
   }
   // The governing candidate of each code: the largest D/C over its checks

@@ -94,8 +94,9 @@ struct CandidateResult {
   std::vector<CheckRow> checks;  ///< its checks, every requested code (empty without a site)
   /// Per code ("NTC2008", "NTC2018"): the largest D/C over its checks (-).
   std::map<std::string, double> max_dc;
-  /// NTC 2018: the lowest ag capacity over its checks (g); inf if never reached.
-  double ag_capacity_min_g = 0.0;
+  /// Per code: the lowest safety index zetaE over its checks (-; check_index.hpp),
+  /// below 1 exactly where max_dc is above 1; absent without a defined index.
+  std::map<std::string, double> zeta_min;
 };
 
 struct KinematicCaseResult {
