@@ -954,10 +954,59 @@ CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
   c.warnings = input_warnings(doc.at("mechanism"), file);
   // Hook for the façade issue (dynamic rocking): kept raw, parsed there.
   if (root.has("dynamic")) c.dynamic = doc.at("dynamic");
+  c.defaults = case_defaults(doc, c);
   return c;
 }
 
 CaseFile read_case_file(const std::string& path) { return parse_case(read_json_file(path), path); }
+
+namespace {
+
+// "0.05 H^0.75 = 0.234 s"-like values of the defaults.
+std::string value_text(double v, const char* unit) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.4g%s%s", v, *unit ? " " : "", unit);
+  return b;
+}
+
+}  // namespace
+
+std::vector<CaseDefault> case_defaults(const nlohmann::json& doc, const CaseFile& c) {
+  std::vector<CaseDefault> out;
+  auto absent = [&](const nlohmann::json& o, std::initializer_list<const char*> keys) {
+    if (!o.is_object()) return true;
+    for (const char* k : keys)
+      if (o.contains(k)) return false;
+    return true;
+  };
+  if (c.site && doc.contains("site")) {
+    const nlohmann::json& s = doc.at("site");
+    if (absent(s, {"hazard"})) {
+      if (absent(s, {"topography"})) out.push_back({"/site/topography", "T1", "default.topography"});
+      if (absent(s, {"VN_years"})) out.push_back({"/site/VN_years", value_text(c.site->vn_years, ""), "default.vn"});
+      if (absent(s, {"use_class", "CU"})) out.push_back({"/site/use_class", "II (CU = 1.0)", "default.cu"});
+    }
+  }
+  if (absent(doc, {"knowledge_level", "FC"}))
+    out.push_back({"/knowledge_level", "LC1 (FC = " + value_text(c.options.FC, "") + ")", "default.knowledge"});
+  if (c.site) {
+    if (absent(doc, {"method"})) out.push_back({"/method", c.method, "default.method"});
+    if (absent(doc, {"check_SLD"})) out.push_back({"/check_SLD", "false", "default.check_sld"});
+    const nlohmann::json a = doc.contains("analysis") ? doc.at("analysis") : nlohmann::json::object();
+    if (absent(a, {"q"})) out.push_back({"/analysis/q", value_text(c.checks.q, ""), "default.q"});
+    if (absent(a, {"damping_SLV_pct"}))
+      out.push_back({"/analysis/damping_SLV_pct", value_text(c.checks.damping_SLV_pct, "%"), "default.damping_slv"});
+    if (absent(a, {"damping_SLC_pct"}))
+      out.push_back({"/analysis/damping_SLC_pct", value_text(c.checks.damping_SLC_pct, "%"), "default.damping_slc"});
+  }
+  if (c.building) {
+    const nlohmann::json& b = doc.at("building");
+    if (absent(b, {"T1_s"})) out.push_back({"/building/T1_s", value_text(c.building->T1, "s"), "default.T1"});
+    if (absent(b, {"damping_pct"}))
+      out.push_back({"/building/damping_pct", value_text(c.building->damping_pct, "%"), "default.building_damping"});
+  }
+  return out;
+}
 
 namespace {
 

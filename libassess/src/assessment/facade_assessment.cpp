@@ -492,6 +492,12 @@ namespace {
 void add_dynamic_analysis(FacadeAssessment& a, const FacadeOptions& opt);
 }  // namespace
 
+std::vector<CaseDefault> assessment_defaults(const FacadeAssessment& a) {
+  std::vector<CaseDefault> out = a.kase.defaults;
+  if (a.dynamic) out.insert(out.end(), a.dynamic->defaults.begin(), a.dynamic->defaults.end());
+  return out;
+}
+
 std::string shared_selection_problem(const CaseFile& kase) {
   const DynamicSpec d = parse_dynamic(kase.dynamic, kase.file, directory_of(kase.file));
   if (!d.selection || !d.selection->T_min || !d.selection->T_max || !kase.site) return "";

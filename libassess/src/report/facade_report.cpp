@@ -33,6 +33,11 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
   nlohmann::json j;
   j["project"] = a.kase.project;
   j["case_file"] = a.kase.file;
+  // Every value the case did not give that moves a result (issue 41).
+  nlohmann::json defaults = nlohmann::json::array();
+  for (const CaseDefault& x : assessment_defaults(a))
+    defaults.push_back({{"path", x.path}, {"value", x.value}, {"effect", msg(Lang::en, x.effect)}});
+  j["defaults"] = defaults;
   if (a.kase.site) {
     const SiteSpec& sp = *a.kase.site;
     nlohmann::json s{{"description", a.site_description}, {"soil", to_string(sp.conditions.soil)},

@@ -81,7 +81,8 @@ void add_front_matter(Ctx& c);           // frontespizio, verdict box, contents
 void add_verdict_box(Ctx& c);            // per code and method, the conclusion
 void add_premessa(Ctx& c);               // scope, mechanism, adopted procedure
 void add_normativa(Ctx& c);
-void add_building_description(Ctx& c);   // descrizione, indagini e LC, muratura, criteri
+void add_building_description(Ctx& c);   // descrizione, indagini e LC, muratura, criteri, valori predefiniti
+void add_defaults(Ctx& c);               // the values the case did not give (issue 41)
 void add_site(Ctx& c);                   // azione sismica, spectra
 void add_formulas(Ctx& c);               // every formula once, with its clause
 void add_mechanism(Ctx& c);              // each candidate that governs a method, developed

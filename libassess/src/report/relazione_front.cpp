@@ -170,6 +170,21 @@ void add_building_description(Ctx& c) {
   std::string which = msgf(c.L, "criteria.engine", mechanism_name(c.L, ms.type), a.kinematic.candidates.size());
   if (a.kinematic.candidates.size() > 1) which += " " + msgf(c.L, "criteria.parameter", c.loc(ms.parameter_name));
   c.d.add_paragraph(which);
+  add_defaults(c);
+}
+
+// The values the case did not give and the engine assumed (issue 41): each
+// with its key in the case file and what it sets.
+void add_defaults(Ctx& c) {
+  const std::vector<CaseDefault> all = assessment_defaults(c.a);
+  if (all.empty()) return;
+  c.d.add_heading(c.t("defaults.heading"), 3, false);
+  c.d.add_paragraph(c.t("defaults.intro"));
+  std::vector<std::vector<Cell>> rows;
+  for (const CaseDefault& x : all)
+    rows.push_back({Cell(x.path), Cell(c.loc(x.value)), Cell(c.t(x.effect))});
+  c.d.add_cell_table({Cell(c.t("defaults.key")), Cell(c.t("defaults.value")), Cell(c.t("defaults.effect"))}, rows,
+                     c.t("defaults.cap"));
 }
 
 }  // namespace assess::relazione

@@ -255,6 +255,10 @@ double dynamic_d_SLV(const KinematicResult& kin);
 std::vector<RestitutionSummary> summarise_runs(const std::vector<DynamicRun>& runs, const std::vector<double>& e,
                                                const KinematicResult& kin);
 
+/// Every value the case did not give that moves a result (issue 41): the
+/// case's (CaseFile::defaults) and its dynamic section's (DynamicSpec::defaults).
+std::vector<CaseDefault> assessment_defaults(const FacadeAssessment& a);
+
 /// Whether the record set a case's selection gives over its own
 /// /dynamic/select/period_range_s can be used (docs/theory/building.md §3):
 /// a compatible set whose mean spectrum stays within the -10 %/+30 % band of
