@@ -177,7 +177,7 @@ void parse_crack_angle(const JsonNode& m, Params& p) {
 // corner about any axis (m, kN, kN/m, kN m, MPa at the file's edge) --------
 
 RoofSpec parse_roof(const JsonNode& r, double top_thickness) {
-  r.allow_only({"scheme", "load", "span", "pitch_deg", "seat_from_inner_face"});
+  r.allow_only({"scheme", "load", "span", "pitch_deg", "seat_from_inner_face", "held"});
   RoofSpec roof;
   const std::string scheme = r.choice("scheme", {"a_frame", "strut", "ridge_beam", "truss"});
   roof.scheme = scheme == "a_frame"  ? RoofScheme::AFrame
@@ -188,6 +188,7 @@ RoofSpec parse_roof(const JsonNode& r, double top_thickness) {
   roof.span = r.positive("span", "m");
   roof.pitch_deg = open_interval(r.at("pitch_deg"), "deg", 0.0, 90.0);
   roof.seat_from_inner_face = r.number_or("seat_from_inner_face", 0.5 * top_thickness, "m", 0.0, top_thickness);
+  roof.held = r.boolean_or("held", false);  // issue 38: the roof's mass moves with the wall unless held
   return roof;
 }
 
@@ -249,8 +250,8 @@ MechanismSet parse_horizontal_flexure(const JsonNode& m, double FC) {
 
 MechanismSet parse_friction_overturning(const JsonNode& m) {
   m.allow_only({"type", "height", "thickness", "length", "unit_weight", "base_z", "side_walls", "side_thickness",
-                "side_length", "unit_length", "course_height", "friction", "activation", "side_load", "top_weight", "tie",
-                "floors"});
+                "side_length", "unit_length", "course_height", "friction", "activation", "side_load", "side_load_held",
+                "top_weight", "top_weight_held", "tie", "floors"});
   FrictionOverturningParams p;
   p.height = m.positive("height", "m");
   p.thickness = m.positive("thickness", "m");
@@ -265,7 +266,9 @@ MechanismSet parse_friction_overturning(const JsonNode& m) {
   p.friction = m.number("friction", "-", 1e-6, 2.0);
   p.activation = m.number_or("activation", 1.0, "-", 0.0, 1.0);
   p.side_load = m.number_or("side_load", 0.0, "kN/m", 0.0) * kN;
+  p.side_load_held = m.boolean_or("side_load_held", false);  // issue 38: every load moves unless held
   p.top_weight = m.number_or("top_weight", 0.0, "kN", 0.0) * kN;
+  p.top_weight_held = m.boolean_or("top_weight_held", false);
   p.tie = m.number_or("tie", 0.0, "kN", 0.0) * kN;
   if (m.find("floors"))
     for (const JsonNode& f : m.array("floors")) {
@@ -275,7 +278,7 @@ MechanismSet parse_friction_overturning(const JsonNode& m) {
       fl.z = open_interval(f.at("z"), "m", p.base_z, p.base_z + p.height + 1e-9);
       fl.distance_from_inner_face = f.number_or("distance_from_inner_face", 0.5 * p.thickness, "m", 0.0, p.thickness);
       fl.friction = f.number_or("friction", 0.0, "-", 0.0, 2.0);
-      fl.held = f.boolean_or("held", true);
+      fl.held = f.boolean_or("held", false);  // issue 38: moves with the façade unless held
       if (f.find("seat_length")) fl.seat_length = f.positive("seat_length", "m");
       p.floors.push_back(fl);
     }
@@ -311,9 +314,16 @@ CornerWall parse_corner_wall(const JsonNode& w) {
 }
 
 MechanismSet parse_corner(const JsonNode& m) {
-  m.allow_only({"type", "height", "thickness", "unit_weight", "wall_length", "base_z", "top_weight", "thrust", "tie",
-                "beta_deg", "unit_length", "course_height", "beta_min_deg", "beta_max_deg", "search_points", "wall_a",
-                "wall_b", "axis_deg", "axis_min_deg", "axis_max_deg", "axis_points"});
+  // Issue 38: the axis is no longer scanned (an intermediate axis never
+  // governs, docs/theory/mechanisms.md §4.2): the former scan's keys named.
+  for (const char* k : {"axis_min_deg", "axis_max_deg", "axis_points"})
+    if (m.has(k))
+      m.at(k).fail("the axis is not scanned: the two axes along the walls' outer faces (0 and 90 deg) are the "
+                   "candidates, an intermediate axis never governs (docs/theory/mechanisms.md §4.2); remove \"" +
+                   std::string(k) + "\", or give \"axis_deg\" (deg) for one axis");
+  m.allow_only({"type", "height", "thickness", "unit_weight", "wall_length", "base_z", "top_weight", "top_weight_held",
+                "thrust", "tie", "beta_deg", "unit_length", "course_height", "beta_min_deg", "beta_max_deg",
+                "search_points", "wall_a", "wall_b", "axis_deg"});
   CornerOverturningParams p;
   p.height = m.positive("height", "m");
   if (m.find("thickness")) p.thickness = m.positive("thickness", "m");
@@ -321,6 +331,7 @@ MechanismSet parse_corner(const JsonNode& m) {
   if (m.find("wall_length")) p.wall_length = m.positive("wall_length", "m");
   p.base_z = m.number_or("base_z", 0.0, "m", 0.0);
   p.top_weight = m.number_or("top_weight", 0.0, "kN", 0.0) * kN;
+  p.top_weight_held = m.boolean_or("top_weight_held", false);  // issue 38
   p.thrust = m.number_or("thrust", 0.0, "kN") * kN;
   p.tie = m.number_or("tie", 0.0, "kN", 0.0) * kN;
   parse_crack_angle(m, p);
@@ -346,17 +357,7 @@ MechanismSet parse_corner(const JsonNode& m) {
             "opening through the pier");
   }
   if (m.find("axis_deg")) p.axis_deg = m.number("axis_deg", "deg", 0.0, 90.0);
-  p.axis_min_deg = m.number_or("axis_min_deg", p.axis_min_deg, "deg", 0.0, 90.0);
-  p.axis_max_deg = m.number_or("axis_max_deg", p.axis_max_deg, "deg", 0.0, 90.0);
-  p.axis_points = m.integer_or("axis_points", p.axis_points, 2, 91);
-  // A searched crack angle times a scanned axis: every pair is a candidate.
-  const bool own_a = p.wall_a.beta_deg || p.wall_a.unit_length || p.wall_a.crack_reach;
-  const bool own_b = p.wall_b.beta_deg || p.wall_b.unit_length || p.wall_b.crack_reach;
-  const bool beta_searched = !(own_a && own_b) && !p.beta_deg && !p.unit_length && !p.course_height;
-  if (beta_searched && !p.axis_deg && p.search_points * p.axis_points > 200)
-    m.fail("a searched crack angle (search_points = " + std::to_string(p.search_points) + ") and a scanned axis "
-           "(axis_points = " + std::to_string(p.axis_points) + ") make more than 200 candidates: give the crack "
-           "angle from the texture (unit_length, course_height) or the axis (axis_deg)");
+  // A searched crack angle (at most 100) times the two axes: at most 200 candidates.
   return corner_overturning(p);
 }
 
@@ -372,13 +373,18 @@ MechanismSet parse_mechanism(const JsonNode& m, double FC) {
       m.allow_only({"type", "storeys", "unit_weight", "length", "hinge_level", "hinge_setback"});
     SimpleOverturningParams p;
     for (const JsonNode& s : m.array("storeys", 1)) {
-      s.allow_only({"height", "thickness", "floor_weight", "floor_distance_from_inner_face", "floor_bears", "thrust", "tie"});
+      s.allow_only({"height", "thickness", "floor_weight", "floor_distance_from_inner_face", "floor_bears", "floor_held",
+                    "thrust", "tie"});
       Storey st;
       st.height = s.number("height", rules::dimension_m);
       st.thickness = s.number("thickness", rules::dimension_m);
       st.floor_weight = s.number_or("floor_weight", 0.0, rules::weight_kN) * kN;
       st.floor_distance_from_inner_face = s.number_or("floor_distance_from_inner_face", 0.0, "m", 0.0, st.thickness);
       st.floor_bears = s.boolean_or("floor_bears", true);
+      st.floor_held = s.boolean_or("floor_held", false);  // issue 38: the floor's mass moves with the wall unless held
+      if (st.floor_held && !st.floor_bears && st.floor_weight > 0.0)
+        s.at("floor_held").fail("a floor that neither bears (\"floor_bears\": false) nor pushes (\"floor_held\": true) "
+                                "acts on nothing: drop it or give one of the two");
       st.thrust = s.number_or("thrust", 0.0, rules::force_kN) * kN;
       st.tie = s.number_or("tie", 0.0, rules::weight_kN) * kN;
       p.storeys.push_back(st);
@@ -409,7 +415,7 @@ MechanismSet parse_mechanism(const JsonNode& m, double FC) {
   }
   if (type == "composite_overturning") {
     m.allow_only({"type", "height", "thickness", "length", "unit_weight", "side_thickness", "side_walls",
-                  "side_length", "base_z", "top_weight", "tie", "beta_deg", "unit_length", "course_height",
+                  "side_length", "base_z", "top_weight", "top_weight_held", "tie", "beta_deg", "unit_length", "course_height",
                   "beta_min_deg", "beta_max_deg", "search_points"});
     CompositeOverturningParams p;
     p.height = m.number("height", rules::dimension_m);
@@ -421,6 +427,7 @@ MechanismSet parse_mechanism(const JsonNode& m, double FC) {
     p.side_length = m.number("side_length", rules::dimension_m);
     p.base_z = m.number_or("base_z", 0.0, rules::offset_m);
     p.top_weight = m.number_or("top_weight", 0.0, rules::weight_kN) * kN;
+    p.top_weight_held = m.boolean_or("top_weight_held", false);  // issue 38: moves with the façade unless held
     p.tie = m.number_or("tie", 0.0, rules::weight_kN) * kN;
     parse_crack_angle(m, p);
     return composite_overturning(p);
@@ -428,7 +435,8 @@ MechanismSet parse_mechanism(const JsonNode& m, double FC) {
   if (type == "corner_overturning") return parse_corner(m);
   if (type == "horizontal_flexure") return parse_horizontal_flexure(m, FC);
   if (type == "friction_overturning") return parse_friction_overturning(m);
-  m.allow_only({"type", "width", "height", "thickness", "unit_weight", "base_z", "ridge_weight", "ridge_thrust", "tie", "slices"});
+  m.allow_only({"type", "width", "height", "thickness", "unit_weight", "base_z", "ridge_weight", "ridge_weight_held",
+                "ridge_thrust", "tie", "slices"});
   GableParams p;
   p.width = m.number("width", rules::dimension_m);
   p.height = m.number("height", rules::dimension_m);
@@ -436,6 +444,7 @@ MechanismSet parse_mechanism(const JsonNode& m, double FC) {
   p.unit_weight = m.number("unit_weight", rules::unit_weight_kN_m3) * kN;
   p.base_z = m.number_or("base_z", 0.0, rules::offset_m);
   p.ridge_weight = m.number_or("ridge_weight", 0.0, rules::weight_kN) * kN;
+  p.ridge_weight_held = m.boolean_or("ridge_weight_held", false);  // issue 38: moves with the gable unless held
   p.ridge_thrust = m.number_or("ridge_thrust", 0.0, rules::force_kN) * kN;
   p.tie = m.number_or("tie", 0.0, rules::weight_kN) * kN;
   p.slices = m.integer_or("slices", p.slices, 2, 200);

@@ -88,7 +88,12 @@ StripChain strip_chain(const HorizontalFlexureParams& p, const HorizontalStrip& 
   loads.push_back(force(LoadType::Force, "arch thrust", int(nseg) - 1, V(-es, L), V(0.0, -H)));
   if (p.ring_beam_moment > 0.0) {
     // Simply supported ring beam with a plastic hinge at u_m: M_Rd (theta_A +
-    // theta_B) = F dx_m with dx_m = theta_A u_m = theta_B (L - u_m).
+    // theta_B) = F dx_m with dx_m = theta_A u_m = theta_B (L - u_m). The
+    // force acts where the beam's hinge is, on the beam's axis: the wall's
+    // centre line at u_m (issue 38; docs/theory/mechanisms.md §1.2: at
+    // finite rotation the closer constant force to the exact M_Rd (theta_A
+    // + theta_B): within 0.5 % of it up to the worked example's theta_0, a
+    // force at the middle hinge 1.9 %).
     ring_force = p.ring_beam_moment * L / (um * (L - um));
     loads.push_back(force(LoadType::Force, "ring beam", int(im) - 1, V(-0.5 * t, um), V(-ring_force, 0.0)));
   }
@@ -195,8 +200,8 @@ MechanismSet horizontal_flexure(const HorizontalFlexureParams& p) {
     q.push_back({"middle hinge from the inner face", a.e_middle, "m", "C8.7.1.2.1 d) [V-T]; " + src});
     q.push_back({"lever arm of the arch z", p.thickness - a.e_support - a.e_middle, "m", src});
     if (sc.ring_force > 0.0)
-      q.push_back({"ring beam: force at the middle hinge M_Rd L/(u_m (L - u_m))", sc.ring_force / units::kN, "kN",
-                   "docs/theory/mechanisms.md §1.3 [D]"});
+      q.push_back({"ring beam: force at u_m on the beam's axis (the wall's centre line) M_Rd L/(u_m (L - u_m))",
+                   sc.ring_force / units::kN, "kN", "docs/theory/mechanisms.md §1.2 [D]"});
     set.candidates.push_back({"strip z = " + fmt("%.2f", s.base_z) + "-" + fmt("%.2f", s.base_z + s.height) +
                                   " m, middle hinge at u = " + fmt("%.2f", um) + " m",
                               sc.chain, zm, zm, q});

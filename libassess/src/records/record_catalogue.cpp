@@ -122,6 +122,16 @@ std::string site_class_from_vs30(double v) {
   return "D";
 }
 
+SiteClass site_class_of(double vs30_m_s, const std::string& stated) {
+  const std::string v = site_class_from_vs30(vs30_m_s);
+  // E: the velocities of C or D over a substrate within 30 m (Tab. 3.2.II),
+  // which Vs30 alone cannot show: a stated E its Vs30 does not contradict stands.
+  if (stated == "E" && (v == "C" || v == "D")) return {"E", "stated"};
+  if (!v.empty()) return {v, "Vs30"};
+  if (!stated.empty()) return {stated, "stated"};
+  return {"", ""};
+}
+
 std::string near_fault_reason(const CatalogueEntry& e, double threshold_km) {
   std::string why;
   if (e.pulse == "pulse-like")
@@ -236,11 +246,12 @@ RecordCatalogue build_catalogue(const std::string& table) {
       throw InputError(at("site_class_stated") + ": expected one of A, B, C, D, E, got '" + stated + "'");
     if (!stated.empty() && stated.size() != 1)
       throw InputError(at("site_class_stated") + ": expected one of A, B, C, D, E, got '" + stated + "'");
-    // The class the source states first (it may know the stratigraphy: class
-    // E needs it), else the Tab. 3.2.II band of Vs30 (record-selection.md §3).
+    // Issue 38: the Tab. 3.2.II band of the measured Vs30 first, the stated
+    // class only without one (record-selection.md §3; site_class_of).
     e.vs30_class = site_class_from_vs30(e.vs30_m_s);
-    if (!stated.empty()) e.site_class = stated, e.site_class_basis = "stated";
-    else if (!e.vs30_class.empty()) e.site_class = e.vs30_class, e.site_class_basis = "Vs30";
+    const SiteClass sc = site_class_of(e.vs30_m_s, stated);
+    e.site_class = sc.site_class;
+    e.site_class_basis = sc.basis;
     e.pulse = cell("pulse");
     if (!e.pulse.empty() && e.pulse != "pulse-like" && e.pulse != "non-pulse")
       throw InputError(at("pulse") + ": expected pulse-like, non-pulse or an empty cell, got '" + e.pulse + "'");

@@ -233,9 +233,9 @@ const std::map<std::string, Entry>& catalogue() {
                                "Quantities of the governing candidate's derivation, with their formula and source "
                                "(the readings adopted are listed in the appendix)."}},
       {"mech.bound", {"Capacità di spostamento limitata: la catena rigida darebbe d0* = {} m; il limite è d0* = {} m "
-                      "({}); du*, d_SLV e d_SLC valgono rispettivamente 0,4; 0,4 e 0,6 volte il limite (note teoriche di assess, meccanismi §4.4).",
+                      "({}); du*, d_SLV e d_SLC valgono rispettivamente 0,4; 0,4 e 0,6 volte il limite (note teoriche di assess, meccanismi §5).",
                       "Displacement capacity bounded: the rigid chain would give d0* = {} m; the bound is d0* = {} m "
-                      "({}); du*, d_SLV and d_SLC are 0.4, 0.4 and 0.6 of the bound (docs/theory/mechanisms.md §4.4)."}},
+                      "({}); du*, d_SLV and d_SLC are 0.4, 0.4 and 0.6 of the bound (docs/theory/mechanisms.md §5)."}},
       {"mech.candidates", {"Meccanismi candidati", "Candidate mechanisms"}},
       {"mech.candidates_cap", {"Candidati esaminati (parametro: {}); per ciascuna norma governa il candidato con il D/C "
                                "massimo sulle sue verifiche (Circ. 2019 C8.7.1; C8A.4: il meccanismo più sfavorevole).",
@@ -1225,7 +1225,8 @@ const std::vector<std::pair<std::string, std::string>>& phrases_it() {
       {"arch thrust H = H_c (crushing at the hinges governs)", "spinta dell'arco H = H_c (governa lo schiacciamento alle cerniere)"},
       {"arch thrust H = H_lim (the restraint governs)", "spinta dell'arco H = H_lim (governa il ritegno degli appoggi)"},
       {"arch thrust", "spinta dell'arco"},
-      {"ring beam: force at the middle hinge M_Rd L/(u_m (L - u_m))", "cordolo: forza alla cerniera intermedia M_Rd L/(u_m (L - u_m))"},
+      {"ring beam: force at u_m on the beam's axis (the wall's centre line) M_Rd L/(u_m (L - u_m))",
+       "cordolo: forza in u_m sull'asse del cordolo (linea media del muro) M_Rd L/(u_m (L - u_m))"},
       {"ring beam: plastic moment in plan M_Rd", "cordolo: momento plastico nel piano M_Rd"},
       {"ring beam", "cordolo"},
       {"strip: bottom z", "fascia: base z"},
@@ -1313,6 +1314,11 @@ const std::vector<std::pair<std::string, std::string>>& phrases_it() {
       {"corner pier: lever arm of its centroid about the axis", "pilastro d'angolo: braccio del baricentro rispetto all'asse"},
       {"rotation bound: the pier's weight over the axis", "limite di rotazione: baricentro del pilastro sulla verticale dell'asse"},
       {"the corner pier's own overturning about the axis", "il ribaltamento del solo pilastro d'angolo attorno all'asse"},
+      {"rotation bound: the façade's weight and its loads over the hinge",
+       "limite di rotazione: baricentro della facciata e dei suoi carichi sulla verticale della cerniera"},
+      {"the façade's own overturning about its hinge", "il ribaltamento della sola facciata attorno alla sua cerniera"},
+      {"α0 about the axis at 45° (the classical reduction, for comparison)",
+       "α0 attorno all'asse a 45° (riduzione classica, per confronto)"},
       {"wedge height above the hinge", "altezza del cuneo sulla cerniera"},
       {"wall A: thickness", "parete A: spessore"},
       {"wall B: thickness", "parete B: spessore"},

@@ -22,11 +22,12 @@ struct CatalogueEntry {
   std::string station_code;
   std::string positive_direction;  ///< direction of positive acceleration ("N", "W", "azimuth 228 deg", "not stated ...")
   std::string distance_kind;       ///< "Rjb", "Repi" or "Rrup" ("" if unknown)
-  /// NTC 2018 Tab. 3.2.II class: the one the source states (site_class_stated
-  /// of metadata.csv), else the one its Vs30 implies (A..D), else "".
+  /// NTC 2018 Tab. 3.2.II class (issue 38, site_class_of): the one its Vs30
+  /// implies (A..D), else the one the source states (site_class_stated of
+  /// metadata.csv), else "".
   std::string site_class;
-  std::string site_class_basis;    ///< "stated" (by the source), "Vs30" (Tab. 3.2.II bands) or ""
-  std::string vs30_class;          ///< the class Vs30 implies ("" without Vs30); may differ from a stated class
+  std::string site_class_basis;    ///< "Vs30" (Tab. 3.2.II bands), "stated" (by the source) or ""
+  std::string vs30_class;          ///< the class Vs30 implies ("" without Vs30); differs only from a stated E
   std::string content_hash;        ///< FNV-1a 64 of the file's bytes (16 hex digits), computed at build
   /// Pulse classification given by a source: "pulse-like", "non-pulse" or "" (not classified).
   std::string pulse;
@@ -74,6 +75,17 @@ struct RecordCatalogue {
 /// (B, C). Class E needs the stratigraphy
 /// and is only taken where a source states it. "" for a non-finite Vs30.
 std::string site_class_from_vs30(double vs30_m_s);
+
+/// A record's site class and its basis ("Vs30", "stated" or "").
+struct SiteClass {
+  std::string site_class, basis;
+};
+/// Issue 38 (docs/theory/record-selection.md §3): the Tab. 3.2.II band of
+/// the station's Vs30 where there is one (basis "Vs30"), the class the
+/// source states only where there is none (basis "stated"); a stated E is
+/// kept where Vs30 gives C or D (E is C or D velocities over a substrate
+/// within 30 m: Vs30 cannot show it, and does not contradict it).
+SiteClass site_class_of(double vs30_m_s, const std::string& stated);
 
 /// Distance below which a record is near-fault (km, docs/theory/record-selection.md §2.4).
 inline constexpr double near_fault_distance_km = 10.0;
