@@ -44,7 +44,7 @@ def main():
           "P in VN = %.3f (%s)" % (g["limit_state"], g["restitution"], g["theta_m_s2"] / G, g["beta"],
                                    g["return_period_years"], g["probability_in_VN"], g["status"]))
     fig, ax = plt.subplots(figsize=(7, 4.8))
-    im = np.linspace(0.01, 2.0, 300)  # PGA on the site's ground (g)
+    im = np.linspace(0.005, 1.2, 300)  # PGA on the site's ground (g)
     for curve in f["curves"]:
         if curve.get("status") != "ok":
             continue
@@ -54,7 +54,7 @@ def main():
                                                                      median, beta))
         for s in curve["stripes"]:  # the stripes' fractions k/n at their PGA
             ax.plot(s["im_m_s2"] / G, s["k"] / s["n"], "o", ms=4, color=line.get_color())
-    ax.set(xlabel="PGA on the site's ground (g)", ylabel="P(overturning | PGA) (-)",
+    ax.set(xlabel="PGA on the site's ground (g)", ylabel="P(limit state exceeded | PGA) (-)",
            title="Fragility of %s" % os.path.basename(a.case))
     ax.grid(True, lw=0.3)
     ax.legend(fontsize=7)

@@ -25,7 +25,8 @@ nlohmann::json convert(py::handle v, const std::string& file, const std::string&
   if (PyLong_Check(v.ptr())) {
     int overflow = 0;
     const long long i = PyLong_AsLongLongAndOverflow(v.ptr(), &overflow);
-    if (overflow == 0) return static_cast<std::int64_t>(i);
+    // As nlohmann's parser reads JSON text: a non-negative integer unsigned, a negative one signed.
+    if (overflow == 0) return i >= 0 ? nlohmann::json(static_cast<std::uint64_t>(i)) : nlohmann::json(static_cast<std::int64_t>(i));
     if (overflow > 0) {
       const unsigned long long u = PyLong_AsUnsignedLongLong(v.ptr());
       if (!PyErr_Occurred()) return static_cast<std::uint64_t>(u);

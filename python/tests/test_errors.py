@@ -25,7 +25,7 @@ def test_bad_case_raises_value_error_naming_the_path():
     assert isinstance(e.value, assess.InputError)
     assert str(e.value) == cli_error("run", case)
     assert e.value.file == case
-    assert e.value.path.startswith("/dynamic/")
+    assert e.value.path == "/dynamic"
     assert "polarity" in str(e.value)  # the suggestion of the command line
 
 
@@ -50,8 +50,12 @@ def test_rocking_option_errors_are_the_cli_messages():
         assess.rocking("smooth", record="spectra/records/RSN292_ITALY_A-STU270.AT2", **WALL)
     assert str(e.value) == cli_error("rocking", "--model", "smooth", "--thickness", "0.25", "--height", "3",
                                      "--unit-weight", "12.06", "--record", "spectra/records/RSN292_ITALY_A-STU270.AT2")
-    with pytest.raises(assess.InputError, match="--scale must lie in"):
-        assess.rocking("rigid", record="spectra/records/RSN292_ITALY_A-STU270.AT2", scale=0.0, **WALL)
+    for scale in ("0", "-1", "200"):
+        with pytest.raises(assess.InputError) as e:
+            assess.rocking("rigid", record="spectra/records/RSN292_ITALY_A-STU270.AT2", scale=float(scale), **WALL)
+        assert str(e.value) == cli_error("rocking", "--model", "rigid", "--thickness", "0.25", "--height", "3",
+                                         "--unit-weight", "12.06", "--record", "spectra/records/RSN292_ITALY_A-STU270.AT2",
+                                         "--scale", scale)
     with pytest.raises(assess.InputError, match=r"record: value 1 is not a number"):
         assess.rocking("rigid", record=[0.0, float("nan"), 0.1], dt=0.01, **WALL)
     with pytest.raises(assess.InputError, match="--dt: the time step"):

@@ -75,18 +75,33 @@ def test_rocking_model_gives_the_seed_fig2_numbers():
     th = np.linspace(0.0, m.theta_u, 7)
     M = m.moment(th)
     assert M.shape == th.shape and M[0] == pytest.approx(0.0, abs=1e-12) and M[-1] == pytest.approx(0.0, abs=1e-9)
-    assert m.moment(0.5 * m.theta_cr) == pytest.approx(M[0] + 0.5 * m.theta_cr * (2.0 / 3.0 * 1e6 * 0.125**3 - W * 1.5),
-                                                       rel=1e-9)  # linear branch: ((2/3) k b^3 - W h) theta
+    # Full contact (theta <= theta_cr, seed Eq. 1): M = W R sin(alpha - theta) - W b + (2/3) k b^3 theta
+    #   = W b (cos theta - 1) - W h sin theta + (2/3) k b^3 theta   (R sin alpha = b, R cos alpha = h)
+    for th in (0.25 * m.theta_cr, 0.5 * m.theta_cr, m.theta_cr):
+        exact = W * 0.125 * (math.cos(th) - 1) - W * 1.5 * math.sin(th) + 2.0 / 3.0 * 1e6 * 0.125**3 * th
+        assert m.moment(th) == pytest.approx(exact, rel=1e-9)
 
 
-def test_rigid_free_rocking_period_is_housners():
+def test_rigid_free_rocking_period_is_the_energy_integral():
     m = assess.RockingModel("rigid", **WALL)
     R = math.hypot(0.125, 1.5)
-    p = math.sqrt(3 * 9.80665 / (4 * R))  # rectangle: p^2 = 3 g / (4 R)
-    assert m.frequency_parameter == pytest.approx(p, rel=1e-9)
-    assert m.alpha == pytest.approx(math.atan(0.125 / 1.5), rel=1e-12)
+    alpha = math.atan(0.125 / 1.5)
+    # rectangle: I0 = (4/3) m R^2, p^2 = W R / I0 = 3 g / (4 R), with the library's g = 9.81 m/s^2
+    # of the mass m = W / g (support/units.hpp)
+    p = math.sqrt(3 * 9.81 / (4 * R))
+    assert m.frequency_parameter == pytest.approx(p, rel=1e-12)
+    assert m.alpha == pytest.approx(alpha, rel=1e-12)
+    # A quarter period from theta0 to 0, from the energy W R cos(alpha - theta) + I0 theta'^2 / 2:
+    # T/4 = (1/p) int_0^theta0 dtheta / sqrt(2 (cos(alpha - theta0) - cos(alpha - theta))); with
+    # theta = theta0 - t^2 the integrand is smooth: Gauss-Legendre, 80 points.
+    x, w = np.polynomial.legendre.leggauss(80)
     for f in (0.2, 0.5, 0.9):
-        r = m.free(f * m.alpha, 20.0)
+        th0 = f * alpha
+        t = 0.5 * math.sqrt(th0) * (x + 1.0)
+        integrand = 2 * t / np.sqrt(2 * (math.cos(alpha - th0) - np.cos(alpha - th0 + t * t)))
+        exact = 4.0 / p * 0.5 * math.sqrt(th0) * np.dot(w, integrand)
+        r = m.free(th0, 20.0)
         first_zero = r["t"][np.argmax(r["theta"] <= 0.0)]
-        housner = 4.0 / p * math.acosh(1.0 / (1.0 - f))  # Housner (1963)
-        assert 4.0 * first_zero == pytest.approx(housner, rel=1e-5), f
+        assert 4.0 * first_zero == pytest.approx(exact, rel=1e-6), f
+        # Housner's (1963) linearised period, 4/p acosh(1/(1 - theta0/alpha)), within its error for a slender block
+        assert 4.0 * first_zero == pytest.approx(4.0 / p * math.acosh(1.0 / (1.0 - f)), rel=2e-3), f
