@@ -45,6 +45,7 @@
 #include <cmath>
 #include <functional>
 #include <chrono>
+#include <ctime>
 #include <filesystem>
 #include <future>
 #include <optional>
@@ -250,6 +251,21 @@ py::tuple spectrum(py::handle site, py::handle limit_state, std::optional<std::v
 
 // ---- rocking ---------------------------------------------------------------
 
+// The library's share of the last assess.rocking call on this thread (s of
+// this thread's CPU time, as Python's time.thread_time counts it): the time
+// of prepare_rocking, run_rocking and rocking_json and of freeing the record,
+// measured around them; the rest of the call is Python's (bench/bench_python.py).
+double thread_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+thread_local double g_last_library_seconds = 0.0;
+
+double last_library_seconds() { return g_last_library_seconds; }
+
+
 std::optional<std::string> restitution_text(py::handle r) {
   if (r.is_none()) return std::string();
   if (PyUnicode_Check(r.ptr())) return r.cast<std::string>();
@@ -279,6 +295,7 @@ py::tuple rocking(const std::string& model, double thickness, double height, dou
                   const std::string& stepper, std::optional<double> rtol, std::optional<double> atol,
                   std::optional<double> tail, const std::string& name) {
   RockingRequest q = rocking_request(model, thickness, height, unit_weight, k, restitution, one_sided);
+  py::object values;
   if (const auto path = as_path(record)) {
     q.record = *path;
   } else {
@@ -288,8 +305,9 @@ py::tuple rocking(const std::string& model, double thickness, double height, dou
     if (a.ndim() != 1)
       throw InputError("record: expected a one-dimensional array of accelerations, got " + std::to_string(a.ndim()) +
                        " dimensions");
-    q.values.emplace(a.data(), a.data() + a.size());
+    q.values = RockingRequest::Values{a.data(), static_cast<std::size_t>(a.size())};
     q.record = name;
+    values = a;  // alive until prepare_rocking has copied them
   }
   q.dt = dt;
   q.unit = unit;
@@ -303,39 +321,25 @@ py::tuple rocking(const std::string& model, double thickness, double height, dou
   if (tail) q.tail = *tail;
   nlohmann::json j;
   RockingResult r;
+  const double t0 = thread_cpu_seconds();
+  // The array's samples are copied into the record with the GIL held (no
+  // other thread can change them meanwhile); a file is read without it.
+  std::optional<RockingSetup> setup;
+  if (q.values) setup.emplace(prepare_rocking(q));
   {
     py::gil_scoped_release nogil;
-    const RockingSetup setup = prepare_rocking(q);
-    r = run_rocking(setup);
-    j = rocking_json(r, setup.record, q.scale, q.reverse);
+    if (!setup) setup.emplace(prepare_rocking(q));
+    r = run_rocking(*setup);
+    j = rocking_json(r, setup->record, q.scale, q.reverse);
     stamp_version(j);
+    setup.reset();  // the record freed here, as the command line frees it: the library's share
+    g_last_library_seconds = thread_cpu_seconds() - t0;
   }
   py::object h = py::none();
   if (history)
     h = py::make_tuple(array_of(std::move(r.history.t)), array_of(std::move(r.history.theta)),
                        array_of(std::move(r.history.omega)));
   return py::make_tuple(to_python(j), h);
-}
-
-// The library's time of assess.rocking for the benchmark (bench/bench_python.py):
-// the same request prepared, analysed and turned into JSON `n` times, in seconds per call.
-double library_rocking_seconds(int n, const std::string& model, double thickness, double height, double unit_weight,
-                               py::handle record, std::optional<double> dt, std::optional<double> k) {
-  RockingRequest q = rocking_request(model, thickness, height, unit_weight, k, py::none(), false);
-  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(record);
-  if (!a || a.ndim() != 1) throw InputError("record: expected a one-dimensional array");
-  q.dt = dt;
-  q.record = "record";
-  q.values.emplace(a.data(), a.data() + a.size());  // once: copying the array is Python's share of a call
-  py::gil_scoped_release nogil;
-  const auto t0 = std::chrono::steady_clock::now();
-  for (int i = 0; i < n; ++i) {
-    const RockingSetup setup = prepare_rocking(q);
-    const RockingResult r = run_rocking(setup);
-    nlohmann::json j = rocking_json(r, setup.record, q.scale, q.reverse);
-    stamp_version(j);
-  }
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / std::max(n, 1);
 }
 
 class PyRockingModel {
@@ -588,8 +592,7 @@ PYBIND11_MODULE(_assess, m) {
         py::arg("record"), py::arg("dt"), py::arg("unit"), py::arg("k"), py::arg("restitution"),
         py::arg("one_sided"), py::arg("scale"), py::arg("reverse"), py::arg("history"), py::arg("overturn_at"),
         py::arg("stepper"), py::arg("rtol"), py::arg("atol"), py::arg("tail"), py::arg("name"));
-  m.def("_library_rocking_seconds", &library_rocking_seconds, py::arg("n"), py::arg("model"), py::arg("thickness"),
-        py::arg("height"), py::arg("unit_weight"), py::arg("record"), py::arg("dt"), py::arg("k"));
+  m.def("_last_library_seconds", &last_library_seconds);
   m.def("_records_list", &records_list);
   m.def("_records_select", &records_select);
   m.def("_records_read", &records_read);

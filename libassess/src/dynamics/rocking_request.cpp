@@ -32,7 +32,8 @@ void check_range(const char* option, double v, double lo, double hi, const char*
 Record request_record(const RockingRequest& a) {
   if (a.values) {
     if (!a.dt) throw InputError("--dt: the time step (s) of the record's values is required");
-    return make_plain_record(*a.values, *a.dt, parse_acceleration_unit(a.unit.empty() ? "g" : a.unit), a.record);
+    return make_plain_record(a.values->data, a.values->size, *a.dt,
+                             parse_acceleration_unit(a.unit.empty() ? "g" : a.unit), a.record);
   }
   if (a.dt) return read_plain_record(a.record, *a.dt, parse_acceleration_unit(a.unit.empty() ? "g" : a.unit));
   if (a.unit.empty()) return read_record(a.record);

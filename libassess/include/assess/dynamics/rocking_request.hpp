@@ -31,9 +31,15 @@ struct RockingRequest {
   /// The record's file (PEER AT2, ESM/ITACA ASCII, .cor.acc; plain with dt
   /// or unit); with `values`, the name the record's messages give it.
   std::string record;
-  /// The record's samples held in memory, in `unit` (default g), at time
-  /// step `dt` (required with them); none: read `record`.
-  std::optional<std::vector<double>> values;
+  /// The record's samples held in memory (`size` values at `data`, in
+  /// `unit`, default g), at time step `dt` (required with them); copied by
+  /// prepare_rocking, so they need to live only until it returns (the
+  /// Python module's numpy array, without a copy of its own); none: read `record`.
+  struct Values {
+    const double* data = nullptr;
+    std::size_t size = 0;
+  };
+  std::optional<Values> values;
   std::optional<double> dt;         ///< time step of a plain record or of `values` (s)
   std::string unit;                 ///< unit of a plain record or of `values`: g, m/s^2, cm/s^2 ("" = g)
   double scale = 1.0;               ///< factor on the record (-, in (0, 100])
