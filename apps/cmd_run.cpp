@@ -20,6 +20,8 @@
 
 #include <filesystem>
 #include <assess/report/report_files.hpp>
+#include <assess/report/messages.hpp>
+#include <assess/report/text_writer.hpp>
 
 #include <fstream>
 #include <functional>
@@ -31,15 +33,23 @@
 namespace assess::cli {
 namespace {
 
-// Word-wraps one line within `width` columns (continuation lines indented by
-// two spaces), for the terminal's 120-column tables (issue 14).
-std::string wrap(const std::string& line, std::size_t width) { return wrap_text(line, 2, width) + "\n"; }
-
 struct RunArgs {
   std::string file, html, pdf, docx, txt, lang = "it", fragility, mechanism, expand;
   bool json = false, keep_going = false, wide = false;
   bool wants_report() const { return !html.empty() || !pdf.empty() || !docx.empty() || !txt.empty(); }
 };
+
+// The terminal summary's width: 120 columns, or one line per table row (--wide).
+std::size_t text_width(const RunArgs& a) { return a.wide ? std::size_t(100000) : std::size_t(120); }
+
+// The files the run wrote, one line each, in the summary's language.
+std::string files_written(const RunArgs& a) {
+  const Lang L = parse_lang(a.lang);
+  std::string s;
+  for (const auto& [file, key] : {std::pair{a.html, "out.html"}, {a.pdf, "out.pdf"}, {a.docx, "out.docx"}, {a.txt, "out.txt"}})
+    if (!file.empty()) s += (s.empty() ? "\n" : "") + msg(L, key) + ": " + file + "\n";
+  return s;
+}
 
 // Rewrites a message of the case (for a building's mechanism: the building's
 // paths and the mechanism's id, building_path_message); identity otherwise.
@@ -118,12 +128,11 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
     nlohmann::json j = building_json(res);
     std::cout << stamp_version(j).dump(2) << "\n";
   } else {
-    std::cout << building_text(res, a.wide ? TextWidth::wide : TextWidth::columns120)
-              << (a.expand.empty() ? "" : "\nexpanded single-mechanism cases written to " + a.expand + "/M*.json\n")
-              << (a.html.empty() ? "" : "\nHTML report written to " + a.html + "\n")
-              << (a.pdf.empty() ? "" : "PDF report written to " + a.pdf + "\n")
-              << (a.docx.empty() ? "" : "Word report written to " + a.docx + "\n")
-              << (a.txt.empty() ? "" : "text report written to " + a.txt + "\n");
+    ReportOptions ro;
+    ro.lang = lang;
+    std::cout << to_text(building_summary(res, ro), text_width(a), false)
+              << (a.expand.empty() ? "" : "\n" + msg(lang, "out.expanded") + ": " + a.expand + "/M*.json\n")
+              << files_written(a);
   }
 }
 
@@ -165,13 +174,11 @@ void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_tex
     nlohmann::json j = facade_run_json(res, ties, frag);
     std::cout << stamp_version(j).dump(2) << "\n";
   } else {
-    std::cout << facade_text(res, a.wide ? TextWidth::wide : TextWidth::columns120)
-              << (frag ? (a.wide ? fragility_line(frag->summary) + "\n" : wrap(fragility_line(frag->summary), 120)) : "")
-              << (ties ? tie_text(*ties) : "")
-              << (a.html.empty() ? "" : "\nHTML report written to " + a.html + "\n")
-              << (a.pdf.empty() ? "" : "PDF report written to " + a.pdf + "\n")
-              << (a.docx.empty() ? "" : "Word report written to " + a.docx + "\n")
-              << (a.txt.empty() ? "" : "text report written to " + a.txt + "\n");
+    ReportOptions ro;
+    ro.lang = lang;
+    if (frag) ro.fragility = frag->result;
+    if (ties) ro.ties = &*ties;
+    std::cout << to_text(facade_summary(res, ro), text_width(a), false) << files_written(a);
   }
 }
 
@@ -189,7 +196,8 @@ void add_run_command(CLI::App& app) {
                   "also write the same relazione as an editable Word document (pandoc, Debian package pandoc)");
   cmd->add_option("--txt", args->txt, "also write the same relazione as plain text (120 columns)");
   cmd->add_option("--lang", args->lang,
-                  "language of the HTML/PDF/Word report: it (default: the relazione is filed in Italy) or en");
+                  "language of the terminal summary and of the report: it (default: the relazione is filed in Italy) or en")
+;
   cmd->add_flag("--wide", args->wide, "one line per table row however long (default: tables within 120 columns)");
   cmd->add_flag("--keep-going", args->keep_going, "continue with the readable records when some cannot be read");
   cmd->add_option("--mechanism", args->mechanism,

@@ -2,8 +2,12 @@
 #include "commands.hpp"
 
 #include <assess/support/error.hpp>
+#include <assess/support/json_input.hpp>
 #include <assess/support/number_rules.hpp>
 #include <assess/support/version.hpp>
+
+#include <algorithm>
+#include <vector>
 
 #include <cctype>
 #include <cmath>
@@ -53,6 +57,63 @@ void assess::cli::check_number_option(const char* option, double value, const as
   if (!bad.empty()) throw assess::InputError(std::string(option) + ": " + bad);
 }
 
+namespace {
+
+// The name among `names` nearest to `typed` (Levenshtein, json_input.hpp), if near enough to be a typo.
+std::string nearest(const std::string& typed, const std::vector<std::string>& names) {
+  std::string best;
+  std::size_t d = std::string::npos;
+  for (const std::string& n : names) {
+    const std::size_t e = assess::edit_distance(typed, n);
+    if (e < d) d = e, best = n;
+  }
+  return d <= std::max<std::size_t>(2, typed.size() / 3) ? best : "";
+}
+
+// Issue 41: a mistyped subcommand or option names the nearest one, before
+// CLI11 reads the line (which said only "A subcommand is required" for
+// `assess rnu`, and for `run --htm r.html` complained that the case file
+// r.html does not exist). InputError (exit 2).
+void check_words(CLI::App& app, int argc, char** argv) {
+  CLI::App* at = &app;
+  std::string path = "assess";
+  bool subcommand_seen = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string w = argv[i];
+    if (w == "--") break;
+    std::vector<std::string> subs;
+    for (CLI::App* s : at->get_subcommands({})) subs.push_back(s->get_name());
+    if (w.rfind("--", 0) == 0 && w.size() > 2 && std::isalpha(static_cast<unsigned char>(w[2]))) {
+      const std::string name = w.substr(2, w.find('=') == std::string::npos ? std::string::npos : w.find('=') - 2);
+      std::vector<std::string> names;
+      for (const CLI::App* a = at; a; a = a->get_parent())
+        for (const CLI::Option* o : a->get_options())
+          for (const std::string& l : o->get_lnames()) names.push_back(l);
+      if (std::find(names.begin(), names.end(), name) != names.end()) continue;
+      const std::string near = nearest(name, names);
+      throw assess::InputError("unknown option --" + name + " for `" + path + "`" +
+                               (near.empty() ? "" : "; did you mean --" + near + "?") + " (`" + path +
+                               " --help` lists its options)");
+    }
+    if (w[0] == '-') continue;
+    if (std::find(subs.begin(), subs.end(), w) != subs.end()) {
+      at = at->get_subcommand(w);
+      path += " " + w;
+      subcommand_seen = true;
+      continue;
+    }
+    // A word where a subcommand is required: the first one, or the word after a command that has subcommands.
+    if (!subs.empty() && (!subcommand_seen || at->get_require_subcommand_min() > 0)) {
+      const std::string near = nearest(w, subs);
+      std::string list;
+      for (const std::string& s : subs) list += (list.empty() ? "" : ", ") + s;
+      throw assess::InputError("unknown command '" + w + "' for `" + path + "`" +
+                               (near.empty() ? "" : "; did you mean '" + near + "'?") + " (commands: " + list + ")");
+    }
+  }
+}
+
+}  // namespace
 
 void assess::cli::print_warnings(const std::vector<std::string>& warnings) {
   for (const std::string& w : warnings) std::cerr << "assess: warning: " << assess::plain_numbers(w) << "\n";
@@ -100,7 +161,10 @@ int main(int argc, char** argv) {
   // "nan", "inf", a hexadecimal float or a subnormal (issue 31: --k nan was
   // taken for "no --k").
   assess::cli::require_finite_numbers(app);
+  // Every subcommand's options in one page (the man page is built from it).
+  app.set_help_all_flag("--help-all", "print the help of every subcommand");
   try {
+    check_words(app, argc, argv);
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int rc = app.exit(e);

@@ -130,10 +130,11 @@ def spectrum(site, limit_state="SLV", periods=None, *, tr=None, damping=5.0, q=N
     Parameters
     ----------
     site : dict
-        The case file's ``"site"`` block: ``{"lat": 43.44, "lon": 12.64, "soil": "C"}``,
-        or ``{"comune": "L'Aquila"}``, ``{"island": "Lipari"}``, ``{"hazard": {"SLV":
-        {"ag_g": ..., "F0": ..., "Tc_star": ...}}}``; ``"topography"`` (T1..T4),
-        ``"h_over_H"``, ``"VN_years"``, ``"use_class"`` or ``"CU"`` (docs/user/case-file.md).
+        The case file's ``"site"`` block: where, ``{"lat": 43.44, "lon": 12.64}``,
+        ``{"comune": "L'Aquila"}``, ``{"island": "Lipari"}`` or ``{"hazard": {"SLV":
+        {"ag_g": ..., "F0": ..., "Tc_star": ...}}}``, with the soil class ``"soil"``
+        (A..E, required) and optionally ``"topography"`` (T1..T4), ``"h_over_H"``,
+        ``"VN_years"``, ``"use_class"`` or ``"CU"`` (docs/user/case-file.md).
     limit_state : str or None
         ``"SLO"``, ``"SLD"``, ``"SLV"`` (default) or ``"SLC"``; None: all four.
     periods : sequence of float, optional

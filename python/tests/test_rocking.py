@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import assess
-from conftest import STURNO, WALL, cli, cli_json
+from conftest import STURNO, WALL, cli_json
 
 SMOOTH = dict(model="smooth", k=1e6, **WALL)  # 1e6 kN/m^3 = 1e9 N/m^3, the seed study's k
 CLI_SMOOTH = ["rocking", "--model", "smooth", "--k", "1e6", "--thickness", "0.25", "--height", "3",

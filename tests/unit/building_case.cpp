@@ -8,6 +8,7 @@
 #include <assess/assessment/building_assessment.hpp>
 #include <assess/assessment/building_case.hpp>
 #include <assess/kinematic/code_checks.hpp>
+#include <assess/hazard/site.hpp>
 #include <assess/support/error.hpp>
 
 #include <cmath>
@@ -149,46 +150,41 @@ TEST_CASE("errors and warnings name the path in the building file") {
                        InputError);
 }
 
-TEST_CASE("NTC 2008 PGA capacity: the ag at which the check reaches its limit, by the checks themselves") {
+TEST_CASE("safety indices (issue 41): each check reaches D/C = 1 at its own TR_C; the approach's is the lowest") {
   json d = building_doc();
   d.erase("dynamic");
   d["walls"][1]["mechanisms"][0].erase("codes");
   const BuildingCase b = parse_building(d, "house.json");
+  constexpr double tol_dc = 1e-9;  // D/C (-) re-run at TR_C: Brent's tolerance 1e-12 on ln TR
   for (const BuildingMechanism& m : b.mechanisms) {
     const FacadeAssessment a = assess_facade(m.kase);
-    const std::vector<SafetyIndex> idx = safety_indices(a);
-    for (const SafetyIndex& s : idx) {
+    const Site site(*m.kase.site);
+    for (const SafetyIndex& s : a.indices) {
       if (!s.defined) continue;
       const std::string label = m.id + " " + s.code + " " + s.approach;
       CAPTURE(label);
-      CHECK(s.zeta == doctest::Approx(s.ag_capacity_g / s.ag_demand_g).epsilon(1e-14));
-      // Every check of the approach at SLV/SLC has PGA_C / PGA_D >= zetaE (it is the lowest).
+      CHECK(s.index.zeta == doctest::Approx(s.index.ag_capacity_g / s.index.ag_demand_g).epsilon(1e-14));
+      CHECK((s.index.zeta < 1.0) == (s.dc > 1.0));
+      // Every check of the approach has an index >= zetaE (it is the lowest), and
+      // re-run with the site's whole hazard at its TR_C its D/C is 1.
       for (const CandidateResult& cr : a.kinematic.candidates)
-        for (const CheckRow& r : cr.checks)
-          if (r.code == s.code && r.kind == s.approach && r.has_pga && r.limit_state != "SLD")
-            CHECK(r.ag_capacity_g / r.ag_demand_g >= s.zeta * (1 - 1e-12));
-      if (s.code != "NTC2008") continue;
-      // Re-run the governing NTC 2008 row at the capacity: D/C = 1/q (strength, the demand
-      // without q equals a0*) or 1 (displacement).
-      const CandidateResult* cand = nullptr;
-      for (const CandidateResult& cr : a.kinematic.candidates)
-        if (cr.label == s.candidate) cand = &cr;
-      REQUIRE(cand);
-      CheckInput in = m.kase.checks;
-      for (const auto& la : a.kinematic.actions) in.hazard[la.first] = la.second.hazard;
-      in.site = m.kase.site->conditions;
-      in.building = m.kase.building;
-      in.Z = cand->Z;
-      in.codes = {CodeEdition::NTC2008};
-      const double q = in.q;
-      in.hazard[LimitState::SLV].ag_g = s.approach == "strength" ? s.ag_capacity_g / q : s.ag_capacity_g;
-      bool found = false;
-      for (const CheckRow& r : run_code_checks(cand->result, in))
-        if (r.limit_state == "SLV" && r.kind == s.approach && r.location == s.location) {
-          found = true;
-          CHECK(r.dc == doctest::Approx(s.approach == "strength" ? 1.0 / q : 1.0).epsilon(1e-9));
+        for (const CheckRow& r : cr.checks) {
+          if (r.code != s.code || r.kind != s.approach) continue;
+          REQUIRE(r.index.defined);
+          CHECK(r.index.zeta >= s.index.zeta);
+          CHECK((r.index.zeta < 1.0) == (r.dc > 1.0));
+          if (r.index.bound != 0) continue;
+          CheckInput in = *a.kinematic.check_input;
+          in.Z = cr.Z;
+          in.hazard[parse_limit_state(r.limit_state)] = site.hazard_extrapolated(r.index.TR_capacity);
+          bool found = false;
+          for (const CheckRow& x : run_code_checks(cr.result, in))
+            if (x.code == r.code && x.limit_state == r.limit_state && x.kind == r.kind && x.location == r.location) {
+              found = true;
+              CHECK(x.dc == doctest::Approx(1.0).epsilon(tol_dc));
+            }
+          CHECK(found);
         }
-      CHECK(found);
     }
   }
 }

@@ -4,73 +4,25 @@
 // before and after the tie rods (docs/theory/building.md).
 #include "assess/assessment/building_assessment.hpp"
 
-#include "assess/hazard/hazard_curve.hpp"
-#include "assess/hazard/site.hpp"
 #include "assess/kinematic/code_checks.hpp"
 #include "assess/support/error.hpp"
 #include "assess/support/units.hpp"
 #include "support/parallel_for.hpp"
-#include "support/root_find.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
 #include <limits>
-#include <memory>
 
 namespace assess {
 
 namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-
-const char* method_name(const std::string& approach) {
-  return approach == "strength" ? "linear" : approach == "displacement" ? "nonlinear" : "dynamic";
-}
-
-// The check input of a candidate, as run_kinematic_case builds it.
-CheckInput check_input(const FacadeAssessment& a, const CandidateResult& cr) {
-  CheckInput in = a.kase.checks;
-  for (const auto& [ls, act] : a.kinematic.actions) in.hazard[ls] = act.hazard;
-  in.site = a.kase.site->conditions;
-  in.building = a.kase.building;
-  in.Z = cr.Z;
-  return in;
-}
-
-// NTC 2008 rows carry no PGA capacity: it is found with the reading of the NTC
-// 2018 rows (docs/theory/kinematic.md §PGA), F0 and TC* of SLV held fixed, by
-// re-running the checks of code_checks.cpp (no formula is repeated here):
-// strength, q x the ag (g) on rock at which the demand without q reaches a0*
-// (the row's D/C reaches 1/q); displacement, the ag at which the row's D/C
-// reaches 1. inf if never reached below 20 g.
-double ag_capacity_2008(const FacadeAssessment& a, const CandidateResult& cr, const CheckRow& row) {
-  CheckInput in = check_input(a, cr);
-  in.codes = {CodeEdition::NTC2008};
-  in.sld = false;
-  auto dc = [&](double ag) {
-    in.hazard[LimitState::SLV].ag_g = ag;
-    for (const CheckRow& r : run_code_checks(cr.result, in))
-      if (r.code == row.code && r.limit_state == row.limit_state && r.kind == row.kind && r.location == row.location)
-        return r.dc;
-    return nan;
-  };
-  const bool strength = row.kind == "strength";
-  const double target = strength ? 1.0 / in.q : 1.0, factor = strength ? in.q : 1.0;
-  double lo = 1e-6, hi = 1e-3;
-  while (dc(hi) < target) {
-    lo = hi;
-    hi *= 2.0;
-    if (hi > 20.0) return inf;
-  }
-  return factor * detail::brent_root([&](double ag) { return dc(ag) - target; }, lo, hi, 1e-12);
-}
 
 }  // namespace
 
 const SafetyIndex* BuildingMechanismResult::index(const std::string& code, const std::string& approach) const {
-  for (const SafetyIndex& s : indices)
+  for (const SafetyIndex& s : a.indices)
     if (s.code == code && s.approach == approach) return &s;
   return nullptr;
 }
@@ -81,106 +33,16 @@ const BuildingGoverning* BuildingAssessment::governing_of(const std::string& cod
   return nullptr;
 }
 
-std::vector<SafetyIndex> safety_indices(const FacadeAssessment& a) {
-  std::vector<SafetyIndex> out;
-  if (!a.kase.site) return out;
-  std::unique_ptr<HazardCurve> curve;
-  std::string curve_note;
-  try {
-    curve = std::make_unique<HazardCurve>(site_ag_hazard_curve(Site(*a.kase.site)));
-  } catch (const InputError& e) {
-    curve_note = e.what();
-  }
-  std::vector<std::string> codes;
-  for (const char* c : {"NTC2018", "NTC2008"})
-    for (CodeEdition e : a.kase.checks.codes)
-      if (to_string(e) == c) codes.push_back(c);
-  for (const std::string& code : codes) {
-    for (const char* approach : {"strength", "displacement", "dynamic"}) {
-      SafetyIndex s;
-      s.code = code;
-      s.approach = approach;
-      for (const MethodVerdict& m : a.verdict.methods)
-        if (m.code == code && m.method == method_name(approach)) {
-          s.has_checks = m.checks > 0;
-          s.dc = m.max_dc;
-          s.satisfied = m.satisfied;
-          s.checks = m.checks;
-          s.failing = m.failing;
-          s.no_verdict = m.no_verdict;
-          if (m.governing >= 0) {
-            s.dc_candidate = a.verdict.rows[std::size_t(m.governing)].candidate;
-            for (const CandidateResult& cr : a.kinematic.candidates)
-              if (cr.label == s.dc_candidate) {
-                s.dc_alpha0 = cr.result.alpha0;
-                s.dc_a0_star = cr.result.a0_star;
-              }
-          }
-        }
-      if (s.approach == "dynamic") {
-        if (!s.has_checks) continue;
-        s.note = "no PGA capacity: the dynamic check runs the records scaled to the SLV spectrum and gives a D/C, "
-                 "not the PGA at which the mechanism fails (an incremental analysis would: assess fragility --ida)";
-        out.push_back(s);
-        continue;
-      }
-      // zetaE: the lowest PGA_C / PGA_D over the approach's SLV and SLC checks
-      // of every candidate (the mechanism's governing check of the approach).
-      double best = inf;
-      bool any = false;
-      for (const CandidateResult& cr : a.kinematic.candidates)
-        for (const CheckRow& r : cr.checks) {
-          if (r.code != code || r.kind != s.approach || (r.limit_state != "SLV" && r.limit_state != "SLC")) continue;
-          const double cap = r.has_pga ? r.ag_capacity_g : ag_capacity_2008(a, cr, r);
-          const double dem = r.has_pga ? r.ag_demand_g : a.kinematic.actions.at(LimitState::SLV).hazard.ag_g;
-          const double ratio = cap / dem;
-          if (!any || ratio < best) {
-            any = true;
-            best = ratio;
-            s.ag_capacity_g = cap;
-            s.ag_demand_g = dem;
-            s.limit_state = r.limit_state;
-            s.location = r.location;
-            s.candidate = r.candidate;
-          }
-        }
-      if (!any) {
-        if (!s.has_checks) continue;
-        s.note = "no check of this approach at SLV or SLC";
-        out.push_back(s);
-        continue;
-      }
-      s.defined = true;
-      s.zeta = best;
-      const LimitState ls = s.limit_state == "SLC" ? LimitState::SLC : LimitState::SLV;
-      if (a.actions.count(ls)) s.TR_demand = a.actions.at(ls).TR;
-      if (curve) {
-        if (!std::isfinite(s.ag_capacity_g)) {
-          s.TR_capacity = inf;
-        } else {
-          s.TR_capacity = 1.0 / curve->lambda(s.ag_capacity_g * units::g);
-          s.TR_extrapolated = s.TR_capacity < tr_min_years || s.TR_capacity > tr_max_years;
-        }
-        s.TR_ratio = s.TR_capacity / s.TR_demand;
-      } else {
-        s.note = "no return period: " + curve_note;
-      }
-      out.push_back(s);
-    }
-  }
-  return out;
-}
-
 std::size_t governing_mechanism_kinematic(const BuildingCase& b, const std::string& approach) {
   std::vector<double> zeta(b.mechanisms.size(), inf);
   detail::parallel_for(b.mechanisms.size(), [&](std::size_t i) {
     CaseFile k = b.mechanisms[i].kase;
     k.dynamic = nlohmann::json();  // kinematic checks only
     if (k.method == "dynamic") k.method = "nonlinear";
-    const std::vector<SafetyIndex> idx = safety_indices(assess_facade(k));
+    const FacadeAssessment a = assess_facade(k);
     for (const char* code : {"NTC2018", "NTC2008"}) {
-      for (const SafetyIndex& s : idx)
-        if (s.code == code && s.approach == approach && s.defined) zeta[i] = s.zeta;
+      for (const SafetyIndex& s : a.indices)
+        if (s.code == code && s.approach == approach && s.defined) zeta[i] = s.index.zeta;
       if (zeta[i] < inf) break;
     }
   });
@@ -197,46 +59,15 @@ BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& o
   const std::size_t n = b.mechanisms.size();
   out.results.resize(n);
   std::vector<std::string> errors(n);
-  std::vector<bool> todo(n, true);
-  // Runs the mechanisms still to do, in parallel; each error kept in its slot.
-  auto run_all = [&] {
-    std::vector<std::size_t> idx;
-    for (std::size_t i = 0; i < n; ++i)
-      if (todo[i]) idx.push_back(i);
-    detail::parallel_for(idx.size(), [&](std::size_t k) {
-      const std::size_t i = idx[k];
-      try {
-        out.results[i].a = assess_facade(b.mechanisms[i].kase, options);
-        errors[i].clear();
-      } catch (const InputError& e) {
-        errors[i] = e.what();
-      }
-    });
-    std::fill(todo.begin(), todo.end(), false);
-  };
-  run_all();
-  // A shared selection without a compatible set over the union range: its
-  // members select their own records (docs/theory/building.md §3).
-  // The same when the shared set's mean spectrum leaves the -10 %/+30 % band
-  // over the union range (NTC 2018 §3.2.3.6): the ranges do not allow one set.
-  bool again = false;
-  for (std::size_t s = 0; s < b.selections.size(); ++s) {
-    bool failed = false, off_band = false;
-    for (std::size_t i : b.selections[s].members) {
-      failed = failed || errors[i].find("no compatible set") != std::string::npos;
-      const FacadeAssessment& a = out.results[i].a;
-      off_band = off_band || (errors[i].empty() && a.selection && !a.selection->band_satisfied);
+  // Every mechanism in parallel, each error kept in its slot. The record sets
+  // are final: parse_building decided each shared selection (building_case.hpp).
+  detail::parallel_for(n, [&](std::size_t i) {
+    try {
+      out.results[i].a = assess_facade(b.mechanisms[i].kase, options);
+    } catch (const InputError& e) {
+      errors[i] = e.what();
     }
-    if (!failed && !off_band) continue;
-    fall_back_to_own_selection(b, s);
-    char range[64];
-    std::snprintf(range, sizeof range, "%.3f-%.3f s", b.selections[s].T_min, b.selections[s].T_max);
-    b.selections[s].note = std::string(failed ? "no compatible set" : "the set's mean spectrum leaves the -10 %/+30 % band") +
-                           " over the union range " + range + ": each mechanism selected its own records";
-    for (std::size_t i : b.selections[s].members) todo[i] = true;
-    again = true;
-  }
-  if (again) run_all();
+  });
   for (std::size_t i = 0; i < n; ++i)
     if (!errors[i].empty()) throw InputError(building_path_message(b, b.mechanisms[i], errors[i]));
 
@@ -255,7 +86,6 @@ BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& o
 
   for (std::size_t i = 0; i < n; ++i) {
     BuildingMechanismResult& r = out.results[i];
-    r.indices = safety_indices(r.a);
     if (r.ties) {
       r.zeta_before = r.ties->zetaE_before;
       r.zeta_after = r.ties->zetaE_after;
@@ -277,7 +107,7 @@ BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& o
   for (const char* code : {"NTC2018", "NTC2008"}) {
     bool present = false;
     for (const BuildingMechanismResult& r : out.results)
-      for (const SafetyIndex& s : r.indices) present = present || s.code == code;
+      for (const SafetyIndex& s : r.a.indices) present = present || s.code == code;
     if (present) out.codes.push_back(code);
   }
   for (const std::string& code : out.codes)
@@ -298,13 +128,13 @@ BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& o
         if (g.mechanism < 0) {
           better = true;
         } else if (s->defined) {
-          better = s->zeta < g.zeta;
+          better = s->index.zeta < g.zeta;
         } else {
           better = (std::isfinite(s->dc) ? s->dc : inf) > g.dc;
         }
         if (better) {
           g.mechanism = int(i);
-          g.zeta = s->zeta;
+          g.zeta = s->index.zeta;
           g.dc = std::isfinite(s->dc) ? s->dc : inf;
         }
       }

@@ -3,6 +3,7 @@
 #include "assess/assessment/building_case.hpp"
 
 #include "assess/assessment/dynamic_case.hpp"
+#include "assess/assessment/facade_assessment.hpp"
 #include "assess/assessment/mechanism_dynamics.hpp"
 #include "assess/hazard/hazard.hpp"
 #include "assess/records/record_selection.hpp"
@@ -11,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -273,6 +275,24 @@ BuildingCase parse_building(const nlohmann::json& doc, const std::string& file) 
       m.record_group = s.id;
     }
     b.selections.push_back(std::move(s));
+    // "Where the periods allow it" (docs/theory/building.md §3): the shared set
+    // is decided here, once, from the selection itself, so that the building,
+    // a mechanism run alone (--mechanism) and its expanded case agree.
+    const BuildingMechanism& first = b.mechanisms[members[0]];
+    const std::string problem = [&] {
+      try {
+        return shared_selection_problem(first.kase);
+      } catch (const InputError& err) {
+        throw InputError(building_path_message(b, first, err.what()));
+      }
+    }();
+    if (!problem.empty()) {
+      SharedSelection& added = b.selections.back();
+      fall_back_to_own_selection(b, b.selections.size() - 1);
+      char range[64];
+      std::snprintf(range, sizeof range, "%.3f-%.3f s", added.T_min, added.T_max);
+      added.note = problem + " over the union range " + range + ": each mechanism selected its own records";
+    }
   }
   return b;
 }

@@ -481,7 +481,12 @@ SiteSpec parse_site(const JsonNode& s) {
         spec.given[parse_limit_state(ls)] = p;
       }
   }
-  if (s.has("soil")) spec.conditions.soil = parse_soil_class(s.choice("soil", {"A", "B", "C", "D", "E"}));
+  // The subsoil category moves every demand (S = SS ST, TC = CC TC*): no
+  // default is assumed (issue 41: a missing soil ran as A, a silent default).
+  if (!s.has("soil"))
+    s.fail_missing("soil", "the subsoil category of NTC 2018 Tab. 3.2.II, \"A\", \"B\", \"C\", \"D\" or \"E\" "
+                           "(it sets S = SS ST and TC = CC TC* of every demand; no default is assumed)");
+  spec.conditions.soil = parse_soil_class(s.choice("soil", {"A", "B", "C", "D", "E"}));
   if (s.has("topography")) spec.conditions.topography = parse_topography(s.choice("topography", {"T1", "T2", "T3", "T4"}));
   spec.conditions.h_over_H = s.number_or("h_over_H", 1.0, "-", 0.0, 1.0);
   spec.vn_years = s.number_or("VN_years", 50.0, rules::nominal_life_years);
@@ -941,10 +946,59 @@ CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
   c.warnings = input_warnings(doc.at("mechanism"), file);
   // Hook for the façade issue (dynamic rocking): kept raw, parsed there.
   if (root.has("dynamic")) c.dynamic = doc.at("dynamic");
+  c.defaults = case_defaults(doc, c);
   return c;
 }
 
 CaseFile read_case_file(const std::string& path) { return parse_case(read_json_file(path), path); }
+
+namespace {
+
+// "0.05 H^0.75 = 0.234 s"-like values of the defaults.
+std::string value_text(double v, const char* unit) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.4g%s%s", v, *unit ? " " : "", unit);
+  return b;
+}
+
+}  // namespace
+
+std::vector<CaseDefault> case_defaults(const nlohmann::json& doc, const CaseFile& c) {
+  std::vector<CaseDefault> out;
+  auto absent = [&](const nlohmann::json& o, std::initializer_list<const char*> keys) {
+    if (!o.is_object()) return true;
+    for (const char* k : keys)
+      if (o.contains(k)) return false;
+    return true;
+  };
+  if (c.site && doc.contains("site")) {
+    const nlohmann::json& s = doc.at("site");
+    if (absent(s, {"hazard"})) {
+      if (absent(s, {"topography"})) out.push_back({"/site/topography", "T1", "default.topography"});
+      if (absent(s, {"VN_years"})) out.push_back({"/site/VN_years", value_text(c.site->vn_years, ""), "default.vn"});
+      if (absent(s, {"use_class", "CU"})) out.push_back({"/site/use_class", "II (CU = 1.0)", "default.cu"});
+    }
+  }
+  if (absent(doc, {"knowledge_level", "FC"}))
+    out.push_back({"/knowledge_level", "LC1 (FC = " + value_text(c.options.FC, "") + ")", "default.knowledge"});
+  if (c.site) {
+    if (absent(doc, {"method"})) out.push_back({"/method", c.method, "default.method"});
+    if (absent(doc, {"check_SLD"})) out.push_back({"/check_SLD", "false", "default.check_sld"});
+    const nlohmann::json a = doc.contains("analysis") ? doc.at("analysis") : nlohmann::json::object();
+    if (absent(a, {"q"})) out.push_back({"/analysis/q", value_text(c.checks.q, ""), "default.q"});
+    if (absent(a, {"damping_SLV_pct"}))
+      out.push_back({"/analysis/damping_SLV_pct", value_text(c.checks.damping_SLV_pct, "%"), "default.damping_slv"});
+    if (absent(a, {"damping_SLC_pct"}))
+      out.push_back({"/analysis/damping_SLC_pct", value_text(c.checks.damping_SLC_pct, "%"), "default.damping_slc"});
+  }
+  if (c.building) {
+    const nlohmann::json& b = doc.at("building");
+    if (absent(b, {"T1_s"})) out.push_back({"/building/T1_s", value_text(c.building->T1, "s"), "default.T1"});
+    if (absent(b, {"damping_pct"}))
+      out.push_back({"/building/damping_pct", value_text(c.building->damping_pct, "%"), "default.building_damping"});
+  }
+  return out;
+}
 
 namespace {
 
@@ -1006,7 +1060,7 @@ KinematicCaseResult run_kinematic_case(const CaseFile& c) {
     KinematicOptions opt = c.options;
     opt.rotation_cap = m.rotation_bound;  // issue 33: the mechanism's own bound on its rotation
     out.candidates.push_back(
-        {m.label, m.parameter, c.Z.value_or(m.Z), analyse_kinematic(m.chain, opt, case_tie_restraints(c, m.chain)), {}, {}, 0.0});
+        {m.label, m.parameter, c.Z.value_or(m.Z), analyse_kinematic(m.chain, opt, case_tie_restraints(c, m.chain)), {}, {}, {}});
   }
   for (const CandidateResult& cr : out.candidates)
     if (!cr.result.activates) statically_unstable(c, cr);
@@ -1043,6 +1097,9 @@ KinematicCaseResult run_kinematic_case(const CaseFile& c) {
   in.site = c.site->conditions;
   in.building = c.building;
   out.check_input = in;
+  // The site's hazard along the return-period axis (none when given per limit state).
+  HazardAxis axis;
+  if (site.has_hazard_curve()) axis = [&site](double tr) { return site.hazard_extrapolated(tr); };
   bool warned_Z = false;
   for (CandidateResult& cr : out.candidates) {
     in.Z = cr.Z;
@@ -1064,12 +1121,16 @@ KinematicCaseResult run_kinematic_case(const CaseFile& c) {
     } catch (const InputError& e) {
       throw InputError(c.file + ": /building: " + e.what());
     }
-    cr.ag_capacity_min_g = std::numeric_limits<double>::infinity();
     for (CheckRow& row : cr.checks) {
       row.candidate = cr.label;
       double& m = cr.max_dc[row.code];
       m = std::max(m, std::isfinite(row.dc) ? row.dc : std::numeric_limits<double>::infinity());
-      if (row.has_pga) cr.ag_capacity_min_g = std::min(cr.ag_capacity_min_g, row.ag_capacity_g);
+      // The check's own index: the return period at which it reaches D/C = 1 (issue 41).
+      row.index = check_index(cr.result, in, row, axis);
+      if (row.index.defined) {
+        const auto it = cr.zeta_min.find(row.code);
+        if (it == cr.zeta_min.end() || row.index.zeta < it->second) cr.zeta_min[row.code] = row.index.zeta;
+      }
     }
   }
   // The governing candidate of each code: the largest D/C over its checks

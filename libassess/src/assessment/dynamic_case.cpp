@@ -78,6 +78,12 @@ DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, co
   d.allow_only({"model", "k", "sidedness", "restitution", "polarity", "overturn_at", "records", "select",
                 "tail_s", "integrator", "whole_record", "free_tail_s", "input", "floor_filter"});
   DynamicSpec s;
+  auto assumed = [&](const JsonNode& n, const char* key, std::string value, const char* effect) {
+    if (!n.has(key)) s.defaults.push_back({n.path() + "/" + key, std::move(value), effect});
+  };
+  assumed(d, "model", "smooth", "default.model");
+  assumed(d, "sidedness", "one-sided", "default.sidedness");
+  assumed(d, "polarity", "normal", "default.polarity");
   s.smooth = d.has("model") ? d.choice("model", {"smooth", "rigid"}) == "smooth" : true;
   if (s.smooth) {
     s.k = d.positive("k", "kN/m3 (Winkler modulus of the base)") * units::kN;
@@ -101,6 +107,7 @@ DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, co
   } else {
     s.restitutions.push_back(s.sidedness == Sidedness::one_sided ? Restitution::one_sided_theory()
                                                                   : Restitution::housner());
+    s.defaults.push_back({d.path() + "/restitution", describe(s.restitutions.back()), "default.restitution"});
   }
   if (d.has("polarity")) {
     const std::string p = d.choice("polarity", {"normal", "reversed", "both"});
@@ -176,6 +183,20 @@ DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, co
                     "per_station", "Mw", "distance_km", "site_classes", "relax_site_class", "countries",
                     "catalogue", "near_fault", "near_fault_km", "max_misfit"});
     RecordSelectionSpec rs;
+    auto text = [](double v) {
+      char b[32];
+      std::snprintf(b, sizeof b, "%g", v);
+      return std::string(b);
+    };
+    const CatalogueFilters filters;  // the default windows (record_selection.hpp)
+    assumed(sel, "count", "7", "default.count");
+    assumed(sel, "Mw", "[" + text(filters.Mw_min) + ", " + text(filters.Mw_max) + "]", "default.Mw");
+    assumed(sel, "distance_km", "[" + text(filters.R_min_km) + ", " + text(filters.R_max_km) + "] km", "default.distance");
+    assumed(sel, "max_scale", text(rs.max_scale), "default.max_scale");
+    assumed(sel, "max_mean_scale", text(rs.max_mean_scale), "default.max_mean_scale");
+    assumed(sel, "max_pga_ratio", text(rs.max_pga_ratio), "default.max_pga_ratio");
+    assumed(sel, "near_fault", "exclude", "default.near_fault");
+    assumed(sel, "site_classes", "= /site/soil", "default.site_classes");
     rs.count = sel.integer_or("count", 7, 1, 50);
     rs.max_scale = sel.number_or("max_scale", rs.max_scale, "(-)", 1.0, 100.0);
     rs.max_mean_scale = sel.number_or("max_mean_scale", rs.max_mean_scale, "(-)", 0.1, 100.0);

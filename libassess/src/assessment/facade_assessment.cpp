@@ -339,6 +339,7 @@ void finish(FacadeAssessment& a) {
     if (r.kind == "dynamic") all.push_back(r);
   all.insert(all.end(), a.energy_rows.begin(), a.energy_rows.end());
   a.verdict = build_verdict(all, a.kase.method);
+  a.indices = safety_indices(a.kinematic, a.verdict);
 }
 
 }  // namespace
@@ -487,6 +488,30 @@ std::vector<RestitutionSummary> summarise_runs(const std::vector<DynamicRun>& ru
   return out;
 }
 
+namespace {
+void add_dynamic_analysis(FacadeAssessment& a, const FacadeOptions& opt);
+}  // namespace
+
+std::vector<CaseDefault> assessment_defaults(const FacadeAssessment& a) {
+  std::vector<CaseDefault> out = a.kase.defaults;
+  if (a.dynamic) out.insert(out.end(), a.dynamic->defaults.begin(), a.dynamic->defaults.end());
+  return out;
+}
+
+std::string shared_selection_problem(const CaseFile& kase) {
+  const DynamicSpec d = parse_dynamic(kase.dynamic, kase.file, directory_of(kase.file));
+  if (!d.selection || !d.selection->T_min || !d.selection->T_max || !kase.site) return "";
+  const Site site(*kase.site);
+  const ElasticSpectrum target(site.action(LimitState::SLV).hazard, kase.site->conditions, 5.0);
+  const PeriodRange range{*d.selection->T_min, *d.selection->T_max};
+  const SelectionRequest req = selection_request(kase, *d.selection, range);
+  const std::shared_ptr<const LibrarySelection> ls =
+      select_from_library(*req.lib, req.rules, [&target](double T) { return target.Se(T); }, req.so);
+  if (ls->result.status != SelectionResult::Status::Compatible) return "no compatible set (" + ls->result.message + ")";
+  if (!ls->result.band_satisfied) return "the set's mean spectrum leaves the -10 %/+30 % band";
+  return "";
+}
+
 FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   if (!kase.site)
     throw InputError(kase.file + ": /site: missing: the assessment checks the mechanism against the site's "
@@ -497,7 +522,6 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   a.kinematic = run_kinematic_case(kase);
   a.checks = a.kinematic.checks;
   a.warnings = a.kinematic.warnings;
-  a.verdict = a.kinematic.verdict;
   const Site site(*kase.site);
   a.site_description = site.describe();
   a.VR = site.VR();
@@ -534,8 +558,18 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
     }
     a.adrs = a.candidate_adrs[a.kinematic.governing];
   }
-  if (kase.dynamic.is_null()) return a;
+  if (!kase.dynamic.is_null()) add_dynamic_analysis(a, opt);
+  finish(a);
+  return a;
+}
 
+namespace {
+
+// The dynamic part of the assessment (Circ. 2019 C8.7.1.2.1.9): the model of
+// the governing candidate, its records (listed or selected), every analysis,
+// the dynamic and energy rows, and the other candidates' dynamics (issue 24).
+void add_dynamic_analysis(FacadeAssessment& a, const FacadeOptions& opt) {
+  const CaseFile& kase = a.kase;
   a.dynamic = parse_dynamic(kase.dynamic, kase.file, directory_of(kase.file));
   const DynamicSpec& d = *a.dynamic;
   const CandidateResult& gov = a.kinematic.candidates[a.kinematic.governing];
@@ -546,7 +580,7 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   MechanismDynamics md = build_mechanism_dynamics(kase, gov, chain, d);
   if (!md.applies) {
     a.dynamic_note = md.note;
-    return a;
+    return;
   }
   if (d.smooth && !(d.k / units::kN >= plausibility::k_min_kN_m3 && d.k / units::kN <= plausibility::k_max_kN_m3))
     a.warnings.push_back(kase.file + ": /dynamic/k = " + plausibility::number(d.k / units::kN) +
@@ -752,8 +786,8 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
       a.other_dynamics_candidate.push_back(i);
     }
   }
-  finish(a);
-  return a;
 }
+
+}  // namespace
 
 }  // namespace assess

@@ -455,16 +455,9 @@ bool every_kinematic_check_satisfied(const KinematicCaseResult& r) {
 bool has_ties(const CaseFile& c) { return !c.ties.empty() || !c.new_ties.empty() || c.tie_design.has_value(); }
 
 double zeta_E(const KinematicCaseResult& r, const std::string& method) {
-  const std::string kind = method == "linear" ? "strength" : "displacement";
-  double z = std::numeric_limits<double>::infinity();
-  bool any = false;
-  for (const CandidateResult& cr : r.candidates)
-    for (const CheckRow& row : cr.checks)
-      if (row.code == "NTC2018" && row.has_pga && row.kind == kind && row.limit_state != "SLD") {
-        any = true;
-        z = std::min(z, row.ag_capacity_g / row.ag_demand_g);
-      }
-  return any ? z : std::numeric_limits<double>::quiet_NaN();
+  // The approach's index: the lowest of its checks' own (safety_index.hpp, issue 41).
+  const CheckRow* row = lowest_index_check(r, "NTC2018", method == "linear" ? "strength" : "displacement");
+  return row ? row->index.zeta : std::numeric_limits<double>::quiet_NaN();
 }
 
 TieInterventionResult run_tie_intervention(const CaseFile& c) { return intervention(c, nullptr); }

@@ -121,7 +121,7 @@ Verdict build_verdict(const std::vector<CheckRow>& rows, const std::string& adop
       cv.no_verdict += s == 1 ? 1 : 0;
       cv.max_dc = std::max(cv.max_dc, dc_key(r.dc));
     }
-    cv.satisfied = cv.checks > 0 && cv.failing == 0;
+    cv.satisfied = cv.outcome() == Outcome::satisfied;
     v.overall.push_back(cv);
     for (const std::string& method : method_names()) {
       MethodVerdict mv;
@@ -136,7 +136,7 @@ Verdict build_verdict(const std::vector<CheckRow>& rows, const std::string& adop
         mv.max_dc = std::max(mv.max_dc, dc_key(r.dc));
       }
       if (mv.checks == 0) continue;
-      mv.satisfied = mv.failing == 0 && mv.no_verdict == 0;
+      mv.satisfied = mv.outcome() == Outcome::satisfied;
       // Its governing row: the worst summary row of the method (failing first, then the largest D/C).
       for (std::size_t i = 0; i < v.rows.size(); ++i) {
         const VerdictRow& x = v.rows[i];

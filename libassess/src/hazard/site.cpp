@@ -59,6 +59,20 @@ HazardParams Site::hazard_at_tr(double tr_years) const {
                    " years cannot be evaluated");
 }
 
+HazardParams Site::hazard_extrapolated(double tr_years) const {
+  HazardParams h = hazard_at_tr(tr_years);  // validates TR > 0; clamps
+  if (!h.tr_clamped) return h;
+  // The end segment of the tabulated return periods (Allegato A eq. 2 is a
+  // power law in TR between two of them): continued beyond the end.
+  const bool below = tr_years < tr_min_years;
+  const double T1 = below ? grid_return_periods[0] : grid_return_periods[7];
+  const double T2 = below ? grid_return_periods[1] : grid_return_periods[8];
+  const double a1 = hazard_at_tr(T1).ag_g, a2 = hazard_at_tr(T2).ag_g;
+  const double k = std::log(a2 / a1) / std::log(T2 / T1);
+  h.ag_g = (below ? a1 : a2) * std::pow(tr_years / (below ? T1 : T2), k);
+  return h;
+}
+
 SeismicAction Site::action(LimitState ls) const {
   SeismicAction a;
   a.limit_state = ls;

@@ -5,24 +5,21 @@
 // d_SLV, T_SLV, d_SLC, T_SLC (2018); ag (g) on rock, S = SS ST; Se, SDe the
 // elastic spectra (m/s^2, m) [3.2.2], [3.2.10]; q behaviour factor; psi = Z/H,
 // gamma = 3N/(2N+1); T1 building period; a_Z floor acceleration [C7.2.7-8];
-// S_eZ floor spectrum [C7.2.5-6]; ag_cap the ag that the mechanism withstands
-// (F0, TC* of the limit state held fixed, docs/theory/kinematic.md §PGA).
+// S_eZ floor spectrum [C7.2.5-6]. The safety index of each check (the return
+// period at which it reaches D/C = 1) is check_index.cpp's.
 #include "assess/kinematic/code_checks.hpp"
 
 #include "assess/kinematic/code_rules.hpp"
 #include "assess/support/error.hpp"
 #include "assess/support/units.hpp"
-#include "support/root_find.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 
 namespace assess {
 namespace {
 
-constexpr double inf = std::numeric_limits<double>::infinity();
 
 // The inputs of a demand at height: the building's first mode (C8.7.1.2.1.7 / C8A.4.10).
 std::vector<std::pair<std::string, double>> height_inputs(const BuildingModel& b, double Z, double psi, double gam,
@@ -46,23 +43,6 @@ CheckRow row(CodeEdition code, LimitState ls, const char* kind, const char* loca
   r.dc = demand / capacity;
   decide(r);
   return r;
-}
-
-HazardParams with_ag(HazardParams h, double ag_g) {
-  h.ag_g = ag_g;
-  return h;
-}
-
-// The ag (g) at which demand(ag) = capacity: demand grows with ag. Brackets by
-// doubling from 0.001 g up to 20 g; inf if never reached.
-double solve_ag(const std::function<double(double)>& demand, double capacity) {
-  double lo = 1e-6, hi = 1e-3;
-  while (demand(hi) < capacity) {
-    lo = hi;
-    hi *= 2.0;
-    if (hi > 20.0) return inf;
-  }
-  return detail::brent_root([&](double ag) { return demand(ag) - capacity; }, lo, hi, 1e-10);
 }
 
 // Beyond TE the displacement spectrum is no longer Se T^2/4pi^2 but
@@ -91,13 +71,6 @@ double displacement_2018(const CheckInput& in, const HazardParams& h, double T, 
   double d = fs.SDe(T);  // [C8.7.1.12]
   if (T > b * T1) d = std::max(d, fs.Se(T1) * b * b * T1 * T1 / (two_pi * two_pi));
   return d;
-}
-
-void set_pga(CheckRow& r, double ag_cap, double ag_site) {
-  r.has_pga = true;
-  r.ag_capacity_g = ag_cap;
-  r.ag_demand_g = ag_site;
-  r.dc_pga = ag_site / ag_cap;
 }
 
 }  // namespace
@@ -252,9 +225,6 @@ std::vector<CheckRow> checks_of(const KinematicResult& r, const CheckInput& in) 
     };
     // Displacement demand (m) at period T and mechanism damping xi.
     auto disp = [&](const HazardParams& h, double T, double xi) { return displacement_2018(in, h, T, xi); };
-    auto ag_activation = [&](const HazardParams& h) {  // [C8.7.1.8] with ag S or [C7.2.8]
-      return solve_ag([&](double ag) { return peak(with_ag(h, ag)); }, r.a0_star);
-    };
     const std::string peak_name = at_height ? "a_Z [C7.2.7-8]" : "ag S";
     // The inputs of the peak demand: ag, S at ground; the first mode and a_Z at height.
     auto peak_inputs = [&](const HazardParams& h) {
@@ -271,14 +241,11 @@ std::vector<CheckRow> checks_of(const KinematicResult& r, const CheckInput& in) 
 
     CheckRow sld = row(code, LimitState::SLD, "strength", loc, "C8.7.1.2.1.5 [C8.7.1.8] [V-T]", peak_name,
                        peak(hSLD), r.a0_star, "m/s2");
-    const double ag_SLD_cap = ag_activation(hSLD);
-    set_pga(sld, ag_SLD_cap, hSLD.ag_g);
     sld.inputs = peak_inputs(hSLD);
     rows.push_back(sld);
 
     CheckRow slv = row(code, LimitState::SLV, "strength", loc, "C8.7.1.2.1.7 [V-T]", peak_name + " / q",
                        peak(hSLV) / in.q, r.a0_star, "m/s2");
-    set_pga(slv, in.q * ag_activation(hSLV), hSLV.ag_g);
     slv.inputs = peak_inputs(hSLV);
     slv.inputs.push_back({"q (-)", in.q});
     rows.push_back(slv);
@@ -290,9 +257,6 @@ std::vector<CheckRow> checks_of(const KinematicResult& r, const CheckInput& in) 
                           Ls{LimitState::SLC, &hSLC, r.d_SLC, r.T_SLC, in.damping_SLC_pct, "C8.7.1.2.1.8 [C8.7.1.11] [V-T]"}}) {
         CheckRow c = row(code, x.ls, "displacement", loc, x.clause, dname + ", xi " + std::to_string(int(x.xi)) + " %",
                          disp(*x.h, x.T, x.xi), x.d, "m");
-        double ag_cap = solve_ag([&](double ag) { return disp(with_ag(*x.h, ag), x.T, x.xi); }, x.d);
-        ag_cap = std::max(ag_cap, ag_activation(*x.h));  // "if ag,SLV < ag,SLD use ag,SLD"
-        set_pga(c, ag_cap, x.h->ag_g);
         set_secant(c, x.T, x.d, x.ls == LimitState::SLV ? r.a_SLV : r.a_SLC, x.xi);
         // T = T_SLV or T_SLC: the secant period 2 pi sqrt(d / a(d)) at the capacity point [C8.7.1.10-11].
         c.inputs = {{"ag (g)", x.h->ag_g}, {"T (s)", x.T}, {"xi (%)", x.xi},

@@ -34,10 +34,13 @@ using detail::xml_escape;
 const std::string& bt(Lang L, const std::string& key) {
   static const std::map<std::string, std::pair<std::string, std::string>> m = {
       {"verdict_heading", {"Esito della verifica dell'edificio", "Outcome of the building's assessment"}},
+      {"sum_title", {"Sintesi della verifica dei meccanismi locali dell'edificio", "Summary of the assessment of the building's local mechanisms"}},
       {"verdict_ok", {"L'edificio soddisfa la verifica dei meccanismi locali: tutti i {} meccanismi sono verificati con il metodo adottato",
                       "The building satisfies the check of its local mechanisms: all {} mechanisms are satisfied by the adopted method"}},
       {"verdict_fail", {"L'edificio non soddisfa la verifica dei meccanismi locali: {} meccanismi su {} non sono verificati con il metodo adottato ({})",
                         "The building does not satisfy the check of its local mechanisms: {} of {} mechanisms are not satisfied by the adopted method ({})"}},
+      {"verdict_none", {"L'edificio è senza esito: nessun meccanismo fallisce, ma {} meccanismi su {} sono senza esito con il metodo adottato",
+                        "The building has no verdict: no mechanism fails, but {} of {} mechanisms have no verdict by the adopted method"}},
       {"verdict_undecided", {"senza esito: {}", "without a verdict: {}"}},
       {"verdict_zeta", {"indicatore di rischio dell'edificio ζE,edificio = {} ({}), il più piccolo ζE dei meccanismi nel loro approccio adottato",
                         "the building's safety index ζE,building = {} ({}), the smallest ζE of the mechanisms in their adopted approach"}},
@@ -106,28 +109,24 @@ const std::string& bt(Lang L, const std::string& key) {
       {"table_cap",
        {"Tabella di sintesi (NTC 2018). Per ogni approccio: α0 del cinematismo la cui verifica dà il D/C "
         "riportato accanto (il più grande dell'approccio), il D/C e ζE = PGA_C/PGA_D (ag su roccia, verifica SLV o SLC "
-        "che governa); ★ = meccanismo che governa l'approccio; in rosso i D/C non verificati e ζE < 1; ∞: collasso in "
+        "che governa); ★ = meccanismo che governa l'approccio; in rosso i D/C e gli ζE non verificati; ∞: collasso in "
         "un'analisi dinamica. Esito: la conclusione del metodo adottato (indicato sotto se non è il non lineare); Acc.: "
         "insieme di accelerogrammi. Il codice del meccanismo porta alla sua sezione.",
         "Summary table (NTC 2018). For each approach: α0 of the candidate whose check gives the D/C beside it "
         "(the approach's largest), the D/C and ζE = PGA_C/PGA_D (ag on rock, the governing SLV or SLC check); ★ = the "
-        "approach's governing mechanism; red: D/C not satisfied and ζE < 1; ∞: a collapse in a dynamic analysis. "
+        "approach's governing mechanism; red: D/C and ζE not satisfied; ∞: a collapse in a dynamic analysis. "
         "Outcome: the adopted method's conclusion (named below it unless non-linear); Rec.: the record set. The "
         "mechanism's code links to its section."}},
       {"table08_cap",
-       {"NTC 2008 (Circ. 617/2009 C8A.4), a titolo di confronto. PGA_C con la lettura delle verifiche NTC 2018: "
-        "resistenza, q per l'ag dello SLV a cui la domanda senza q eguaglia a0*; spostamento, l'ag dello SLV a cui il "
-        "D/C della verifica vale 1.",
-        "NTC 2008 (Circ. 617/2009 C8A.4), for comparison. PGA_C with the reading of the NTC 2018 checks: strength, q "
-        "times the SLV ag at which the demand without q equals a0*; displacement, the SLV ag at which the check's D/C "
-        "equals 1."}},
+       {"NTC 2008 (Circ. 617/2009 C8A.4), a titolo di confronto. PGA_C = ag(TR_C), TR_C il periodo di ritorno a cui "
+        "la verifica NTC 2008 stessa raggiunge D/C = 1, come per le NTC 2018.",
+        "NTC 2008 (Circ. 617/2009 C8A.4), for comparison. PGA_C = ag(TR_C), TR_C the return period at which the NTC "
+        "2008 check itself reaches D/C = 1, as for NTC 2018."}},
       {"id", {"Cod.", "Id"}},
       {"wall_mech", {"Parete: meccanismo", "Wall: mechanism"}},
       {"records", {"Accelerogrammi", "Records"}},
       {"outcome", {"Esito", "Outcome"}},
       {"records_short", {"Acc.", "Rec."}},
-      {"ok", {"soddisfatta", "satisfied"}},
-      {"fail", {"non soddisfatta", "not satisfied"}},
       {"chart_title", {"ζE per meccanismo (NTC 2018)", "ζE per mechanism (NTC 2018)"}},
       {"chart_designed", {"con le catene progettate", "with the designed ties"}},
       {"chart_cap",
@@ -261,21 +260,20 @@ Cell num(Lang L, double v, int prec) {
   return c;
 }
 
-Cell dc_cell(Lang L, double dc, bool satisfied, bool undecided) {
-  Cell c(undecided ? "—" : fx(L, dc, relazione::dc_decimals(dc, satisfied)));
+Cell dc_cell(Lang L, double dc, Outcome o) {
+  Cell c(o == Outcome::no_verdict ? "—" : fx(L, dc, relazione::dc_decimals(dc, o == Outcome::satisfied)));
   c.numeric = true;
-  if (!undecided) {
-    c.tone = satisfied ? Tone::ok : Tone::fail;
-    c.strong = true;
-  }
+  c.tone = verdict_tone(o);
+  c.strong = o != Outcome::no_verdict;
   return c;
 }
 
+// zetaE coloured by the verdict of its approach (issue 41: never by zeta >= 1 on its own).
 Cell zeta_cell(Lang L, const SafetyIndex* s, bool governing) {
   if (!s || !s->has_checks || !s->defined) return num(L, std::nan(""), 3);
-  Cell c((governing ? "★ " : "") + fx(L, s->zeta, 3));
+  Cell c((governing ? "★ " : "") + fx(L, s->index.zeta, 3));
   c.numeric = true;
-  c.tone = s->zeta >= 1.0 ? Tone::ok : Tone::fail;  // an index, not a D/C: coloured, not in the D/C classes
+  c.tone = verdict_tone(s->outcome());
   return c;
 }
 
@@ -319,7 +317,7 @@ std::string zeta_chart(Lang L, const BuildingAssessment& b, bool* designed_out) 
   for (const BuildingMechanismResult& r : b.results)
     for (const char* ap : {"strength", "displacement"})
       if (const SafetyIndex* s = r.index("NTC2018", ap))
-        if (s->defined && std::isfinite(s->zeta)) zmax = std::max(zmax, std::min(s->zeta, 4.0) * 1.1);
+        if (s->defined && std::isfinite(s->index.zeta)) zmax = std::max(zmax, std::min(s->index.zeta, 4.0) * 1.1);
   const double plot_w = W - left - right, plot_h = H - top - bottom;
   auto y_of = [&](double z) { return top + plot_h * (1.0 - std::min(z, zmax) / zmax); };
   std::string svg = format("<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 %.0f %.0f\" width=\"%.0f\" height=\"%.0f\" "
@@ -345,7 +343,7 @@ std::string zeta_chart(Lang L, const BuildingAssessment& b, bool* designed_out) 
       const double x = x0 + (k == 0 ? -bw - 1 : 1);
       const SafetyIndex* s = b.results[i].index("NTC2018", ap);
       if (s && s->defined) {
-        const double z = s->zeta;
+        const double z = s->index.zeta;
         const double y = y_of(std::isfinite(z) ? z : zmax);
         svg += format("<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"%s\"><title>%s %s: ζE = %s</title></rect>\n",
                       x, y, bw, top + plot_h - y, colour[k], esc(b.building.mechanisms[i].id), esc(bt(L, ap)), esc(fx(L, z, 3)));
@@ -410,8 +408,9 @@ std::string tie_label(Lang L, const TieInterventionResult& t, bool after) {
 }
 
 Cell pass_cell(Lang L, bool ok) {
-  Cell c(bt(L, ok ? "ok" : "fail"));
-  c.tone = ok ? Tone::ok : Tone::fail;
+  const Outcome o = outcome_of(ok, false);
+  Cell c(verdict_word(L, o));
+  c.tone = verdict_tone(o);
   return c;
 }
 
@@ -470,10 +469,13 @@ Inline verdict_sentence(Lang L, const BuildingAssessment& b) {
   std::string failing;
   for (int i : v.failing) failing += (failing.empty() ? "" : ", ") + bc.mechanisms[std::size_t(i)].id;
   Inline out;
-  if (v.satisfied)
-    out.push_back(Span{fmt::format(fmt::runtime(bt(L, "verdict_ok")), v.mechanisms), true, Tone::ok});
+  const Outcome o = v.outcome();
+  if (o == Outcome::satisfied)
+    out.push_back(Span{fmt::format(fmt::runtime(bt(L, "verdict_ok")), v.mechanisms), true, verdict_tone(o)});
+  else if (o == Outcome::not_satisfied)
+    out.push_back(Span{fmt::format(fmt::runtime(bt(L, "verdict_fail")), v.failing.size(), v.mechanisms, failing), true, verdict_tone(o)});
   else
-    out.push_back(Span{fmt::format(fmt::runtime(bt(L, "verdict_fail")), v.failing.size(), v.mechanisms, failing), true, Tone::fail});
+    out.push_back(Span{fmt::format(fmt::runtime(bt(L, "verdict_none")), v.undecided.size(), v.mechanisms), true, verdict_tone(o)});
   std::string tail;
   if (!v.undecided.empty()) {
     std::string u;
@@ -490,7 +492,7 @@ Inline verdict_sentence(Lang L, const BuildingAssessment& b) {
 
 void add_verdict(Lang L, const BuildingAssessment& b, DocumentBuilder& d) {
   d.add_heading(bt(L, "verdict_heading"), 2, false, false);
-  Box box{"conclusion", b.verdict.satisfied ? Tone::ok : Tone::fail, {{"building", "verdict"}}, {}};
+  Box box{"conclusion", verdict_tone(b.verdict.outcome()), {{"building", "verdict"}}, {}};
   box.content.push_back(Paragraph{verdict_sentence(L, b), "", ""});
   d.add_box(std::move(box));
   // The governing mechanism of each approach.
@@ -499,18 +501,18 @@ void add_verdict(Lang L, const BuildingAssessment& b, DocumentBuilder& d) {
   for (const BuildingGoverning& g : b.governing) {
     const BuildingMechanism& m = bc.mechanisms[std::size_t(g.mechanism)];
     const SafetyIndex* s = b.results[std::size_t(g.mechanism)].index(g.code, g.approach);
-    const bool ok = g.failing == 0 && g.no_verdict == 0;
+    const Outcome go = summary_outcome(g.assessed, g.failing, g.no_verdict);
     Inline line{Span{code_name(g.code) + ", " + bt(L, g.approach) + ": "}, Span{m.id, true, Tone::plain, ""},
                 Span{" " + m.wall + ": " + m.name}};
     if (s && s->defined) {
-      line.push_back(Span{", ζE = " + fx(L, s->zeta, 3), true, s->zeta >= 1.0 ? Tone::ok : Tone::fail});
-      const bool ext = s->TR_extrapolated;
-      const std::string trc = ext ? (s->TR_capacity > 2475.0 ? "> 2475" : "< 30") : fx(L, s->TR_capacity, 0);
-      line.push_back(Span{" (PGA_C = " + fx(L, s->ag_capacity_g, 3) + " g / PGA_D = " + fx(L, s->ag_demand_g, 3) +
+      line.push_back(Span{", ζE = " + fx(L, s->index.zeta, 3), true, verdict_tone(s->outcome())});
+      const bool ext = s->index.extrapolated;
+      const std::string trc = ext ? (s->index.TR_capacity > 2475.0 ? "> 2475" : "< 30") : fx(L, s->index.TR_capacity, 0);
+      line.push_back(Span{" (PGA_C = " + fx(L, s->index.ag_capacity_g, 3) + " g / PGA_D = " + fx(L, s->index.ag_demand_g, 3) +
                           " g, " + s->limit_state + "; TR_C = " + trc + " " + bt(L, "years") + ", TR_D = " +
-                          fx(L, s->TR_demand, 0) + " " + bt(L, "years") + ")"});
+                          fx(L, s->index.TR_demand, 0) + " " + bt(L, "years") + ")"});
     } else {
-      line.push_back(Span{", D/C = " + fx(L, g.dc, 3), true, ok ? Tone::ok : Tone::fail});
+      line.push_back(Span{", D/C = " + fx(L, g.dc, 3), true, verdict_tone(go)});
       line.push_back(Span{" (" + bt(L, "no_zeta") + ")"});
     }
     line.push_back(Span{"; " + bt(L, "satisfied_of") + ": " + std::to_string(g.satisfied) + " " + bt(L, "of") + " " +
@@ -564,10 +566,7 @@ void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d, const 
                       ? ""
                       : relazione::decimal_comma(L == Lang::it ? localise(L, s->dc_candidate) : s->dc_candidate);
         row.push_back(al);
-        const MethodVerdict* mv = nullptr;
-        for (const MethodVerdict& x : r.a.verdict.methods)
-          if (x.code == "NTC2018" && x.method == method_of_kind(ap)) mv = &x;
-        row.push_back(dc_cell(L, s->dc, s->satisfied, mv && mv->undecided()));
+        row.push_back(dc_cell(L, s->dc, s->outcome()));
       } else {
         row.push_back(num(L, std::nan(""), 4));
         row.push_back(num(L, std::nan(""), 3));
@@ -576,7 +575,7 @@ void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d, const 
     }
     const SafetyIndex* dy = r.index("NTC2018", "dynamic");
     if (dy && dy->has_checks) {
-      Cell c = dc_cell(L, dy->dc, dy->satisfied, dy->failing == 0 && dy->no_verdict > 0);
+      Cell c = dc_cell(L, dy->dc, dy->outcome());
       if (gov_of("NTC2018", "dynamic", i)) c.text = "★ " + c.text;
       row.push_back(c);
     } else {
@@ -584,8 +583,8 @@ void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d, const 
     }
     row.push_back(Cell(record_set_short(L, b, i)));
     if (const MethodVerdict* c = r.a.verdict.conclusion()) {
-      Cell out(c->undecided() ? msg(L, "verdict.no_verdict_short") : bt(L, c->satisfied ? "ok" : "fail"));
-      out.tone = c->undecided() ? Tone::plain : c->satisfied ? Tone::ok : Tone::fail;
+      Cell out(verdict_word(L, c->outcome()));
+      out.tone = verdict_tone(c->outcome());
       if (r.a.verdict.adopted != "nonlinear") out.note = bt(L, r.a.verdict.adopted == "linear" ? "strength" : "dynamic");
       row.push_back(out);
     } else {
@@ -610,9 +609,9 @@ void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d, const 
       std::vector<Cell> row{Cell(bc.mechanisms[i].id), user_cell(bc.mechanisms[i].name, bc.mechanisms[i].wall)};
       for (const char* ap : {"strength", "displacement"}) {
         const SafetyIndex* s = b.results[i].index("NTC2008", ap);
-        row.push_back(s && s->has_checks ? dc_cell(L, s->dc, s->satisfied, false) : num(L, std::nan(""), 3));
+        row.push_back(s && s->has_checks ? dc_cell(L, s->dc, s->outcome()) : num(L, std::nan(""), 3));
         row.push_back(zeta_cell(L, s, gov_of("NTC2008", ap, i)));
-        row.push_back(s && s->defined ? num(L, s->ag_capacity_g, 3) : num(L, std::nan(""), 3));
+        row.push_back(s && s->defined ? num(L, s->index.ag_capacity_g, 3) : num(L, std::nan(""), 3));
       }
       rows08.push_back(row);
     }
@@ -673,7 +672,31 @@ void add_interventions(Lang L, const BuildingAssessment& b, DocumentBuilder& d) 
   }
 }
 
+void add_warnings(Lang L, const BuildingAssessment& b, DocumentBuilder& d) {
+  if (b.warnings.empty()) return;
+  d.add_heading(bt(L, "warnings"));
+  d.add_paragraph(msg(L, "warnings.intro"));
+  std::vector<Inline> items;
+  for (const std::string& w : b.warnings)
+    items.push_back({Span{L == Lang::it ? relazione::decimal_comma(localise(L, w)) : w}});
+  d.add_list(items, "warnings");
+}
+
 }  // namespace
+
+Document building_summary(const BuildingAssessment& b, const ReportOptions& options) {
+  const Lang L = options.lang;
+  const BuildingCase& bc = b.building;
+  DocumentBuilder d(bt(L, "sum_title"), to_string(L));
+  d.set_subtitle((bc.project.empty() ? "" : bc.project + ". ") + msg(L, "front.case_file") + ": " +
+                 detail::shown_file(bc.file) + ". " + msg(L, "sum.full"));
+  add_verdict(L, b, d);
+  facade_site_section(b.results.front().a, options, d);
+  add_summary(L, b, d, options);
+  add_interventions(L, b, d);
+  add_warnings(L, b, d);
+  return d.document();
+}
 
 Document building_document(const BuildingAssessment& b, const ReportOptions& options) {
   const Lang L = options.lang;
@@ -763,7 +786,7 @@ Document building_document(const BuildingAssessment& b, const ReportOptions& opt
     const BuildingMechanism& m = bc.mechanisms[std::size_t(g.mechanism)];
     const SafetyIndex* s = b.results[std::size_t(g.mechanism)].index(g.code, g.approach);
     d.add_paragraph(bt(L, "concl_gov") + " (" + bt(L, g.approach) + ", " + code_name(g.code) + "): " + m.id + " " + m.wall +
-                    ": " + m.name + (s && s->defined ? ", ζE = " + fx(L, s->zeta, 3) : ", D/C = " + fx(L, g.dc, 3)) + "; " +
+                    ": " + m.name + (s && s->defined ? ", ζE = " + fx(L, s->index.zeta, 3) : ", D/C = " + fx(L, g.dc, 3)) + "; " +
                     bt(L, "satisfied_of") + ": " + std::to_string(g.satisfied) + " " + bt(L, "of") + " " +
                     std::to_string(g.assessed) + ".");
   }
@@ -791,14 +814,7 @@ Document building_document(const BuildingAssessment& b, const ReportOptions& opt
     }
     d.set_id_prefix("");
   }
-  if (!b.warnings.empty()) {
-    d.add_heading(bt(L, "warnings"));
-    d.add_paragraph(msg(L, "warnings.intro"));
-    std::vector<Inline> items;
-    for (const std::string& w : b.warnings)
-      items.push_back({Span{L == Lang::it ? relazione::decimal_comma(localise(L, w)) : w}});
-    d.add_list(items, "warnings");
-  }
+  add_warnings(L, b, d);
   {
     relazione::Ctx c{a0, mo, L, d, &readings};
     relazione::add_legend(c);

@@ -4,6 +4,7 @@
 #include "assess/report/facade_report.hpp"
 
 #include "report/relazione_context.hpp"
+#include "report/report_heading.hpp"
 
 #include "assess/report/html_writer.hpp"
 
@@ -37,6 +38,25 @@ Document facade_document(const FacadeAssessment& a, const ReportOptions& options
   relazione::add_legend(c);
   relazione::add_readings_appendix(c);
   relazione::add_case_file(c);
+  return d.document();
+}
+
+Document facade_summary(const FacadeAssessment& a, const ReportOptions& options) {
+  const Lang L = options.lang;
+  DocumentBuilder d(msg(L, "sum.title"), to_string(L));
+  relazione::Ctx c{a, options, L, d, nullptr};
+  d.set_subtitle((a.kase.project.empty() ? "" : a.kase.project + ". ") + msg(L, "front.case_file") + ": " +
+                 detail::shown_file(a.kase.file) + ". " + msg(L, "sum.full"));
+  relazione::add_verdict_box(c);
+  relazione::add_site(c);
+  relazione::add_checks(c);
+  relazione::add_dynamic_summary(c);
+  relazione::add_safety_indices(c);
+  relazione::add_interventions(c);
+  relazione::add_probabilistic(c);
+  relazione::add_evaluation(c);
+  relazione::add_conclusions(c, false);
+  relazione::add_warnings(c);
   return d.document();
 }
 

@@ -24,10 +24,10 @@ using detail::number_text;
 nlohmann::json to_json(const CheckRow& r) {
   nlohmann::json j{{"code", r.code},         {"limit_state", r.limit_state}, {"kind", r.kind},
                    {"location", r.location}, {"demand", r.demand},           {"capacity", r.capacity},
-                   {"unit", r.unit},         {"dc", r.dc},                   {"satisfied", r.satisfied},
+                   {"unit", r.unit},         {"dc", r.dc},                   {"satisfied", satisfied_json(r.outcome())},
                    {"clause", r.clause},     {"formula", r.formula}};
   if (!r.candidate.empty()) j["candidate"] = r.candidate;
-  if (r.no_verdict) j["satisfied"] = nullptr;
+  j["outcome"] = to_string(r.outcome());
   if (!r.note.empty()) j["note"] = r.note;
   if (!r.inputs.empty()) {
     nlohmann::json in = nlohmann::json::object();
@@ -43,11 +43,27 @@ nlohmann::json to_json(const CheckRow& r) {
     j["dc_survivors"] = std::isfinite(r.dc_survivors) ? nlohmann::json(r.dc_survivors) : nlohmann::json(nullptr);
     if (!std::isfinite(r.dc)) j["dc_meaning"] = r.collapsed > 0 ? "collapse" : "failed analyses";
   }
-  if (r.has_pga) {
-    j["ag_capacity_g"] = std::isfinite(r.ag_capacity_g) ? nlohmann::json(r.ag_capacity_g) : nlohmann::json(nullptr);
-    j["ag_demand_g"] = r.ag_demand_g;
-    j["dc_pga"] = r.dc_pga;
+  if (r.index.defined || !r.index.note.empty()) j["index"] = to_json(r.index);
+  return j;
+}
+
+nlohmann::json to_json(const CheckIndex& x) {
+  auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+  nlohmann::json j{{"defined", x.defined}};
+  if (x.defined) {
+    j["zeta_E"] = num(x.zeta);
+    j["ag_capacity_g"] = num(x.ag_capacity_g);
+    j["ag_demand_g"] = num(x.ag_demand_g);
+    j["TR_capacity_years"] = num(x.TR_capacity);
+    j["TR_demand_years"] = num(x.TR_demand);
+    j["TR_ratio"] = num(x.TR_ratio);
+    j["extrapolated"] = x.extrapolated;
+    j["bound"] = x.bound < 0 ? nlohmann::json("below") : x.bound > 0 ? nlohmann::json("above") : nlohmann::json(nullptr);
+    j["non_monotonic"] = x.non_monotonic;
+    if (x.non_monotonic) j["other_crossing_TR_years"] = num(x.other_crossing_TR);
+    j["shape_held"] = x.shape_held;
   }
+  if (!x.note.empty()) j["note"] = x.note;
   return j;
 }
 
@@ -132,9 +148,11 @@ nlohmann::json kinematic_json(const CaseFile& c, const KinematicCaseResult& out)
     cj["governing_dc"] = dc;
     cj["governing_for"] = gov;
     cj["quantities"] = quantities_json(c.mechanism.candidates.at(i).quantities);
-    if (!cr.checks.empty())
-      cj["ag_capacity_min_g"] =
-          std::isfinite(cr.ag_capacity_min_g) ? nlohmann::json(cr.ag_capacity_min_g) : nlohmann::json(nullptr);
+    if (!cr.zeta_min.empty()) {
+      nlohmann::json z = nlohmann::json::object();
+      for (const auto& [code, v] : cr.zeta_min) z[code] = std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+      cj["zeta_E_min"] = z;  // the lowest index over its checks, per code (issue 41)
+    }
     nlohmann::json rows = nlohmann::json::array();
     for (const CheckRow& row : cr.checks) rows.push_back(to_json(row));
     cj["checks"] = rows;
@@ -235,13 +253,13 @@ std::string checks_text(const std::vector<CheckRow>& checks, TextWidth width) {
   out += format("checks (D/C = demand / capacity; satisfied if D/C <= 1):\n");
   if (width == TextWidth::wide) {
     out += format("  %-8s %-4s %-12s %-7s %12s %12s %-5s %7s %10s %10s %7s  %-30s %s\n", "code", "LS", "kind", "where",
-                  "demand", "capacity", "unit", "D/C", "ag,cap(g)", "ag,site(g)", "D/C ag", "verdict",
+                  "demand", "capacity", "unit", "D/C", "PGA_C(g)", "PGA_D(g)", "zetaE", "verdict",
                   "demand formula / clause");
     for (const CheckRow& x : checks) {
-      const std::string pga = x.has_pga ? number_text(x.ag_capacity_g, "%.5f", 10) + " " +
-                                              number_text(x.ag_demand_g, "%.5f", 10) + " " +
-                                              number_text(x.dc_pga, "%.3f", 7)
-                                        : format("%10s %10s %7s", "-", "-", "-");
+      const std::string pga = x.index.defined ? number_text(x.index.ag_capacity_g, "%.5f", 10) + " " +
+                                                    number_text(x.index.ag_demand_g, "%.5f", 10) + " " +
+                                                    number_text(x.index.zeta, "%.3f", 7)
+                                              : format("%10s %10s %7s", "-", "-", "-");
       out += format("  %-8s %-4s %-12s %-7s %s %s %-5s %s %s  %-30s %s; %s%s\n", x.code.c_str(),
                     x.limit_state.c_str(), x.kind.c_str(), x.location.c_str(), number_text(x.demand, "%.6f", 12),
                     number_text(x.capacity, "%.6f", 12), x.unit.c_str(), number_text(x.dc, "%.3f", 7), pga,
@@ -254,12 +272,13 @@ std::string checks_text(const std::vector<CheckRow>& checks, TextWidth width) {
   // 120 columns: the numbers on one line (98 columns), the verdict, the
   // demand formula and the clause on the next, wrapped.
   out += format("  %-8s %-4s %-12s %-7s %10s %10s %-5s %7s %9s %9s %7s\n", "code", "LS", "kind", "where", "demand",
-                "capacity", "unit", "D/C", "ag,cap(g)", "ag,site", "D/C ag");
+                "capacity", "unit", "D/C", "PGA_C(g)", "PGA_D(g)", "zetaE");
   out += format("  %-8s %s\n", "", "verdict; demand formula; clause");
   for (const CheckRow& x : checks) {
-    const std::string pga = x.has_pga ? number_text(x.ag_capacity_g, "%.5f", 9) + " " +
-                                            number_text(x.ag_demand_g, "%.5f", 9) + " " + number_text(x.dc_pga, "%.3f", 7)
-                                      : format("%9s %9s %7s", "-", "-", "-");
+    const std::string pga = x.index.defined ? number_text(x.index.ag_capacity_g, "%.5f", 9) + " " +
+                                                  number_text(x.index.ag_demand_g, "%.5f", 9) + " " +
+                                                  number_text(x.index.zeta, "%.3f", 7)
+                                            : format("%9s %9s %7s", "-", "-", "-");
     out += format("  %-8s %-4s %-12s %-7s %s %s %-5s %s %s\n", x.code.c_str(), x.limit_state.c_str(), x.kind.c_str(),
                   x.location.c_str(), number_text(x.demand, "%.6f", 10), number_text(x.capacity, "%.6f", 10),
                   x.unit.c_str(), number_text(x.dc, "%.3f", 7), pga);
@@ -300,7 +319,7 @@ std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res, Te
     out += format(wide ? "  %-*s %11s %11s" : "  %-*s %10s %10s", lw, "candidate", "alpha0 (-)", "a0* (m/s2)");
     for (const auto& [code, gi] : res.governing_by_code)
       out += format(wide ? " %11s" : " %8s", ("D/C " + code.substr(3)).c_str());
-    if (checked) out += format(wide ? " %12s" : " %10s", "ag,cap (g)");
+    if (checked) out += format(wide ? " %12s" : " %10s", "zetaE min");
     out += "\n";
     for (std::size_t i = 0; i < res.candidates.size(); ++i) {
       const CandidateResult& cr = res.candidates[i];
@@ -317,7 +336,11 @@ std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res, Te
         out += " " + number_text(it == cr.max_dc.end() ? 0.0 : it->second, "%.3f", wide ? 11 : 8);
         if (gi == i) gov += (gov.empty() ? "" : ", ") + (wide ? code : code.substr(3));
       }
-      if (checked) out += " " + number_text(cr.ag_capacity_min_g, "%.5f", wide ? 12 : 10);
+      if (checked) {
+        // The lowest index of the code that governs the report (NTC 2018 when checked).
+        const auto z = cr.zeta_min.find(res.governing_by_code.count("NTC2018") ? "NTC2018" : res.governing_by_code.begin()->first);
+        out += " " + number_text(z == cr.zeta_min.end() ? std::nan("") : z->second, "%.3f", wide ? 12 : 10);
+      }
       if (!checked && i == res.governing) gov = "smallest alpha0";
       out += gov.empty() ? "\n" : (wide ? "  <- governing (" : "  <- governing ") + gov + (wide ? ")\n" : "\n");
     }
@@ -395,13 +418,23 @@ std::string kinematic_text(const CaseFile& c, const KinematicCaseResult& res, Te
   return out;
 }
 
+nlohmann::json satisfied_json(Outcome o) {
+  return o == Outcome::no_verdict ? nlohmann::json(nullptr) : nlohmann::json(o == Outcome::satisfied);
+}
+
+void add_outcome(nlohmann::json& j, Outcome o) {
+  j["satisfied"] = satisfied_json(o);
+  j["outcome"] = to_string(o);
+}
+
 nlohmann::json to_json(const VerdictRow& r) {
   return {{"code", r.code},
           {"approach", r.approach},
           {"limit_state", r.limit_state},
           {"location", r.location},
           {"dc", std::isfinite(r.dc) ? nlohmann::json(r.dc) : nlohmann::json(nullptr)},
-          {"satisfied", r.no_verdict ? nlohmann::json(nullptr) : nlohmann::json(r.satisfied)},
+          {"satisfied", satisfied_json(r.outcome())},
+          {"outcome", to_string(r.outcome())},
           {"clause", r.clause},
           {"candidate", r.candidate},
           {"note", r.note},
@@ -414,7 +447,8 @@ nlohmann::json to_json(const Verdict& v) {
   for (const VerdictRow& r : v.rows) rows.push_back(to_json(r));
   for (const CodeVerdict& c : v.overall)
     overall.push_back({{"code", c.code},
-                       {"satisfied", c.satisfied},
+                       {"satisfied", satisfied_json(c.outcome())},
+                       {"outcome", to_string(c.outcome())},
                        {"checks", c.checks},
                        {"failing", c.failing},
                        {"no_verdict", c.no_verdict},
@@ -423,7 +457,8 @@ nlohmann::json to_json(const Verdict& v) {
   for (const MethodVerdict& m : v.methods)
     methods.push_back({{"code", m.code},
                        {"method", m.method},
-                       {"satisfied", m.undecided() ? nlohmann::json(nullptr) : nlohmann::json(m.satisfied)},
+                       {"satisfied", satisfied_json(m.outcome())},
+                       {"outcome", to_string(m.outcome())},
                        {"checks", m.checks},
                        {"failing", m.failing},
                        {"no_verdict", m.no_verdict},
@@ -431,7 +466,8 @@ nlohmann::json to_json(const Verdict& v) {
                        {"for_comparison", m.code != v.conclusion_code}});
   nlohmann::json conclusion = nullptr;
   if (const MethodVerdict* c = v.conclusion())
-    conclusion = {{"method", c->method}, {"code", c->code}, {"satisfied", c->satisfied},
+    conclusion = {{"method", c->method}, {"code", c->code}, {"satisfied", satisfied_json(c->outcome())},
+                  {"outcome", to_string(c->outcome())},
                   {"max_dc", std::isfinite(c->max_dc) ? nlohmann::json(c->max_dc) : nlohmann::json(nullptr)}};
   return {{"by_approach", rows}, {"overall", overall}, {"by_method", methods}, {"adopted_method", v.adopted},
           {"conclusion", conclusion}};

@@ -2,6 +2,7 @@
 // string of the HTML/PDF relazione is here; facade_html only looks keys up).
 // Code terms follow the Italian text of NTC 2018 and Circ. 2019 C8.7.1.
 #include "assess/report/messages.hpp"
+#include "assess/report/verdict_style.hpp"
 
 #include "assess/support/error.hpp"
 #include "report/messages_ties.hpp"
@@ -25,6 +26,45 @@ const std::map<std::string, Entry>& catalogue() {
       {"doc.title", {"Relazione di calcolo — verifica dei meccanismi locali fuori piano",
                      "Calculation report — out-of-plane local mechanism assessment"}},
       {"doc.project", {"Progetto", "Project"}},
+      {"sum.title", {"Sintesi della verifica dei meccanismi locali fuori piano",
+                     "Summary of the out-of-plane local mechanism assessment"}},
+      {"defaults.heading", {"Valori predefiniti adottati", "Default values adopted"}},
+      {"defaults.intro", {"Valori che il file del caso non indica e che il programma assume: ciascuno con la chiave con cui il caso lo indicherebbe e ciò che determina. Ciascuno modifica i risultati; indicarli nel caso se il valore predefinito non è appropriato.",
+                          "Values the case file does not give and the program assumes: each with the key that would give it and what it sets. Each moves the results; give it in the case if the default does not apply."}},
+      {"defaults.key", {"chiave del caso", "case key"}},
+      {"defaults.value", {"valore assunto", "value assumed"}},
+      {"defaults.effect", {"che cosa determina", "what it sets"}},
+      {"defaults.cap", {"Valori predefiniti adottati (non indicati nel file del caso).", "Default values adopted (not given in the case file)."}},
+      {"default.topography", {"categoria topografica T1, ST = 1 (NTC 2018 Tab. 3.2.III): superficie pianeggiante", "topographic category T1, ST = 1 (NTC 2018 Tab. 3.2.III): flat ground"}},
+      {"default.vn", {"vita nominale VN (NTC 2018 Tab. 2.4.I): TR di ogni stato limite", "nominal life VN (NTC 2018 Tab. 2.4.I): the TR of every limit state"}},
+      {"default.cu", {"classe d'uso II, CU = 1,0 (NTC 2018 §2.4.3): TR di ogni stato limite", "use class II, CU = 1.0 (NTC 2018 §2.4.3): the TR of every limit state"}},
+      {"default.knowledge", {"livello di conoscenza LC1 e fattore di confidenza FC = 1,35 (C8.5.4): a0* = α0 g / (e* FC)", "knowledge level LC1 and confidence factor FC = 1.35 (C8.5.4): a0* = α0 g / (e* FC)"}},
+      {"default.method", {"procedura adottata per la conclusione (C8.7.1.2): analisi cinematica non lineare", "procedure adopted for the conclusion (C8.7.1.2): non-linear kinematic analysis"}},
+      {"default.check_sld", {"verifiche allo SLD non richieste (NTC 2018 §8.3)", "SLD checks not asked (NTC 2018 §8.3)"}},
+      {"default.q", {"fattore di comportamento q della verifica lineare (C8.7.1.2.1.7)", "behaviour factor q of the linear check (C8.7.1.2.1.7)"}},
+      {"default.damping_slv", {"smorzamento del meccanismo allo SLV (C8.7.1.2.1.8)", "damping of the mechanism at SLV (C8.7.1.2.1.8)"}},
+      {"default.damping_slc", {"smorzamento del meccanismo allo SLC (C8.7.1.2.1.8)", "damping of the mechanism at SLC (C8.7.1.2.1.8)"}},
+      {"default.T1", {"periodo del primo modo dell'edificio T1 = 0,05 H^0,75 (NTC 2018 [7.3.6]): domanda in quota", "first-mode period of the building T1 = 0.05 H^0.75 (NTC 2018 [7.3.6]): the demand at height"}},
+      {"default.building_damping", {"smorzamento del primo modo dell'edificio: domanda in quota (C7.2.7)", "damping of the building's first mode: the demand at height (C7.2.7)"}},
+      {"default.model", {"modello dinamico: blocco su letto alla Winkler (Lipo e de Felice 2017)", "dynamic model: block on a Winkler bed (Lipo and de Felice 2017)"}},
+      {"default.sidedness", {"rocking monolatero (parete trattenuta verso l'interno)", "one-sided rocking (the wall held inward)"}},
+      {"default.polarity", {"accelerogrammi con il solo segno registrato", "records with their recorded sign only"}},
+      {"default.restitution", {"coefficiente di restituzione dell'urto", "coefficient of restitution of the impact"}},
+      {"default.count", {"numero di accelerogrammi selezionati (NTC 2018 §7.3.5: media con almeno 7)", "number of records selected (NTC 2018 §7.3.5: the mean with at least 7)"}},
+      {"default.Mw", {"finestra di magnitudo della selezione (NTC 2018 §3.2.3.6: coerente con la sismogenesi del sito)", "magnitude window of the selection (NTC 2018 §3.2.3.6: consistent with the site's seismogenesis)"}},
+      {"default.distance", {"finestra di distanza della selezione (NTC 2018 §3.2.3.6)", "distance window of the selection (NTC 2018 §3.2.3.6)"}},
+      {"default.max_scale", {"fattore di scala massimo di ciascun accelerogramma", "largest scale factor of each record"}},
+      {"default.max_mean_scale", {"fattore di scala medio massimo dell'insieme", "largest mean scale factor of the set"}},
+      {"default.max_pga_ratio", {"PGA scalata massima, multiplo di ag S", "largest scaled PGA, a multiple of ag S"}},
+      {"default.near_fault", {"accelerogrammi di faglia vicina e impulsivi esclusi", "near-fault and pulse-like records left out"}},
+      {"default.site_classes", {"categoria di sottosuolo degli accelerogrammi: quella del sito", "site class of the records: the site's"}},
+      {"out.html", {"relazione HTML scritta in", "HTML report written to"}},
+      {"out.pdf", {"relazione PDF scritta in", "PDF report written to"}},
+      {"out.docx", {"relazione Word scritta in", "Word report written to"}},
+      {"out.txt", {"relazione in testo scritta in", "text report written to"}},
+      {"out.expanded", {"casi dei singoli meccanismi scritti in", "single-mechanism cases written to"}},
+      {"sum.full", {"La relazione completa: --html, --pdf, --docx o --txt; i dati: --json.",
+                    "The whole report: --html, --pdf, --docx or --txt; the data: --json."}},
       {"doc.case_file", {"File del caso", "Case file"}},
       {"doc.generated", {"Generata da assess", "Generated by assess"}},
       {"doc.version", {"versione", "version"}},
@@ -265,7 +305,7 @@ const std::map<std::string, Entry>& catalogue() {
       {"checks.demand", {"domanda", "demand"}},
       {"checks.capacity", {"capacità", "capacity"}},
       {"checks.outcome", {"esito", "outcome"}},
-      {"checks.ag", {"ag,cap / ag,sito (g)", "ag,cap / ag,site (g)"}},
+      {"checks.ag", {"ζE (PGA_C / PGA_D)", "ζE (PGA_C / PGA_D)"}},
       {"kind.strength", {"lineare (resistenza)", "linear (strength)"}},
       {"kind.displacement", {"non lineare (spostamento)", "non-linear (displacement)"}},
       {"kind.dynamic", {"dinamica non lineare", "non-linear dynamic"}},
@@ -812,22 +852,28 @@ const std::map<std::string, Entry>& catalogue() {
         "collapse"}},
       {"zeta.heading", {"Indicatori di rischio",
         "Safety indices"}},
-      {"zeta.intro", {"Per ogni procedura e norma: l'accelerazione di picco su roccia che il meccanismo sopporta, PGA_C (verifica lineare: q volte l'ag dello stato limite a cui la domanda senza q eguaglia a0*; verifica in spostamento: l'ag a cui il D/C vale 1, con F0 e TC* dello stato limite), quella richiesta PGA_D, il loro rapporto ζE e i periodi di ritorno TR_C (dalla curva di pericolosità del sito) e TR_D.",
-        "For each procedure and code: the peak ground acceleration on rock the mechanism withstands, PGA_C (linear check: q times the limit state's ag at which the demand without q equals a0*; displacement check: the ag at which the D/C equals 1, F0 and TC* of the limit state), the one required PGA_D, their ratio ζE and the return periods TR_C (from the site's hazard curve) and TR_D."}},
+      {"zeta.intro", {"Per ogni procedura e norma l'indicatore è quello della sua verifica più sfavorevole. Per ogni verifica, TR_C è il periodo di ritorno a cui quella stessa verifica raggiunge D/C = 1 con la pericolosità del sito a quel periodo di ritorno (ag, F0 e TC* interpolati come prescrive l'Allegato A, S a quella ag); PGA_C = ag(TR_C) e PGA_D = ag(TR_D) su roccia, ζE = PGA_C/PGA_D. Per costruzione ζE < 1 esattamente dove D/C > 1.",
+        "For each procedure and code the index is that of its most unfavourable check. For each check, TR_C is the return period at which that same check reaches D/C = 1 with the site's hazard at that return period (ag, F0 and TC* interpolated as Allegato A prescribes, S at that ag); PGA_C = ag(TR_C) and PGA_D = ag(TR_D) on rock, ζE = PGA_C/PGA_D. By construction ζE < 1 exactly where D/C > 1."}},
+      {"zeta.shape_held", {"pericolosità data per stato limite: ag variata con F0 e TC* dello stato limite; TR_C non definito",
+        "hazard given per limit state: ag varied with F0 and TC* of the limit state; TR_C not defined"}},
+      {"zeta.non_monotonic", {"D/C non monotono nel periodo di ritorno: raggiunge 1 anche a TR = {} anni",
+        "D/C not monotonic in the return period: it also reaches 1 at TR = {} years"}},
+      {"zeta.bound_above", {"verifica soddisfatta fino al massimo periodo di ritorno esplorato (10⁶ anni): ζE è un limite inferiore",
+        "check satisfied up to the largest return period searched (10⁶ years): ζE is a lower bound"}},
+      {"zeta.bound_below", {"verifica non soddisfatta già al minimo periodo di ritorno esplorato (1 anno): ζE è un limite superiore",
+        "check not satisfied already at the smallest return period searched (1 year): ζE is an upper bound"}},
       {"zeta.check", {"verifica che governa",
         "governing check"}},
       {"zeta.notes", {"note",
         "notes"}},
-      {"zeta.cap", {"Indicatori di rischio ζE = PGA_C/PGA_D e TR_C/TR_D (in rosso ζE < 1).",
-        "Safety indices ζE = PGA_C/PGA_D and TR_C/TR_D (red: ζE < 1)."}},
+      {"zeta.cap", {"Indicatori di rischio ζE = PGA_C/PGA_D e TR_C/TR_D (il colore è l'esito della procedura).",
+        "Safety indices ζE = PGA_C/PGA_D and TR_C/TR_D (coloured by the procedure's verdict)."}},
       {"zeta.no_dynamic", {"l'analisi dinamica dà un D/C, non una PGA di capacità",
         "the dynamic analysis gives a D/C, not a PGA capacity"}},
       {"zeta.tr_above", {"oltre il periodo di ritorno massimo della griglia (2475 anni): valore estrapolato, indicato come limite",
         "beyond the grid's largest return period (2475 years): extrapolated, shown as a bound"}},
       {"zeta.tr_below", {"sotto il periodo di ritorno minimo della griglia (30 anni): valore estrapolato, indicato come limite",
         "below the grid's smallest return period (30 years): extrapolated, shown as a bound"}},
-      {"zeta.never", {"capacità non raggiunta fino a 20 g",
-        "capacity not reached up to 20 g"}},
       {"zeta.extrapolated", {"I periodi di ritorno fuori dall'intervallo 30–2475 anni della griglia di pericolosità sono estrapolati: la relazione ne riporta solo il limite.",
         "Return periods outside the hazard grid's 30–2475 years are extrapolated: the report gives only the bound."}},
       {"zeta.heritage", {"Bene tutelato: secondo le Linee guida del D.P.C.M. 9/2/2011 l'indice di sicurezza sismica è I_S,SLV = TR_C / TR_D e il fattore di accelerazione f_a,SLV = PGA_C / PGA_D, i valori della tabella per la procedura adottata.",
@@ -1445,6 +1491,21 @@ std::string mechanism_name(Lang lang, const std::string& type) {
   const auto it = names.find(type);
   if (it == names.end()) return type;
   return lang == Lang::it ? it->second.it : it->second.en;
+}
+
+}  // namespace assess
+
+// ------------------------------------------------------------------ verdicts
+// The words of a verdict's three states (verdict_style.hpp), from the catalogue above.
+namespace assess {
+
+const std::string& verdict_word(Lang lang, Outcome o) {
+  return msg(lang, o == Outcome::satisfied ? "ok" : o == Outcome::not_satisfied ? "fail" : "verdict.no_verdict_short");
+}
+
+const std::string& verdict_title(Lang lang, Outcome o) {
+  return msg(lang, o == Outcome::satisfied ? "verdict.ok" : o == Outcome::not_satisfied ? "verdict.fail"
+                                                                                       : "verdict.undecided");
 }
 
 }  // namespace assess

@@ -44,9 +44,10 @@ std::vector<std::vector<Cell>> check_rows(const Ctx& c, const std::vector<CheckR
     row.push_back(c.num(r.capacity, 4));
     row.push_back(Cell(c.unit(r.unit)));
     row.push_back(c.dc_cell(r));
-    Cell pga(r.has_pga ? c.n(r.ag_capacity_g, 3) + " / " + c.n(r.ag_demand_g, 3) : "—");
-    pga.numeric = true;
-    row.push_back(pga);
+    // The check's own safety index (issue 41), coloured by the check's verdict.
+    Cell zeta = c.num(r.index.defined ? r.index.zeta : std::nan(""), 3);
+    if (r.index.defined) zeta.tone = verdict_tone(r.outcome());
+    row.push_back(zeta);
     row.push_back(c.verdict_cell(r));
     out.push_back(row);
   }
@@ -86,7 +87,7 @@ void add_checks(Ctx& c) {
 // and edition the PGA the mechanism withstands, the site's, zetaE and the
 // return periods; an extrapolated return period is shown as a bound.
 void add_safety_indices(Ctx& c) {
-  const std::vector<SafetyIndex> idx = safety_indices(c.a);
+  const std::vector<SafetyIndex>& idx = c.a.indices;  // computed once by the assessment (issue 41)
   if (idx.empty()) return;
   c.d.add_heading(c.t("zeta.heading"));
   c.d.add_paragraph(c.t("zeta.intro"));
@@ -102,20 +103,24 @@ void add_safety_indices(Ctx& c) {
     }
     const std::string where = s.limit_state + ", " + c.t("where." + s.location) +
                               (s.candidate.empty() ? "" : "; " + c.loc(s.candidate));
-    Cell zeta = c.num(s.zeta, 3);
-    zeta.tone = s.zeta >= 1.0 ? Tone::ok : Tone::fail;  // an index, not a D/C: coloured, not in the D/C classes
-    Cell trc = c.num(s.TR_capacity, 0), ratio = c.num(s.TR_ratio, 2);
-    std::string note;
-    if (s.TR_extrapolated) {
+    Cell zeta = c.num(s.index.zeta, 3);
+    zeta.tone = verdict_tone(s.outcome());  // by the verdict of its approach (issue 41)
+    Cell trc = c.num(s.index.TR_capacity, 0), ratio = c.num(s.index.TR_ratio, 2);
+    std::vector<std::string> notes;
+    if (s.index.extrapolated) {
       any_extrapolated = true;
-      const bool above = s.TR_capacity > 2475.0;
+      const bool above = s.index.TR_capacity > tr_max_years;
       trc.text = above ? "> 2475" : "< 30";
-      ratio.text = (above ? "> " : "< ") + c.n((above ? 2475.0 : 30.0) / s.TR_demand, 2);
-      note = c.t(above ? "zeta.tr_above" : "zeta.tr_below");
+      ratio.text = (above ? "> " : "< ") + c.n((above ? tr_max_years : tr_min_years) / s.index.TR_demand, 2);
+      notes.push_back(c.t(above ? "zeta.tr_above" : "zeta.tr_below"));
     }
-    if (!std::isfinite(s.ag_capacity_g)) note = c.t("zeta.never");
-    rows.push_back({Cell(code_name(s.code)), Cell(method), Cell(where), c.num(s.ag_capacity_g, 4), c.num(s.ag_demand_g, 4),
-                    zeta, trc, c.num(s.TR_demand, 0), ratio, Cell(note)});
+    if (s.index.bound != 0) notes.push_back(c.t(s.index.bound > 0 ? "zeta.bound_above" : "zeta.bound_below"));
+    if (s.index.shape_held) notes.push_back(c.t("zeta.shape_held"));
+    if (s.index.non_monotonic) notes.push_back(msgf(c.L, "zeta.non_monotonic", c.n(s.index.other_crossing_TR, 0)));
+    std::string note;
+    for (const std::string& n : notes) note += (note.empty() ? "" : "; ") + n;
+    rows.push_back({Cell(code_name(s.code)), Cell(method), Cell(where), c.num(s.index.ag_capacity_g, 4), c.num(s.index.ag_demand_g, 4),
+                    zeta, trc, c.num(s.index.TR_demand, 0), ratio, Cell(note)});
   }
   c.d.add_cell_table({Cell(c.t("checks.code")), Cell(c.t("cmp.method")), Cell(c.t("zeta.check")), numeric_cell("PGA_C (g)"),
                       numeric_cell("PGA_D (g)"), numeric_cell("ζE"), numeric_cell("TR_C (" + c.t("site.years") + ")"), numeric_cell("TR_D (" + c.t("site.years") + ")"),

@@ -88,14 +88,13 @@ void add_comparison(Ctx& c) {
       p.x_tic_labels.push_back({x, short_name(r) + (std::isfinite(r.dc) ? "" : " (∞)")});
       std::string note = c.loc(r.candidate.empty() ? "" : r.candidate + "; ") + c.clause(r.clause);
       if (!r.note.empty()) note += "; " + c.loc(r.note);
-      Cell outcome(r.code == "seed" ? (r.satisfied ? "≤ 1" : std::isfinite(r.dc) ? "> 1" : c.t("dc.collapse_word"))
-                                    : c.verdict_word(r.satisfied, r.no_verdict));
-      outcome.tone = r.no_verdict ? Tone::plain : r.satisfied ? Tone::ok : Tone::fail;
+      Cell outcome = c.outcome_cell(r.outcome());
+      if (r.code == "seed") outcome.text = r.satisfied ? "≤ 1" : std::isfinite(r.dc) ? "> 1" : c.t("dc.collapse_word");
       rows.push_back({Cell(grp == "seed" ? c.t("cmp.group_seed") : code_name(r.code)),
                       Cell(c.t("kind." + r.approach) + " " + r.limit_state +
                                (r.location == "height" ? " (" + c.t("where.height") + ")" : ""),
                            note),
-                      c.dc_cell(r.dc, r.satisfied, r.no_verdict), outcome});
+                      c.dc_cell(r.dc, r.outcome()), outcome});
       x += 1.0;
     }
     p.series.push_back(bars);
@@ -120,13 +119,13 @@ void add_comparison(Ctx& c) {
                      c.t("cmp.table_cap"));
   std::vector<std::vector<Cell>> orows;
   for (const MethodVerdict& m : v.methods) {
-    Cell outcome(m.undecided() ? c.t("verdict.undecided") : c.t(m.satisfied ? "verdict.ok" : "verdict.fail"));
-    outcome.tone = m.undecided() ? Tone::plain : m.satisfied ? Tone::ok : Tone::fail;
+    Cell outcome(verdict_title(c.L, m.outcome()));
+    outcome.tone = verdict_tone(m.outcome());
     Cell counts(std::to_string(m.failing) + " / " + std::to_string(m.checks));
     counts.numeric = true;
     orows.push_back({Cell(code_name(m.code) + (m.code == v.conclusion_code ? "" : " (" + c.t("verdict.comparison") + ")")),
                      Cell(c.t("method." + m.method) + (m.method == v.adopted ? " (" + c.t("verdict.adopted") + ")" : "")),
-                     outcome, counts, c.num(m.no_verdict, 0), c.dc_cell(m.max_dc, m.satisfied, m.undecided())});
+                     outcome, counts, c.num(m.no_verdict, 0), c.dc_cell(m.max_dc, m.outcome())});
   }
   c.d.add_cell_table({Cell(c.t("checks.code")), Cell(c.t("cmp.method")), Cell(c.t("cmp.overall")), numeric_cell(c.t("cmp.failing")),
                       numeric_cell(c.t("verdict.no_verdict")), numeric_cell(c.t("cmp.max_dc"))},
@@ -232,9 +231,9 @@ void add_evaluation(Ctx& c) {
       flips = flips || flip;
       const std::string value = s.parameter == "xi_SLV_pct" ? c.n(s.value, 0) + " %" : c.n(s.value, 2);
       if (flip) flipping.push_back(c.t("sens." + s.parameter) + " = " + value);
-      Cell dcs = c.dc_cell(s.dc, s.satisfied, false);
-      Cell out(c.verdict_word(s.satisfied, false));
-      out.tone = s.satisfied ? Tone::ok : Tone::fail;
+      const Outcome so = outcome_of(s.satisfied, false);
+      Cell dcs = c.dc_cell(s.dc, so);
+      Cell out = c.outcome_cell(so);
       Cell val(value + (s.adopted ? " (" + c.t("sens.case") + ")" : ""));
       val.numeric = true;
       for (Cell* x : {&dcs, &out, &val}) x->highlight = s.adopted;
@@ -274,21 +273,17 @@ void add_conclusions(Ctx& c, bool signature) {
     std::vector<Inline> items;
     for (const MethodVerdict& o : v.methods) {
       if (o.code != m->code) continue;
-      const Tone tone = o.undecided() ? Tone::plain : o.satisfied ? Tone::ok : Tone::fail;
       items.push_back({Span{c.t("method." + o.method) + (o.method == v.adopted ? " (" + c.t("verdict.adopted") + ")" : "") + ": "},
-                       Span{o.undecided() ? c.t("verdict.undecided") : c.t(o.satisfied ? "verdict.ok" : "verdict.fail"), true, tone},
-                       Span{", D/C = " + c.n(o.max_dc, 3)}});
+                       c.outcome_span(o.outcome()), Span{", D/C = " + c.n(o.max_dc, 3)}});
     }
     c.d.add_paragraph(msgf(c.L, "concl.state", code_name(m->code)));
     c.d.add_list(items);
     std::string zeta;
-    for (const SafetyIndex& s : safety_indices(c.a))
+    for (const SafetyIndex& s : c.a.indices)
       if (s.code == m->code && method_of_kind(s.approach) == m->method && s.defined)
-        zeta = msgf(c.L, "concl.zeta", c.n(s.zeta, 3));
-    const Tone tone = m->undecided() ? Tone::plain : m->satisfied ? Tone::ok : Tone::fail;
+        zeta = msgf(c.L, "concl.zeta", c.n(s.index.zeta, 3));
     c.d.add_paragraph(Inline{Span{msgf(c.L, "concl.adopted", c.t("method." + m->method), code_name(m->code))},
-                             Span{m->undecided() ? c.t("verdict.undecided") : c.t(m->satisfied ? "verdict.ok" : "verdict.fail"),
-                                  true, tone},
+                             c.outcome_span(m->outcome()),
                              Span{", D/C = " + c.n(m->max_dc, 3) + zeta + ". " + c.t("concl.see_eval")}});
   } else {
     c.d.add_paragraph(c.t("verdict.no_method_checks") + ".");

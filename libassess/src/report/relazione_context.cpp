@@ -188,19 +188,19 @@ std::string Ctx::input_name(const std::string& name) const {
   return s;
 }
 
-std::string Ctx::verdict_word(bool satisfied, bool no_verdict) const {
-  return no_verdict ? t("verdict.no_verdict_short") : t(satisfied ? "ok" : "fail");
+Cell Ctx::outcome_cell(Outcome o) const {
+  Cell c(verdict_word(o));
+  c.tone = verdict_tone(o);
+  return c;
 }
 
-Cell Ctx::dc_cell(double dc, bool satisfied, bool no_verdict) const {
+Cell Ctx::dc_cell(double dc, Outcome o) const {
   // The number printed carries the verdict: a failing D/C just above 1 gets the
   // decimals that show it ("1,0004", never "1,000" beside "non verificato").
-  Cell c(no_verdict ? "—" : n(dc, dc_decimals(dc, satisfied)));
+  Cell c(o == Outcome::no_verdict ? "—" : n(dc, dc_decimals(dc, o == Outcome::satisfied)));
   c.numeric = true;
-  if (!no_verdict) {
-    c.tone = satisfied ? Tone::ok : Tone::fail;
-    c.strong = true;
-  }
+  c.tone = verdict_tone(o);
+  c.strong = o != Outcome::no_verdict;
   return c;
 }
 
@@ -213,8 +213,7 @@ std::string Ctx::collapse_text(const CheckRow& r) const {
 }
 
 Cell Ctx::verdict_cell(const CheckRow& r) const {
-  Cell c(verdict_word(r.satisfied, r.no_verdict));
-  c.tone = r.no_verdict ? Tone::plain : r.satisfied ? Tone::ok : Tone::fail;
+  Cell c = outcome_cell(r.outcome());
   c.note = collapse_text(r);
   if (r.kind == "dynamic" && r.analyses > 0 && r.dc == 0.0) c.note = t("dyn.no_uplift");  // D/C 0: the wall never lifted
   return c;

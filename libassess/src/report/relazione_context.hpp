@@ -11,6 +11,7 @@
 #include "assess/report/facade_report.hpp"
 #include "assess/report/messages.hpp"
 #include "assess/report/plot.hpp"
+#include "assess/report/verdict_style.hpp"
 
 #include <set>
 #include <string>
@@ -54,12 +55,15 @@ struct Ctx {
   const CandidateResult& candidate(std::size_t i) const { return a.kinematic.candidates[i]; }
   const CandidateResult& gc() const { return candidate(a.kinematic.governing); }
 
-  /// The verdict word of a check: "verificato", "non verificato", "senza esito".
-  std::string verdict_word(bool satisfied, bool no_verdict) const;
+  /// The verdict word of a check: "verificato", "non verificato", "senza esito" (verdict_style.hpp).
+  std::string verdict_word(Outcome o) const { return assess::verdict_word(L, o); }
+  /// The verdict as a cell and as a span: its word (a title: "VERIFICATO") and its colour (verdict_style.hpp).
+  Cell outcome_cell(Outcome o) const;
+  Span outcome_span(Outcome o) const { return Span{verdict_title(L, o), true, verdict_tone(o)}; }
   /// A D/C cell read from the check's own verdict (the one rule of code_checks.hpp):
   /// its number ("∞" for a collapse or a failed analysis, "—" without a verdict), coloured by the verdict.
-  Cell dc_cell(double dc, bool satisfied, bool no_verdict) const;
-  Cell dc_cell(const CheckRow& r) const { return dc_cell(r.dc, r.satisfied, r.no_verdict); }
+  Cell dc_cell(double dc, Outcome o) const;
+  Cell dc_cell(const CheckRow& r) const { return dc_cell(r.dc, r.outcome()); }
   /// The outcome cell of a check, with the reason when the D/C alone does not say it.
   Cell verdict_cell(const CheckRow& r) const;
   /// "collasso in 2 su 14 analisi; media sulle analisi senza collasso D/C 0,486".
@@ -77,13 +81,15 @@ void add_front_matter(Ctx& c);           // frontespizio, verdict box, contents
 void add_verdict_box(Ctx& c);            // per code and method, the conclusion
 void add_premessa(Ctx& c);               // scope, mechanism, adopted procedure
 void add_normativa(Ctx& c);
-void add_building_description(Ctx& c);   // descrizione, indagini e LC, muratura, criteri
+void add_building_description(Ctx& c);   // descrizione, indagini e LC, muratura, criteri, valori predefiniti
+void add_defaults(Ctx& c);               // the values the case did not give (issue 41)
 void add_site(Ctx& c);                   // azione sismica, spectra
 void add_formulas(Ctx& c);               // every formula once, with its clause
 void add_mechanism(Ctx& c);              // each candidate that governs a method, developed
 void add_checks(Ctx& c);                 // the checks tables
 void add_safety_indices(Ctx& c);         // zetaE and TR_C/TR_D
 void add_dynamic(Ctx& c);                // the dynamic analysis of each candidate that governs it
+void add_dynamic_summary(Ctx& c);        // its model in one line, records, results per restitution, other candidates
 /// The records of `x` (table, flags, selection, compatibility figure `id`): a building's shared set, once.
 void add_record_set(Ctx& c, const FacadeAssessment& x, const std::string& id);
 void add_comparison(Ctx& c);             // D/C by approach, bars

@@ -297,14 +297,13 @@ void add_summary(Ctx& c, const FacadeAssessment& x) {
     Cell coll(std::to_string(s.collapsed) + " / " + std::to_string(s.analyses));
     coll.numeric = true;
     if (s.failed > 0) coll.note = msgf(c.L, "dc.failed", s.failed, s.analyses);
-    Cell energy = c.dc_cell(s.energy_dc, check_satisfied(s.energy_dc, false), false);
+    Cell energy = c.dc_cell(s.energy_dc, outcome_of(check_satisfied(s.energy_dc, false), false));
     if (!std::isfinite(s.energy_dc) && std::isfinite(s.mean_dc_survivors))
       energy.note = msgf(c.L, "dc.survivors", c.n(s.mean_dc_survivors, 3));
-    Cell dc = c.dc_cell(s.dc_slv, s.slv_satisfied, s.no_verdict);
+    Cell dc = c.dc_cell(s.dc_slv, s.outcome());
     if (!std::isfinite(s.dc_slv) && std::isfinite(s.dc_survivors))
       dc.note = msgf(c.L, "dc.survivors", c.n(s.dc_survivors, 3));
-    Cell out(c.verdict_word(s.slv_satisfied, s.no_verdict));
-    out.tone = s.no_verdict ? Tone::plain : s.slv_satisfied ? Tone::ok : Tone::fail;
+    Cell out = c.outcome_cell(s.outcome());
     if (s.collapsed > 0) out.note = msgf(c.L, "dc.collapse", s.collapsed, s.analyses);
     else if (!uplift) out.note = c.t("dyn.no_uplift");
     rows.push_back({Cell(restitution_text(c, x, s)), c.num(s.analyses, 0), coll, energy, c.num(s.mean_d_star, 4),
@@ -339,11 +338,10 @@ void add_others(Ctx& c, const FacadeAssessment& shown) {
     for (const RestitutionSummary& s : o->summaries) {
       Cell coll(std::to_string(s.collapsed) + " / " + std::to_string(s.analyses));
       coll.numeric = true;
-      Cell dc = c.dc_cell(s.dc_slv, s.slv_satisfied, s.no_verdict);
+      Cell dc = c.dc_cell(s.dc_slv, s.outcome());
       if (!std::isfinite(s.dc_slv) && std::isfinite(s.dc_survivors))
         dc.note = msgf(c.L, "dc.survivors", c.n(s.dc_survivors, 3));
-      Cell out(c.verdict_word(s.slv_satisfied, s.no_verdict));
-      out.tone = s.no_verdict ? Tone::plain : s.slv_satisfied ? Tone::ok : Tone::fail;
+      Cell out = c.outcome_cell(s.outcome());
       rows.push_back({Cell(label), Cell(recs), Cell(restitution_text(c, *o, s)), coll, c.num(s.d_demand, 4),
                       c.num(o->kinematic.candidates.front().result.d_SLV, 4), dc, out});
     }
@@ -359,6 +357,24 @@ void add_others(Ctx& c, const FacadeAssessment& shown) {
 void add_record_set(Ctx& c, const FacadeAssessment& x, const std::string& id) {
   add_records(c, x);
   add_compatibility(c, x, id);
+}
+
+void add_dynamic_summary(Ctx& c) {
+  const FacadeAssessment& a = c.a;
+  if (!a.dynamic) return;
+  c.d.add_heading(c.t("dyn.heading"));
+  if (!a.dynamic_applies) {
+    c.d.add_paragraph(c.t("dyn.na") + ": " + c.loc(a.dynamic_note));
+    return;
+  }
+  const FacadeAssessment& x = governing_dynamics(a);
+  c.d.add_paragraph(c.t("dyn.model_heading") + ": " + c.loc(x.dynamic_note) + ".");
+  c.d.add_heading(c.t("dyn.input_heading"), 3, false);
+  add_records(c, x);
+  if (c.o.shared_records.empty()) add_compatibility(c, x);
+  c.d.add_heading(c.t("dyn.results_heading"), 3, false);
+  add_summary(c, x);
+  add_others(c, x);
 }
 
 void add_dynamic(Ctx& c) {

@@ -15,12 +15,6 @@ using detail::code_name;
 
 namespace {
 
-// "VERIFICATO", "NON VERIFICATO" or "SENZA ESITO" of a method, and its tone.
-std::pair<std::string, Tone> method_outcome(const Ctx& c, const MethodVerdict& m) {
-  if (m.undecided()) return {c.t("verdict.undecided"), Tone::plain};
-  return {c.t(m.satisfied ? "verdict.ok" : "verdict.fail"), m.satisfied ? Tone::ok : Tone::fail};
-}
-
 std::string row_name(const Ctx& c, const VerdictRow& r) {
   return c.t("checks.verifica") + " " + r.limit_state + ", " + c.t("kind." + r.approach) + ", " +
          c.t("where." + r.location);
@@ -66,12 +60,12 @@ void add_verdict_box(Ctx& c) {
   const Verdict& v = c.a.verdict;
   c.d.add_heading(c.t("verdict.heading"), 2, false, false);
   if (const MethodVerdict* m = v.conclusion()) {
-    const auto [word, tone] = method_outcome(c, *m);
+    const Tone tone = verdict_tone(m->outcome());
     Box b{"conclusion", tone, {{"method", v.adopted}}, {}};
     b.content.push_back(Paragraph{{Span{c.t("verdict.conclusion"), true},
                                    Span{" (" + c.t("verdict.adopted") + ": " + c.t("method." + v.adopted) + ", " +
                                         code_name(m->code) + "): "},
-                                   Span{word, true, tone},
+                                   c.outcome_span(m->outcome()),
                                    Span{", D/C = " + c.n(m->max_dc, 3), true, tone}},
                                   "outcome-line", ""});
     c.d.add_box(std::move(b));
@@ -85,8 +79,7 @@ void add_verdict_box(Ctx& c) {
     const MethodVerdict* adopted = nullptr;
     for (const MethodVerdict& m : v.methods)
       if (m.code == cv.code && m.method == v.adopted) adopted = &m;
-    Tone box_tone = cv.satisfied ? Tone::ok : Tone::fail;
-    if (adopted) box_tone = method_outcome(c, *adopted).second;
+    const Tone box_tone = verdict_tone(adopted ? adopted->outcome() : cv.outcome());
     Box b{"verdict", box_tone, {{"code", cv.code}}, {}};
     b.content.push_back(Paragraph{{Span{code_name(cv.code) + (cv.code == v.conclusion_code
                                                                    ? std::string()
@@ -95,10 +88,10 @@ void add_verdict_box(Ctx& c) {
                                   "", ""});
     for (const MethodVerdict& m : v.methods) {
       if (m.code != cv.code) continue;
-      const auto [word, tone] = method_outcome(c, m);
+      const Tone tone = verdict_tone(m.outcome());
       Inline line{Span{c.t("method." + m.method) + (m.method == v.adopted ? " (" + c.t("verdict.adopted") + ")" : "") +
                        ": "},
-                  Span{word, true, tone}, Span{", D/C = " + c.n(m.max_dc, 3), true, tone},
+                  c.outcome_span(m.outcome()), Span{", D/C = " + c.n(m.max_dc, 3), true, tone},
                   Span{" — " + msgf(c.L, m.checks == 1 ? "verdict.counts1" : "verdict.counts", m.checks, m.failing)}};
       if (m.no_verdict > 0) line.push_back(Span{", " + msgf(c.L, "verdict.counts_nv", m.no_verdict)});
       Box mb{"method", tone, {{"method", m.method}}, {Paragraph{line, "", ""}}};
@@ -177,6 +170,21 @@ void add_building_description(Ctx& c) {
   std::string which = msgf(c.L, "criteria.engine", mechanism_name(c.L, ms.type), a.kinematic.candidates.size());
   if (a.kinematic.candidates.size() > 1) which += " " + msgf(c.L, "criteria.parameter", c.loc(ms.parameter_name));
   c.d.add_paragraph(which);
+  add_defaults(c);
+}
+
+// The values the case did not give and the engine assumed (issue 41): each
+// with its key in the case file and what it sets.
+void add_defaults(Ctx& c) {
+  const std::vector<CaseDefault> all = assessment_defaults(c.a);
+  if (all.empty()) return;
+  c.d.add_heading(c.t("defaults.heading"), 3, false);
+  c.d.add_paragraph(c.t("defaults.intro"));
+  std::vector<std::vector<Cell>> rows;
+  for (const CaseDefault& x : all)
+    rows.push_back({Cell(x.path), Cell(c.loc(x.value)), Cell(c.t(x.effect))});
+  c.d.add_cell_table({Cell(c.t("defaults.key")), Cell(c.t("defaults.value")), Cell(c.t("defaults.effect"))}, rows,
+                     c.t("defaults.cap"));
 }
 
 }  // namespace assess::relazione

@@ -465,7 +465,11 @@ void add_mechanism(Ctx& c) {
     std::vector<Cell> head{Cell(c.t("mech.candidate")), numeric_cell(c.loc(a.kase.mechanism.parameter_name)), numeric_cell("Z (m)"),
                            numeric_cell("α0 (–)"), numeric_cell("a0* (m/s²)")};
     for (const auto& [code, gi] : a.kinematic.governing_by_code) head.push_back(numeric_cell("D/C " + code_name(code)));
-    if (!a.kinematic.governing_by_code.empty()) head.push_back(numeric_cell("ag,cap (g)"));
+    // The candidate's lowest safety index of the code in force (issue 41).
+    const std::string zcode = a.kinematic.governing_by_code.count("NTC2018") ? "NTC2018"
+                              : a.kinematic.governing_by_code.empty()          ? ""
+                                                                               : a.kinematic.governing_by_code.begin()->first;
+    if (!zcode.empty()) head.push_back(numeric_cell("ζE " + code_name(zcode)));
     head.push_back(Cell(c.t("mech.where")));
     std::vector<std::vector<Cell>> rows;
     for (std::size_t i = 0; i < a.kinematic.candidates.size(); ++i) {
@@ -476,9 +480,15 @@ void add_mechanism(Ctx& c) {
       for (const auto& [code, gi] : a.kinematic.governing_by_code) {
         const auto it = cr.max_dc.find(code);
         row.push_back(it == cr.max_dc.end() ? c.num(std::nan(""), 3)
-                                            : c.dc_cell(it->second, check_satisfied(it->second, false), false));
+                                            : c.dc_cell(it->second, outcome_of(check_satisfied(it->second, false), false)));
       }
-      if (!a.kinematic.governing_by_code.empty()) row.push_back(c.num(cr.ag_capacity_min_g, 4));
+      if (!zcode.empty()) {
+        const auto z = cr.zeta_min.find(zcode);
+        const auto d = cr.max_dc.find(zcode);
+        Cell zc = c.num(z == cr.zeta_min.end() ? std::nan("") : z->second, 3);
+        if (d != cr.max_dc.end()) zc.tone = verdict_tone(outcome_of(check_satisfied(d->second, false), false));
+        row.push_back(zc);
+      }
       const std::string gov = governs_text(c, i);
       row.push_back(Cell(developed ? c.t("mech.in_body") + (gov.empty() ? "" : " (" + gov + ")") : c.t("mech.in_appendix")));
       for (Cell& x : row) x.highlight = developed;

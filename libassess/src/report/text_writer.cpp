@@ -47,6 +47,7 @@ std::string cell_text(const Cell& c) { return c.note.empty() ? c.text : c.text +
 struct Writer {
   const Document& d;
   std::size_t width;
+  bool figures;
   std::vector<std::string> numbers;
   std::size_t heading = 0;
 
@@ -75,13 +76,40 @@ struct Writer {
     std::string s;
     if (!t.caption.empty()) s += wrap(t.caption, width, indent, indent);
     // Column widths of the cells' main text; the notes go under each row.
-    std::vector<std::size_t> w(t.header.size(), 0);
-    for (std::size_t j = 0; j < t.header.size(); ++j) w[j] = display_width(t.header[j].text);
+    const std::size_t n = t.header.size();
+    std::vector<std::size_t> w(n, 0), least(n, 0);
+    auto widest_word = [](const std::string& text) {
+      std::istringstream in(text);
+      std::size_t m = 0;
+      for (std::string word; in >> word;) m = std::max(m, display_width(word));
+      return m;
+    };
+    for (std::size_t j = 0; j < n; ++j) {
+      w[j] = display_width(t.header[j].text);
+      least[j] = widest_word(t.header[j].text);
+    }
     for (const auto& r : t.rows)
-      for (std::size_t j = 0; j < r.size(); ++j) w[j] = std::max(w[j], display_width(r[j].text));
-    std::size_t total = display_width(indent);
-    for (std::size_t x : w) total += x + 2;
-    if (total > width) {  // row by row
+      for (std::size_t j = 0; j < r.size() && j < n; ++j) {
+        w[j] = std::max(w[j], display_width(r[j].text));
+        // A number is never broken; a text column may wrap at its longest word (at least 8 columns).
+        least[j] = std::max(least[j], r[j].numeric ? display_width(r[j].text) : widest_word(r[j].text));
+      }
+    for (std::size_t j = 0; j < n; ++j) least[j] = std::min(w[j], std::max<std::size_t>(least[j], 8));
+    const std::size_t fixed = display_width(indent) + 2 * (n > 0 ? n - 1 : 0);
+    auto total = [&] {
+      std::size_t x = fixed;
+      for (std::size_t v : w) x += v;
+      return x;
+    };
+    // Too wide: the widest text columns wrap within their cells, down to their longest word.
+    while (total() > width) {
+      std::size_t k = n;
+      for (std::size_t j = 0; j < n; ++j)
+        if (w[j] > least[j] && (k == n || w[j] > w[k])) k = j;
+      if (k == n) break;
+      --w[k];
+    }
+    if (total() > width) {  // even wrapped it does not fit: row by row
       for (const auto& r : t.rows) {
         s += indent + "*\n";
         for (std::size_t j = 0; j < r.size(); ++j)
@@ -90,23 +118,40 @@ struct Writer {
       }
       return s;
     }
+    // A row: each cell wrapped within its column, the row as tall as its tallest cell.
     auto line = [&](const std::vector<Cell>& cells) {
-      std::string out = indent;
-      for (std::size_t j = 0; j < cells.size(); ++j)
-        out += pad(cells[j].text, w[j], !cells[j].numeric) + (j + 1 < cells.size() ? "  " : "");
-      while (!out.empty() && out.back() == ' ') out.pop_back();
-      return out + "\n";
+      std::vector<std::vector<std::string>> lines(cells.size());
+      std::size_t height = 1;
+      for (std::size_t j = 0; j < cells.size() && j < n; ++j) {
+        std::istringstream in(wrap(cells[j].text, w[j], "", ""));
+        for (std::string l; std::getline(in, l);) lines[j].push_back(l);
+        height = std::max(height, lines[j].size());
+      }
+      std::string out;
+      for (std::size_t k = 0; k < height; ++k) {
+        std::string row = indent;
+        for (std::size_t j = 0; j < cells.size() && j < n; ++j)
+          row += pad(k < lines[j].size() ? lines[j][k] : "", w[j], !cells[j].numeric) + (j + 1 < cells.size() ? "  " : "");
+        while (!row.empty() && row.back() == ' ') row.pop_back();
+        out += row + "\n";
+      }
+      return out;
     };
     s += line(t.header);
-    s += indent + std::string(total - display_width(indent) - 2, '-') + "\n";
+    s += indent + std::string(total() - display_width(indent), '-') + "\n";
     for (const auto& r : t.rows) {
       s += line(r);
-      for (const Cell& c : r)
-        if (!c.note.empty()) s += wrap(c.note, width, indent + "    ", indent + "    ");
+      // Several notes in a row: each named by its column.
+      const std::size_t notes = std::size_t(std::count_if(r.begin(), r.end(), [](const Cell& c) { return !c.note.empty(); }));
+      for (std::size_t j = 0; j < r.size(); ++j)
+        if (!r[j].note.empty())
+          s += wrap((notes > 1 && j < n ? t.header[j].text + ": " : std::string()) + r[j].note, width, indent + "    ",
+                    indent + "    ");
     }
     return s;
   }
   std::string block(const Figure& f, const std::string& indent) {
+    if (!figures) return "";
     return wrap("[" + (f.caption.empty() ? f.id : f.caption) + "]", width, indent + " ", indent);
   }
   std::string block(const Box& b, const std::string& indent) { return blocks(b.content, indent + "| "); }
@@ -134,8 +179,8 @@ struct Writer {
 
 }  // namespace
 
-std::string to_text(const Document& d, std::size_t width) {
-  Writer w{d, width, heading_numbers(d)};
+std::string to_text(const Document& d, std::size_t width, bool figures) {
+  Writer w{d, width, figures, heading_numbers(d)};
   std::string s = d.title + "\n" + std::string(std::min(display_width(d.title), width), '#') + "\n";
   if (!d.subtitle.empty()) s += wrap(d.subtitle, width, "", "");
   return s + w.blocks(d.blocks, "");

@@ -87,12 +87,9 @@ std::string file_fnv1a64(const std::string& path) {
   }
 }
 
-// Return period (years) at which the site's ag reaches a check's ag capacity
-// (log-log on the ag hazard curve; outside [30, 2475] years extrapolated).
-double capacity_tr(const FragilityStudy& st, const CheckRow& c) {
-  if (!st.ag_hazard || !c.has_pga || !std::isfinite(c.ag_capacity_g) || !(c.ag_capacity_g > 0.0)) return NAN;
-  return 1.0 / st.ag_hazard->lambda(c.ag_capacity_g * units::g);
-}
+// The return period (years) at which a check reaches D/C = 1: its own index
+// (kinematic/check_index.hpp, issue 41); NaN without one.
+double capacity_tr(const CheckRow& c) { return c.index.defined ? c.index.TR_capacity : NAN; }
 
 // P(C|im) at the code's SLV/SLC PGA, from a curve.
 double p_at(const FragilityCurve& c, double im) { return c.fit.ok() ? c.fit.fragility.probability(im) : NAN; }
@@ -126,8 +123,8 @@ json fragility_to_json(const FragilityStudy& st, const FragilityResult& r) {
   json checks = json::array();
   for (const CheckRow& c : st.checks) {
     json jc{{"code", c.code}, {"limit_state", c.limit_state}, {"kind", c.kind}, {"dc", c.dc}, {"satisfied", c.satisfied}};
-    const double tr = capacity_tr(st, c);
-    if (std::isfinite(tr)) jc["ag_capacity_g"] = c.ag_capacity_g, jc["TR_of_ag_capacity_years"] = tr;
+    const double tr = capacity_tr(c);
+    if (std::isfinite(tr)) jc["ag_capacity_g"] = c.index.ag_capacity_g, jc["TR_of_ag_capacity_years"] = tr;
     checks.push_back(jc);
   }
   code["checks"] = checks;
@@ -184,10 +181,10 @@ std::string fragility_text(const FragilityStudy& st, const FragilityResult& r) {
      << g_units(st.action_pga.at(LimitState::SLV)) << " g), TR SLC " << fmt(st.actions.at(LimitState::SLC).TR, "%.0f")
      << " years (PGA " << g_units(st.action_pga.at(LimitState::SLC)) << " g)\n";
   for (const CheckRow& c : st.checks) {
-    const double tr = capacity_tr(st, c);
+    const double tr = capacity_tr(c);
     if (!std::isfinite(tr)) continue;
     os << "code " << c.code << " " << c.limit_state << " " << c.kind << ": D/C " << fmt(c.dc, "%.2f") << " ("
-       << (c.satisfied ? "satisfied" : "not satisfied") << "), ag capacity " << fmt(c.ag_capacity_g, "%.3f")
+       << (c.satisfied ? "satisfied" : "not satisfied") << "), ag capacity " << fmt(c.index.ag_capacity_g, "%.3f")
        << " g, reached every " << fmt(tr, "%.0f") << " years"
        << (tr < tr_min_years || tr > tr_max_years ? " (extrapolated beyond the hazard data)" : "") << "\n";
   }
@@ -284,12 +281,12 @@ FragilityReportFiles write_fragility_report(const FragilityStudy& st, const Frag
   std::vector<std::vector<std::string>> check_rows;
   for (const CheckRow& c : st.checks)
     check_rows.push_back({c.code, c.limit_state, c.kind, fmt(c.dc, "%.3f"), c.satisfied ? "satisfied" : "not satisfied",
-                          c.has_pga ? fmt(c.ag_capacity_g, "%.3f") : "-", fmt(capacity_tr(st, c), "%.0f")});
+                          c.index.defined ? fmt(c.index.ag_capacity_g, "%.3f") : "-", fmt(capacity_tr(c), "%.0f")});
   if (!check_rows.empty())
-    html.add_table({"code", "limit state", "check", "D/C", "verdict", "ag capacity (g)", "return period of the ag capacity (years)"},
-                   check_rows, "The code's kinematic checks of the case; the return period at which the site's ag "
-                               "reaches each ag capacity (log-log on the grid's nine return periods) compares with "
-                               "the return period of overturning above");
+    html.add_table({"code", "limit state", "check", "D/C", "verdict", "ag capacity (g)", "return period at D/C = 1 (years)"},
+                   check_rows, "The code's kinematic checks of the case; the return period at which each check "
+                               "reaches D/C = 1 with the site's hazard at that return period (its safety index, "
+                               "docs/theory/building.md §4) compares with the return period of overturning above");
   std::vector<std::vector<std::string>> stripe_rows;
   for (const Stripe& s : st.stripes)
     stripe_rows.push_back({fmt(s.TR, "%.0f"), g_units(s.im), std::to_string(s.records.size()),

@@ -87,7 +87,6 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
   st.VR = site.VR();
   try {
     st.hazard = site_pga_hazard_curve(site);
-    st.ag_hazard = site_ag_hazard_curve(site);
   } catch (const InputError& e) {
     throw InputError(kase.file + ": /site: " + e.what());
   }

@@ -39,7 +39,7 @@ nlohmann::json facade_run_json(const FacadeAssessment& a, const std::optional<Ti
                                const std::optional<RunFragility>& fragility) {
   nlohmann::json j = facade_json(a);
   // zetaE = PGA_C/PGA_D and TR_C/TR_D per approach (docs/theory/building.md §4), as the building report gives them.
-  j["safety_indices"] = safety_indices_json(safety_indices(a));
+  j["safety_indices"] = safety_indices_json(a.indices);
   if (fragility) {
     nlohmann::json f = probabilistic_result_json(fragility->result);
     f["line"] = fragility_line(fragility->summary);

@@ -192,6 +192,10 @@ void JsonNode::fail(const std::string& message) const {
   throw InputError(file_ + ": " + (path_.empty() ? "/" : path_) + ": " + message);
 }
 
+void JsonNode::fail_missing(const std::string& key, const std::string& expected) const {
+  throw InputError(file_ + ": " + path_ + "/" + key + ": missing: " + expected);
+}
+
 bool JsonNode::has(const std::string& key) const { return value_->is_object() && value_->contains(key); }
 
 void JsonNode::allow_only(std::initializer_list<const char*> allowed) const {

@@ -18,40 +18,10 @@
 
 namespace assess {
 
-/// The safety index of one mechanism for one (code, approach)
-/// (docs/theory/building.md §4). PGA means ag on rock (g), the quantity of the
-/// hazard grid and of the checks' PGA capacity (CheckRow::ag_capacity_g).
-struct SafetyIndex {
-  std::string code;      ///< "NTC2018" | "NTC2008"
-  std::string approach;  ///< "strength" | "displacement" | "dynamic"
-  bool has_checks = false;  ///< the approach has checks for this mechanism
-  double dc = std::numeric_limits<double>::quiet_NaN();  ///< the approach's largest D/C (verdict), -
-  bool satisfied = false;   ///< the approach's verdict
-  int checks = 0, failing = 0, no_verdict = 0;
-  /// zetaE defined: a PGA capacity exists (strength and displacement; the
-  /// dynamic approach has none: `note` says why).
-  bool defined = false;
-  std::string note;
-  std::string limit_state, location, candidate;  ///< the check that governs zetaE
-  double ag_capacity_g = std::numeric_limits<double>::quiet_NaN();  ///< PGA_C (g); inf if never reached
-  double ag_demand_g = std::numeric_limits<double>::quiet_NaN();    ///< PGA_D (g)
-  double zeta = std::numeric_limits<double>::quiet_NaN();           ///< PGA_C / PGA_D (-)
-  double TR_capacity = std::numeric_limits<double>::quiet_NaN();    ///< TR of PGA_C on the site's ag curve (years)
-  double TR_demand = std::numeric_limits<double>::quiet_NaN();      ///< TR of the limit state (years)
-  /// The candidate whose D/C is the approach's (its governing row, issue 28):
-  /// its label, alpha0 (-) and a0* (m/s^2), printed beside that D/C.
-  std::string dc_candidate;
-  double dc_alpha0 = std::numeric_limits<double>::quiet_NaN();
-  double dc_a0_star = std::numeric_limits<double>::quiet_NaN();
-  double TR_ratio = std::numeric_limits<double>::quiet_NaN();       ///< TR_C / TR_D (-)
-  bool TR_extrapolated = false;  ///< TR_C outside the grid's 30-2475 years (power-law extrapolation)
-};
-
 struct BuildingMechanismResult {
   /// The mechanism's assessment as assess_ties left it (given ties decide its
   /// dynamic rows; a design leaves it as is), the code path of `assess run`.
   FacadeAssessment a;
-  std::vector<SafetyIndex> indices;  ///< per code (as the case lists them), then strength, displacement, dynamic
   /// Issue 23: the tie rods of the mechanism ("ties" or "design" in its wall or
   /// entry): assess_ties of its assessment; empty when it has none.
   std::optional<TieInterventionResult> ties;
@@ -64,7 +34,7 @@ struct BuildingMechanismResult {
   /// Every kinematic check of every candidate satisfied (both editions), before
   /// and after its ties (after: every check of the ties too; TieInterventionResult).
   bool passes_before = false, passes_after = false;
-  /// The index of (code, approach), or nullptr.
+  /// The index of (code, approach) of its assessment (a.indices), or nullptr.
   const SafetyIndex* index(const std::string& code, const std::string& approach) const;
 };
 
@@ -106,6 +76,8 @@ struct BuildingVerdict {
   int zeta_mechanism = -1;          ///< index of the mechanism that gives zeta
   double max_dc = 0.0;              ///< the largest adopted D/C over the mechanisms (+inf: a collapse)
   int dc_mechanism = -1;
+  /// Not satisfied if a mechanism fails, else no verdict if one has none (`undecided` says which), else satisfied.
+  Outcome outcome() const { return summary_outcome(mechanisms, int(failing.size()), int(undecided.size())); }
 };
 
 struct BuildingAssessment {
@@ -137,8 +109,5 @@ std::size_t governing_mechanism_kinematic(const BuildingCase& b, const std::stri
 
 /// The building's verdict from its mechanisms' (assess_building stores it in BuildingAssessment::verdict).
 BuildingVerdict building_verdict(const BuildingAssessment& b);
-
-/// The safety indices of one mechanism's assessment (docs/theory/building.md §4).
-std::vector<SafetyIndex> safety_indices(const FacadeAssessment& a);
 
 }  // namespace assess

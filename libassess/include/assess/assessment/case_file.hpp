@@ -5,6 +5,7 @@
 // the largest D/C over its checks (docs/theory/facade.md §6).
 #pragma once
 
+#include "assess/assessment/case_default.hpp"
 #include "assess/assessment/verdict.hpp"
 #include "assess/kinematic/code_checks.hpp"
 #include "assess/kinematic/floor_spectrum.hpp"
@@ -57,6 +58,9 @@ struct CaseFile {
   std::optional<BuildingModel> building;
   KinematicOptions options;       ///< FC from knowledge_level or FC
   std::string knowledge_level;    ///< "LC1".."LC3" or "given"
+  /// The values the case did not give that move a result (issue 41): listed in
+  /// the JSON and the relazione (the dynamic section's in DynamicSpec::defaults).
+  std::vector<CaseDefault> defaults;
   CheckInput checks;              ///< codes, q, damping, SLD (hazard filled from the site when run)
   /// The procedure the engineer adopts (Circ. 2019 C8.7.1.2, alternatives):
   /// "linear", "nonlinear" (default) or "dynamic"; its verdict is the
@@ -82,6 +86,9 @@ struct CaseFile {
 
 /// Parses a case document; errors name `file` and the JSON path.
 CaseFile parse_case(const nlohmann::json& doc, const std::string& file);
+/// The values `doc` does not give that move a result, as parse_case assumed
+/// them in `c` (issue 41; case_default.hpp).
+std::vector<CaseDefault> case_defaults(const nlohmann::json& doc, const CaseFile& c);
 /// Reads and parses a case file.
 CaseFile read_case_file(const std::string& path);
 
@@ -94,8 +101,9 @@ struct CandidateResult {
   std::vector<CheckRow> checks;  ///< its checks, every requested code (empty without a site)
   /// Per code ("NTC2008", "NTC2018"): the largest D/C over its checks (-).
   std::map<std::string, double> max_dc;
-  /// NTC 2018: the lowest ag capacity over its checks (g); inf if never reached.
-  double ag_capacity_min_g = 0.0;
+  /// Per code: the lowest safety index zetaE over its checks (-; check_index.hpp),
+  /// below 1 exactly where max_dc is above 1; absent without a defined index.
+  std::map<std::string, double> zeta_min;
 };
 
 struct KinematicCaseResult {

@@ -4,6 +4,7 @@
 // selected from the shipped catalogue to match the site spectrum).
 #pragma once
 
+#include "assess/assessment/case_default.hpp"
 #include "assess/dynamics/rocking_analysis.hpp"
 #include "assess/dynamics/rocking_model.hpp"
 #include "assess/records/record_io.hpp"
@@ -78,6 +79,8 @@ struct DynamicSpec {
   std::optional<double> filter_T1, filter_damping_pct;
   // Every record is integrated to its last sample, then the free motion up
   // to options.tail_s (issue 21, dynamics/analysis_end.hpp): no trimming.
+  /// The values of the section the case did not give (case_default.hpp).
+  std::vector<CaseDefault> defaults;
 };
 
 /// Reads a listed record: a plain text file when `unit` is given (with `dt`

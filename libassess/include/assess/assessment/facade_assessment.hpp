@@ -7,6 +7,7 @@
 #include "assess/assessment/case_file.hpp"
 #include "assess/assessment/dynamic_case.hpp"
 #include "assess/assessment/mechanism_dynamics.hpp"
+#include "assess/assessment/safety_index.hpp"
 #include "assess/assessment/verdict.hpp"
 #include "assess/records/record_selection.hpp"
 #include "assess/dynamics/rocking_from_chain.hpp"
@@ -98,6 +99,7 @@ struct RestitutionSummary {
   double d_demand = 0.0;          ///< the demand of the rule: mean or largest peak d* (m)
   bool no_verdict = false;        ///< N < 3 and no collapse: the records cannot support a verdict
   bool slv_satisfied = false;     ///< no failed analysis, no collapse and d_demand <= d_SLV (and a verdict)
+  Outcome outcome() const { return outcome_of(slv_satisfied, no_verdict); }
   double dc_slv = 0.0;            ///< d_demand / d_SLV (-); +inf with a collapse or a failed analysis
   /// Issue 28 (docs/theory/facade.md §6.4): with a collapse (d0 exceeded or
   /// overturned) the displacement demand is unbounded and d_demand = dc_slv =
@@ -192,6 +194,9 @@ struct FacadeAssessment {
   /// Summary by approach and overall verdict per code (every candidate's
   /// checks, the dynamic rows and the energy rows): the reports format it.
   Verdict verdict;
+  /// The safety indices per code and approach (safety_index.hpp): the lowest
+  /// index of the approach's checks beside its verdict, computed once here.
+  std::vector<SafetyIndex> indices;
   /// Plausibility and compatibility warnings (field, value, unit, why).
   std::vector<std::string> warnings;
 
@@ -249,6 +254,18 @@ double dynamic_d_SLV(const KinematicResult& kin);
 /// (Circ. 2019 C8.7.1.2.1.9, NTC 2018 §7.3.5 on the records' count).
 std::vector<RestitutionSummary> summarise_runs(const std::vector<DynamicRun>& runs, const std::vector<double>& e,
                                                const KinematicResult& kin);
+
+/// Every value the case did not give that moves a result (issue 41): the
+/// case's (CaseFile::defaults) and its dynamic section's (DynamicSpec::defaults).
+std::vector<CaseDefault> assessment_defaults(const FacadeAssessment& a);
+
+/// Whether the record set a case's selection gives over its own
+/// /dynamic/select/period_range_s can be used (docs/theory/building.md §3):
+/// a compatible set whose mean spectrum stays within the -10 %/+30 % band of
+/// the SLV spectrum over the range (NTC 2018 §3.2.3.6). The same selection
+/// the assessment makes (memoised per process: no second cost). "" when
+/// usable, else why not. @throws InputError for a bad selection section.
+std::string shared_selection_problem(const CaseFile& kase);
 
 /// Runs the whole assessment of a case. Throws InputError for bad input
 /// (naming the JSON path); physical outcomes are results.

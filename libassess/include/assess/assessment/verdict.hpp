@@ -27,6 +27,7 @@ struct VerdictRow {
   std::string note;         ///< "overturned in 1 of 2 analyses", the record-count rule ...
   int checks = 0;           ///< how many checks this row governs
   int failing = 0;          ///< how many of them fail
+  Outcome outcome() const { return outcome_of(satisfied, no_verdict); }
 };
 
 /// The overall verdict of one code edition.
@@ -37,6 +38,7 @@ struct CodeVerdict {
   int failing = 0;         ///< of which not satisfied
   int no_verdict = 0;      ///< of which without a verdict (not counted as satisfied)
   double max_dc = 0.0;     ///< the largest D/C
+  Outcome outcome() const { return summary_outcome(checks, failing, no_verdict); }
 };
 
 /// The verdict of one method of one code edition (issue 24; docs/theory/facade.md §6).
@@ -55,6 +57,9 @@ struct MethodVerdict {
   /// No check fails but some give no verdict: the method has no verdict
   /// (shown as such, never as "not satisfied" beside a D/C <= 1; issue 28).
   bool undecided() const { return failing == 0 && no_verdict > 0; }
+  /// Its verdict in three states: not satisfied if a check fails, else no
+  /// verdict if one has none, else satisfied.
+  Outcome outcome() const { return summary_outcome(checks, failing, no_verdict); }
 };
 
 /// "linear" (rows of kind "strength"), "nonlinear" ("displacement"), "dynamic" ("dynamic"); "" otherwise.

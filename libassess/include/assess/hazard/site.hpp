@@ -55,6 +55,17 @@ class Site {
   SeismicAction action(LimitState ls) const;
   /// Hazard for an arbitrary return period (years); clamped to [30, 2475].
   HazardParams hazard_at_tr(double tr_years) const;
+  /// The site's hazard along the return-period axis, for the return period
+  /// at which a check reaches D/C = 1 (issue 41; docs/theory/building.md §4):
+  /// inside [30, 2475] years exactly hazard_at_tr (Allegato A, log-log in
+  /// TR); outside, ag continues the power law of the end segment (30-50 or
+  /// 975-2475 years, the extrapolation of the hazard curve, hazard_curve.hpp)
+  /// and F0, TC* are held at the end values (the clamp of Allegato A) [I].
+  /// `tr_clamped` tells that TR was outside [30, 2475] years.
+  /// @throws InputError for a site whose hazard is given per limit state.
+  HazardParams hazard_extrapolated(double tr_years) const;
+  /// True when the hazard comes from the grid or an island (a return-period axis exists).
+  bool has_hazard_curve() const { return grid_ || islands_; }
   /// Elastic spectrum of a limit state at damping xi (%).
   ElasticSpectrum spectrum(LimitState ls, double damping_pct = 5.0) const;
   /// Grid nodes used for the site (the enclosing cell), empty unless lat/lon.

@@ -3,7 +3,9 @@
 // level and at height, linear (strength) and non-linear (displacement).
 #pragma once
 
+#include "assess/kinematic/check_index.hpp"
 #include "assess/kinematic/floor_spectrum.hpp"
+#include "assess/kinematic/outcome.hpp"
 #include "assess/hazard/hazard.hpp"
 #include "assess/kinematic/kinematic_analysis.hpp"
 #include "assess/hazard/seismic_action.hpp"
@@ -23,8 +25,9 @@ std::string to_string(CodeEdition c);       ///< "NTC2008", "NTC2018"
 CodeEdition parse_code_edition(const std::string& s);  ///< InputError otherwise
 
 /// One check: demand, capacity (same unit), dc = demand / capacity, verdict
-/// dc <= 1. For NTC 2018 also the capacity in PGA terms: the ag on rock that
-/// the mechanism withstands, F0 and TC* held at the limit state's values.
+/// dc <= 1, and its safety index (check_index.hpp: the return period at which
+/// this check reaches D/C = 1, zetaE = PGA_C / PGA_D), set by the assessment
+/// that knows the site's hazard axis (run_kinematic_case).
 struct CheckRow {
   std::string code;         ///< "NTC2008" | "NTC2018"
   std::string limit_state;  ///< "SLD" | "SLV" | "SLC"
@@ -37,16 +40,17 @@ struct CheckRow {
   std::string unit;         ///< "m/s2" | "m"
   double dc = 0.0;
   bool satisfied = false;
-  bool has_pga = false;     ///< NTC 2018 rows
-  double ag_capacity_g = 0.0;  ///< ag the mechanism withstands (g); inf if never reached
-  double ag_demand_g = 0.0;    ///< ag of the site for the limit state (g)
-  double dc_pga = 0.0;         ///< ag_demand / ag_capacity
+  /// The check's safety index (issue 41): defined for the kinematic rows of a
+  /// site with its hazard; not for dynamic rows (index.note says why).
+  CheckIndex index;
   /// The candidate mechanism the row belongs to (its label; "" for one).
   std::string candidate;
   /// True when the check cannot give a verdict (e.g. a dynamic check with
   /// fewer than 3 records, NTC 2018 §7.3.5): `satisfied` is then false and
   /// `note` says why. A report shows "no verdict", never "satisfied".
   bool no_verdict = false;
+  /// Its verdict in three states (outcome.hpp).
+  Outcome outcome() const { return outcome_of(satisfied, no_verdict); }
   std::string note;             ///< remarks for the reader ("overturned in 1 of 2 analyses" ...)
   /// Issue 29: a displacement check of a tied mechanism that the wall without
   /// its tie levels satisfies better (the row is the bare wall's).

@@ -16,11 +16,6 @@
 
 namespace assess {
 
-/// The terminal summary: site, record sets, the table of mechanisms (NTC 2018
-/// and NTC 2008), the governing mechanism per approach with the counts.
-/// Tables within 120 columns unless `width` is TextWidth::wide.
-std::string building_text(const BuildingAssessment& b, TextWidth width = TextWidth::columns120);
-
 /// The same content as JSON: "building" (project, file, site, record sets),
 /// "mechanisms" (id, wall, name, json_path, record set, alpha0, a0*, safety
 /// indices, the expanded "case", and "assessment": facade_json of the mechanism),
@@ -41,6 +36,12 @@ nlohmann::json safety_indices_json(const std::vector<SafetyIndex>& indices);
 /// conclusions and signature; appendices (other candidates, warnings,
 /// legend, readings adopted, the case file).
 Document building_document(const BuildingAssessment& b, const ReportOptions& options = {});
+
+/// The summary of the building's assessment (issue 41): what `assess run
+/// BUILDING.json` prints in the terminal, in the language of the options,
+/// from the relazione's own sections (the building's verdict, the seismic
+/// action, the mechanisms' table, the interventions, the warnings).
+Document building_summary(const BuildingAssessment& b, const ReportOptions& options = {});
 
 /// to_html(building_document(b, options)).
 std::string building_html(const BuildingAssessment& b, const ReportOptions& options = {});

@@ -19,12 +19,6 @@
 namespace assess {
 
 
-/// Readable report: site block per limit state, kinematic block with every
-/// intermediate quantity, the checks table (kinematic and dynamic rows, verdicts
-/// in Italian and English), the dynamic table and the D/C of all approaches.
-/// Tables within 120 columns unless `width` is TextWidth::wide; the site block once.
-std::string facade_text(const FacadeAssessment& a, TextWidth width = TextWidth::columns120);
-
 /// The same content as JSON: keys "project", "site", "kinematic" (the keys of
 /// `assess kinematic --json`), "checks" (kinematic and "kind": "dynamic" rows),
 /// "dynamic" (model, records, selection, analyses, summary per restitution),
@@ -61,6 +55,13 @@ struct ReportOptions {
 /// case file). Render it with to_html (html_writer.hpp), write_docx
 /// (docx_writer.hpp) or the report files (report_files.hpp).
 Document facade_document(const FacadeAssessment& a, const ReportOptions& options = {});
+
+/// The summary of the assessment (issue 41): what `assess run` prints in the
+/// terminal, in the language of the options, built from the relazione's own
+/// sections (the verdict box, the seismic action, the checks, the dynamic
+/// results, the safety indices, the interventions, the probabilistic result,
+/// the evaluation, the conclusions, the warnings): one result, one wording.
+Document facade_summary(const FacadeAssessment& a, const ReportOptions& options = {});
 
 /// to_html(facade_document(a, options)).
 std::string facade_html(const FacadeAssessment& a, const ReportOptions& options = {});

@@ -15,8 +15,14 @@ namespace assess {
 const char* verdict(bool satisfied);
 
 /// A check row as JSON: code, limit_state, kind, location, demand, capacity,
-/// unit, dc, satisfied, clause, formula (+ ag_capacity_g, ag_demand_g, dc_pga).
+/// unit, dc, satisfied (null without a verdict), clause, formula, inputs and
+/// its safety index ("index", below).
 nlohmann::json to_json(const CheckRow& r);
+/// A check's safety index as JSON: defined, zeta_E, ag_capacity_g, ag_demand_g
+/// (g on rock), TR_capacity_years, TR_demand_years, TR_ratio, extrapolated,
+/// bound ("below" | "above" | null), non_monotonic (+ other_crossing_TR_years),
+/// shape_held, note.
+nlohmann::json to_json(const CheckIndex& x);
 /// The kinematic result as JSON (keys alpha0, M_star (t), e_star, a0_star
 /// (m/s2), d0_star, du_star (m), Ts (s), d_SLV, d_SLC (m), T_SLV, T_SLC (s),
 /// capacity_curve [{d_star, a_star}], checks [...], loads, candidates).
@@ -35,6 +41,11 @@ std::string checks_text(const std::vector<CheckRow>& checks, TextWidth width = T
 /// characters counted once), continuation lines indented by `indent` blanks.
 std::string wrap_text(const std::string& text, std::size_t indent, std::size_t width = 120);
 
+/// The JSON of a verdict's state (issue 41): `satisfied` true, false, or null
+/// for no verdict (never false); add_outcome also sets "outcome" ("satisfied",
+/// "not satisfied", "no verdict").
+nlohmann::json satisfied_json(Outcome o);
+void add_outcome(nlohmann::json& j, Outcome o);
 /// A summary row as JSON: {code, approach, limit_state, location, dc,
 /// satisfied (null without a verdict), clause, candidate, note, checks, failing}.
 nlohmann::json to_json(const VerdictRow& r);

@@ -13,6 +13,7 @@
 
 namespace assess {
 
-std::string to_text(const Document& d, std::size_t width = 120);
+/// `figures` false leaves the figures out (the terminal's summary), true writes each by its caption.
+std::string to_text(const Document& d, std::size_t width = 120, bool figures = true);
 
 }  // namespace assess

@@ -95,7 +95,6 @@ struct FragilityStudy {
   std::map<LimitState, SeismicAction> actions;  ///< the code's limit states at the site
   std::map<LimitState, double> action_pga;      ///< Se(0) = ag S of each (m/s^2)
   std::optional<HazardCurve> hazard;            ///< PGA hazard curve of the site
-  std::optional<HazardCurve> ag_hazard;         ///< ag (rock) hazard curve: return periods of the code's ag capacities
   // The mechanism (the governing candidate of the kinematic analysis).
   std::string mechanism;        ///< its label
   KinematicResult kinematic;    ///< its kinematic result (d_SLV, dk0, control point, ...)

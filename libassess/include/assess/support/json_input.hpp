@@ -31,6 +31,8 @@ class JsonNode {
 
   /// Throws InputError "<file>: <path>: <message>".
   [[noreturn]] void fail(const std::string& message) const;
+  /// A required member that is missing: InputError "<file>: <path>/<key>: missing: <what is expected>".
+  [[noreturn]] void fail_missing(const std::string& key, const std::string& expected) const;
   /// Every key must be one of `allowed`, else an error with the closest one.
   void allow_only(std::initializer_list<const char*> allowed) const;
 
