@@ -161,8 +161,13 @@ int main(int argc, char** argv) {
   // "nan", "inf", a hexadecimal float or a subnormal (issue 31: --k nan was
   // taken for "no --k").
   assess::cli::require_finite_numbers(app);
-  // Every subcommand's options in one page (the man page is built from it).
+  // Every subcommand's options in one page (the man page is built from it;
+  // CLI11 would first ask for the required subcommand).
   app.set_help_all_flag("--help-all", "print the help of every subcommand");
+  if (argc == 2 && std::string(argv[1]) == "--help-all") {
+    std::cout << app.help("", CLI::AppFormatMode::All);
+    return 0;
+  }
   try {
     check_words(app, argc, argv);
     app.parse(argc, argv);

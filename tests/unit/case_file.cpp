@@ -13,8 +13,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 using assess::test::abs_tol;
 using assess::test::rel_tol;
@@ -320,9 +322,20 @@ TEST_CASE("explicit blocks: blocks by name and index, loads in kN, Z from the co
 TEST_CASE("site: lat/lon, island or hazard per limit state; soil, topography, VN, use class or CU") {
   json doc = with_mechanism(wall_blocks());
   SUBCASE("no site: analysis only") { CHECK_FALSE(parse(doc).site.has_value()); }
-  SUBCASE("lat/lon with the defaults: soil A, T1, h/H = 1, VN = 50, CU = 1") {
+  SUBCASE("no soil: an error naming /site/soil (issue 41: no silent default)") {
     doc["site"] = {{"lat", 42.3498}, {"lon", 13.3995}};
-    const auto s = parse(doc).site;
+    CHECK_THROWS_WITH_AS(parse(doc), doctest::Contains("case.json: /site/soil: missing: the subsoil category"),
+                         assess::InputError);
+  }
+  SUBCASE("lat/lon with the defaults: T1, h/H = 1, VN = 50, CU = 1, each listed as a default") {
+    doc["site"] = {{"lat", 42.3498}, {"lon", 13.3995}, {"soil", "A"}};
+    const assess::CaseFile c = parse(doc);
+    std::vector<std::string> paths;
+    for (const assess::CaseDefault& x : c.defaults) paths.push_back(x.path);
+    for (const char* p : {"/site/topography", "/site/VN_years", "/site/use_class", "/knowledge_level", "/method",
+                          "/check_SLD", "/analysis/q", "/analysis/damping_SLV_pct", "/analysis/damping_SLC_pct"})
+      CHECK(std::find(paths.begin(), paths.end(), p) != paths.end());
+    const auto s = c.site;
     REQUIRE(s.has_value());
     CHECK_CLOSE(*s->lat, 42.3498, abs_tol(tol_factor));
     CHECK_CLOSE(*s->lon, 13.3995, abs_tol(tol_factor));
@@ -347,7 +360,7 @@ TEST_CASE("site: lat/lon, island or hazard per limit state; soil, topography, VN
   SUBCASE("hazard given per limit state, CU given") {
     doc["site"] = json::parse(R"({ "hazard": { "SLD": { "ag_g": 0.104, "F0": 2.33, "Tc_star": 0.28 },
                                                "SLV": { "ag_g": 0.261, "F0": 2.36, "Tc_star": 0.35, "TR": 475 } },
-                                   "CU": 1.2 })");
+                                   "CU": 1.2, "soil": "A" })");
     const auto s = parse(doc).site;
     REQUIRE(s.has_value());
     REQUIRE(s->given.size() == 2);
@@ -559,7 +572,7 @@ TEST_CASE("out-of-range values name the path, the range and the unit") {
   doc["site"] = {{"lat", 95.0}, {"lon", 13.0}};
   CHECK_THROWS_WITH_AS(parse(doc), doctest::Contains("case.json: /site/lat: value 95 out of range: expected in [-90, 90] deg"),
                        assess::InputError);
-  doc["site"] = {{"lat", 42.35}, {"lon", 13.4}, {"h_over_H", 1.5}};
+  doc["site"] = {{"lat", 42.35}, {"lon", 13.4}, {"h_over_H", 1.5}, {"soil", "A"}};
   CHECK_THROWS_WITH_AS(parse(doc), doctest::Contains("case.json: /site/h_over_H: value 1.5 out of range: expected in [0, 1] -"),
                        assess::InputError);
   doc["site"] = {{"lat", 42.35}, {"lon", 13.4}, {"soil", "F"}};
@@ -625,7 +638,7 @@ TEST_CASE("conflicting sources: two site sources, use_class and CU, knowledge_le
   CHECK_THROWS_WITH_AS(parse(doc), doctest::Contains("case.json: /site: give exactly one of"), assess::InputError);
   doc["site"] = json::object();
   CHECK_THROWS_WITH_AS(parse(doc), doctest::Contains("case.json: /site: give exactly one of"), assess::InputError);
-  doc["site"] = {{"island", "Ustica"}, {"use_class", "II"}, {"CU", 1.0}};
+  doc["site"] = {{"island", "Ustica"}, {"use_class", "II"}, {"CU", 1.0}, {"soil", "A"}};
   CHECK_THROWS_WITH_AS(parse(doc), doctest::Contains("case.json: /site: give \"use_class\" or \"CU\", not both"),
                        assess::InputError);
   doc.erase("site");

@@ -166,8 +166,13 @@ BuildingVerdict building_verdict(const BuildingAssessment& b) {
   for (std::size_t i = 0; i < b.results.size(); ++i) {
     const BuildingMechanismResult& r = b.results[i];
     const MethodVerdict* m = r.a.verdict.conclusion();
-    if (!m) continue;
     ++v.mechanisms;
+    // No check by the adopted method (a dynamic method where the dynamic
+    // analysis does not apply): no verdict, never a silent pass (issue 41).
+    if (!m) {
+      v.undecided.push_back(int(i));
+      continue;
+    }
     if (m->undecided()) v.undecided.push_back(int(i));
     else if (!m->satisfied) v.failing.push_back(int(i));
     const double dc = std::isfinite(m->max_dc) ? m->max_dc : inf;

@@ -481,12 +481,7 @@ SiteSpec parse_site(const JsonNode& s) {
         spec.given[parse_limit_state(ls)] = p;
       }
   }
-  // The subsoil category moves every demand (S = SS ST, TC = CC TC*): no
-  // default is assumed (issue 41: a missing soil ran as A, a silent default).
-  if (!s.has("soil"))
-    s.fail_missing("soil", "the subsoil category of NTC 2018 Tab. 3.2.II, \"A\", \"B\", \"C\", \"D\" or \"E\" "
-                           "(it sets S = SS ST and TC = CC TC* of every demand; no default is assumed)");
-  spec.conditions.soil = parse_soil_class(s.choice("soil", {"A", "B", "C", "D", "E"}));
+  if (s.has("soil")) spec.conditions.soil = parse_soil_class(s.choice("soil", {"A", "B", "C", "D", "E"}));
   if (s.has("topography")) spec.conditions.topography = parse_topography(s.choice("topography", {"T1", "T2", "T3", "T4"}));
   spec.conditions.h_over_H = s.number_or("h_over_H", 1.0, "-", 0.0, 1.0);
   spec.vn_years = s.number_or("VN_years", 50.0, rules::nominal_life_years);
@@ -500,6 +495,11 @@ SiteSpec parse_site(const JsonNode& s) {
   } catch (const InputError& e) {
     s.fail(e.what());
   }
+  // The subsoil category moves every demand (S = SS ST, TC = CC TC*): no
+  // default is assumed (issue 41: a missing soil ran as A, a silent default).
+  if (!s.has("soil"))
+    s.fail_missing("soil", "the subsoil category of NTC 2018 Tab. 3.2.II, \"A\", \"B\", \"C\", \"D\" or \"E\" "
+                           "(it sets S = SS ST and TC = CC TC* of every demand; no default is assumed)");
   return spec;
 }
 

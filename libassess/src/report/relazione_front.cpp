@@ -8,6 +8,7 @@
 #include "report/text_format.hpp"
 
 #include <cmath>
+#include <map>
 
 namespace assess::relazione {
 
@@ -180,9 +181,16 @@ void add_defaults(Ctx& c) {
   if (all.empty()) return;
   c.d.add_heading(c.t("defaults.heading"), 3, false);
   c.d.add_paragraph(c.t("defaults.intro"));
+  // A value that is a word of the case file is printed in the report's language.
+  static const std::map<std::string, std::string> words{
+      {"smooth", "defaults.v.smooth"}, {"one-sided", "defaults.v.one_sided"}, {"normal", "defaults.v.normal"},
+      {"exclude", "defaults.v.exclude"}, {"false", "defaults.v.false"}, {"nonlinear", "method.nonlinear"},
+      {"linear", "method.linear"}, {"dynamic", "method.dynamic"}, {"= /site/soil", "defaults.v.site_soil"}};
   std::vector<std::vector<Cell>> rows;
-  for (const CaseDefault& x : all)
-    rows.push_back({Cell(x.path), Cell(c.loc(x.value)), Cell(c.t(x.effect))});
+  for (const CaseDefault& x : all) {
+    const auto w = words.find(x.value);
+    rows.push_back({Cell(x.path), Cell(w == words.end() ? c.loc(x.value) : c.t(w->second)), Cell(c.t(x.effect))});
+  }
   c.d.add_cell_table({Cell(c.t("defaults.key")), Cell(c.t("defaults.value")), Cell(c.t("defaults.effect"))}, rows,
                      c.t("defaults.cap"));
 }

@@ -206,6 +206,16 @@ for when in ("before", "after"):
     elif best is not None:
         print(f"ok   building index {when} the ties: {best_id} (zetaE {best:.4f})")
 
+# Issue 41: a mechanism alone (`--mechanism ID`) is its building line, a shared
+# selection that fell back included: the same records, the same numbers.
+for m in b["mechanisms"]:
+    alone = run(["run", building, "--mechanism", m["id"], "--json"])
+    n0 = len(failures)
+    same(m["assessment"], {k: v for k, v in alone.items() if k not in ("safety_indices", "ties")},
+         f"{m['id']}/--mechanism", building)
+    if len(failures) == n0:
+        print(f"ok   {m['id']}: --mechanism {m['id']} = its building line")
+
 for f in failures[:40]:
     print("FAIL", f)
 print(f"building_vs_single: {len(b['mechanisms'])} mechanisms, {len(failures)} difference(s)")
