@@ -10,6 +10,7 @@
 #include <assess/support/json_input.hpp>
 #include <assess/campaign/campaign_runner.hpp>
 #include <assess/report/plot.hpp>
+#include <assess/risk/fragility_case.hpp>
 #include <assess/risk/fragility_job.hpp>
 #include <assess/risk/fragility_report.hpp>
 #include <assess/risk/fragility_result.hpp>
@@ -62,10 +63,6 @@ std::vector<double> parse_list(const std::string& text, const std::string& optio
   return v;
 }
 
-std::string default_out(const std::string& file) {
-  return std::filesystem::path(file).stem().string() + ".fragility";
-}
-
 void run(const FragilityArgs& a) {
   // MPI only when launched by mpirun, loaded at run time (mpi_session.hpp).
   const MpiSession mpi;
@@ -84,42 +81,13 @@ void run(const FragilityArgs& a) {
   fo.bootstrap = a.bootstrap;
   fo.seed = a.seed;
   const nlohmann::json doc = read_json_file(a.file, input_kinds::case_file);
-  CaseFile kase;
-  std::optional<BuildingCase> building;  // a building case: its errors name its paths and the mechanism
-  std::size_t mechanism_index = 0;
-  std::string out_default = default_out(a.file);
-  if (is_building_document(doc)) {
-    // A building case (issue 22): the mechanism named by --mechanism, else the
-    // governing one (docs/user/building.md, "Fragility").
-    const BuildingCase bc = parse_building(doc, a.file);
-    const BuildingMechanism* m = a.mechanism.empty() ? nullptr : &find_mechanism(bc, a.mechanism);
-    if (!m) {
-      const std::string approach = bc.mechanisms.front().kase.method == "linear" ? "strength" : "displacement";
-      m = &bc.mechanisms[governing_mechanism_kinematic(bc, approach)];
-      if (!a.quiet && rank == 0)
-        std::cerr << "assess fragility: " << m->id << " \"" << m->name << "\", the building's governing mechanism ("
-                  << "lowest NTC 2018 zetaE, " << approach << "); --mechanism ID for another\n";
-    }
-    kase = m->kase;
-    building = bc;
-    mechanism_index = static_cast<std::size_t>(m - bc.mechanisms.data());
-    out_default = std::filesystem::path(a.file).stem().string() + "." + m->id + ".fragility";
-  } else {
-    if (!a.mechanism.empty())
-      throw InputError(a.file + ": --mechanism applies to a building case (a file with \"walls\"), not to a "
-                       "single-mechanism case");
-    kase = parse_case(doc, a.file);
-  }
-  const FragilityStudy study = [&] {
-    try {
-      return prepare_fragility(kase, fo);
-    } catch (const InputError& e) {
-      if (!building) throw;
-      throw InputError(building_path_message(*building, building->mechanisms[mechanism_index], e.what()));
-    }
-  }();
+  // The mechanism studied (risk/fragility_case.hpp): a building case's named
+  // or governing one (issue 22; docs/user/building.md, "Fragility").
+  const FragilityCase fc = fragility_case(doc, a.file, a.mechanism);
+  if (!fc.note.empty() && !a.quiet && rank == 0) std::cerr << "assess fragility: " << fc.note << "\n";
+  const FragilityStudy study = prepare_case_fragility(fc, fo);
   const FragilityJob job(study);
-  const std::string out = a.out.empty() ? out_default : a.out;
+  const std::string out = a.out.empty() ? fc.default_out : a.out;
 
   CampaignRunOptions o;
   o.threads = a.threads ? a.threads : (ranks > 1 ? 1u : 0u);

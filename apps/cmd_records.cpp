@@ -6,6 +6,7 @@
 
 #include <assess/hazard/site.hpp>
 #include <assess/records/library_selection.hpp>
+#include <assess/report/records_report.hpp>
 #include <assess/records/record_catalogue.hpp>
 #include <assess/records/record_library.hpp>
 #include <assess/records/record_selection.hpp>
@@ -55,51 +56,14 @@ std::string num(double v, const char* f = "%.3g") {
   return buf;
 }
 
-nlohmann::ordered_json jnum(double v) {
-  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
-}
-
-nlohmann::ordered_json entry_json(const CatalogueEntry& e) {
-  nlohmann::ordered_json j;
-  j["id"] = e.id;
-  j["file"] = e.file;
-  j["event"] = e.event;
-  j["date"] = e.date;
-  j["Mw"] = jnum(e.Mw);
-  j["station"] = e.station;
-  j["component"] = e.component;
-  j["positive_direction"] = e.positive_direction;
-  j["distance_km"] = jnum(e.distance_km);
-  j["distance_kind"] = e.distance_kind;
-  j["vs30_m_s"] = jnum(e.vs30_m_s);
-  j["site_class"] = e.site_class;
-  j["site_class_basis"] = e.site_class_basis;
-  j["vs30_class"] = e.vs30_class;
-  j["country"] = e.country;
-  j["lowest_usable_hz"] = jnum(e.lowest_usable_hz);
-  j["pulse"] = e.pulse;
-  j["pulse_period_s"] = jnum(e.pulse_period_s);
-  j["near_fault"] = near_fault_reason(e);
-  j["pga_g"] = e.pga_g;
-  j["significant_duration_s"] = e.significant_duration_s;
-  j["usable_for_design"] = e.usable_for_design;
-  j["note"] = e.note;
-  return j;
-}
-
-CatalogueFilters make_filters(const RecordsArgs& a) {
-  CatalogueFilters f;
-  if (a.mw_min) f.Mw_min = *a.mw_min, f.Mw_given = true;
-  if (a.mw_max) f.Mw_max = *a.mw_max, f.Mw_given = true;
-  if (a.r_min) f.R_min_km = *a.r_min, f.R_given = true;
-  if (a.r_max) f.R_max_km = *a.r_max, f.R_given = true;
-  f.site_classes = a.site_classes;
-  for (const auto& c : f.site_classes)
-    if (c.size() != 1 || std::string("ABCDE").find(c) == std::string::npos)
-      throw InputError("--site-class '" + c + "': expected A, B, C, D or E");
-  f.countries = a.countries;
-  f.relax_site_class = !a.no_relax;
-  return f;
+// The filter options of the command line (report/records_report.hpp).
+RecordFilterOptions filter_options(const RecordsArgs& a) {
+  RecordFilterOptions o;
+  o.mw_min = a.mw_min, o.mw_max = a.mw_max, o.r_min = a.r_min, o.r_max = a.r_max;
+  o.site_classes = a.site_classes;
+  o.countries = a.countries;
+  o.relax = !a.no_relax;
+  return o;
 }
 
 void run_build(const RecordsArgs& a) {
@@ -125,22 +89,10 @@ void run_build(const RecordsArgs& a) {
 
 void run_list(const RecordsArgs& a) {
   const RecordCatalogue cat = read_catalogue(a.catalogue.empty() ? default_catalogue() : a.catalogue);
-  std::vector<CatalogueEntry> shown;
-  std::vector<std::string> warnings;
-  const bool filtering = a.mw_min || a.mw_max || a.r_min || a.r_max || !a.site_classes.empty() || !a.countries.empty();
-  if (a.all && !filtering) {
-    shown = cat.entries;
-  } else {
-    CatalogueFilters f = make_filters(a);
-    if (!f.Mw_given) f.Mw_min = 0.0, f.Mw_max = 10.0, f.Mw_given = true;     // list: no default window
-    if (!f.R_given) f.R_min_km = 0.0, f.R_max_km = 1e9, f.R_given = true;
-    f.relax_site_class = false;
-    const CatalogueFilterResult r = filter_catalogue(cat.entries, f);
-    shown = r.kept;
-  }
+  const std::vector<CatalogueEntry> shown = catalogue_listing(cat, filter_options(a), a.all);
   if (a.json) {
     nlohmann::ordered_json j = nlohmann::ordered_json::array();
-    for (const auto& e : shown) j.push_back(entry_json(e));
+    for (const auto& e : shown) j.push_back(catalogue_entry_json(e));
     std::cout << j.dump(1) << "\n";
     return;
   }
@@ -165,7 +117,7 @@ void run_show(const RecordsArgs& a) {
   const std::vector<double> T = {0.0, 0.1, 0.2, 0.3, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0, 4.0};
   const ResponseSpectrum rs = response_spectrum(r, T);
   if (a.json) {
-    nlohmann::ordered_json j = entry_json(*e);
+    nlohmann::ordered_json j = catalogue_entry_json(*e);
     j["format"] = e->format;
     j["npts"] = e->npts;
     j["dt_s"] = e->dt_s;
@@ -233,15 +185,11 @@ void run_select(const RecordsArgs& a) {
   for (LimitState l : all_limit_states)
     if (to_string(l) == a.limit_state) ls = l, found = true;
   if (!found) throw InputError("--limit-state '" + a.limit_state + "': expected SLO, SLD, SLV or SLC");
-  const ElasticSpectrum target = site.spectrum(ls);
   const std::shared_ptr<const RecordLibrary> lib =
       RecordLibrary::open(a.catalogue.empty() ? default_catalogue() : a.catalogue);
   LibrarySelectionRules rules;
-  rules.filters = make_filters(a);
-  if (rules.filters.site_classes.empty()) rules.filters.site_classes = {to_string(spec.conditions.soil)};
-  if (a.near_fault != "exclude" && a.near_fault != "include")
-    throw InputError("--near-fault '" + a.near_fault + "': expected exclude or include");
-  rules.include_near_fault = a.near_fault == "include";
+  rules.filters = catalogue_filters(filter_options(a));
+  rules.include_near_fault = parse_near_fault_option(a.near_fault);
   rules.near_fault_km = a.near_fault_km;
   SelectionOptions so;
   so.n_records = a.count;
@@ -252,62 +200,15 @@ void run_select(const RecordsArgs& a) {
   so.max_per_event = a.per_event;
   so.max_per_station = a.per_station;
   so.max_misfit = a.max_misfit;
-  const std::shared_ptr<const LibrarySelection> sel =
-      select_from_library(*lib, rules, [&](double T) { return target.Se(T); }, so);
+  const SiteRecordSelection chosen = select_for_site(site, ls, *lib, rules, so);
+  const LibrarySelection* sel = chosen.selection.get();
   const SelectionResult& res = sel->result;
-  if (sel->candidates.empty()) throw InputError("no record of the catalogue passes the filters (see `assess records list`)");
-  auto flags_of = [&](const SelectedRecord& s) {
-    const CatalogueEntry& e = sel->candidates[s.index];
-    std::vector<std::string> f;
-    const std::string nf = near_fault_reason(e, rules.near_fault_km);
-    if (!nf.empty()) f.push_back(nf);
-    if (s.misfit_flag) f.push_back("misfit " + num(s.deviation, "%.3f") + " > " + num(so.max_misfit, "%.2f"));
-    if (e.site_class != to_string(spec.conditions.soil))
-      f.push_back("site class " + e.site_class + ", not the site's " + to_string(spec.conditions.soil));
-    return f;
-  };
   if (a.json) {
-    nlohmann::ordered_json j;
-    j["limit_state"] = to_string(ls);
-    j["site"] = site.describe();
-    j["ag_S_g"] = target.Se(0.0) / units::g_n;
-    j["status"] = to_string(res.status);
-    j["message"] = res.message;
-    j["warnings"] = sel->warnings;
-    j["site_classes"] = sel->site_classes;
-    j["spectra"] = sel->spectra_source;
-    j["near_fault_excluded"] = sel->near_fault_excluded;
-    j["period_range_s"] = {so.range.T_min, so.range.T_max};
-    j["band"] = {1.0 - so.lower_tol, 1.0 + so.upper_tol};
-    j["min_ratio"] = res.min_ratio;
-    j["max_ratio"] = res.max_ratio;
-    j["mean_scale"] = res.mean_scale;
-    j["candidates"] = sel->candidates.size();
-    j["eligible"] = res.eligible;
-    j["combinations"] = res.combinations;
-    j["records"] = nlohmann::ordered_json::array();
-    for (const auto& s : res.records) {
-      const CatalogueEntry& e = sel->candidates[s.index];
-      nlohmann::ordered_json r = entry_json(e);
-      r["scale"] = s.scale;
-      r["scaled_pga_g"] = s.scaled_pga / units::g_n;
-      r["deviation"] = s.deviation;
-      r["rank"] = s.rank;
-      r["flags"] = flags_of(s);
-      j["records"].push_back(r);
-    }
-    j["rejected"] = nlohmann::ordered_json::array();
-    for (const auto& r : sel->excluded) j["rejected"].push_back({{"id", r.name}, {"reason", r.reason}});
-    for (const auto& r : res.rejected)
-      j["rejected"].push_back({{"id", sel->candidates[r.index].id}, {"scale", r.scale}, {"reason", r.reason}});
-    j["periods_s"] = res.periods;
-    j["target_m_s2"] = res.target;
-    j["mean_psa_m_s2"] = res.mean_psa;
-    std::cout << j.dump(1) << "\n";
+    std::cout << site_selection_json(chosen).dump(1) << "\n";
     return;
   }
   std::cout << "Target: " << to_string(ls) << " spectrum, " << site.describe() << ", soil " << a.soil
-            << ", ag S = " << num(target.Se(0.0) / units::g_n, "%.3f") << " g\n";
+            << ", ag S = " << num(chosen.ag_S_g, "%.3f") << " g\n";
   for (const auto& w : sel->warnings) std::cout << "warning: " << w << "\n";
   std::cout << sel->candidates.size() << " candidates after the filters (" << sel->near_fault_excluded
             << " near-fault or pulse-like left out), " << res.eligible << " within the per-record limits; "
@@ -319,10 +220,10 @@ void run_select(const RecordsArgs& a) {
     std::printf("%-30s %-34.34s %4s %-20.20s %6s %-4s %2s %6.3f %8.3f %6.3f %4d\n", e.id.c_str(), e.event.c_str(),
                 num(e.Mw, "%.2f").c_str(), e.station.c_str(), num(e.distance_km, "%.1f").c_str(),
                 e.distance_kind.c_str(), e.site_class.c_str(), s.scale, s.scaled_pga / units::g_n, s.deviation, s.rank);
-    for (const std::string& f : flags_of(s)) std::printf("  FLAG: %s\n", f.c_str());
+    for (const std::string& f : selection_flags(chosen, s)) std::printf("  FLAG: %s\n", f.c_str());
   }
   std::printf("mean scale %.3f; largest scaled PGA %.3f g (guard %.2f ag S = %.3f g)\n", res.mean_scale,
-              res.max_scaled_pga / units::g_n, so.max_pga_ratio, so.max_pga_ratio * target.Se(0.0) / units::g_n);
+              res.max_scaled_pga / units::g_n, so.max_pga_ratio, so.max_pga_ratio * chosen.ag_S_g);
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include <assess/assessment/tie_intervention.hpp>
 #include <assess/report/tie_report.hpp>
 #include <assess/risk/fragility_report.hpp>
+#include <assess/risk/run_report.hpp>
 
 #include <filesystem>
 #include <assess/report/report_files.hpp>
@@ -160,47 +161,22 @@ void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_tex
   print_warnings(warnings);
   // A fragility result of this case: --fragility DIR, or the default output
   // directory of `assess fragility` (CASE.fragility) when it holds this case's.
-  std::optional<nlohmann::json> frag;
-  std::string frag_dir;
-  const std::string auto_dir = std::filesystem::path(a.file).stem().string() + ".fragility";
-  if (!a.fragility.empty()) {
-    frag = read_fragility_summary(a.fragility, a.file);
-    frag_dir = a.fragility;
-  } else if (std::filesystem::exists(auto_dir + "/summary.json")) {
-    try {
-      frag = read_fragility_summary(auto_dir, a.file);
-      frag_dir = auto_dir;
-    } catch (const InputError&) {
-      // another case's results: not this report's business
-    }
-  }
-  // The additional probabilistic result of the report (HTML box, JSON).
-  std::optional<ProbabilisticResult> prob;
-  if (frag) prob = probabilistic_result(*frag, frag_dir + "/summary.json");
+  const std::optional<RunFragility> frag = run_fragility(a.file, a.fragility);
   if (a.wants_report()) {
     ReportOptions ro;
     ro.lang = lang;
-    ro.fragility = prob;
+    if (frag) ro.fragility = frag->result;
     if (ties) ro.ties = &*ties;
     ro.case_text = case_text;
     write_report_files(facade_document(res, ro), {a.html, a.pdf, a.docx, a.txt});
   }
   if (a.json) {
-    nlohmann::json j = facade_json(res);
-    // zetaE = PGA_C/PGA_D and TR_C/TR_D per approach (docs/theory/building.md §4), as the building report gives them.
-    j["safety_indices"] = safety_indices_json(res.indices);
-    if (frag) {
-      nlohmann::json f = probabilistic_result_json(*prob);
-      f["line"] = fragility_line(*frag);
-      f["governing"] = (*frag)["governing"];
-      j["fragility"] = f;
-    }
-    if (ties) j["ties"] = tie_json(*ties);
+    nlohmann::json j = facade_run_json(res, ties, frag);
     std::cout << stamp_version(j).dump(2) << "\n";
   } else {
     ReportOptions ro;
     ro.lang = lang;
-    ro.fragility = prob;
+    if (frag) ro.fragility = frag->result;
     if (ties) ro.ties = &*ties;
     std::cout << to_text(facade_summary(res, ro), text_width(a), false) << files_written(a);
   }

@@ -6,6 +6,7 @@
 #include <assess/support/number_rules.hpp>
 #include <assess/hazard/comuni.hpp>
 #include <assess/hazard/site.hpp>
+#include <assess/report/spectrum_report.hpp>
 #include <assess/support/units.hpp>
 
 #include <nlohmann/json.hpp>
@@ -29,7 +30,7 @@ struct SpectrumArgs {
 };
 
 std::vector<double> parse_periods(const std::string& list) {
-  if (list.empty()) return {0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.75, 1.0, 1.5, 2.0, 2.5, 3.0, 4.0};
+  if (list.empty()) return default_spectrum_periods();
   std::vector<double> out;
   std::stringstream ss(list);
   std::string item;
@@ -49,14 +50,6 @@ std::vector<double> parse_periods(const std::string& list) {
   }
   return out;
 }
-
-// One evaluated case: a limit state (or a given TR / given hazard).
-struct Column {
-  std::string label;
-  std::optional<LimitState> ls;
-  std::optional<double> PVR, TR;  // TR as computed (years)
-  HazardParams hazard;
-};
 
 SiteSpec make_spec(const SpectrumArgs& a) {
   SiteSpec spec;
@@ -126,20 +119,8 @@ SiteSpec make_spec(const SpectrumArgs& a) {
   return spec;
 }
 
-std::vector<Column> evaluate(const SpectrumArgs& a, const Site& site) {
-  std::vector<Column> cols;
+std::vector<SpectrumColumn> evaluate(const SpectrumArgs& a, const Site& site) {
   if (a.tr && a.limit_state) throw InputError("give either --limit-state or --tr, not both");
-  if (a.tr) {
-    if (!(*a.tr > 0.0) || !std::isfinite(*a.tr))
-      throw InputError("--tr " + std::to_string(*a.tr) + ": expected a return period in years > 0");
-    if (!site.spec().given.empty()) throw InputError("--tr cannot be used with --ag/--F0/--Tc-star");
-    Column c;
-    c.label = "TR";
-    c.TR = *a.tr;
-    c.hazard = site.hazard_at_tr(*a.tr);
-    cols.push_back(c);
-    return cols;
-  }
   std::vector<LimitState> states(all_limit_states.begin(), all_limit_states.end());
   if (a.limit_state) {
     try {
@@ -148,26 +129,7 @@ std::vector<Column> evaluate(const SpectrumArgs& a, const Site& site) {
       throw InputError(std::string("--limit-state: ") + e.what());
     }
   }
-  if (!site.spec().given.empty()) {  // one hazard given directly: one column
-    Column c;
-    c.label = "given";
-    if (a.limit_state) c.ls = states[0];
-    c.hazard = site.action(states[0]).hazard;
-    c.hazard.TR = 0.0;
-    cols.push_back(c);
-    return cols;
-  }
-  for (LimitState ls : states) {
-    Column c;
-    c.ls = ls;
-    c.label = to_string(ls);
-    const SeismicAction act = site.action(ls);
-    c.PVR = act.PVR;
-    c.TR = act.TR;
-    c.hazard = act.hazard;
-    cols.push_back(c);
-  }
-  return cols;
+  return spectrum_columns(site, states, a.limit_state.has_value(), a.tr);
 }
 
 std::string fmt(const char* f, double v) {
@@ -176,48 +138,7 @@ std::string fmt(const char* f, double v) {
   return buf;
 }
 
-void warn_clamp(const Column& c) {
-  if (c.hazard.tr_clamped)
-    std::cerr << "assess: warning: " << c.label << ": TR = " << fmt("%.2f", c.hazard.tr_requested)
-              << " years is outside the tabulated 30-2475 years; the hazard of TR = " << fmt("%.0f", c.hazard.TR)
-              << " years is used (Circ. 2019 Tab. C3.2.I)\n";
-}
-
-nlohmann::json column_json(const Column& c, const ElasticSpectrum& s, const std::vector<double>& periods,
-                           std::optional<double> q) {
-  nlohmann::json j;
-  j["limit_state"] = c.ls ? nlohmann::json(to_string(*c.ls)) : nlohmann::json(nullptr);
-  j["PVR"] = c.PVR ? nlohmann::json(*c.PVR) : nlohmann::json(nullptr);
-  j["TR"] = c.TR ? nlohmann::json(*c.TR) : nlohmann::json(nullptr);
-  j["TR_used"] = c.TR ? nlohmann::json(c.hazard.TR) : nlohmann::json(nullptr);
-  j["TR_clamped"] = c.hazard.tr_clamped;
-  j["ag_g"] = s.ag_g();
-  j["F0"] = s.F0();
-  j["Tc_star"] = s.Tc_star();
-  j["SS"] = s.SS();
-  j["CC"] = s.CC();
-  j["ST"] = s.ST();
-  j["S"] = s.S();
-  j["eta"] = s.eta();
-  j["damping_pct"] = s.damping_pct();
-  j["TB"] = s.TB();
-  j["TC"] = s.TC();
-  j["TD"] = s.TD();
-  j["TE"] = s.TE();
-  j["TF"] = s.TF();
-  j["Fv"] = s.Fv();
-  j["PGA_g"] = s.PGA() / units::g;
-  nlohmann::json arr = nlohmann::json::array();
-  for (double T : periods) {
-    nlohmann::json p{{"T", T}, {"Se_g", s.Se(T) / units::g}, {"SDe_m", s.SDe(T)}, {"Sve_g", s.Sve(T) / units::g}};
-    if (q) p["Sd_g"] = s.Sd(T, *q) / units::g;
-    arr.push_back(p);
-  }
-  j["spectrum"] = arr;
-  return j;
-}
-
-void print_table(const Site& site, const std::vector<Column>& cols, const std::vector<ElasticSpectrum>& spectra,
+void print_table(const Site& site, const std::vector<SpectrumColumn>& cols, const std::vector<ElasticSpectrum>& spectra,
                  const std::vector<double>& periods, std::optional<double> q) {
   const SiteSpec& sp = site.spec();
   std::ostream& o = std::cout;
@@ -307,35 +228,13 @@ void run(const SpectrumArgs& a) {
   const std::vector<double> periods = parse_periods(a.periods);
   if (a.q && !(*a.q >= 1.0)) throw InputError("--q " + std::to_string(*a.q) + ": expected a behaviour factor q >= 1");
   const Site site(spec);
-  const std::vector<Column> cols = evaluate(a, site);
+  const std::vector<SpectrumColumn> cols = evaluate(a, site);
   std::vector<ElasticSpectrum> spectra;
-  for (const Column& c : cols) spectra.emplace_back(c.hazard, spec.conditions, a.damping);
-  for (const Column& c : cols) warn_clamp(c);
+  for (const SpectrumColumn& c : cols) spectra.emplace_back(c.hazard, spec.conditions, a.damping);
+  print_warnings(spectrum_warnings(cols));
   if (a.json) {
-    if (cols.size() == 1) {
-      nlohmann::json j = column_json(cols[0], spectra[0], periods, a.q);
-      if (!spec.comune.empty()) {
-        j["comune"] = spec.comune;
-        j["lat"] = *spec.lat;
-        j["lon"] = *spec.lon;
-        j["note"] = comune_note();
-      }
-      std::cout << stamp_version(j).dump(2) << "\n";
-    } else {
-      nlohmann::json j;
-      j["site"] = site.describe();
-      if (!spec.comune.empty()) {
-        j["comune"] = spec.comune;
-        j["lat"] = *spec.lat;
-        j["lon"] = *spec.lon;
-        j["note"] = comune_note();
-      }
-      j["VR"] = site.VR();
-      nlohmann::json arr = nlohmann::json::array();
-      for (std::size_t i = 0; i < cols.size(); ++i) arr.push_back(column_json(cols[i], spectra[i], periods, a.q));
-      j["limit_states"] = arr;
-      std::cout << stamp_version(j).dump(2) << "\n";
-    }
+    nlohmann::json j = spectrum_json(site, cols, a.damping, periods, a.q);
+    std::cout << stamp_version(j).dump(2) << "\n";
   } else {
     print_table(site, cols, spectra, periods, a.q);
   }

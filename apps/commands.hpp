@@ -4,6 +4,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <assess/support/version.hpp>
 #include <nlohmann/json.hpp>
 
 #include <string>
@@ -27,17 +28,6 @@ void add_records_command(CLI::App& app);    // cmd_records.cpp
 /// Exit code for invalid input (InputError) and for a failed check of the
 /// command line.
 inline constexpr int exit_input_error = 2;
-
-/// Version of the JSON documents printed by --json (bumped when a key changes
-/// meaning or disappears; new keys do not bump it).
-inline constexpr int json_schema_version = 1;
-
-/// Every --json document carries the tool's version and its schema version.
-inline nlohmann::json& stamp_version(nlohmann::json& j) {
-  j["assess_version"] = ASSESS_VERSION_STRING;
-  j["schema_version"] = json_schema_version;
-  return j;
-}
 
 /// Prints warnings on stderr, one per line ("assess: warning: ...").
 void print_warnings(const std::vector<std::string>& warnings);

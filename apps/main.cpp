@@ -4,6 +4,7 @@
 #include <assess/support/error.hpp>
 #include <assess/support/json_input.hpp>
 #include <assess/support/number_rules.hpp>
+#include <assess/support/version.hpp>
 
 #include <algorithm>
 #include <vector>
@@ -57,30 +58,6 @@ void assess::cli::check_number_option(const char* option, double value, const as
 }
 
 namespace {
-
-// The last guard on a message (issue 31: "-nan" and "TR = inf" in messages):
-// a word inf, -inf, nan or -nan, as std::to_string and iostreams print a
-// number that is not finite, reads "infinite" / "not a number". The messages
-// format their numbers with number_for_message; this catches one that did not.
-std::string plain_numbers(const std::string& m) {
-  std::string out;
-  auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '/' || c == '\''; };
-  for (std::size_t i = 0; i < m.size();) {
-    const bool start = i == 0 || !word(m[i - 1]);
-    const std::size_t sign = (m[i] == '-') ? 1 : 0;
-    if (start && i + sign + 3 <= m.size()) {
-      const std::string w = m.substr(i + sign, 3);
-      const bool end = i + sign + 3 == m.size() || !word(m[i + sign + 3]);
-      if (end && (w == "inf" || w == "nan")) {
-        out += w == "nan" ? "not a number" : (sign ? "minus infinite" : "infinite");
-        i += sign + 3;
-        continue;
-      }
-    }
-    out += m[i++];
-  }
-  return out;
-}
 
 // The name among `names` nearest to `typed` (Levenshtein, json_input.hpp), if near enough to be a typo.
 std::string nearest(const std::string& typed, const std::vector<std::string>& names) {
@@ -139,7 +116,7 @@ void check_words(CLI::App& app, int argc, char** argv) {
 }  // namespace
 
 void assess::cli::print_warnings(const std::vector<std::string>& warnings) {
-  for (const std::string& w : warnings) std::cerr << "assess: warning: " << plain_numbers(w) << "\n";
+  for (const std::string& w : warnings) std::cerr << "assess: warning: " << assess::plain_numbers(w) << "\n";
 }
 
 int main(int argc, char** argv) {
@@ -149,7 +126,7 @@ int main(int argc, char** argv) {
   // "Usage: assess ..." whatever path the program was started from (help2man
   // builds the man page from this text).
   app.name("assess");
-  app.set_version_flag("--version", std::string("assess ") + ASSESS_VERSION_STRING);
+  app.set_version_flag("--version", std::string("assess ") + assess::version());
   app.require_subcommand(1);
   assess::cli::add_spectrum_command(app);
   assess::cli::add_kinematic_command(app);
@@ -198,11 +175,11 @@ int main(int argc, char** argv) {
     const int rc = app.exit(e);
     return rc == 0 ? 0 : assess::cli::exit_input_error;
   } catch (const assess::InputError& e) {
-    std::cerr << "assess: error: " << plain_numbers(e.what()) << "\n";
+    std::cerr << "assess: error: " << assess::plain_numbers(e.what()) << "\n";
     return assess::cli::exit_input_error;
   } catch (const assess::SystemError& e) {
     // A failure of the machine (disk full, I/O error): exit status 1.
-    std::cerr << "assess: error: " << plain_numbers(e.what()) << "\n";
+    std::cerr << "assess: error: " << assess::plain_numbers(e.what()) << "\n";
     return 1;
   } catch (const std::bad_alloc&) {
     std::cerr << "assess: error: out of memory (the input asks for more memory than the machine has)\n";

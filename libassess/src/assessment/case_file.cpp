@@ -12,6 +12,7 @@
 #include "assessment/plausibility.hpp"
 #include "assess/support/error.hpp"
 #include "assess/support/json_input.hpp"
+#include "assess/assessment/site_block.hpp"
 #include "assess/support/number_rules.hpp"
 #include "assess/support/units.hpp"
 
@@ -1162,5 +1163,7 @@ KinematicCaseResult run_kinematic_case(const CaseFile& c, bool indices) {
   out.verdict = build_verdict(all, c.method);
   return out;
 }
+
+SiteSpec parse_site_block(const nlohmann::json& site, const std::string& file) { return parse_site(JsonNode(site, file)); }
 
 }  // namespace assess

@@ -441,6 +441,27 @@ Record read_plain_record(const std::string& path, AccelerationUnit unit) {
   return parse_plain_record_text(text, path, dt, unit);
 }
 
+Record make_plain_record(const double* values, std::size_t n, double dt_s, AccelerationUnit unit,
+                         const std::string& name) {
+  check_dt_range(dt_s, name, "time step");
+  if (n < 2) throw InputError(name + ": a record needs at least 2 values");
+  Record r;
+  r.format = "plain";
+  r.dt = dt_s;
+  r.name = name;
+  const double factor = to_m_s2(unit);
+  r.acc.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = values[i] * factor;
+    if (!std::isfinite(a))
+      throw InputError(name + ": value " + std::to_string(i) + " is " + show(values[i]) +
+                       (std::isfinite(values[i]) ? ", which overflows once converted to m/s^2" : "") +
+                       " (expected a finite acceleration)");
+    r.acc.push_back(a);
+  }
+  return r;
+}
+
 double scale_factor_to_pga(const Record& record, double target_pga_m_s2) {
   if (!(std::isfinite(target_pga_m_s2) && target_pga_m_s2 > 0.0))
     throw InputError("target PGA must be positive (m/s^2)");

@@ -1,0 +1,130 @@
+// rocking_request.cpp: the options of one rocking analysis checked and turned
+// into a model, a record and analysis options (dynamics/rocking_request.hpp);
+// moved here from the command line (apps/cmd_rocking.cpp) for issue 40, so
+// that the Python module shares them.
+#include "assess/dynamics/rocking_request.hpp"
+
+#include "assess/dynamics/analysis_limits.hpp"
+#include "assess/records/record_io.hpp"
+#include "assess/support/error.hpp"
+#include "assess/support/units.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace assess {
+namespace {
+
+// An option within [lo, hi] (the bounds of analysis_limits.hpp), else an error naming it and its unit.
+void check_range(const char* option, double v, double lo, double hi, const char* unit) {
+  if (std::isfinite(v) && v >= lo && v <= hi) return;
+  char buf[200];
+  if (std::isnan(v)) std::snprintf(buf, sizeof buf, "%s must lie in [%g, %g] %s, got not-a-number", option, lo, hi, unit);
+  else std::snprintf(buf, sizeof buf, "%s must lie in [%g, %g] %s, got %g", option, lo, hi, unit, v);
+  throw InputError(buf);
+}
+
+// A plain record: --dt (and --unit, default g) for one column; --unit alone
+// for two columns (time, acceleration), dt read from the time column (the
+// same readers as the case files' {"file", "dt", "unit"}); values in memory
+// with dt (and unit, default g).
+Record request_record(const RockingRequest& a) {
+  if (a.values) {
+    if (!a.dt) throw InputError("--dt: the time step (s) of the record's values is required");
+    return make_plain_record(a.values->data, a.values->size, *a.dt,
+                             parse_acceleration_unit(a.unit.empty() ? "g" : a.unit), a.record);
+  }
+  if (a.dt) return read_plain_record(a.record, *a.dt, parse_acceleration_unit(a.unit.empty() ? "g" : a.unit));
+  if (a.unit.empty()) return read_record(a.record);
+  // --unit without --dt: a plain file of two columns (time in s,
+  // acceleration); the reader names the file, the line and what is wrong
+  // (a decreasing time is the file's fault, not --unit's). A record file
+  // with a header (AT2, ESM, .cor.acc) gives its own unit: --unit is wrong.
+  try {
+    return read_plain_record(a.record, parse_acceleration_unit(a.unit));
+  } catch (const InputError& plain) {
+    std::string format;
+    try {
+      format = read_record(a.record).format;
+    } catch (const InputError&) {
+      throw plain;
+    }
+    throw InputError("--unit applies only to a plain record file: " + a.record + " is a " + format +
+                     " record, whose header gives the unit and the time step (leave --unit out)");
+  }
+}
+
+}  // namespace
+
+Restitution parse_restitution_option(const std::string& text, bool one_sided) {
+  if (text.empty()) return one_sided ? Restitution::one_sided_theory() : Restitution::housner();
+  if (text == "housner") return Restitution::housner();
+  if (text == "one-sided-theory") return Restitution::one_sided_theory();
+  if (text == "none") return Restitution::none();
+  char* end = nullptr;
+  const double e = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0')
+    throw InputError("--restitution expects a number in [-1, 1], 'housner', 'one-sided-theory' or 'none', got '" +
+                     text + "'");
+  return Restitution::given(e);
+}
+
+RockingModel rocking_model_of(const RockingRequest& a) {
+  if (a.model != "smooth" && a.model != "rigid") throw InputError("--model must be 'smooth' or 'rigid'");
+  check_range("--unit-weight", a.unit_weight_kN, 0.0, limits::unit_weight_max_N_m3 / units::kN, "kN/m^3");
+  if (a.k_kN && a.model == "smooth")
+    check_range("--k", *a.k_kN, 0.0, limits::winkler_k_max_N_m3 / units::kN,
+                "kN/m^3 (a stiffer base is rigid: use --model rigid)");
+  const RockingBody body = RockingBody::rectangle(a.thickness, a.height, a.unit_weight_kN * units::kN);
+  Foundation foundation = Foundation::rigid();
+  if (a.model == "smooth") {
+    if (!a.k_kN) throw InputError("--k (Winkler modulus, kN/m^3) is required for the smooth model");
+    if (!(*a.k_kN > 0.0 && std::isfinite(*a.k_kN))) throw InputError("--k must be a positive number (kN/m^3)");
+    foundation = Foundation::winkler(*a.k_kN * units::kN);
+  } else if (a.k_kN) {
+    throw InputError("--k applies only to --model smooth");
+  }
+  const Sidedness sided = a.one_sided ? Sidedness::one_sided : Sidedness::two_sided;
+  return RockingModel(body, foundation, sided, parse_restitution_option(a.restitution, a.one_sided));
+}
+
+RockingSetup prepare_rocking(const RockingRequest& a) {
+  if (a.model != "smooth" && a.model != "rigid") throw InputError("--model must be 'smooth' or 'rigid'");
+  check_range("--unit-weight", a.unit_weight_kN, 0.0, limits::unit_weight_max_N_m3 / units::kN, "kN/m^3");
+  check_range("--rtol", a.rtol, limits::rel_tol_min, limits::rel_tol_max, "(-)");
+  check_range("--atol", a.atol, limits::abs_tol_min, limits::abs_tol_max, "rad, rad/s");
+  check_range("--tail", a.tail, 0.0, limits::tail_max_s, "s");
+  if (!(std::isfinite(a.scale) && a.scale > 0.0 && a.scale <= limits::scale_max))
+    check_range("--scale", a.scale, 0.0, limits::scale_max, "(-, > 0)");
+  if (a.dt && !(std::isfinite(*a.dt) && *a.dt > 0.0))
+    throw InputError(std::isnan(*a.dt) ? std::string("--dt: time step must be positive (s), got not-a-number")
+                                       : "--dt: time step must be positive (s), got " + std::to_string(*a.dt));
+  RockingModel model = rocking_model_of(a);
+  Record record = request_record(a);
+  RockingOptions opt;
+  opt.scale = a.scale;
+  opt.reverse = a.reverse;
+  opt.tail_s = a.tail;
+  opt.rel_tol = a.rtol;
+  opt.abs_tol = a.atol;
+  if (a.overturn_at == "theta_u") opt.overturn = OverturnCriterion::theta_u;
+  else if (a.overturn_at == "half_pi") opt.overturn = OverturnCriterion::half_pi;
+  else throw InputError("--overturn-at must be 'theta_u' or 'half_pi'");
+  const auto stepper = parse_stepper(a.stepper);
+  if (!stepper) throw InputError("--stepper must be rk8pd, rkck or rkf45");
+  opt.stepper = *stepper;
+  opt.record_history = a.history;
+  return RockingSetup{std::move(model), std::move(record), opt};
+}
+
+RockingResult run_rocking(const RockingSetup& s) {
+  RockingResult r = analyse(s.model, s.record, s.options);
+  // A failed analysis is reported as a failure, never with its numbers as a result.
+  if (!succeeded(r))
+    throw InputError(std::string("the analysis failed (termination ") + to_string(r.termination) + " at t = " +
+                     std::to_string(r.t_end) + " s): " + r.message + "; no result is reported");
+  return r;
+}
+
+}  // namespace assess
