@@ -6,6 +6,7 @@
 #include <assess/assessment/case_file.hpp>
 #include <assess/assessment/mechanism_dynamics.hpp>
 #include <assess/support/error.hpp>
+#include <assess/support/number_rules.hpp>
 #include <assess/support/output_file.hpp>
 #include <assess/records/record_io.hpp>
 #include <assess/dynamics/analysis_limits.hpp>
@@ -45,14 +46,17 @@ struct RockingArgs {
   double tail = RockingOptions{}.tail_s;  // the one default of every dynamic command
 };
 
+// The time step of a plain record given on the command line (record_io.hpp's range).
+constexpr NumberRule record_dt_rule{"s", record_dt_min_s, record_dt_max_s, false, false,
+                                    "strong-motion records are sampled at 0.001-0.04 s"};
+
 Restitution parse_restitution(const std::string& text, bool one_sided) {
   if (text.empty()) return one_sided ? Restitution::one_sided_theory() : Restitution::housner();
   if (text == "housner") return Restitution::housner();
   if (text == "one-sided-theory") return Restitution::one_sided_theory();
   if (text == "none") return Restitution::none();
-  char* end = nullptr;
-  const double e = std::strtod(text.c_str(), &end);
-  if (end == text.c_str() || *end != '\0')
+  double e = 0.0;
+  if (!decimal_number_violation(text, e).empty())
     throw InputError("--restitution expects a number in [-1, 1], 'housner', 'one-sided-theory' or 'none', got '" +
                      text + "'");
   return Restitution::given(e);
@@ -62,33 +66,13 @@ nlohmann::json optional_json(const std::optional<double>& v) {
   return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
 }
 
-// An option within [lo, hi] (the bounds of analysis_limits.hpp), else an error naming it and its unit.
-void check_range(const char* option, double v, double lo, double hi, const char* unit) {
-  if (std::isfinite(v) && v >= lo && v <= hi) return;
-  char buf[200];
-  if (std::isnan(v)) std::snprintf(buf, sizeof buf, "%s must lie in [%g, %g] %s, got not-a-number", option, lo, hi, unit);
-  else std::snprintf(buf, sizeof buf, "%s must lie in [%g, %g] %s, got %g", option, lo, hi, unit, v);
-  throw InputError(buf);
-}
-
 void run(const RockingArgs& a) {
+  // Every number option's range is checked as the command line is parsed (add_rocking_command).
   if (a.model != "smooth" && a.model != "rigid") throw InputError("--model must be 'smooth' or 'rigid'");
-  check_range("--unit-weight", a.unit_weight_kN, 0.0, limits::unit_weight_max_N_m3 / units::kN, "kN/m^3");
-  check_range("--rtol", a.rtol, limits::rel_tol_min, limits::rel_tol_max, "(-)");
-  check_range("--atol", a.atol, limits::abs_tol_min, limits::abs_tol_max, "rad, rad/s");
-  check_range("--tail", a.tail, 0.0, limits::tail_max_s, "s");
-  if (!(std::isfinite(a.scale) && a.scale > 0.0 && a.scale <= limits::scale_max))
-    check_range("--scale", a.scale, 0.0, limits::scale_max, "(-, > 0)");
-  if (a.dt_given && !(std::isfinite(a.dt) && a.dt > 0.0))
-    throw InputError(std::isnan(a.dt) ? std::string("--dt: time step must be positive (s), got not-a-number")
-                                      : "--dt: time step must be positive (s), got " + std::to_string(a.dt));
-  if (!std::isnan(a.k_kN) && a.model == "smooth")
-    check_range("--k", a.k_kN, 0.0, limits::winkler_k_max_N_m3 / units::kN, "kN/m^3 (a stiffer base is rigid: use --model rigid)");
   const RockingBody body = RockingBody::rectangle(a.thickness, a.height, a.unit_weight_kN * units::kN);
   Foundation foundation = Foundation::rigid();
   if (a.model == "smooth") {
     if (std::isnan(a.k_kN)) throw InputError("--k (Winkler modulus, kN/m^3) is required for the smooth model");
-    if (!(a.k_kN > 0.0 && std::isfinite(a.k_kN))) throw InputError("--k must be a positive number (kN/m^3)");
     foundation = Foundation::winkler(a.k_kN * units::kN);
   } else if (!std::isnan(a.k_kN)) {
     throw InputError("--k applies only to --model smooth");
@@ -231,10 +215,7 @@ void run_case(const CaseDynamicArgs& a) {
     if (a.model != "smooth" && a.model != "rigid") throw InputError("--model must be 'smooth' or 'rigid'");
     spec.smooth = a.model == "smooth";
   }
-  if (!std::isnan(a.k_kN)) {
-    if (!(a.k_kN > 0.0 && std::isfinite(a.k_kN))) throw InputError("--k must be a positive number (kN/m^3)");
-    spec.k = a.k_kN * units::kN;
-  }
+  if (!std::isnan(a.k_kN)) spec.k = a.k_kN * units::kN;
   if (spec.smooth && !(spec.k > 0.0))
     throw InputError("--k (Winkler modulus, kN/m^3) is required for the smooth model (or give /dynamic/k in the case)");
   if (!a.restitution.empty()) {
@@ -333,21 +314,22 @@ void add_case_dynamic_command(CLI::App& app) {
   cmd->add_option("case", a->file, "case file (JSON, see docs/user/case-file.md)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--record", a->record, "accelerogram file (PEER AT2, ESM/ITACA ASCII, .cor.acc; plain with --dt)")
       ->required();
-  cmd->add_option("--dt", a->dt, "time step of a plain record file (s)");
+  with_rule(cmd->add_option("--dt", a->dt, "time step of a plain record file (s)"), record_dt_rule);
   cmd->add_option("--unit", a->unit, "unit of a plain record file: g, m/s^2, cm/s^2 (default g)");
-  cmd->add_option("--scale", a->scale, "factor on the record (default 1)");
+  with_rule(cmd->add_option("--scale", a->scale, "factor on the record (default 1)"), limits::option::scale);
   cmd->add_flag("--reverse", a->reverse, "flip the record's polarity");
   cmd->add_flag("--floor-record", a->floor, "the record is the floor motion at the mechanism's base (not filtered)");
   cmd->add_option("--model", a->model, "smooth or rigid (default: the case's /dynamic/model, else rigid)");
-  cmd->add_option("--k", a->k_kN, "Winkler modulus (kN/m^3), smooth model");
+  with_rule(cmd->add_option("--k", a->k_kN, "Winkler modulus (kN/m^3), smooth model"), limits::option::winkler_k_kN_m3);
   cmd->add_option("--restitution", a->restitution,
                   "VALUE (chains: in [-1, 0]) | housner | one-sided-theory | none (one block)");
   cmd->add_option("--history", a->history, "write t, q, q' to this CSV file");
   cmd->add_flag("--json", a->json, "print the results as one JSON object");
   cmd->add_option("--stepper", a->stepper, "rk8pd (default), rkck or rkf45");
-  cmd->add_option("--rtol", a->rtol, "relative tolerance per step (default 1e-7)");
-  cmd->add_option("--atol", a->atol, "absolute tolerance per step, rad and rad/s (default 1e-9)");
-  cmd->add_option("--tail", a->tail, "cap on the free motion after the whole record (s, default 30): it ends earlier at rest or when the energy left cannot reach the peak");
+  with_rule(cmd->add_option("--rtol", a->rtol, "relative tolerance per step (default 1e-7)"), limits::option::rel_tol);
+  with_rule(cmd->add_option("--atol", a->atol, "absolute tolerance per step, rad and rad/s (default 1e-9)"),
+            limits::option::abs_tol);
+  with_rule(cmd->add_option("--tail", a->tail, "cap on the free motion after the whole record (s, default 30): it ends earlier at rest or when the energy left cannot reach the peak"), limits::option::tail_s);
   cmd->callback([a] { run_case(*a); });
 }
 
@@ -355,26 +337,29 @@ void add_rocking_command(CLI::App& app) {
   auto args = std::make_shared<RockingArgs>();
   auto* cmd = app.add_subcommand("rocking", "Non-linear rocking of a wall under an accelerogram (rigid or smooth block)");
   cmd->add_option("--model", args->model, "smooth (Winkler foundation) or rigid (Housner)")->required();
-  cmd->add_option("--thickness", args->thickness, "full thickness 2b (m)")->required();
-  cmd->add_option("--height", args->height, "full height 2h (m)")->required();
-  cmd->add_option("--unit-weight", args->unit_weight_kN, "unit weight (kN/m^3)")->required();
-  cmd->add_option("--k", args->k_kN, "Winkler modulus (kN/m^3), smooth model only");
+  with_rule(cmd->add_option("--thickness", args->thickness, "full thickness 2b (m)"), rules::dimension_m)->required();
+  with_rule(cmd->add_option("--height", args->height, "full height 2h (m)"), rules::dimension_m)->required();
+  with_rule(cmd->add_option("--unit-weight", args->unit_weight_kN, "unit weight (kN/m^3)"), rules::unit_weight_kN_m3)
+      ->required();
+  with_rule(cmd->add_option("--k", args->k_kN, "Winkler modulus (kN/m^3), smooth model only"),
+            limits::option::winkler_k_kN_m3);
   cmd->add_option("--restitution", args->restitution,
                   "VALUE in [-1, 1] | housner | one-sided-theory | none (default: housner, one-sided-theory if --one-sided)");
   cmd->add_flag("--one-sided", args->one_sided, "one-sided rocking (facade against transverse walls)");
   cmd->add_option("--record", args->record, "accelerogram file (PEER AT2, ESM/ITACA ASCII, .cor.acc; plain with --dt)")
       ->required();
-  cmd->add_option("--dt", args->dt, "time step of a plain record file (s)");
+  with_rule(cmd->add_option("--dt", args->dt, "time step of a plain record file (s)"), record_dt_rule);
   cmd->add_option("--unit", args->unit, "unit of a plain record file: g, m/s^2, cm/s^2 (default g)");
-  cmd->add_option("--scale", args->scale, "factor on the record (default 1)");
+  with_rule(cmd->add_option("--scale", args->scale, "factor on the record (default 1)"), limits::option::scale);
   cmd->add_flag("--reverse", args->reverse, "flip the record's polarity");
   cmd->add_option("--overturn-at", args->overturn_at, "theta_u (default) or half_pi");
   cmd->add_option("--history", args->history, "write t, theta, theta' to this CSV file");
   cmd->add_flag("--json", args->json, "print the results as one JSON object");
   cmd->add_option("--stepper", args->stepper, "rk8pd (default), rkck or rkf45");
-  cmd->add_option("--rtol", args->rtol, "relative tolerance per step (default 1e-7)");
-  cmd->add_option("--atol", args->atol, "absolute tolerance per step, rad and rad/s (default 1e-9)");
-  cmd->add_option("--tail", args->tail, "cap on the free motion after the whole record (s, default 30): it ends earlier at rest or when the energy left cannot reach the peak");
+  with_rule(cmd->add_option("--rtol", args->rtol, "relative tolerance per step (default 1e-7)"), limits::option::rel_tol);
+  with_rule(cmd->add_option("--atol", args->atol, "absolute tolerance per step, rad and rad/s (default 1e-9)"),
+            limits::option::abs_tol);
+  with_rule(cmd->add_option("--tail", args->tail, "cap on the free motion after the whole record (s, default 30): it ends earlier at rest or when the energy left cannot reach the peak"), limits::option::tail_s);
   cmd->callback([args, cmd] {
     args->dt_given = cmd->count("--dt") > 0;
     run(*args);

@@ -50,23 +50,32 @@ void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_tex
 // file already read once, so the same checks).
 std::string read_text(const std::string& path) { return read_input_file(path, input_kinds::case_file); }
 
-// Refuses the outputs before a long run rather than after it: an --html or
-// --pdf, --docx or --txt that names an input of the run (the case file itself), a directory,
-// a link out of its folder (output_file.hpp; written the same way at the end).
-void check_outputs(const RunArgs& a) {
-  if (!a.html.empty()) check_output_file(a.html, "--html");
-  if (!a.pdf.empty()) check_output_file(a.pdf, "--pdf");
-  if (!a.docx.empty()) check_output_file(a.docx, "--docx");
-  if (!a.txt.empty()) check_output_file(a.txt, "--txt");
-  if (!a.html.empty() && a.html == a.pdf) throw InputError("--html and --pdf name the same file '" + a.html + "'");
+// Refuses the outputs before a long run rather than after it: an --html,
+// --pdf, --docx or --txt that names an input of the run (the case file
+// itself), a directory, a link out of its folder, or another output of the
+// run, the expanded cases included (output_file.hpp: by file identity;
+// written the same way at the end).
+void check_outputs(const RunArgs& a, const std::vector<OutputTarget>& more = {}) {
+  std::vector<OutputTarget> all;
+  for (const auto& [path, what] : {std::pair<const std::string&, const char*>{a.html, "--html"}, {a.pdf, "--pdf"},
+                                   {a.docx, "--docx"}, {a.txt, "--txt"}})
+    if (!path.empty()) all.push_back({path, what, ""});
+  all.insert(all.end(), more.begin(), more.end());
+  check_output_files(all);
+}
+
+// The expanded cases of --expand DIR (DIR created if needed), as outputs.
+std::vector<OutputTarget> expanded_outputs(const RunArgs& a, const std::vector<const BuildingMechanism*>& ms) {
+  make_output_folder(a.expand, "--expand");
+  std::vector<OutputTarget> out;
+  for (const BuildingMechanism* m : ms) out.push_back({a.expand + "/" + m->id + ".json", "--expand " + a.expand, a.expand});
+  return out;
 }
 
 // --expand DIR: each expanded case as DIR/<id>.json, written whole through
 // write_output_file: never over the building file or another input of the
 // run, never through a link out of DIR.
 void write_expanded(const RunArgs& a, const BuildingCase& b, const std::vector<const BuildingMechanism*>& ms) {
-  make_output_folder(a.expand, "--expand");
-  for (const BuildingMechanism* m : ms) check_output_file(a.expand + "/" + m->id + ".json", "--expand " + a.expand, a.expand);
   for (const BuildingMechanism* m : ms)
     write_output_file(a.expand + "/" + m->id + ".json", standalone_case(b, *m).dump(2) + "\n", "--expand " + a.expand,
                       a.expand);
@@ -80,7 +89,10 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
   if (!a.mechanism.empty()) {
     const BuildingMechanism& m = find_mechanism(bc, a.mechanism);
     // --expand with --mechanism: that mechanism's expanded case only.
-    if (!a.expand.empty()) write_expanded(a, bc, {&m});
+    if (!a.expand.empty()) {
+      check_outputs(a, expanded_outputs(a, {&m}));
+      write_expanded(a, bc, {&m});
+    }
     // Its errors and warnings name the building file's paths and the mechanism.
     const MessageMap map = [&](const std::string& text) { return building_path_message(bc, m, text); };
     try {
@@ -92,10 +104,11 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
     return;
   }
   if (!a.expand.empty()) {
-    // Checked before the run, written after it (with the shared selections' ranges).
-    make_output_folder(a.expand, "--expand");
-    for (const BuildingMechanism& m : bc.mechanisms)
-      check_output_file(a.expand + "/" + m.id + ".json", "--expand " + a.expand, a.expand);
+    // Checked before the run, with the reports (one file each), written after it
+    // (with the shared selections' ranges).
+    std::vector<const BuildingMechanism*> all;
+    for (const BuildingMechanism& m : bc.mechanisms) all.push_back(&m);
+    check_outputs(a, expanded_outputs(a, all));
   }
   FacadeOptions opt;
   opt.keep_going = a.keep_going;
