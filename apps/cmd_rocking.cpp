@@ -211,16 +211,19 @@ void run_case(const CaseDynamicArgs& a) {
       d["records"] = nlohmann::json::array({nlohmann::json{{"file", "(--record)"}}});
     spec = parse_dynamic(d, kase.file, ".");
   }
+  // Errors about a value the command line gave name its option, not the case's JSON path.
   if (!a.model.empty()) {
     if (a.model != "smooth" && a.model != "rigid") throw InputError("--model must be 'smooth' or 'rigid'");
     spec.smooth = a.model == "smooth";
+    spec.model_from = "--model";
   }
-  if (!std::isnan(a.k_kN)) spec.k = a.k_kN * units::kN;
+  if (!std::isnan(a.k_kN)) spec.k = a.k_kN * units::kN, spec.k_from = "--k";
   if (spec.smooth && !(spec.k > 0.0))
     throw InputError("--k (Winkler modulus, kN/m^3) is required for the smooth model (or give /dynamic/k in the case)");
   if (!a.restitution.empty()) {
     spec.restitutions = {parse_restitution(a.restitution, spec.sidedness == Sidedness::one_sided)};
     spec.restitution_given = true;
+    spec.restitution_from = "--restitution";
   } else if (spec.restitutions.empty()) {
     spec.restitutions = {spec.sidedness == Sidedness::one_sided ? Restitution::one_sided_theory() : Restitution::housner()};
   }

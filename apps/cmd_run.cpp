@@ -92,6 +92,8 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
     if (!a.expand.empty()) {
       check_outputs(a, expanded_outputs(a, {&m}));
       write_expanded(a, bc, {&m});
+    } else {
+      check_outputs(a);
     }
     // Its errors and warnings name the building file's paths and the mechanism.
     const MessageMap map = [&](const std::string& text) { return building_path_message(bc, m, text); };
@@ -103,12 +105,14 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
     if (!a.expand.empty() && !a.json) std::cout << "\nexpanded case written to " << a.expand << "/" << m.id << ".json\n";
     return;
   }
+  // Checked before the run, with the expanded cases (one file each), written
+  // after it (with the shared selections' ranges).
   if (!a.expand.empty()) {
-    // Checked before the run, with the reports (one file each), written after it
-    // (with the shared selections' ranges).
     std::vector<const BuildingMechanism*> all;
     for (const BuildingMechanism& m : bc.mechanisms) all.push_back(&m);
     check_outputs(a, expanded_outputs(a, all));
+  } else {
+    check_outputs(a);
   }
   FacadeOptions opt;
   opt.keep_going = a.keep_going;
@@ -141,8 +145,9 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
 
 void run(const RunArgs& a) {
   const nlohmann::json doc = read_json_file(a.file, input_kinds::case_file);
-  check_outputs(a);
+  // A building's outputs are checked with its expanded cases, once the file is parsed (run_building).
   if (is_building_document(doc)) return run_building(a, doc);
+  check_outputs(a);
   if (!a.mechanism.empty() || !a.expand.empty())
     throw InputError(a.file + ": --mechanism and --expand apply to a building case (a file with \"walls\"), "
                      "not to a single-mechanism case");

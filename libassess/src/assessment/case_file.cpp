@@ -192,6 +192,8 @@ RoofSpec parse_roof(const JsonNode& r, double top_thickness) {
 }
 
 // Rules of the issue-33 mechanisms' quantities that number_rules.hpp has no name for.
+// The caps of a horizontal flexure (docs/reliability.md, "Bounds and limits").
+constexpr std::size_t flexure_strips_max = 20, flexure_openings_max = 6;
 constexpr NumberRule moment_kNm{"kN m", 0.0, 1e6, false, false, "0 to 1 GN m"};
 constexpr NumberRule line_load_kN_m{"kN/m", 0.0, 1e6, false, false, "0 to 1 GN per metre of wall"};
 
@@ -223,14 +225,19 @@ MechanismSet parse_horizontal_flexure(const JsonNode& m, double FC) {
     sup.fail("expected \"rigid\": true or at least one of \"tie\" (kN), \"side_wall_friction\" with "
              "\"side_wall_load\" (kN), \"restraint\" (kN): without a restraint no horizontal arch forms");
   p.ring_beam_moment = m.number_or("ring_beam_moment", 0.0, moment_kNm) * kN;
-  // Bounds that keep a run short whatever the input (docs/reliability.md): each strip is a candidate whose
-  // middle hinge is searched over a chain of 2 blocks per opening.
-  if (m.at("strips").value().is_array() && m.at("strips").value().size() > 50)
-    m.at("strips").fail("at most 50 strips (one candidate each)");
+  // Bounds that keep a run short whatever the input (docs/reliability.md, "Round five"): each strip is a
+  // candidate whose chain has 2 blocks per opening, and a kinematic analysis grows with their square. At
+  // the caps (20 strips of 6 openings, 200 search points) a mechanism takes 0.2-0.3 s of CPU; at 50 strips
+  // of 20 openings it took 57 s (issue 39; 4 s with the closed-form search).
+  if (m.at("strips").value().is_array() && m.at("strips").value().size() > flexure_strips_max)
+    m.at("strips").fail("at most " + std::to_string(flexure_strips_max) + " strips (one candidate each: one per half "
+                        "metre of a 10 m wall)");
   for (const JsonNode& st : m.array("strips", 1)) {
     st.allow_only({"base_z", "height", "carried_weight", "openings", "middle_hinge"});
-    if (st.find("openings") && st.at("openings").value().is_array() && st.at("openings").value().size() > 20)
-      st.at("openings").fail("at most 20 openings per strip");
+    if (st.find("openings") && st.at("openings").value().is_array() &&
+        st.at("openings").value().size() > flexure_openings_max)
+      st.at("openings").fail("at most " + std::to_string(flexure_openings_max) + " openings per strip (the windows "
+                             "of a span between two transverse walls; each adds two blocks to the strip's chain)");
     HorizontalStrip s;
     s.base_z = st.number_or("base_z", 0.0, rules::offset_m);
     s.height = st.number("height", rules::dimension_m);

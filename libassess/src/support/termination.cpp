@@ -94,9 +94,15 @@ void install_termination_handling() {
     // A write beyond `ulimit -f` then fails with EFBIG (output_file.cpp: a
     // full disk), instead of SIGXFSZ killing the process mid-write.
     std::signal(SIGXFSZ, SIG_IGN);
+    // A signal ignored when the tool started stays ignored (`nohup assess ...`:
+    // SIGHUP; a background job of a non-interactive shell: SIGINT).
     sigset_t set;
     sigemptyset(&set);
-    for (int s : handled_signals) sigaddset(&set, s);
+    for (int s : handled_signals) {
+      struct sigaction old {};
+      if (::sigaction(s, nullptr, &old) == 0 && old.sa_handler == SIG_IGN) continue;
+      sigaddset(&set, s);
+    }
     ::pthread_sigmask(SIG_BLOCK, &set, nullptr);
     std::thread(watch, set).detach();
   });

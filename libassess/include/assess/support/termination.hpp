@@ -20,8 +20,9 @@
 namespace assess {
 
 /// Blocks SIGINT, SIGTERM and SIGHUP in the calling thread (and so in every
-/// thread it starts later) and starts the watcher thread described above;
-/// ignores SIGXFSZ. Call once, from main, before any other thread starts.
+/// thread it starts later) and starts the watcher thread described above; a
+/// signal ignored when the process started (`nohup`) stays ignored. Ignores
+/// SIGXFSZ. Call once, from main, before any other thread starts.
 void install_termination_handling();
 
 /// While set (non-null), the first SIGINT or SIGTERM sets `*flag` instead of
