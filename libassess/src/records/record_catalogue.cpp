@@ -25,6 +25,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 namespace assess {
 
@@ -296,10 +297,17 @@ RecordCatalogue catalogue_from_metadata(const std::string& text, const std::stri
       throw InputError(where + ": " + err.what());
     }
     e.format = rec.format;
+    if (rec.acc.empty()) throw InputError(where + ": " + cat.directory + "/" + e.file + ": the record has no samples");
     e.npts = long(rec.size());
     e.dt_s = rec.dt;
     e.pga_g = round6(rec.pga() / units::g_n);
     e.significant_duration_s = round6(significant_duration(rec));
+    // What the build computes obeys the rules the catalogue is read with (parse_catalogue_text).
+    for (const auto& [v, rule, name] : {std::tuple<double, const NumberRule&, const char*>{e.pga_g, catalogue_rules::pga_g, "PGA"},
+                                        {e.significant_duration_s, catalogue_rules::significant_duration_s, "D5-95"}}) {
+      const std::string bad = number_rule_violation(v, rule);
+      if (!bad.empty()) throw InputError(where + ": " + cat.directory + "/" + e.file + ": its " + name + ": " + bad);
+    }
     std::string reason = cell("excluded_reason");
     std::vector<std::string> missing;
     if (!std::isfinite(e.Mw)) missing.push_back("Mw");

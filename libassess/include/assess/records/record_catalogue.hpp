@@ -110,7 +110,8 @@ inline constexpr NumberRule pulse_period_s{"s", 0.01, 100.0, false, false, "the 
 inline constexpr NumberRule plain_dt_s{"s", 1e-5, 1.0, false, false, "strong-motion records are sampled at 0.001-0.04 s"};
 inline constexpr NumberRule dt_s{"s", record_dt_min_s, record_dt_max_s, false, false, "the time step of any record"};
 inline constexpr NumberRule pga_g{"g", 0.0, 100.0, false, false, "the peak acceleration of a ground-motion record"};
-inline constexpr NumberRule significant_duration_s{"s", 0.0, 1e6, false, false, "D5-95 of a record"};
+inline constexpr NumberRule significant_duration_s{"s", 0.0, 1e10, false, false,
+                                                   "D5-95 of a record: at most 1e9 samples of 10 s"};
 /// Samples of a record file (the readers' limit, record_io.cpp).
 inline constexpr double npts_max = 1e9;
 }  // namespace catalogue_rules
