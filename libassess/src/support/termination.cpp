@@ -90,7 +90,7 @@ void watch(sigset_t set) {
 
 void install_termination_handling() {
   static std::once_flag once;
-  std::call_once(once, [] {
+  std::call_once(once, []() noexcept {
     // A write beyond `ulimit -f` then fails with EFBIG (output_file.cpp: a
     // full disk), instead of SIGXFSZ killing the process mid-write.
     std::signal(SIGXFSZ, SIG_IGN);
@@ -104,7 +104,12 @@ void install_termination_handling() {
       sigaddset(&set, s);
     }
     ::pthread_sigmask(SIG_BLOCK, &set, nullptr);
-    std::thread(watch, set).detach();
+    try {
+      std::thread(watch, set).detach();
+    } catch (...) {
+      // No thread to take them: the signals keep their default action.
+      ::pthread_sigmask(SIG_UNBLOCK, &set, nullptr);
+    }
   });
 }
 
