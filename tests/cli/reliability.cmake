@@ -231,6 +231,8 @@ assess_cli_error_test(rel5_catalogue_distance "catalogue_distance.json: /records
   records show RSN292_ITALY_A-STU270 --catalogue tests/data/hostile/catalogue_distance.json)
 assess_cli_error_test(rel5_catalogue_dt_zero "catalogue_dt_zero.json: /records/0/dt_s: value 0 out of range: expected in \\[1e-06, 10\\] s"
   records select --ag 0.25 --F0 2.4 --Tc-star 0.3 --catalogue tests/data/hostile/catalogue_dt_zero.json)
+assess_cli_error_test(rel5_record_header_escape "header_escape.AT2: the header's event: the text holds a control character \\(U\\+001B\\)"
+  rocking --model rigid --thickness 0.25 --height 3 --unit-weight 12 --record tests/data/hostile/header_escape.AT2)
 assess_cli_test(rel5_catalogue_ok ARGS records show RSN292_ITALY_A-STU270 --catalogue tests/data/hostile/catalogue_ok.json
   PASS "RSN292_ITALY_A-STU270 .*5 % spectrum")
 assess_cli_error_test(rel5_metadata_hex "metadata_hex_mw.csv:2 column Mw: must be a decimal number, got '0x1.bcp2' \\(a hexadecimal number\\)"
