@@ -55,11 +55,10 @@ std::string read_text(const std::string& path) { return read_input_file(path, in
 // itself), a directory, a link out of its folder, or another output of the
 // run, the expanded cases included (output_file.hpp: by file identity;
 // written the same way at the end).
+ReportFiles report_files(const RunArgs& a) { return {a.html, a.pdf, a.docx, a.txt}; }
+
 void check_outputs(const RunArgs& a, const std::vector<OutputTarget>& more = {}) {
-  std::vector<OutputTarget> all;
-  for (const auto& [path, what] : {std::pair<const std::string&, const char*>{a.html, "--html"}, {a.pdf, "--pdf"},
-                                   {a.docx, "--docx"}, {a.txt, "--txt"}})
-    if (!path.empty()) all.push_back({path, what, ""});
+  std::vector<OutputTarget> all = report_files(a).outputs();
   all.insert(all.end(), more.begin(), more.end());
   check_output_files(all);
 }
@@ -128,7 +127,7 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
     ReportOptions ro;
     ro.lang = lang;
     ro.case_text = read_text(a.file);
-    write_report_files(building_document(res, ro), {a.html, a.pdf, a.docx, a.txt});
+    write_report_files(building_document(res, ro), report_files(a));
   }
   if (a.json) {
     nlohmann::json j = building_json(res);
@@ -192,7 +191,7 @@ void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_tex
     ro.fragility = prob;
     if (ties) ro.ties = &*ties;
     ro.case_text = case_text;
-    write_report_files(facade_document(res, ro), {a.html, a.pdf, a.docx, a.txt});
+    write_report_files(facade_document(res, ro), report_files(a));
   }
   if (a.json) {
     nlohmann::json j = facade_json(res);
