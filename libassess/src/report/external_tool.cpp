@@ -19,7 +19,9 @@ TempDir::~TempDir() {
 }
 
 int run_program(const std::vector<std::string>& argv, const std::filesystem::path& log, int timeout_s) {
-  const ProgramResult r = assess::run_program(argv, log.string(), timeout_s);
+  // Its TMPDIR is the private temporary directory of its log: what it leaves
+  // there (Chromium's org.chromium.* when it is stopped) goes with it.
+  const ProgramResult r = assess::run_program(argv, log.string(), timeout_s, log.parent_path().string());
   if (!r.started) {
     if (r.start_error == ENOENT) return program_not_found;
     throw InputError("cannot start " + argv.front() + ": " + std::strerror(r.start_error));

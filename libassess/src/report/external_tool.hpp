@@ -33,7 +33,7 @@ inline constexpr int program_not_found = 127;
 inline constexpr int program_timed_out = 124;
 
 /// Runs `argv` (program and arguments) with `timeout_s` seconds, standard
-/// output and error to `log`. Returns its exit status: program_not_found,
+/// output and error to `log`, TMPDIR the folder of `log` (a TempDir). Returns its exit status: program_not_found,
 /// program_timed_out, 128 + N when signal N ended it. A program that cannot
 /// be started for another reason is an InputError naming it and the cause.
 int run_program(const std::vector<std::string>& argv, const std::filesystem::path& log, int timeout_s = 180);

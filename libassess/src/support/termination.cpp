@@ -152,7 +152,8 @@ void release_temporary(const std::string& path) {
   r.temporaries.erase(path);
 }
 
-ProgramResult run_program(const std::vector<std::string>& argv, const std::string& log_path, int timeout_s) {
+ProgramResult run_program(const std::vector<std::string>& argv, const std::string& log_path, int timeout_s,
+                          const std::string& tmpdir) {
   ProgramResult res;
   if (argv.empty()) return res;
   posix_spawn_file_actions_t fa;
@@ -175,12 +176,19 @@ ProgramResult run_program(const std::vector<std::string>& argv, const std::strin
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
+  // The environment, TMPDIR replaced when asked.
+  const std::string tmpdir_entry = "TMPDIR=" + tmpdir;
+  std::vector<char*> env;
+  for (char** e = environ; e && *e; ++e)
+    if (tmpdir.empty() || std::strncmp(*e, "TMPDIR=", 7) != 0) env.push_back(*e);
+  if (!tmpdir.empty()) env.push_back(const_cast<char*>(tmpdir_entry.c_str()));
+  env.push_back(nullptr);
   pid_t pid = -1;
   Registry& r = registry();
   {
     std::lock_guard<std::mutex> lock(r.mutex);
     // Started and registered together: a signal stops it, or it never starts.
-    const int err = r.terminating ? EINTR : ::posix_spawnp(&pid, argv[0].c_str(), &fa, &at, args.data(), environ);
+    const int err = r.terminating ? EINTR : ::posix_spawnp(&pid, argv[0].c_str(), &fa, &at, args.data(), env.data());
     if (err == 0) r.groups.insert(pid);
     res.start_error = err;
   }

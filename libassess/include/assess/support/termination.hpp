@@ -58,7 +58,11 @@ struct ProgramResult {
 /// Runs `argv` (a program found on PATH, and its arguments; no shell) with
 /// standard input from /dev/null and standard output and error to
 /// `log_path`, in its own process group (registered: stopped with this
-/// process), at most `timeout_s` seconds (then its group is killed).
-ProgramResult run_program(const std::vector<std::string>& argv, const std::string& log_path, int timeout_s);
+/// process), at most `timeout_s` seconds (then its group is killed). With
+/// `tmpdir`, the program's TMPDIR is that folder (Chromium leaves its
+/// org.chromium.* folders there when it is stopped: a temporary of ours
+/// holds them).
+ProgramResult run_program(const std::vector<std::string>& argv, const std::string& log_path, int timeout_s,
+                          const std::string& tmpdir = "");
 
 }  // namespace assess
