@@ -42,16 +42,13 @@ inline nlohmann::json& stamp_version(nlohmann::json& j) {
 /// Prints warnings on stderr, one per line ("assess: warning: ...").
 void print_warnings(const std::vector<std::string>& warnings);
 
-/// Adds to every floating-point option of `app` and its subcommands (CLI11
-/// type name FLOAT) a check that its value is a finite decimal number: "nan",
-/// "inf", "0x1p-3" and subnormals (1e-320) are refused with the option's
-/// name ("--k: must be a finite number, got 'nan'"), exit status 2 (main.cpp).
+/// Adds to every number option of `app` and its subcommands (CLI11 type
+/// names FLOAT, INT, UINT) a check that its value is a finite decimal number
+/// (decimal_number_violation): "nan", "inf", "0x1p-3", "0x10" and subnormals
+/// (1e-320) are refused with the option's name ("--k: must be a finite
+/// number, got 'nan'"), exit status 2 (main.cpp). Each option's range is
+/// its own (with_rule).
 void require_finite_numbers(CLI::App& app);
-
-/// InputError "<option>: <what is wrong>" when `value` breaks `rule`
-/// (support/number_rules.hpp), e.g. "--tr: value 1e+308 out of range:
-/// expected in [1, 1e+06] years".
-void check_number_option(const char* option, double value, const NumberRule& rule);
 
 /// Declares the range of a number option (issue 39: every option with its
 /// range and reason): its text must be a decimal number (decimal_number_violation)

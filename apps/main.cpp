@@ -91,10 +91,6 @@ const NumberRule threads{"threads", 1.0, 4096.0, false, false, "worker threads; 
 const NumberRule seed{"-", 0.0, 18446744073709551615.0, false, false, "a 64-bit unsigned integer"};
 }  // namespace assess::cli::option_rules
 
-void assess::cli::check_number_option(const char* option, double value, const assess::NumberRule& rule) {
-  const std::string bad = assess::number_rule_violation(value, rule);
-  if (!bad.empty()) throw assess::InputError(std::string(option) + ": " + bad);
-}
 
 namespace {
 
