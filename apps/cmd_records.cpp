@@ -23,6 +23,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <optional>
@@ -49,6 +50,11 @@ struct RecordsArgs {
 
 std::string default_catalogue() { return data_dir() + "/spectra/records/catalogue.json"; }
 
+std::string directory_of(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? std::string(".") : slash == 0 ? std::string("/") : path.substr(0, slash);
+}
+
 std::string num(double v, const char* f = "%.3g") {
   if (!std::isfinite(v)) return "-";
   char buf[32];
@@ -68,8 +74,16 @@ RecordFilterOptions filter_options(const RecordsArgs& a) {
 
 void run_build(const RecordsArgs& a) {
   const std::string table = a.metadata.empty() ? data_dir() + "/spectra/records/metadata.csv" : a.metadata;
+  const std::string out = a.output.empty() ? directory_of(table) + "/catalogue.json" : a.output;
+  const std::string spectra = directory_of(out) + "/" + library_spectra_file;
+  // The two outputs, neither an input (the table, a record) nor each other
+  // (--output DIR/spectra.bin), refused before the records are read.
+  check_output_files({{out, "--output", ""}, {spectra, "the record spectra", ""}});
   RecordCatalogue cat = build_catalogue(table);
-  const std::string out = a.output.empty() ? cat.directory + "/catalogue.json" : a.output;
+  // A catalogue written in another folder than the table's: its file paths
+  // relative to where it is, so that they resolve (issue 39).
+  std::error_code ec;
+  if (!std::filesystem::equivalent(directory_of(out), cat.directory, ec)) relocate_catalogue(cat, directory_of(out));
   const std::string text = catalogue_json(cat);
   write_output_file(out, text, "--output");
   std::size_t usable = 0;
@@ -77,9 +91,6 @@ void run_build(const RecordsArgs& a) {
   std::cout << "wrote " << out << ": " << cat.entries.size() << " components, " << usable << " usable for design\n";
   // The precomputed spectra beside it, tied to this text by its hash (record_spectra.hpp).
   cat.text_hash = content_hash(text);
-  const auto slash = out.find_last_of('/');
-  const std::string spectra = (slash == std::string::npos ? std::string(".") : out.substr(0, slash)) + "/" +
-                              library_spectra_file;
   const LibrarySpectra s = compute_library_spectra(cat);
   write_library_spectra(s, spectra);
   std::cout << "wrote " << spectra << ": 5 % PSA of " << s.ids.size() << " components at " << s.periods.size()
@@ -165,7 +176,6 @@ void run_select(const RecordsArgs& a) {
     spec.lat = a.lat, spec.lon = a.lon;
   } else {
     if (!a.ag_g || !a.F0 || !a.Tc_star) throw InputError("--ag, --F0 and --Tc-star must be given together");
-    if (!(*a.ag_g > 0.0 && *a.ag_g < 2.0)) throw InputError("--ag: expected ag in g, 0 < ag < 2");
     for (LimitState ls : all_limit_states) spec.given[ls] = HazardParams{0.0, *a.ag_g, *a.F0, *a.Tc_star};
   }
   try {
@@ -174,9 +184,6 @@ void run_select(const RecordsArgs& a) {
   } catch (const InputError& e) {
     throw InputError(std::string("--soil/--topography: ") + e.what());
   }
-  // The number rules of the case files (support/number_rules.hpp).
-  check_number_option("--vn", a.vn, rules::nominal_life_years);
-  check_number_option("--cu", a.cu, rules::use_coefficient);
   spec.vn_years = a.vn;
   spec.cu = a.cu;
   const Site site(spec);
@@ -232,11 +239,17 @@ void add_records_command(CLI::App& app) {
   auto a = std::make_shared<RecordsArgs>();
   CLI::App* cmd = app.add_subcommand("records", "the record library: build, list, show, select");
   cmd->require_subcommand(1);
+  // Every number option with its range and reason: the rules of the case
+  // file's /dynamic/select (records/record_selection.hpp) and of its site
+  // (support/number_rules.hpp), checked as the command line is parsed.
+  namespace SR = selection_rules;
+  static const NumberRule records_count{"records", 1.0, double(SR::count_max), false, false,
+                                        "components of a set, of one event or of one station"};
   auto filters = [a](CLI::App* c) {
-    c->add_option("--mw-min", a->mw_min, "smallest moment magnitude");
-    c->add_option("--mw-max", a->mw_max, "largest moment magnitude");
-    c->add_option("--r-min", a->r_min, "smallest distance (km)");
-    c->add_option("--r-max", a->r_max, "largest distance (km)");
+    with_rule(c->add_option("--mw-min", a->mw_min, "smallest moment magnitude"), SR::Mw);
+    with_rule(c->add_option("--mw-max", a->mw_max, "largest moment magnitude"), SR::Mw);
+    with_rule(c->add_option("--r-min", a->r_min, "smallest distance (km)"), SR::distance_km);
+    with_rule(c->add_option("--r-max", a->r_max, "largest distance (km)"), SR::distance_km);
     c->add_option("--site-class", a->site_classes, "accepted site classes (A..E), repeatable");
     c->add_option("--country", a->countries, "accepted countries, repeatable");
     c->add_option("--catalogue", a->catalogue, "catalogue.json (default: the shipped spectra/records/catalogue.json)");
@@ -257,27 +270,32 @@ void add_records_command(CLI::App& app) {
   show->callback([a] { run_show(*a); });
   CLI::App* sel = cmd->add_subcommand("select", "select N records compatible with a site spectrum (no mechanism)");
   filters(sel);
-  sel->add_option("--lat", a->lat, "site latitude (decimal degrees)");
-  sel->add_option("--lon", a->lon, "site longitude (decimal degrees)");
-  sel->add_option("--ag", a->ag_g, "ag on rock (g), with --F0 and --Tc-star");
-  sel->add_option("--F0", a->F0, "F0 (-)");
-  sel->add_option("--Tc-star", a->Tc_star, "TC* (s)");
+  with_rule(sel->add_option("--lat", a->lat, "site latitude (decimal degrees)"), rules::latitude_deg);
+  with_rule(sel->add_option("--lon", a->lon, "site longitude (decimal degrees)"), rules::longitude_deg);
+  with_rule(sel->add_option("--ag", a->ag_g, "ag on rock (g), with --F0 and --Tc-star"), rules::ag_g);
+  with_rule(sel->add_option("--F0", a->F0, "F0 (-)"), rules::F0);
+  with_rule(sel->add_option("--Tc-star", a->Tc_star, "TC* (s)"), rules::Tc_star_s);
   sel->add_option("--soil", a->soil, "subsoil class A..E (default A); also the default site-class filter");
   sel->add_option("--topography", a->topography, "T1..T4 (default T1)");
-  sel->add_option("--vn", a->vn, "nominal life VN (years, default 50)");
-  sel->add_option("--cu", a->cu, "coefficient of use CU (default 1)");
+  with_rule(sel->add_option("--vn", a->vn, "nominal life VN (years, default 50)"), rules::nominal_life_years);
+  with_rule(sel->add_option("--cu", a->cu, "coefficient of use CU (default 1)"), rules::use_coefficient);
   sel->add_option("--limit-state", a->limit_state, "SLO|SLD|SLV|SLC (default SLV)");
-  sel->add_option("--count", a->count, "number of records N (default 7)")->check(CLI::Range(1, 50));
-  sel->add_option("--t-min", a->t_min, "shortest period of the range (s, default 0.15)");
-  sel->add_option("--t-max", a->t_max, "longest period of the range (s, default 2.0)");
-  sel->add_option("--max-scale", a->max_scale, "largest scale factor of a record (default 3)");
-  sel->add_option("--max-misfit", a->max_misfit, "individual misfit flagged above it (default 0.5)");
+  with_rule(sel->add_option("--count", a->count, "number of records N (default 7)"), records_count);
+  with_rule(sel->add_option("--t-min", a->t_min, "shortest period of the range (s, default 0.15)"), SR::period_s);
+  with_rule(sel->add_option("--t-max", a->t_max, "longest period of the range (s, default 2.0)"), SR::period_s);
+  with_rule(sel->add_option("--max-scale", a->max_scale, "largest scale factor of a record (default 3)"), SR::max_scale);
+  with_rule(sel->add_option("--max-misfit", a->max_misfit, "individual misfit flagged above it (default 0.5)"),
+            SR::max_misfit);
   sel->add_option("--near-fault", a->near_fault, "exclude (default) or include near-fault and pulse-like records");
-  sel->add_option("--near-fault-km", a->near_fault_km, "distance below which a record is near-fault (km, default 10)");
-  sel->add_option("--max-mean-scale", a->max_mean_scale, "largest mean scale factor (default 2)");
-  sel->add_option("--max-pga-ratio", a->max_pga_ratio, "guard: scaled PGA <= ratio * ag S (default 2.5)");
-  sel->add_option("--per-event", a->per_event, "components per event (default 3)")->check(CLI::Range(1, 50));
-  sel->add_option("--per-station", a->per_station, "components per station (default 1)")->check(CLI::Range(1, 50));
+  with_rule(sel->add_option("--near-fault-km", a->near_fault_km,
+                            "distance below which a record is near-fault (km, default 10)"),
+            SR::near_fault_km);
+  with_rule(sel->add_option("--max-mean-scale", a->max_mean_scale, "largest mean scale factor (default 2)"),
+            SR::max_mean_scale);
+  with_rule(sel->add_option("--max-pga-ratio", a->max_pga_ratio, "guard: scaled PGA <= ratio * ag S (default 2.5)"),
+            SR::max_pga_ratio);
+  with_rule(sel->add_option("--per-event", a->per_event, "components per event (default 3)"), records_count);
+  with_rule(sel->add_option("--per-station", a->per_station, "components per station (default 1)"), records_count);
   sel->add_flag("--no-relax", a->no_relax, "do not widen the site classes when they give no compatible set");
   sel->callback([a] { run_select(*a); });
 }

@@ -6,6 +6,7 @@
 #include <assess/assessment/case_file.hpp>
 #include <assess/assessment/mechanism_dynamics.hpp>
 #include <assess/support/error.hpp>
+#include <assess/support/number_rules.hpp>
 #include <assess/support/output_file.hpp>
 #include <assess/records/record_io.hpp>
 #include <assess/dynamics/rocking_analysis.hpp>
@@ -45,6 +46,10 @@ struct RockingArgs {
   double atol = RockingOptions{}.abs_tol;
   double tail = RockingOptions{}.tail_s;  // the one default of every dynamic command
 };
+
+// The time step of a plain record given on the command line (record_io.hpp's range).
+constexpr NumberRule record_dt_rule{"s", record_dt_min_s, record_dt_max_s, false, false,
+                                    "strong-motion records are sampled at 0.001-0.04 s"};
 
 void run(const RockingArgs& a) {
   // The options checked, the model built and the record read by the library
@@ -126,19 +131,19 @@ void run_case(const CaseDynamicArgs& a) {
       d["records"] = nlohmann::json::array({nlohmann::json{{"file", "(--record)"}}});
     spec = parse_dynamic(d, kase.file, ".");
   }
+  // Errors about a value the command line gave name its option, not the case's JSON path.
   if (!a.model.empty()) {
     if (a.model != "smooth" && a.model != "rigid") throw InputError("--model must be 'smooth' or 'rigid'");
     spec.smooth = a.model == "smooth";
+    spec.model_from = "--model";
   }
-  if (!std::isnan(a.k_kN)) {
-    if (!(a.k_kN > 0.0 && std::isfinite(a.k_kN))) throw InputError("--k must be a positive number (kN/m^3)");
-    spec.k = a.k_kN * units::kN;
-  }
+  if (!std::isnan(a.k_kN)) spec.k = a.k_kN * units::kN, spec.k_from = "--k";
   if (spec.smooth && !(spec.k > 0.0))
     throw InputError("--k (Winkler modulus, kN/m^3) is required for the smooth model (or give /dynamic/k in the case)");
   if (!a.restitution.empty()) {
     spec.restitutions = {parse_restitution_option(a.restitution, spec.sidedness == Sidedness::one_sided)};
     spec.restitution_given = true;
+    spec.restitution_from = "--restitution";
   } else if (spec.restitutions.empty()) {
     spec.restitutions = {spec.sidedness == Sidedness::one_sided ? Restitution::one_sided_theory() : Restitution::housner()};
   }
@@ -224,21 +229,22 @@ void add_case_dynamic_command(CLI::App& app) {
   cmd->add_option("case", a->file, "case file (JSON, see docs/user/case-file.md)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--record", a->record, "accelerogram file (PEER AT2, ESM/ITACA ASCII, .cor.acc; plain with --dt)")
       ->required();
-  cmd->add_option("--dt", a->dt, "time step of a plain record file (s)");
+  with_rule(cmd->add_option("--dt", a->dt, "time step of a plain record file (s)"), record_dt_rule);
   cmd->add_option("--unit", a->unit, "unit of a plain record file: g, m/s^2, cm/s^2 (default g)");
-  cmd->add_option("--scale", a->scale, "factor on the record (default 1)");
+  with_rule(cmd->add_option("--scale", a->scale, "factor on the record (default 1)"), limits::option::scale);
   cmd->add_flag("--reverse", a->reverse, "flip the record's polarity");
   cmd->add_flag("--floor-record", a->floor, "the record is the floor motion at the mechanism's base (not filtered)");
   cmd->add_option("--model", a->model, "smooth or rigid (default: the case's /dynamic/model, else rigid)");
-  cmd->add_option("--k", a->k_kN, "Winkler modulus (kN/m^3), smooth model");
+  with_rule(cmd->add_option("--k", a->k_kN, "Winkler modulus (kN/m^3), smooth model"), limits::option::winkler_k_kN_m3);
   cmd->add_option("--restitution", a->restitution,
                   "VALUE (chains: in [-1, 0]) | housner | one-sided-theory | none (one block)");
   cmd->add_option("--history", a->history, "write t, q, q' to this CSV file");
   cmd->add_flag("--json", a->json, "print the results as one JSON object");
   cmd->add_option("--stepper", a->stepper, "rk8pd (default), rkck or rkf45");
-  cmd->add_option("--rtol", a->rtol, "relative tolerance per step (default 1e-7)");
-  cmd->add_option("--atol", a->atol, "absolute tolerance per step, rad and rad/s (default 1e-9)");
-  cmd->add_option("--tail", a->tail, "cap on the free motion after the whole record (s, default 30): it ends earlier at rest or when the energy left cannot reach the peak");
+  with_rule(cmd->add_option("--rtol", a->rtol, "relative tolerance per step (default 1e-7)"), limits::option::rel_tol);
+  with_rule(cmd->add_option("--atol", a->atol, "absolute tolerance per step, rad and rad/s (default 1e-9)"),
+            limits::option::abs_tol);
+  with_rule(cmd->add_option("--tail", a->tail, "cap on the free motion after the whole record (s, default 30): it ends earlier at rest or when the energy left cannot reach the peak"), limits::option::tail_s);
   cmd->callback([a] { run_case(*a); });
 }
 
@@ -246,26 +252,29 @@ void add_rocking_command(CLI::App& app) {
   auto args = std::make_shared<RockingArgs>();
   auto* cmd = app.add_subcommand("rocking", "Non-linear rocking of a wall under an accelerogram (rigid or smooth block)");
   cmd->add_option("--model", args->model, "smooth (Winkler foundation) or rigid (Housner)")->required();
-  cmd->add_option("--thickness", args->thickness, "full thickness 2b (m)")->required();
-  cmd->add_option("--height", args->height, "full height 2h (m)")->required();
-  cmd->add_option("--unit-weight", args->unit_weight_kN, "unit weight (kN/m^3)")->required();
-  cmd->add_option("--k", args->k_kN, "Winkler modulus (kN/m^3), smooth model only");
+  with_rule(cmd->add_option("--thickness", args->thickness, "full thickness 2b (m)"), rules::dimension_m)->required();
+  with_rule(cmd->add_option("--height", args->height, "full height 2h (m)"), rules::dimension_m)->required();
+  with_rule(cmd->add_option("--unit-weight", args->unit_weight_kN, "unit weight (kN/m^3)"), rules::unit_weight_kN_m3)
+      ->required();
+  with_rule(cmd->add_option("--k", args->k_kN, "Winkler modulus (kN/m^3), smooth model only"),
+            limits::option::winkler_k_kN_m3);
   cmd->add_option("--restitution", args->restitution,
                   "VALUE in [-1, 1] | housner | one-sided-theory | none (default: housner, one-sided-theory if --one-sided)");
   cmd->add_flag("--one-sided", args->one_sided, "one-sided rocking (facade against transverse walls)");
   cmd->add_option("--record", args->record, "accelerogram file (PEER AT2, ESM/ITACA ASCII, .cor.acc; plain with --dt)")
       ->required();
-  cmd->add_option("--dt", args->dt, "time step of a plain record file (s)");
+  with_rule(cmd->add_option("--dt", args->dt, "time step of a plain record file (s)"), record_dt_rule);
   cmd->add_option("--unit", args->unit, "unit of a plain record file: g, m/s^2, cm/s^2 (default g)");
-  cmd->add_option("--scale", args->scale, "factor on the record (default 1)");
+  with_rule(cmd->add_option("--scale", args->scale, "factor on the record (default 1)"), limits::option::scale);
   cmd->add_flag("--reverse", args->reverse, "flip the record's polarity");
   cmd->add_option("--overturn-at", args->overturn_at, "theta_u (default) or half_pi");
   cmd->add_option("--history", args->history, "write t, theta, theta' to this CSV file");
   cmd->add_flag("--json", args->json, "print the results as one JSON object");
   cmd->add_option("--stepper", args->stepper, "rk8pd (default), rkck or rkf45");
-  cmd->add_option("--rtol", args->rtol, "relative tolerance per step (default 1e-7)");
-  cmd->add_option("--atol", args->atol, "absolute tolerance per step, rad and rad/s (default 1e-9)");
-  cmd->add_option("--tail", args->tail, "cap on the free motion after the whole record (s, default 30): it ends earlier at rest or when the energy left cannot reach the peak");
+  with_rule(cmd->add_option("--rtol", args->rtol, "relative tolerance per step (default 1e-7)"), limits::option::rel_tol);
+  with_rule(cmd->add_option("--atol", args->atol, "absolute tolerance per step, rad and rad/s (default 1e-9)"),
+            limits::option::abs_tol);
+  with_rule(cmd->add_option("--tail", args->tail, "cap on the free motion after the whole record (s, default 30): it ends earlier at rest or when the energy left cannot reach the peak"), limits::option::tail_s);
   cmd->callback([args, cmd] {
     args->dt_given = cmd->count("--dt") > 0;
     run(*args);

@@ -61,23 +61,31 @@ void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_tex
 // file already read once, so the same checks).
 std::string read_text(const std::string& path) { return read_input_file(path, input_kinds::case_file); }
 
-// Refuses the outputs before a long run rather than after it: an --html or
-// --pdf, --docx or --txt that names an input of the run (the case file itself), a directory,
-// a link out of its folder (output_file.hpp; written the same way at the end).
-void check_outputs(const RunArgs& a) {
-  if (!a.html.empty()) check_output_file(a.html, "--html");
-  if (!a.pdf.empty()) check_output_file(a.pdf, "--pdf");
-  if (!a.docx.empty()) check_output_file(a.docx, "--docx");
-  if (!a.txt.empty()) check_output_file(a.txt, "--txt");
-  if (!a.html.empty() && a.html == a.pdf) throw InputError("--html and --pdf name the same file '" + a.html + "'");
+// Refuses the outputs before a long run rather than after it: an --html,
+// --pdf, --docx or --txt that names an input of the run (the case file
+// itself), a directory, a link out of its folder, or another output of the
+// run, the expanded cases included (output_file.hpp: by file identity;
+// written the same way at the end).
+ReportFiles report_files(const RunArgs& a) { return {a.html, a.pdf, a.docx, a.txt}; }
+
+void check_outputs(const RunArgs& a, const std::vector<OutputTarget>& more = {}) {
+  std::vector<OutputTarget> all = report_files(a).outputs();
+  all.insert(all.end(), more.begin(), more.end());
+  check_output_files(all);
+}
+
+// The expanded cases of --expand DIR (DIR created if needed), as outputs.
+std::vector<OutputTarget> expanded_outputs(const RunArgs& a, const std::vector<const BuildingMechanism*>& ms) {
+  make_output_folder(a.expand, "--expand");
+  std::vector<OutputTarget> out;
+  for (const BuildingMechanism* m : ms) out.push_back({a.expand + "/" + m->id + ".json", "--expand " + a.expand, a.expand});
+  return out;
 }
 
 // --expand DIR: each expanded case as DIR/<id>.json, written whole through
 // write_output_file: never over the building file or another input of the
 // run, never through a link out of DIR.
 void write_expanded(const RunArgs& a, const BuildingCase& b, const std::vector<const BuildingMechanism*>& ms) {
-  make_output_folder(a.expand, "--expand");
-  for (const BuildingMechanism* m : ms) check_output_file(a.expand + "/" + m->id + ".json", "--expand " + a.expand, a.expand);
   for (const BuildingMechanism* m : ms)
     write_output_file(a.expand + "/" + m->id + ".json", standalone_case(b, *m).dump(2) + "\n", "--expand " + a.expand,
                       a.expand);
@@ -91,7 +99,12 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
   if (!a.mechanism.empty()) {
     const BuildingMechanism& m = find_mechanism(bc, a.mechanism);
     // --expand with --mechanism: that mechanism's expanded case only.
-    if (!a.expand.empty()) write_expanded(a, bc, {&m});
+    if (!a.expand.empty()) {
+      check_outputs(a, expanded_outputs(a, {&m}));
+      write_expanded(a, bc, {&m});
+    } else {
+      check_outputs(a);
+    }
     // Its errors and warnings name the building file's paths and the mechanism.
     const MessageMap map = [&](const std::string& text) { return building_path_message(bc, m, text); };
     try {
@@ -102,11 +115,14 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
     if (!a.expand.empty() && !a.json) std::cout << "\nexpanded case written to " << a.expand << "/" << m.id << ".json\n";
     return;
   }
+  // Checked before the run, with the expanded cases (one file each), written
+  // after it (with the shared selections' ranges).
   if (!a.expand.empty()) {
-    // Checked before the run, written after it (with the shared selections' ranges).
-    make_output_folder(a.expand, "--expand");
-    for (const BuildingMechanism& m : bc.mechanisms)
-      check_output_file(a.expand + "/" + m.id + ".json", "--expand " + a.expand, a.expand);
+    std::vector<const BuildingMechanism*> all;
+    for (const BuildingMechanism& m : bc.mechanisms) all.push_back(&m);
+    check_outputs(a, expanded_outputs(a, all));
+  } else {
+    check_outputs(a);
   }
   FacadeOptions opt;
   opt.keep_going = a.keep_going;
@@ -122,7 +138,7 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
     ReportOptions ro;
     ro.lang = lang;
     ro.case_text = read_text(a.file);
-    write_report_files(building_document(res, ro), {a.html, a.pdf, a.docx, a.txt});
+    write_report_files(building_document(res, ro), report_files(a));
   }
   if (a.json) {
     nlohmann::json j = building_json(res);
@@ -138,8 +154,9 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
 
 void run(const RunArgs& a) {
   const nlohmann::json doc = read_json_file(a.file, input_kinds::case_file);
-  check_outputs(a);
+  // A building's outputs are checked with its expanded cases, once the file is parsed (run_building).
   if (is_building_document(doc)) return run_building(a, doc);
+  check_outputs(a);
   if (!a.mechanism.empty() || !a.expand.empty())
     throw InputError(a.file + ": --mechanism and --expand apply to a building case (a file with \"walls\"), "
                      "not to a single-mechanism case");
@@ -168,7 +185,7 @@ void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_tex
     if (frag) ro.fragility = frag->result;
     if (ties) ro.ties = &*ties;
     ro.case_text = case_text;
-    write_report_files(facade_document(res, ro), {a.html, a.pdf, a.docx, a.txt});
+    write_report_files(facade_document(res, ro), report_files(a));
   }
   if (a.json) {
     nlohmann::json j = facade_run_json(res, ties, frag);

@@ -29,26 +29,12 @@ struct SpectrumArgs {
   bool json = false, periods_given = false;
 };
 
+// The periods of the table: 0 (the PGA) to 100 s (the spectrum's periods, rules::period_s, and 0).
+constexpr NumberRule spectrum_period_s{"s", 1e-3, 100.0, false, true, "0 (the PGA) or a period of 1 ms to 100 s"};
+
 std::vector<double> parse_periods(const std::string& list) {
   if (list.empty()) return default_spectrum_periods();
-  std::vector<double> out;
-  std::stringstream ss(list);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    std::size_t used = 0;
-    double v = 0.0;
-    try {
-      v = std::stod(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    while (used < item.size() && item[used] == ' ') ++used;
-    if (used == 0 || used != item.size() || !std::isfinite(v) || v < 0.0)
-      throw InputError("--periods '" + list + "': expected a comma-separated list of periods >= 0 s, got '" +
-                       item + "'");
-    out.push_back(v);
-  }
-  return out;
+  return parse_number_list(list, "--periods", spectrum_period_s);
 }
 
 SiteSpec make_spec(const SpectrumArgs& a) {
@@ -71,19 +57,11 @@ SiteSpec make_spec(const SpectrumArgs& a) {
   }
   if (has_ll) {
     if (!a.lat || !a.lon) throw InputError("--lat and --lon must be given together (decimal degrees)");
-    if (!(*a.lat >= -90.0 && *a.lat <= 90.0))
-      throw InputError("--lat " + std::to_string(*a.lat) + ": expected a latitude in decimal degrees, -90 to 90");
-    if (!(*a.lon >= -180.0 && *a.lon <= 180.0))
-      throw InputError("--lon " + std::to_string(*a.lon) + ": expected a longitude in decimal degrees, -180 to 180");
     spec.lat = a.lat, spec.lon = a.lon;
   }
   if (a.island) spec.island = a.island;
   if (has_given) {
     if (!a.ag_g || !a.F0 || !a.Tc_star) throw InputError("--ag, --F0 and --Tc-star must be given together");
-    if (!(*a.ag_g > 0.0 && *a.ag_g < 2.0)) throw InputError("--ag " + std::to_string(*a.ag_g) + ": expected ag in g, 0 < ag < 2");
-    if (!(*a.F0 >= 1.0 && *a.F0 <= 5.0)) throw InputError("--F0 " + std::to_string(*a.F0) + ": expected F0 between 1 and 5 (-)");
-    if (!(*a.Tc_star > 0.0 && *a.Tc_star <= 2.0))
-      throw InputError("--Tc-star " + std::to_string(*a.Tc_star) + ": expected TC* in s, 0 < TC* <= 2");
     const HazardParams h{0.0, *a.ag_g, *a.F0, *a.Tc_star};
     for (LimitState ls : all_limit_states) spec.given[ls] = h;
   }
@@ -97,16 +75,10 @@ SiteSpec make_spec(const SpectrumArgs& a) {
   } catch (const InputError& e) {
     throw InputError(std::string("--topography: ") + e.what());
   }
-  if (!(a.h_over_H >= 0.0 && a.h_over_H <= 1.0))
-    throw InputError("--h-over-H " + std::to_string(a.h_over_H) + ": expected the relative height of the site, 0 to 1");
   spec.conditions.h_over_H = a.h_over_H;
-  if (!(a.vn > 0.0)) throw InputError("--vn " + std::to_string(a.vn) + ": expected a nominal life VN in years > 0");
   spec.vn_years = a.vn;
   if (a.cu && a.use_class) throw InputError("give either --cu or --use-class, not both");
-  if (a.cu) {
-    if (!(*a.cu > 0.0)) throw InputError("--cu " + std::to_string(*a.cu) + ": expected a coefficient of use CU > 0");
-    spec.cu = *a.cu;
-  }
+  if (a.cu) spec.cu = *a.cu;
   if (a.use_class) {
     try {
       spec.cu = use_coefficient(parse_use_class(*a.use_class));
@@ -214,19 +186,14 @@ void print_table(const Site& site, const std::vector<SpectrumColumn>& cols, cons
 }
 
 void run(const SpectrumArgs& a) {
-  // The number rules of the case files (support/number_rules.hpp): TR, VN,
-  // damping and CU of 1e308 made "TR = inf" and an infinite spectrum.
-  if (a.tr) check_number_option("--tr", *a.tr, rules::return_period_years);
-  check_number_option("--vn", a.vn, rules::nominal_life_years);
-  check_number_option("--damping", a.damping, rules::damping_or_zero_pct);
-  if (a.cu) check_number_option("--cu", *a.cu, rules::use_coefficient);
-  if (a.q) check_number_option("--q", *a.q, rules::behaviour_factor);
+  // The number rules of the case files (support/number_rules.hpp) are the
+  // options' (add_spectrum_command): TR, VN, damping and CU of 1e308 made
+  // "TR = inf" and an infinite spectrum.
   const SiteSpec spec = make_spec(a);
   if (a.periods_given && a.periods.find_first_not_of(" ,") == std::string::npos)
     throw InputError("--periods '" + a.periods + "': expected a comma-separated list of periods >= 0 s, e.g. 0,0.5,1 "
                      "(leave the option out for the default periods)");
   const std::vector<double> periods = parse_periods(a.periods);
-  if (a.q && !(*a.q >= 1.0)) throw InputError("--q " + std::to_string(*a.q) + ": expected a behaviour factor q >= 1");
   const Site site(spec);
   const std::vector<SpectrumColumn> cols = evaluate(a, site);
   std::vector<ElasticSpectrum> spectra;
@@ -245,25 +212,29 @@ void run(const SpectrumArgs& a) {
 void add_spectrum_command(CLI::App& app) {
   auto a = std::make_shared<SpectrumArgs>();
   auto* cmd = app.add_subcommand("spectrum", "NTC 2018 elastic spectra of a site (§3.2), per limit state");
-  cmd->add_option("--lat", a->lat, "site latitude (decimal degrees, north)");
-  cmd->add_option("--lon", a->lon, "site longitude (decimal degrees, east)");
-  cmd->add_option("--ag", a->ag_g, "ag on rock, given directly (g)");
-  cmd->add_option("--F0", a->F0, "F0, given directly (-)");
-  cmd->add_option("--Tc-star", a->Tc_star, "TC*, given directly (s)");
+  // Every number option with its range and reason: the rules of the case file's
+  // site (support/number_rules.hpp), checked as the command line is parsed.
+  with_rule(cmd->add_option("--lat", a->lat, "site latitude (decimal degrees, north)"), rules::latitude_deg);
+  with_rule(cmd->add_option("--lon", a->lon, "site longitude (decimal degrees, east)"), rules::longitude_deg);
+  with_rule(cmd->add_option("--ag", a->ag_g, "ag on rock, given directly (g)"), rules::ag_g);
+  with_rule(cmd->add_option("--F0", a->F0, "F0, given directly (-)"), rules::F0);
+  with_rule(cmd->add_option("--Tc-star", a->Tc_star, "TC*, given directly (s)"), rules::Tc_star_s);
   cmd->add_option("--comune", a->comune,
                   "site by comune (ISTAT list): the coordinates of the municipal seat are used and printed");
   cmd->add_option("--province", a->province, "province (sigla, e.g. AQ) of --comune, for a name shared by two");
   cmd->add_option("--island", a->island, "island of Allegato B Tab. 2 (e.g. Sardegna, Lipari)");
   cmd->add_option("--soil", a->soil, "subsoil class A..E (default A)");
   cmd->add_option("--topography", a->topography, "topographic class T1..T4 (default T1)");
-  cmd->add_option("--h-over-H", a->h_over_H, "relative height of the site on the relief, 0..1 (default 1)");
-  cmd->add_option("--vn", a->vn, "nominal life VN (years, default 50)");
-  cmd->add_option("--cu", a->cu, "coefficient of use CU (default 1.0)");
+  with_rule(cmd->add_option("--h-over-H", a->h_over_H, "relative height of the site on the relief, 0..1 (default 1)"),
+            rules::relative_height);
+  with_rule(cmd->add_option("--vn", a->vn, "nominal life VN (years, default 50)"), rules::nominal_life_years);
+  with_rule(cmd->add_option("--cu", a->cu, "coefficient of use CU (default 1.0)"), rules::use_coefficient);
   cmd->add_option("--use-class", a->use_class, "use class I..IV (sets CU)");
   cmd->add_option("--limit-state", a->limit_state, "SLO|SLD|SLV|SLC (default: all four)");
-  cmd->add_option("--tr", a->tr, "return period (years) instead of a limit state");
-  cmd->add_option("--damping", a->damping, "viscous damping (%, default 5)");
-  cmd->add_option("--q", a->q, "behaviour factor: also print the design spectrum Sd");
+  with_rule(cmd->add_option("--tr", a->tr, "return period (years) instead of a limit state"),
+            rules::return_period_years);
+  with_rule(cmd->add_option("--damping", a->damping, "viscous damping (%, default 5)"), rules::damping_or_zero_pct);
+  with_rule(cmd->add_option("--q", a->q, "behaviour factor: also print the design spectrum Sd"), rules::behaviour_factor);
   cmd->add_option("--periods", a->periods, "comma-separated periods (s), e.g. 0,0.5,1")
       ->each([a](const std::string&) { a->periods_given = true; });
   cmd->add_option("--grid", a->grid, "hazard grid CSV (default: the shipped spectra/ntc2008_hazard_grid.csv)");

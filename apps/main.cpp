@@ -4,6 +4,7 @@
 #include <assess/support/error.hpp>
 #include <assess/support/json_input.hpp>
 #include <assess/support/number_rules.hpp>
+#include <assess/support/termination.hpp>
 #include <assess/support/version.hpp>
 
 #include <algorithm>
@@ -23,39 +24,78 @@
 #include <string>
 
 
+namespace {
+
+// The text of a number option as the user wrote it, without surrounding blanks.
+std::string trimmed(const std::string& text) {
+  const auto b = text.find_first_not_of(" \t");
+  if (b == std::string::npos) return "";
+  return text.substr(b, text.find_last_not_of(" \t") - b + 1);
+}
+
+}  // namespace
+
 void assess::cli::require_finite_numbers(CLI::App& app) {
-  const CLI::Validator finite(
+  // The rule of every number a user writes (number_rules.hpp): decimal, finite, of normal size.
+  const CLI::Validator decimal(
       [](std::string& text) -> std::string {
-        std::string t = text;
-        t.erase(0, t.find_first_not_of(" \t"));
-        const std::string lower = [&] {
-          std::string l;
-          for (char c : t) l += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-          return l;
-        }();
-        char* end = nullptr;
-        const double v = std::strtod(t.c_str(), &end);
-        if (end == t.c_str()) return "";  // not a number at all: CLI11's own message
-        if (lower.find("0x") != std::string::npos)
-          return "must be a decimal number, got '" + text + "' (a hexadecimal float)";
-        if (!std::isfinite(v)) return "must be a finite number, got '" + text + "'";
-        if (assess::is_subnormal(v))
-          return "must be a number of normal size, got '" + text + "' (a subnormal number, |x| < 2.2e-308)";
-        return "";
+        double v = 0.0;
+        const std::string t = trimmed(text);
+        const std::string bad = assess::decimal_number_violation(t, v);
+        return t.empty() ? "" : bad;  // an empty value: CLI11's own message
       },
-      "FINITE");
+      "DECIMAL");
   std::function<void(CLI::App&)> walk = [&](CLI::App& a) {
-    for (CLI::Option* o : a.get_options())
-      if (o->get_type_name() == "FLOAT") o->check(finite);
+    for (CLI::Option* o : a.get_options()) {
+      const std::string type = o->get_type_name();
+      if (type == "FLOAT" || type == "INT" || type == "UINT") o->check(decimal);
+    }
     for (CLI::App* sub : a.get_subcommands({})) walk(*sub);
   };
   walk(app);
 }
 
-void assess::cli::check_number_option(const char* option, double value, const assess::NumberRule& rule) {
-  const std::string bad = assess::number_rule_violation(value, rule);
-  if (!bad.empty()) throw assess::InputError(std::string(option) + ": " + bad);
+CLI::Option* assess::cli::with_rule(CLI::Option* option, const assess::NumberRule& rule) {
+  const assess::NumberRule r = rule;
+  option->check(CLI::Validator(
+      [r](std::string& text) -> std::string {
+        double v = 0.0;
+        const std::string t = trimmed(text);
+        std::string bad = assess::decimal_number_violation(t, v);
+        if (bad.empty()) bad = assess::number_rule_violation(v, r);
+        return bad;
+      },
+      std::string(rule.lo_open ? "(" : "[") + assess::number_for_message(rule.lo) + ", " +
+          assess::number_for_message(rule.hi) + "] " + rule.unit,
+      "RULE"));
+  return option;
 }
+
+std::vector<double> assess::cli::parse_number_list(const std::string& text, const char* option,
+                                                  const assess::NumberRule& rule) {
+  std::vector<double> out;
+  std::size_t from = 0;
+  for (std::size_t item = 1;; ++item) {
+    const std::size_t comma = text.find(',', from);
+    const std::string t = trimmed(text.substr(from, comma == std::string::npos ? std::string::npos : comma - from));
+    double v = 0.0;
+    std::string bad = assess::decimal_number_violation(t, v);
+    if (bad.empty()) bad = assess::number_rule_violation(v, rule);
+    if (!bad.empty())
+      throw assess::InputError(std::string(option) + ": item " + std::to_string(item) + ": " + bad +
+                               " (a comma-separated list of numbers in " + rule.unit + ")");
+    out.push_back(v);
+    if (comma == std::string::npos) break;
+    from = comma + 1;
+  }
+  return out;
+}
+
+namespace assess::cli::option_rules {
+const NumberRule threads{"threads", 1.0, 4096.0, false, false, "worker threads; leave --threads out for all cores"};
+const NumberRule seed{"-", 0.0, 18446744073709551615.0, false, false, "a 64-bit unsigned integer"};
+}  // namespace assess::cli::option_rules
+
 
 namespace {
 
@@ -120,6 +160,10 @@ void assess::cli::print_warnings(const std::vector<std::string>& warnings) {
 }
 
 int main(int argc, char** argv) {
+  // Before any thread starts: SIGINT, SIGTERM and SIGHUP stop the programs
+  // this run started and remove its temporaries; a write beyond `ulimit -f`
+  // is a full disk, not SIGXFSZ (support/termination.hpp, issue 39).
+  assess::install_termination_handling();
   CLI::App app{
       "assess: out-of-plane seismic assessment of masonry walls\n"
       "(NTC 2018 / Circolare 2019 spectra, kinematic checks, rocking dynamics)"};

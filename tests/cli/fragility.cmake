@@ -28,9 +28,9 @@ assess_cli_error_test(fragility_given_hazard "given_hazard.json: /site: .*given 
   fragility tests/data/fragility/given_hazard.json --out ${_frag_out}/bad)
 assess_cli_error_test(fragility_listed_stripes "listed_records.json: /dynamic/records: a multiple-stripe analysis.*--ida"
   fragility tests/data/fragility/listed_records.json --out ${_frag_out}/bad)
-assess_cli_error_test(fragility_bad_stripe "--stripes: 'abc' is not a number.*years"
+assess_cli_error_test(fragility_bad_stripe "--stripes: item 2: expected a number, got 'abc' \\(a comma-separated list of numbers in years\\)"
   fragility tests/data/fragility/free_wall.json --stripes 30,abc --out ${_frag_out}/bad)
-assess_cli_error_test(fragility_stripe_range "--stripes: return period 1 \\(10 years\\) must lie in \\[30, 2475\\] years"
+assess_cli_error_test(fragility_stripe_range "--stripes: item 1: value 10 out of range: expected in \\[30, 2475\\] years"
   fragility tests/data/fragility/free_wall.json --stripes 10 --out ${_frag_out}/bad)
 
 # The HTML page loads in headless Chromium with its 3 plots (fragility,

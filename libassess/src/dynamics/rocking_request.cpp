@@ -7,6 +7,7 @@
 #include "assess/dynamics/analysis_limits.hpp"
 #include "assess/records/record_io.hpp"
 #include "assess/support/error.hpp"
+#include "assess/support/number_rules.hpp"
 #include "assess/support/units.hpp"
 
 #include <cmath>
@@ -62,9 +63,8 @@ Restitution parse_restitution_option(const std::string& text, bool one_sided) {
   if (text == "housner") return Restitution::housner();
   if (text == "one-sided-theory") return Restitution::one_sided_theory();
   if (text == "none") return Restitution::none();
-  char* end = nullptr;
-  const double e = std::strtod(text.c_str(), &end);
-  if (end == text.c_str() || *end != '\0')
+  double e = 0.0;
+  if (!decimal_number_violation(text, e).empty())
     throw InputError("--restitution expects a number in [-1, 1], 'housner', 'one-sided-theory' or 'none', got '" +
                      text + "'");
   return Restitution::given(e);

@@ -228,6 +228,13 @@ Wall resolve(const CornerOverturningParams& p, const CornerWall& w, double other
       throw InputError(ol + "expected the other wall's thickness <= from < to (m from the corner's outer face): an "
                        "opening through the corner pier leaves no corner mechanism");
     if (!(o.top > o.bottom)) throw InputError(ol + "expected bottom < top (m above the foundation)");
+    // Within the wall (issue 39: an opening beyond it was clipped without a word).
+    if (!(o.to <= other_t + r.length + 1e-9))
+      throw InputError(ol + "ends " + fmt("%g", o.to) + " m from the corner's outer face, beyond the wall's end (" +
+                       fmt("%g", other_t + r.length) + " m: the other wall's thickness and the length)");
+    if (!(o.top <= p.base_z + p.height + 1e-9))
+      throw InputError(ol + "its top " + fmt("%g", o.top) + " m is above the wall's top (" +
+                       fmt("%g", p.base_z + p.height) + " m above the foundation)");
     r.openings.push_back(o);
   }
   return r;

@@ -8,6 +8,7 @@
 
 #include "assess/support/error.hpp"
 #include "assess/support/input_file.hpp"
+#include "assess/support/number_rules.hpp"
 #include "assess/support/units.hpp"
 
 #include <algorithm>
@@ -366,6 +367,15 @@ Record parse_record_text(const std::string& text, const std::string& path) {
                             "for a plain file give the time step and unit)");
   r.name = stem(path);
   r.source = path;
+  // The header's texts are printed in the reports (a listed record's event,
+  // station, component): the text rule of case files, a tab read as a blank
+  // (issue 39: an ESC sequence in a header re-programs the terminal).
+  for (const auto& [text, field] : {std::pair<std::string*, const char*>{&r.event, "event"},
+                                    {&r.station, "station"}, {&r.component, "component"}}) {
+    std::replace(text->begin(), text->end(), '\t', ' ');
+    const std::string bad = control_character_violation(*text);
+    if (!bad.empty()) throw InputError(path + ": the header's " + field + ": " + bad);
+  }
   return r;
 }
 

@@ -35,6 +35,14 @@ CatalogueFilters catalogue_filters(const RecordFilterOptions& o) {
   if (o.mw_max) f.Mw_max = *o.mw_max, f.Mw_given = true;
   if (o.r_min) f.R_min_km = *o.r_min, f.R_given = true;
   if (o.r_max) f.R_max_km = *o.r_max, f.R_given = true;
+  // A window the wrong way round is the options' fault, named here (issue 39:
+  // it reached the selection's memo, whose error aborted the process).
+  if (f.Mw_given && !(f.Mw_min <= f.Mw_max))
+    throw InputError("--mw-min " + num(f.Mw_min, "%.3g") + (o.mw_min ? "" : " (the default)") + " is above --mw-max " +
+                     num(f.Mw_max, "%.3g") + (o.mw_max ? "" : " (the default)") + ": expected a window with min <= max");
+  if (f.R_given && !(f.R_min_km <= f.R_max_km))
+    throw InputError("--r-min " + num(f.R_min_km, "%.3g") + (o.r_min ? "" : " (the default)") + " km is above --r-max " +
+                     num(f.R_max_km, "%.3g") + (o.r_max ? "" : " (the default)") + " km: expected a window with min <= max");
   f.site_classes = o.site_classes;
   for (const auto& c : f.site_classes)
     if (c.size() != 1 || std::string("ABCDE").find(c) == std::string::npos)

@@ -70,7 +70,7 @@ void install(const std::string& option, const std::string& path, const fs::path*
 bool overlay_first_pages(const fs::path& base, const fs::path& overlay, const fs::path& out, const fs::path& dir) {
   const fs::path log = dir / "qpdf.log";
   const int code = detail::run_program({"qpdf", "--show-npages", overlay.string()}, log);
-  if (code == 127) return false;
+  if (code == detail::program_not_found) return false;
   const std::string n = detail::read_file(log);
   int pages = 0;
   for (char ch : n) {
@@ -95,7 +95,8 @@ void write_report_files(const Document& d, const ReportFiles& files) {
   std::future<void> docx;
   detail::TempDir dir("assess_report_");
   const fs::path docx_tmp = dir.path() / "report.docx";
-  if (!files.docx.empty()) docx = std::async(std::launch::async, [&] { write_docx(d, docx_tmp.string()); });
+  if (!files.docx.empty())
+    docx = std::async(std::launch::async, [&] { write_docx(d, docx_tmp.string(), "--docx " + files.docx); });
   try {
     if (!files.pdf.empty()) {
       HtmlOptions o;

@@ -7,8 +7,11 @@
 #pragma once
 
 #include "assess/report/document.hpp"
+#include "assess/support/output_file.hpp"
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace assess {
 
@@ -17,6 +20,17 @@ struct ReportFiles {
   std::string pdf;
   std::string docx;
   std::string txt;   ///< the relazione as plain text, 120 columns (text_writer.hpp)
+
+  /// The files asked for, each with the option that names it in errors, for
+  /// check_output_files (support/output_file.hpp): a file added here is
+  /// checked against the run's other outputs and inputs (issue 39).
+  std::vector<OutputTarget> outputs() const {
+    std::vector<OutputTarget> out;
+    for (const auto& [path, what] : {std::pair<const std::string*, const char*>{&html, "--html"}, {&pdf, "--pdf"},
+                                     {&docx, "--docx"}, {&txt, "--txt"}})
+      if (!path->empty()) out.push_back({*path, what, ""});
+    return out;
+  }
 };
 
 /// Writes the requested files. @throws InputError naming the option (--html,
