@@ -9,6 +9,7 @@
 #include <assess/support/number_rules.hpp>
 #include <assess/support/output_file.hpp>
 #include <assess/records/record_io.hpp>
+#include <assess/dynamics/analysis_limits.hpp>
 #include <assess/dynamics/rocking_analysis.hpp>
 #include <assess/dynamics/rocking_request.hpp>
 #include <assess/report/rocking_report.hpp>
