@@ -48,10 +48,6 @@ struct RockingArgs {
   double tail = RockingOptions{}.tail_s;  // the one default of every dynamic command
 };
 
-// The time step of a plain record given on the command line (record_io.hpp's range).
-constexpr NumberRule record_dt_rule{"s", record_dt_min_s, record_dt_max_s, false, false,
-                                    "strong-motion records are sampled at 0.001-0.04 s"};
-
 void run(const RockingArgs& a) {
   // The options checked, the model built and the record read by the library
   // (dynamics/rocking_request.hpp), as for the Python module's assess.rocking.

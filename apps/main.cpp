@@ -216,8 +216,11 @@ int main(int argc, char** argv) {
     check_words(app, argc, argv);
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int rc = app.exit(e);
-    return rc == 0 ? 0 : assess::cli::exit_input_error;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    // An option's value or a missing argument: the same "assess: error: "
+    // line as every other input error (the Python module raises its text).
+    std::cerr << "assess: error: " << assess::plain_numbers(e.what()) << "\n";
+    return assess::cli::exit_input_error;
   } catch (const assess::InputError& e) {
     std::cerr << "assess: error: " << assess::plain_numbers(e.what()) << "\n";
     return assess::cli::exit_input_error;

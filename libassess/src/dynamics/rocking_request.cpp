@@ -17,13 +17,11 @@
 namespace assess {
 namespace {
 
-// An option within [lo, hi] (the bounds of analysis_limits.hpp), else an error naming it and its unit.
-void check_range(const char* option, double v, double lo, double hi, const char* unit) {
-  if (std::isfinite(v) && v >= lo && v <= hi) return;
-  char buf[200];
-  if (std::isnan(v)) std::snprintf(buf, sizeof buf, "%s must lie in [%g, %g] %s, got not-a-number", option, lo, hi, unit);
-  else std::snprintf(buf, sizeof buf, "%s must lie in [%g, %g] %s, got %g", option, lo, hi, unit, v);
-  throw InputError(buf);
+// An option obeying its rule (analysis_limits.hpp, number_rules.hpp), else
+// the command line's own message: "--scale: value 0 out of range: ...".
+void check_rule(const char* option, double v, const NumberRule& rule) {
+  const std::string bad = number_rule_violation(v, rule);
+  if (!bad.empty()) throw InputError(std::string(option) + ": " + bad);
 }
 
 // A plain record: --dt (and --unit, default g) for one column; --unit alone
@@ -72,10 +70,10 @@ Restitution parse_restitution_option(const std::string& text, bool one_sided) {
 
 RockingModel rocking_model_of(const RockingRequest& a) {
   if (a.model != "smooth" && a.model != "rigid") throw InputError("--model must be 'smooth' or 'rigid'");
-  check_range("--unit-weight", a.unit_weight_kN, 0.0, limits::unit_weight_max_N_m3 / units::kN, "kN/m^3");
-  if (a.k_kN && a.model == "smooth")
-    check_range("--k", *a.k_kN, 0.0, limits::winkler_k_max_N_m3 / units::kN,
-                "kN/m^3 (a stiffer base is rigid: use --model rigid)");
+  check_rule("--thickness", a.thickness, rules::dimension_m);
+  check_rule("--height", a.height, rules::dimension_m);
+  check_rule("--unit-weight", a.unit_weight_kN, rules::unit_weight_kN_m3);
+  if (a.k_kN && a.model == "smooth") check_rule("--k", *a.k_kN, limits::option::winkler_k_kN_m3);
   const RockingBody body = RockingBody::rectangle(a.thickness, a.height, a.unit_weight_kN * units::kN);
   Foundation foundation = Foundation::rigid();
   if (a.model == "smooth") {
@@ -91,15 +89,11 @@ RockingModel rocking_model_of(const RockingRequest& a) {
 
 RockingSetup prepare_rocking(const RockingRequest& a) {
   if (a.model != "smooth" && a.model != "rigid") throw InputError("--model must be 'smooth' or 'rigid'");
-  check_range("--unit-weight", a.unit_weight_kN, 0.0, limits::unit_weight_max_N_m3 / units::kN, "kN/m^3");
-  check_range("--rtol", a.rtol, limits::rel_tol_min, limits::rel_tol_max, "(-)");
-  check_range("--atol", a.atol, limits::abs_tol_min, limits::abs_tol_max, "rad, rad/s");
-  check_range("--tail", a.tail, 0.0, limits::tail_max_s, "s");
-  if (!(std::isfinite(a.scale) && a.scale > 0.0 && a.scale <= limits::scale_max))
-    check_range("--scale", a.scale, 0.0, limits::scale_max, "(-, > 0)");
-  if (a.dt && !(std::isfinite(*a.dt) && *a.dt > 0.0))
-    throw InputError(std::isnan(*a.dt) ? std::string("--dt: time step must be positive (s), got not-a-number")
-                                       : "--dt: time step must be positive (s), got " + std::to_string(*a.dt));
+  check_rule("--rtol", a.rtol, limits::option::rel_tol);
+  check_rule("--atol", a.atol, limits::option::abs_tol);
+  check_rule("--tail", a.tail, limits::option::tail_s);
+  check_rule("--scale", a.scale, limits::option::scale);
+  if (a.dt) check_rule("--dt", *a.dt, record_dt_rule);
   RockingModel model = rocking_model_of(a);
   Record record = request_record(a);
   RockingOptions opt;

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "assess/records/record.hpp"
+#include "assess/support/number_rules.hpp"
 
 #include <cstddef>
 #include <string>
@@ -21,6 +22,9 @@ namespace assess {
 /// a record 1e-317 s long (issue 31).
 inline constexpr double record_dt_min_s = 1e-6;
 inline constexpr double record_dt_max_s = 10.0;
+/// The rule of a time step given by the user (--dt, assess.rocking's dt).
+inline constexpr NumberRule record_dt_rule{"s", record_dt_min_s, record_dt_max_s, false, false,
+                                           "strong-motion records are sampled at 0.001-0.04 s"};
 
 /// Unit of the acceleration values in a file.
 enum class AccelerationUnit {
