@@ -752,6 +752,24 @@ Document building_document(const BuildingAssessment& b, const ReportOptions& opt
     d.set_heading_shift(0);
     d.set_id_prefix("");
   }
+  // Issue 37: the ties of each wall once, with the mechanisms they restrain.
+  for (std::size_t w = 0; w < bc.doc.at("walls").size(); ++w) {
+    std::vector<std::pair<std::string, const TieInterventionResult*>> members;
+    const FacadeAssessment* first = nullptr;
+    std::string wall;
+    for (std::size_t i = 0; i < bc.mechanisms.size(); ++i)
+      if (bc.mechanisms[i].wall_index == w && bc.mechanisms[i].wall_ties && b.results[i].ties &&
+          b.results[i].ties->wall_members.size() > 1) {
+        members.push_back({bc.mechanisms[i].id + " " + bc.mechanisms[i].name, &*b.results[i].ties});
+        if (!first) first = &b.results[i].a, wall = bc.mechanisms[i].wall;
+      }
+    if (members.empty()) continue;
+    mo.ties = members.front().second;
+    d.set_id_prefix("wall" + std::to_string(w + 1) + "-");
+    relazione::Ctx c{*first, mo, L, d, &readings};
+    relazione::add_wall_tie_section(c, wall, members);
+    d.set_id_prefix("");
+  }
   mo.ties = nullptr;
   mo.shared_records.clear();
   add_interventions(L, b, d);

@@ -48,9 +48,6 @@ struct CheckRow {
   /// `note` says why. A report shows "no verdict", never "satisfied".
   bool no_verdict = false;
   std::string note;             ///< remarks for the reader ("overturned in 1 of 2 analyses" ...)
-  /// Issue 29: a displacement check of a tied mechanism that the wall without
-  /// its tie levels satisfies better (the row is the bare wall's).
-  bool without_ties = false;
   /// Dynamic and energy rows (issue 28): the analyses behind the row, how
   /// many collapsed (the threshold d0 exceeded or the wall overturned,
   /// C8.7.1.2.1.9) and how many failed (integrator limits: not a result).
