@@ -742,10 +742,7 @@ Tie parse_tie(const JsonNode& t, double FC, std::size_t index) {
     tie.anchor.b = a.number("diameter_mm", "mm", TB::bar_diameter_min * 1e3, TB::bar_diameter_max * 1e3) * 1e-3;
   }
   tie.anchor.fyk = grade_of(a, "grade", tie.anchor.grade).fyk;
-  // Issue 37: a new tie's pretension takes up the temperature range unless
-  // given (an existing tie's is what it is: 0 unless given).
-  if (!tie.existing && !t.has("pretension_kN")) tie.pretension = thermal_pretension(tie);
-  return tie;  // validated with its wall by resolve_ties
+  return tie;  // its default pretension and its wall by resolve_ties
 }
 
 TieDesignSpec parse_tie_design(const JsonNode& d, double FC) {
@@ -843,6 +840,20 @@ void resolve_ties(const JsonNode& arr, std::vector<Tie>& ties, const std::vector
                             ") m is on no moving block of the mechanism (the wall's outer face is x = 0, "
                             "the wall at x < 0, z up from the foundation)");
     if (!given) continue;
+    // Issue 37: a new tie's pretension takes up the temperature range unless
+    // given: E A alpha_T dT, when below the tie's strength (else none, and
+    // its "pretension" check fails, saying so); an existing tie's is what it
+    // is (0 unless given).
+    if (!ties[i].existing && !node.has("pretension_kN")) {
+      Tie slack = ties[i];
+      slack.pretension = 0.0;
+      try {
+        const double P = thermal_pretension(slack);
+        if (P < tie_resistance(slack).design) ties[i].pretension = P;
+      } catch (const InputError&) {
+        // refused below, with the node
+      }
+    }
     try {
       (void)tie_resistance(ties[i]);  // validate() with the wall, and the pretension below the strength
     } catch (const InputError& e) {
@@ -1009,6 +1020,10 @@ CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
   if (levels > static_cast<std::size_t>(TB::levels_max))
     root.fail(std::to_string(levels) + " tie levels in \"ties\" and \"design\": expected at most " +
               std::to_string(TB::levels_max));
+  if (c.tie_design && c.tie_design->levels.empty() && c.ties.empty())
+    root.at("design").at("ties").at("levels").fail("empty, and the case has no existing tie to change: expected at "
+                                      "least one level to design (or existing ties, whose failures the design then "
+                                      "changes by the least change)");
   c.warnings = input_warnings(doc.at("mechanism"), file);
   // Hook for the façade issue (dynamic rocking): kept raw, parsed there.
   if (root.has("dynamic")) c.dynamic = doc.at("dynamic");

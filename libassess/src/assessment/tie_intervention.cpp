@@ -452,8 +452,9 @@ MemberEval evaluate(Member& m, const Proposal& p, std::size_t n_existing_hint) {
 // rod (the design's anchors, smallest first, each anchor grade), then a new
 // rod: the designed tie `x` (its rod, ends and anchor) through the same holes,
 // or without a level to design the design's rods from the level's own
-// diameter up with each anchor, then its removal; for several levels, the
-// tuples of their options by the largest rank, then the sum of the ranks.
+// diameter up with each anchor (ductile ones first), then its removal; for
+// several levels, the tuples of their options by the largest rank, then the
+// sum of the ranks.
 std::vector<std::vector<TieChange>> change_options(const TieDesignSpec& spec, const std::vector<const Tie*>& failing,
                                                    const std::optional<Choice>& x, std::size_t cap) {
   std::vector<std::vector<TieChange>> per;
@@ -467,14 +468,18 @@ std::vector<std::vector<TieChange>> change_options(const TieDesignSpec& spec, co
     std::vector<Choice> rods;
     if (x) rods.push_back(*x);
     else rods = choices(spec, std::max(spec.min_rod_diameter, t->rod.diameter));
+    std::vector<TieChange> ductile, elastic;  // a new rod: ductile ones first, as the design
     for (const Choice& c : rods) {
       Tie y = *t;
       y.existing = false;  // a new rod: a new tie through the same holes
       if (!set_rod(y, c, spec.ends)) continue;
       set_anchor(y, c);
       y.pretension = thermal_pretension(y);
-      if (buildable(y)) opts.push_back({t->name, "rod", *t, y});
+      if (!buildable(y)) continue;
+      (tie_resistance(y).ductile ? ductile : elastic).push_back({t->name, "rod", *t, y});
     }
+    opts.insert(opts.end(), ductile.begin(), ductile.end());
+    opts.insert(opts.end(), elastic.begin(), elastic.end());
     opts.push_back({t->name, "removed", *t, std::nullopt});
     per.push_back(std::move(opts));
   }

@@ -127,7 +127,7 @@ void Tie::validate() const {
           t + "pretension = " + num(pretension) + " N: expected 0 to " + num(B::pretension_max / 1e3) + " kN");
   require(in(delta_T, 0.0, B::delta_T_max), t + "temperature variation = " + num(delta_T) + " K: expected 0 to " +
                                                  num(B::delta_T_max) + " K");
-  require(in(masonry.fv0, B::tau_min, B::tau_max),
+  require(masonry.fv0 == 0.0 || in(masonry.fv0, B::tau_min, B::tau_max),
           t + "masonry fv0 = " + num(masonry.fv0) + " Pa: expected " + num(B::tau_min / 1e6) + " to " +
               num(B::tau_max / 1e6) + " MPa");
   require(in(masonry.mu, 0.0, 1.5), t + "masonry friction coefficient mu = " + num(masonry.mu) + ": expected 0 to 1.5");

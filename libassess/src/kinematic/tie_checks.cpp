@@ -164,7 +164,7 @@ TieResistance tie_resistance(const Tie& tie) {
   const double div = tie.masonry.FC * tie.masonry.gamma_M;
   r.fd = tie.masonry.fm / div;
   r.fvd = tie.masonry.tau / div;
-  r.fv0d = tie.masonry.fv0 / div;
+  r.fv0d = (tie.masonry.fv0 > 0.0 ? tie.masonry.fv0 : tie.masonry.tau) / div;
   const double a = tie.anchor.a, b = tie.anchor.b;
   // Local compression under the anchor: beta fd A_b, beta = 1.
   r.bearing_area = a * b;

@@ -76,8 +76,8 @@ struct TieMasonry {
   double FC = 1.35;        ///< confidence factor (-), >= 1
   double gamma_M = 2.0;    ///< partial factor (-), >= 1 (tie_catalogue::masonry_gamma_M)
   /// Issue 37: the sliding of the masonry above the anchor on the bed joint at
-  /// its lower edge: cohesion f_v0 (Pa, > 0), friction coefficient mu (-), and
-  /// the unit weight of the masonry (N/m^3) that makes its overburden.
+  /// its lower edge: cohesion f_v0 (Pa; 0: tau), friction coefficient mu (-),
+  /// and the unit weight of the masonry (N/m^3) that makes its overburden.
   double fv0 = 0.0;
   double mu = 0.4;
   double unit_weight = 18e3;
