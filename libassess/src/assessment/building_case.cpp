@@ -337,7 +337,7 @@ BuildingCase parse_building(const nlohmann::json& doc, const std::string& file) 
       x["project"] = (b.project.empty() ? std::string() : b.project + " — ") + wall_name + ": " + m.name;
       // The mechanism's own ties and design (the wall's are added below, once
       // the mechanism's chains are known).
-      if (e.find("design") && w.find("design"))
+      if (e.value().contains("design") && w.value().contains("design") && !w.value().at("design").is_null())
         e.at("design").fail("the wall gives a \"design\" of ties: it acts on every mechanism of the wall whose moving "
                             "blocks its levels cross (issue 37), so a mechanism of that wall cannot give its own (nor "
                             "null); give the design on the wall or on the mechanisms only");

@@ -290,7 +290,7 @@ std::vector<TieCheckRow> tie_checks(const Tie& tie, const TieDemand& demand) {
     add("hierarchy anchor bending", capacity_design, "N_b,Rd >= gamma_Rd gamma_ov A fyk", r.hierarchy_demand,
         r.anchor_bending, "kN");
     if (demand.elongation)
-      add("rod elongation", "NTC 2018 §4.1.2.1.2.3, EN 1993-1-1 §3.2.2", "eps_ud L, eps_ud = 0.9 eps_uk",
+      add("rod elongation", "EN 1993-1-1 §3.2.2", "eps_ud L, eps_ud = 0.9 eps_uk",
           std::max(0.0, *demand.elongation), r.ultimate_elongation, "mm");
   } else {
     // Not ductile: the tie must stay elastic; every component takes the
@@ -307,9 +307,9 @@ std::vector<TieCheckRow> tie_checks(const Tie& tie, const TieDemand& demand) {
   // combination (not with the earthquake: psi2 = 0), on the rod and its thread;
   // a new tie's pretension takes up the range (the warmed rod does not go slack).
   if (r.thermal_force > 0.0) {
-    add("temperature rod", "NTC 2018 §3.5.5, §2.5.3", "gamma_P P0 + gamma_Q E A alpha_T dT <= A_c fyk / gamma_M0",
+    add("temperature rod", "NTC 2018 §3.5.5", "gamma_P P0 + gamma_Q E A alpha_T dT <= A_c fyk / gamma_M0",
         r.temperature_demand, r.rod, "kN");
-    add("temperature thread", "NTC 2018 §3.5.5, §2.5.3", "gamma_P P0 + gamma_Q E A alpha_T dT <= N_t,Rd",
+    add("temperature thread", "NTC 2018 §3.5.5", "gamma_P P0 + gamma_Q E A alpha_T dT <= N_t,Rd",
         r.temperature_demand, r.thread, "kN");
     if (!tie.existing)
       add("pretension", "NTC 2018 §3.5.5", "E A alpha_T dT <= P0", r.thermal_force, tie.pretension, "kN");

@@ -405,6 +405,12 @@ std::string tie_label(Lang L, const TieInterventionResult& t, bool after) {
     if (g.levels > 1) s += " (" + std::to_string(g.levels) + " " + bt(L, "ties_levels") + ")";
     out += (out.empty() ? "" : "; ") + s;
   }
+  // Issue 37: the existing levels the design changed.
+  if (after)
+    for (const TieChange& c : t.changes)
+      out += (out.empty() ? "" : "; ") + msg(L, "tie.existing") + ": " +
+             (c.kind == "removed" ? msg(L, "tie.change.removed")
+                                  : msg(L, c.kind == "anchor" ? "tie.change_short.anchor" : "tie.change_short.rod"));
   if (after && t.designed && !t.found) out = bt(L, "ties_not_found") + " (" + out + ")";
   return out.empty() ? "—" : out;
 }

@@ -89,6 +89,11 @@ std::string tie_label(const TieInterventionResult& t, bool after) {
     if (g.levels > 1) s += format(" +%d lev.", g.levels - 1);
     out += (out.empty() ? "" : "; ") + s;
   }
+  // Issue 37: the existing levels the design changed.
+  if (after)
+    for (const TieChange& c : t.changes)
+      out += (out.empty() ? "" : "; ") + std::string("exist. ") +
+             (c.kind == "removed" ? "removed" : c.kind == "anchor" ? "new anchor" : "new rod");
   if (after && t.designed && !t.found) out = "NOT FOUND (" + out + ")";
   return out;
 }

@@ -494,6 +494,8 @@ const std::map<std::string, std::pair<std::string, std::string>>& tie_messages()
       {"tie.change.anchor", {"nuovo capochiave sulla barra esistente: {}", "a new anchor on the existing rod: {}"}},
       {"tie.change.rod", {"nuova barra {} con {}, nei fori esistenti", "a new rod {} with {}, through the existing holes"}},
       {"tie.change.removed", {"rimossa", "removed"}},
+      {"tie.change_short.anchor", {"nuovo capochiave", "new anchor"}},
+      {"tie.change_short.rod", {"nuova barra", "new rod"}},
       {"tie.failing_existing",
        {"Catene esistenti non verificate: {}. Il caso non chiede un progetto: aggiungendo la sezione di progetto delle catene (anche senza livelli nuovi) si ottiene il minimo intervento che le rende verificate.",
         "Existing ties that fail: {}. The case asks for no design: adding the design section of the ties (even without new levels) gives the least change that makes them pass."}},

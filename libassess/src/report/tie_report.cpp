@@ -403,9 +403,10 @@ std::vector<TieGroup> tie_groups(const TieInterventionResult& t, bool after) {
 std::string tie_text(const TieInterventionResult& t) {
   std::string s = "\nTie rods (catene): stato di fatto and stato di progetto\n";
   if (t.designed) {
-    s += wrap_text(t.found ? format("  design: the smallest rod and plate of the lists that make every check pass (%d "
-                                    "combinations analysed); the ties are %s",
-                                    t.tried,
+    s += wrap_text(t.found ? format("  design: the first rod and anchor of the order, ductile ties first, that make every "
+                                    "check pass, every existing tie's included (%d combination%s of the order reached); "
+                                    "the new ties are %s",
+                                    t.tried, t.tried == 1 ? "" : "s",
                                     t.regime == "ductile" ? "DUCTILE (capacity design satisfied)"
                                                           : "NOT ductile and stay ELASTIC in every analysis")
                            : "  design: NOT FOUND: " + t.message + "; the combination that came closest is shown",
