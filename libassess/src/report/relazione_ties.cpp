@@ -340,7 +340,8 @@ std::string wedge_svg(const TieText& x, const Tie& tie, const TieResistance& r) 
   if (std::isfinite(L.crown)) z1 = std::min(z1, L.crown + m);
   const double Wd = 520.0, Hd = 340.0, pad = 30.0;
   const double sc = std::min((Wd - 2 * pad) / (x1 - x0), (Hd - 2 * pad) / (z1 - z0));
-  auto X = [&](double v) { return pad + (v - x0) * sc; };
+  const double left = 0.5 * (Wd - (x1 - x0) * sc);  // the view centred
+  auto X = [&](double v) { return left + (v - x0) * sc; };
   auto Z = [&](double v) { return Hd - pad - (v - z0) * sc; };
   std::string o = "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " + coord(Wd) + " " + coord(Hd) +
                   "\" width=\"" + coord(Wd) + "\" height=\"" + coord(Hd) + "\" font-family=\"DejaVu Sans, sans-serif\">\n";
@@ -367,9 +368,10 @@ std::string wedge_svg(const TieText& x, const Tie& tie, const TieResistance& r) 
       o += "<line x1=\"" + coord(X(xl)) + "\" y1=\"" + coord(pad) + "\" x2=\"" + coord(X(xl)) + "\" y2=\"" +
            coord(Hd - pad) + "\" stroke=\"#555\" stroke-dasharray=\"8 3 2 3\"/>\n";
   if (std::isfinite(L.crown) && L.crown < z1) {
-    o += "<line x1=\"" + coord(pad) + "\" y1=\"" + coord(Z(L.crown)) + "\" x2=\"" + coord(Wd - pad) + "\" y2=\"" +
-         coord(Z(L.crown)) + "\" stroke=\"#000\" stroke-width=\"2.5\"/>\n";
-    o += "<text x=\"" + coord(pad + 4) + "\" y=\"" + coord(Z(L.crown) - 5) + "\" font-size=\"11\">" +
+    o += "<line x1=\"" + coord(X(std::max(x0, 0.0))) + "\" y1=\"" + coord(Z(L.crown)) + "\" x2=\"" +
+         coord(X(std::min(x1, L.wall_length))) + "\" y2=\"" + coord(Z(L.crown)) +
+         "\" stroke=\"#000\" stroke-width=\"2.5\"/>\n";
+    o += "<text x=\"" + coord(X(std::max(x0, 0.0)) + 4) + "\" y=\"" + coord(Z(L.crown) - 5) + "\" font-size=\"11\">" +
          detail::svg_escape(x.t("wedge_crown") + " z = " + x.n(L.crown, 2) + " m") + "</text>\n";
     // The distance from the anchor's centre to the crown.
     const double xd = xc + w / 2 + 0.15 * s;
@@ -378,7 +380,7 @@ std::string wedge_svg(const TieText& x, const Tie& tie, const TieResistance& r) 
     o += "<text x=\"" + coord(X(xd) + 4) + "\" y=\"" + coord(0.5 * (Z(zc) + Z(L.crown)) + 4) + "\" font-size=\"11\">" +
          detail::svg_escape(x.n(L.crown - zc, 2) + " m") + "</text>\n";
   }
-  o += "<text x=\"" + coord(pad) + "\" y=\"" + coord(Hd - 8) + "\" font-size=\"11\">" +
+  o += "<text x=\"" + coord(left) + "\" y=\"" + coord(Hd - 8) + "\" font-size=\"11\">" +
        detail::svg_escape("x = " + x.n(xc, 2) + " m, z = " + x.n(zc, 2) + " m, s = " + x.n(s, 2) + " m") + "</text>\n";
   return o + "</svg>\n";
 }
