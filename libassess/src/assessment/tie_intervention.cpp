@@ -361,8 +361,7 @@ struct MemberEval {
   double worst = 0.0;                          // the largest D/C of the mechanism's checks
 };
 
-MemberEval evaluate(Member& m, const Proposal& p, std::size_t n_existing_hint) {
-  (void)n_existing_hint;
+MemberEval evaluate(Member& m, const Proposal& p) {
   MemberEval E;
   TieInterventionResult& T = E.T;
   T.designed = m.c->tie_design.has_value();
@@ -528,7 +527,7 @@ constexpr int max_evaluations = 3000;
 TieInterventionResult finish(Member& m, const Proposal& p, bool designed) {
   TieInterventionResult R;
   if (designed || !m.c->new_ties.empty() || !p.changes.empty()) {
-    R = std::move(evaluate(m, p, 0).T);
+    R = std::move(evaluate(m, p).T);
     R.intervention = true;
   } else {  // one state: the case as it is
     R.case_before = R.case_after = m.case_before;
@@ -636,7 +635,7 @@ std::vector<TieInterventionResult> search(std::vector<Member>& members) {
     ++evaluations;
     for (std::size_t k = 0; k < order.size(); ++k) {
       Member& m = members[order[k]];
-      const MemberEval E = evaluate(m, p, 0);
+      const MemberEval E = evaluate(m, p);
       W.worst = std::max(W.worst, E.worst);
       for (const std::string& n : E.failing_existing)
         if (std::find(W.failing_existing.begin(), W.failing_existing.end(), n) == W.failing_existing.end())

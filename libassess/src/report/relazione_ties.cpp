@@ -513,11 +513,9 @@ void add_wall_tie_section(Ctx& c, const std::string& wall,
         done.push_back(l0.tie.name);
         // The envelope over the members of each check row.
         std::vector<std::pair<TieCheckRow, std::string>> env;
-        bool all_ok = true;
         for (const auto& [n, r] : members)
           for (const TieLevelResult& l : after ? r->levels : r->levels_before) {
             if (l.tie.name != l0.tie.name || !(l.count > 0.0)) continue;
-            all_ok = all_ok && l.satisfied;
             for (const TieCheckRow& row : l.checks) {
               auto it = std::find_if(env.begin(), env.end(), [&](const auto& e) { return e.first.check == row.check; });
               const double key = row.unit == "analyses" ? row.demand : row.dc;
@@ -546,7 +544,6 @@ void add_wall_tie_section(Ctx& c, const std::string& wall,
                               numeric_cell(x.t("demand")), numeric_cell(x.t("capacity")), Cell(x.t("unit")),
                               numeric_cell("D/C"), Cell(x.t("outcome"))},
                              rows, x.t("checks_title") + " — " + l0.tie.name);
-        (void)all_ok;
       }
   }
   detailing(x, levels);
