@@ -3,9 +3,10 @@
 # overrides, another site and soil) gives the numbers of its expanded
 # single-mechanism case run alone; the governing mechanisms are recomputed
 # from the single runs.
-# Issue 23: building-house-ties (a wall's design of a tie, a mechanism's given
-# ties, a mechanism that opts out with "design": null) also compares each
-# mechanism's tie result and the building's index before/after the ties.
+# Issue 23: building-house-ties (a wall's existing tie and its design, which
+# act on every mechanism of the wall they cross, issue 37) also compares each
+# mechanism's stato di fatto with the ties and the building's index
+# before/after the ties.
 foreach(b building-house:mechanisms/building-house.json chiesa_piccola:tests/cli/building/chiesa_piccola.json
           palazzo_sulmona:tests/cli/building/palazzo_sulmona.json building-house-ties:mechanisms/building-house-ties.json)
   string(REPLACE ":" ";" parts ${b})
