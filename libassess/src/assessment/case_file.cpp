@@ -646,6 +646,10 @@ TieLayout parse_layout(const JsonNode& t) {
 }
 
 // The fields a tie level shares with a level to design (no rod, no anchor).
+// Issue 37: the wall around the anchors (its crown, the load on it, its
+// openings), the masonry's sliding parameters, the temperature variation and
+// the corrosion allowance; the crown and the unit weight default to the block
+// the tie holds (resolve_ties below).
 void parse_tie_common(const JsonNode& t, Tie& tie, double FC, std::size_t index) {
   tie.name = t.find("name") ? t.string("name") : "tie " + std::to_string(index + 1);
   tie.point = t.point("point");
@@ -658,15 +662,40 @@ void parse_tie_common(const JsonNode& t, Tie& tie, double FC, std::size_t index)
   }
   tie.free_length = t.number("free_length_m", "m", TB::free_length_min, TB::free_length_max);
   const JsonNode m = t.at("masonry");
-  m.allow_only({"fm_MPa", "tau_MPa", "thickness_m", "FC", "gamma_M"});
+  m.allow_only({"fm_MPa", "tau_MPa", "thickness_m", "FC", "gamma_M", "fv0_MPa", "mu", "unit_weight_kN_m3"});
   tie.masonry.fm = m.number("fm_MPa", "MPa", TB::fm_min / 1e6, TB::fm_max / 1e6) * 1e6;
   tie.masonry.tau = m.number("tau_MPa", "MPa", TB::tau_min / 1e6, TB::tau_max / 1e6) * 1e6;
   tie.masonry.thickness = m.number("thickness_m", "m", TB::thickness_min, TB::thickness_max);
   tie.masonry.FC = m.number_or("FC", FC, "-", 1.0, 10.0);
   tie.masonry.gamma_M = m.number_or("gamma_M", tie_catalogue::masonry_gamma_M, "-", 1.0, 10.0);
+  tie.masonry.fv0 = m.number_or("fv0_MPa", tie.masonry.tau / 1e6, "MPa", TB::tau_min / 1e6, TB::tau_max / 1e6) * 1e6;
+  tie.masonry.mu = m.number_or("mu", tie_catalogue::sliding_mu, "-", 0.0, 1.5);
+  tie.masonry.unit_weight = m.number_or("unit_weight_kN_m3", 0.0, "kN/m^3", TB::unit_weight_min / 1e3,
+                                        TB::unit_weight_max / 1e3) * 1e3;  // 0: the block's (resolve_ties)
   tie.layout = parse_layout(t);
   tie.spacing = tie.layout.wall_length / tie.layout.count;
   tie.pretension = t.number_or("pretension_kN", 0.0, "kN", 0.0, TB::pretension_max / kN) * kN;
+  tie.delta_T = t.number_or("delta_T_K", tie_catalogue::delta_T, "K", 0.0, TB::delta_T_max);
+  tie.rod.corrosion = t.number_or("corrosion_mm", tie_catalogue::corrosion_loss * 1e3, "mm", 0.0,
+                                  TB::corrosion_max * 1e3) * 1e-3;
+  tie.layout.crown = t.number_or("crown_z_m", std::numeric_limits<double>::infinity(), "m", -1e4, 1e4);
+  tie.layout.crown_load = t.number_or("crown_load_kN_m", 0.0, "kN/m", 0.0, TB::crown_load_max / kN) * kN;
+  if (t.find("openings")) {
+    const std::vector<JsonNode> ops = t.array("openings");
+    if (ops.size() > static_cast<std::size_t>(TB::openings_max))
+      t.at("openings").fail(std::to_string(ops.size()) + " openings: expected at most " + std::to_string(TB::openings_max));
+    for (const JsonNode& o : ops) {
+      o.allow_only({"x0_m", "x1_m", "z0_m", "z1_m"});
+      WallOpening w;
+      w.x0 = o.number("x0_m", "m", -1e4, 1e4);
+      w.x1 = o.number("x1_m", "m", -1e4, 1e4);
+      w.z0 = o.number("z0_m", "m", -1e4, 1e4);
+      w.z1 = o.number("z1_m", "m", -1e4, 1e4);
+      if (!(w.x1 > w.x0) || !(w.z1 > w.z0))
+        o.fail("expected x0_m < x1_m (along the wall from its first end) and z0_m < z1_m (m)");
+      tie.layout.openings.push_back(w);
+    }
+  }
 }
 
 // The end of a rod: its ISO metric thread (the table of tie_catalogue.hpp).
@@ -704,7 +733,8 @@ void parse_rod_ends(const JsonNode& r, TieRod& rod) {
 
 Tie parse_tie(const JsonNode& t, double FC, std::size_t index) {
   t.allow_only({"name", "existing", "point", "block", "direction", "rod", "free_length_m", "anchor", "masonry",
-                "wall_length_m", "count", "spacing_m", "edge_distance_m", "pretension_kN"});
+                "wall_length_m", "count", "spacing_m", "edge_distance_m", "pretension_kN", "delta_T_K", "corrosion_mm",
+                "crown_z_m", "crown_load_kN_m", "openings"});
   Tie tie;
   tie.existing = t.boolean_or("existing", false);
   parse_tie_common(t, tie, FC, index);
@@ -720,7 +750,7 @@ Tie parse_tie(const JsonNode& t, double FC, std::size_t index) {
   const tie_catalogue::SteelGrade& g = grade_of(r, "grade", tie.rod.grade);
   tie.rod.fyk = g.fyk;
   tie.rod.ftk = g.ftk;
-  tie.rod.elongation = g.elongation;
+  tie.rod.eps_uk = g.eps_uk;
   if (r.find("fyk_MPa")) tie.rod.fyk = r.number("fyk_MPa", "MPa", TB::fyk_min / 1e6, TB::fyk_max / 1e6) * 1e6;
   if (r.find("ftk_MPa")) tie.rod.ftk = r.number("ftk_MPa", "MPa", tie.rod.fyk / 1e6, 2.0 * TB::fyk_max / 1e6) * 1e6;
   if (!(tie.rod.ftk >= tie.rod.fyk))
@@ -749,29 +779,42 @@ Tie parse_tie(const JsonNode& t, double FC, std::size_t index) {
     tie.anchor.b = a.number("diameter_mm", "mm", TB::bar_diameter_min * 1e3, TB::bar_diameter_max * 1e3) * 1e-3;
   }
   tie.anchor.fyk = grade_of(a, "grade", tie.anchor.grade).fyk;
-  try {
-    const TieResistance res = tie_resistance(tie);  // validate() and the pretension below the strength
-    (void)res;
-  } catch (const InputError& e) {
-    (t.has("pretension_kN") && std::string(e.what()).find("pretension") != std::string::npos ? t.at("pretension_kN") : t)
-        .fail(e.what());
-  }
-  return tie;
+  return tie;  // its default pretension and its wall by resolve_ties
 }
 
 TieDesignSpec parse_tie_design(const JsonNode& d, double FC) {
   d.allow_only({"ties"});
   const JsonNode t = d.at("ties");
-  t.allow_only({"levels", "grades", "ends", "min_rod_diameter_mm"});
+  t.allow_only({"levels", "grades", "plate_grades", "anchors", "ends", "min_rod_diameter_mm"});
   TieDesignSpec spec;
   std::size_t i = 0;
-  for (const JsonNode& l : t.array("levels", 1)) {
+  // Issue 37: no level to design is allowed (the design then changes only the
+  // existing ties that fail: the least change, tie_intervention.hpp).
+  for (const JsonNode& l : t.array("levels", 0)) {
     l.allow_only({"name", "point", "block", "direction", "free_length_m", "masonry", "wall_length_m", "count",
-                  "spacing_m", "edge_distance_m", "pretension_kN"});
+                  "spacing_m", "edge_distance_m", "pretension_kN", "delta_T_K", "corrosion_mm", "crown_z_m",
+                  "crown_load_kN_m", "openings"});
     Tie tie;
     parse_tie_common(l, tie, FC, i++);
     if (!l.find("name")) tie.name = "new tie " + std::to_string(i);
     spec.levels.push_back(tie);
+    spec.pretension_given.push_back(l.has("pretension_kN"));
+  }
+  if (t.find("plate_grades")) {
+    spec.plate_grades.clear();
+    for (const JsonNode& g : t.array("plate_grades", 1)) {
+      const std::string s = g.as_string();
+      if (!tie_catalogue::find_grade(s) || s == "B450C") g.fail("\"" + s + "\": expected \"S235\", \"S275\" or \"S355\"");
+      spec.plate_grades.push_back(s);
+    }
+  }
+  if (t.find("anchors")) {
+    spec.anchors.clear();
+    for (const JsonNode& g : t.array("anchors", 1)) {
+      const std::string s = g.as_string();
+      if (s != "plate" && s != "bar") g.fail("\"" + s + "\": expected \"plate\" or \"bar\" (paletto)");
+      spec.anchors.push_back(s == "plate" ? AnchorType::Plate : AnchorType::Bar);
+    }
   }
   if (t.find("grades")) {
     spec.grades.clear();
@@ -781,7 +824,10 @@ TieDesignSpec parse_tie_design(const JsonNode& d, double FC) {
       spec.grades.push_back(s);
     }
   }
-  if (t.find("ends")) spec.ends = t.choice("ends", {"threaded", "upset"}) == "upset" ? TieEnds::Upset : TieEnds::Threaded;
+  if (t.find("ends")) {
+    const std::string e = t.choice("ends", {"threaded", "upset", "welded"});
+    spec.ends = e == "upset" ? TieEnds::Upset : e == "welded" ? TieEnds::Welded : TieEnds::Threaded;
+  }
   spec.min_rod_diameter = t.number_or("min_rod_diameter_mm", tie_catalogue::min_rod_diameter * 1e3, "mm",
                                       tie_catalogue::rod_diameters.front() * 1e3,
                                       tie_catalogue::rod_diameters.back() * 1e3) *
@@ -790,9 +836,13 @@ TieDesignSpec parse_tie_design(const JsonNode& d, double FC) {
 }
 
 // Every level must hold a moving block of at least one candidate, and the
-// wall it is laid along must be at least as long as the candidates that hold it.
-void check_ties_hold(const JsonNode& arr, const std::vector<Tie>& ties, const std::vector<std::size_t>& index,
-                     const MechanismSet& set) {
+// wall it is laid along must be at least as long as the candidates that hold
+// it. Issue 37: the wall's defaults from the block it holds (the first
+// candidate's): its crown (the block's top) and the masonry's unit weight;
+// then every given tie is validated with its wall (an anchor within it).
+// `given`: the ties have a rod and an anchor (not a design's levels).
+void resolve_ties(const JsonNode& arr, std::vector<Tie>& ties, const std::vector<std::size_t>& index,
+                  const MechanismSet& set, bool given) {
   for (std::size_t i = 0; i < ties.size(); ++i) {
     const JsonNode node = arr.at(index[i]);
     bool holds = false;
@@ -804,8 +854,18 @@ void check_ties_hold(const JsonNode& arr, const std::vector<Tie>& ties, const st
         node.fail(e.what());
       }
       if (b < 0) continue;
+      const Block& blk = m.chain.blocks()[static_cast<std::size_t>(b)];
+      if (!holds) {
+        if (!node.has("crown_z_m")) {
+          double top = -std::numeric_limits<double>::infinity();
+          for (const Eigen::Vector2d& v : blk.polygon) top = std::max(top, v.y());
+          ties[i].layout.crown = top;
+        }
+        if (!(ties[i].masonry.unit_weight > 0.0))
+          ties[i].masonry.unit_weight = std::clamp(blk.unit_weight, TB::unit_weight_min, TB::unit_weight_max);
+      }
       holds = true;
-      const double length = m.chain.blocks()[static_cast<std::size_t>(b)].length;
+      const double length = blk.length;
       if (length > ties[i].layout.wall_length * (1.0 + 1e-9))
         node.at("wall_length_m")
             .fail("the wall is " + tnum(ties[i].layout.wall_length) + " m long, shorter than the mechanism (" +
@@ -816,6 +876,29 @@ void check_ties_hold(const JsonNode& arr, const std::vector<Tie>& ties, const st
                             tnum(ties[i].point.y()) +
                             ") m is on no moving block of the mechanism (the wall's outer face is x = 0, "
                             "the wall at x < 0, z up from the foundation)");
+    if (!given) continue;
+    // Issue 37: a new tie's pretension takes up the temperature range unless
+    // given: E A alpha_T dT, when below the tie's strength (else none, and
+    // its "pretension" check fails, saying so); an existing tie's is what it
+    // is (0 unless given).
+    if (!ties[i].existing && !node.has("pretension_kN")) {
+      Tie slack = ties[i];
+      slack.pretension = 0.0;
+      try {
+        const double P = thermal_pretension(slack);
+        if (P < tie_resistance(slack).design) ties[i].pretension = P;
+      } catch (const InputError&) {
+        // refused below, with the node
+      }
+    }
+    try {
+      (void)tie_resistance(ties[i]);  // validate() with the wall, and the pretension below the strength
+    } catch (const InputError& e) {
+      (node.has("pretension_kN") && std::string(e.what()).find("pretension") != std::string::npos
+           ? node.at("pretension_kN")
+           : node)
+          .fail(e.what());
+    }
   }
 }
 // ---- end issue 23 -------------------------------------------------------------
@@ -954,15 +1037,15 @@ CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
           for (const Tie& u : *w)
             if (&t != &u && t.name == u.name)
               root.at("ties").fail("two tie levels named \"" + t.name + "\": expected distinct names");
-    check_ties_hold(root.at("ties"), c.ties, idx_old, c.mechanism);
-    check_ties_hold(root.at("ties"), c.new_ties, idx_new, c.mechanism);
+    resolve_ties(root.at("ties"), c.ties, idx_old, c.mechanism, true);
+    resolve_ties(root.at("ties"), c.new_ties, idx_new, c.mechanism, true);
     levels += arr.size();
   }
   if (const auto d = root.find("design")) {
     c.tie_design = parse_tie_design(*d, c.options.FC);
     std::vector<std::size_t> idx(c.tie_design->levels.size());
     for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = i;
-    check_ties_hold(d->at("ties").at("levels"), c.tie_design->levels, idx, c.mechanism);
+    resolve_ties(d->at("ties").at("levels"), c.tie_design->levels, idx, c.mechanism, false);
     levels += idx.size();
     for (const Tie& t : c.tie_design->levels)
       for (const auto* v : {&c.ties, &c.new_ties})
@@ -974,6 +1057,10 @@ CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
   if (levels > static_cast<std::size_t>(TB::levels_max))
     root.fail(std::to_string(levels) + " tie levels in \"ties\" and \"design\": expected at most " +
               std::to_string(TB::levels_max));
+  if (c.tie_design && c.tie_design->levels.empty() && c.ties.empty())
+    root.at("design").at("ties").at("levels").fail("empty, and the case has no existing tie to change: expected at "
+                                      "least one level to design (or existing ties, whose failures the design then "
+                                      "changes by the least change)");
   c.warnings = input_warnings(doc.at("mechanism"), file);
   // Hook for the façade issue (dynamic rocking): kept raw, parsed there.
   if (root.has("dynamic")) c.dynamic = doc.at("dynamic");

@@ -397,9 +397,10 @@ std::vector<DynamicRun> dynamic_runs(const FacadeAssessment& a, const MechanismD
   return runs;
 }
 
-double dynamic_d_SLV(const KinematicResult& kin) {
-  return kin.without_ties ? std::max(kin.d_SLV, kin.without_ties->d_SLV) : kin.d_SLV;
-}
+// Issue 37: one displacement capacity per state, the same in the kinematic
+// and the dynamic check (the tied wall's, with its levels breaking where they
+// fail: docs/theory/ties.md §2).
+double dynamic_d_SLV(const KinematicResult& kin) { return kin.d_SLV; }
 
 std::vector<RestitutionSummary> summarise_runs(const std::vector<DynamicRun>& runs, const std::vector<double>& e,
                                                const KinematicResult& kin) {

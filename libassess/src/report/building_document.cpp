@@ -403,6 +403,12 @@ std::string tie_label(Lang L, const TieInterventionResult& t, bool after) {
     if (g.levels > 1) s += " (" + std::to_string(g.levels) + " " + bt(L, "ties_levels") + ")";
     out += (out.empty() ? "" : "; ") + s;
   }
+  // Issue 37: the existing levels the design changed.
+  if (after)
+    for (const TieChange& c : t.changes)
+      out += (out.empty() ? "" : "; ") + msg(L, "tie.existing") + ": " +
+             (c.kind == "removed" ? msg(L, "tie.change.removed")
+                                  : msg(L, c.kind == "anchor" ? "tie.change_short.anchor" : "tie.change_short.rod"));
   if (after && t.designed && !t.found) out = bt(L, "ties_not_found") + " (" + out + ")";
   return out.empty() ? "—" : out;
 }
@@ -773,6 +779,24 @@ Document building_document(const BuildingAssessment& b, const ReportOptions& opt
     mo.shared_records = m.record_set == RecordSetKind::shared ? m.record_group : "";
     facade_mechanism_sections(r.a, mo, d, &readings);
     d.set_heading_shift(0);
+    d.set_id_prefix("");
+  }
+  // Issue 37: the ties of each wall once, with the mechanisms they restrain.
+  for (std::size_t w = 0; w < bc.doc.at("walls").size(); ++w) {
+    std::vector<std::pair<std::string, const TieInterventionResult*>> members;
+    const FacadeAssessment* first = nullptr;
+    std::string wall;
+    for (std::size_t i = 0; i < bc.mechanisms.size(); ++i)
+      if (bc.mechanisms[i].wall_index == w && bc.mechanisms[i].wall_ties && b.results[i].ties &&
+          b.results[i].ties->wall_members.size() > 1) {
+        members.push_back({bc.mechanisms[i].id + " " + bc.mechanisms[i].name, &*b.results[i].ties});
+        if (!first) first = &b.results[i].a, wall = bc.mechanisms[i].wall;
+      }
+    if (members.empty()) continue;
+    mo.ties = members.front().second;
+    d.set_id_prefix("wall" + std::to_string(w + 1) + "-");
+    relazione::Ctx c{*first, mo, L, d, &readings};
+    relazione::add_wall_tie_section(c, wall, members);
     d.set_id_prefix("");
   }
   mo.ties = nullptr;

@@ -251,10 +251,9 @@ std::vector<std::size_t> dynamic_candidates(const KinematicCaseResult& k);
 std::vector<DynamicRun> dynamic_runs(const FacadeAssessment& a, const MechanismDynamics& md, const KinematicResult& kin,
                                      bool histories);
 
-/// The capacity d_SLV (m) of the dynamic check: kin.d_SLV, or for a
-/// mechanism held by tie levels the larger of the tied one (up to the first
-/// level's strength) and the bare wall's, which a wall whose tie broke is left
-/// with (issue 29; docs/theory/ties.md §6).
+/// The capacity d_SLV (m) of the dynamic check: kin.d_SLV, the one capacity
+/// of the state (issue 37: with tie levels, the curve with each level breaking
+/// where it fails; docs/theory/ties.md §2, §6).
 double dynamic_d_SLV(const KinematicResult& kin);
 
 /// The analyses of each restitution value summarised against `kin`'s d_SLV
