@@ -4,6 +4,9 @@
 // progress on stderr, then writes the summary and the plots.
 #include "commands.hpp"
 
+#include <assess/support/number_rules.hpp>
+#include <assess/support/termination.hpp>
+
 #include <assess/campaign/campaign.hpp>
 #include <assess/campaign/campaign_report.hpp>
 #include <assess/campaign/campaign_runner.hpp>
@@ -13,7 +16,6 @@
 
 #include <atomic>
 #include <chrono>
-#include <csignal>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -86,17 +88,14 @@ class Progress {
   std::uint64_t first_ = 0;
 };
 
-// Set by SIGINT/SIGTERM: the runner finishes the groups under way, writes
-// them, and stops; --resume continues.
+// Set by the first SIGINT/SIGTERM (support/termination.hpp): the runner
+// finishes the groups under way, writes them, and stops; --resume continues.
 std::atomic<bool> g_cancel{false};
-extern "C" void on_signal(int) { g_cancel = true; }
 
 void run(const CampaignArgs& a) {
   // MPI only when launched by mpirun, loaded at run time (mpi_session.hpp).
   const MpiSession mpi;
   const int rank = mpi.rank(), ranks = mpi.size();
-  if (a.limit_given && a.limit == 0)
-    throw InputError("--limit 0 would run no analysis: expected N >= 1 (only ids < N run)");
   const Campaign campaign(read_campaign(a.file));
   CampaignRunOptions o;
   // Several ranks on one machine share its cores: one thread each unless told.
@@ -108,8 +107,7 @@ void run(const CampaignArgs& a) {
   Progress progress(!a.quiet && rank == 0, ranks > 1 ? "rank 0/" + std::to_string(ranks) + " " : "");
   o.progress = std::ref(progress);
   o.cancel = &g_cancel;
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
+  set_interrupt_flag(&g_cancel);
 
   std::string error;
   CampaignRunSummary s;
@@ -167,9 +165,11 @@ void add_campaign_command(CLI::App& app) {
       "models), with the code's demand/capacity ratios; all cores, resumable, MPI-aware");
   cmd->add_option("campaign", a->file, "campaign file (JSON, see docs/user/campaign.md)")->required();
   cmd->add_option("--out", a->out, "output directory (results.csv, summary.json, campaign.json, plots)")->required();
-  cmd->add_option("--threads", a->threads, "worker threads (default: all cores; 1 per rank under mpirun)");
+  with_rule(cmd->add_option("--threads", a->threads, "worker threads (default: all cores; 1 per rank under mpirun)"),
+            option_rules::threads);
   cmd->add_flag("--resume", a->resume, "continue the results in --out after their last complete row");
-  cmd->add_option("--limit", a->limit, "run only the analyses with id < N (tests, trials)");
+  static const NumberRule limit{"analyses", 1.0, 1e18, false, false, "only the analyses with id < N run: 0 would run none"};
+  with_rule(cmd->add_option("--limit", a->limit, "run only the analyses with id < N (tests, trials)"), limit);
   cmd->add_flag("--quiet", a->quiet, "no progress on stderr");
   cmd->add_flag("--no-plots", a->no_plots, "write results and summary only");
   cmd->callback([a, cmd] {

@@ -9,16 +9,19 @@
 #include <assess/assessment/case_file.hpp>
 #include <assess/support/json_input.hpp>
 #include <assess/campaign/campaign_runner.hpp>
+#include <assess/hazard/seismic_action.hpp>
 #include <assess/report/plot.hpp>
+#include <assess/risk/fragility_case.hpp>
 #include <assess/risk/fragility_job.hpp>
 #include <assess/risk/fragility_report.hpp>
 #include <assess/risk/fragility_result.hpp>
 #include <assess/risk/fragility_study.hpp>
 #include <assess/support/error.hpp>
+#include <assess/support/number_rules.hpp>
+#include <assess/support/termination.hpp>
 #include <assess/support/units.hpp>
 
 #include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -40,31 +43,9 @@ struct FragilityArgs {
   std::uint64_t seed = 1;
 };
 
+// Set by the first SIGINT/SIGTERM (support/termination.hpp): the analyses
+// under way finish and are written; --resume continues.
 std::atomic<bool> g_cancel{false};
-extern "C" void on_fragility_signal(int) { g_cancel = true; }
-
-// "30,475,2475" -> numbers; the option's name in errors.
-std::vector<double> parse_list(const std::string& text, const std::string& option, const char* unit) {
-  std::vector<double> v;
-  std::stringstream ss(text);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    try {
-      std::size_t n = 0;
-      const double x = std::stod(item, &n);
-      if (n != item.size()) throw std::invalid_argument(item);
-      v.push_back(x);
-    } catch (const std::exception&) {
-      throw InputError(option + ": '" + item + "' is not a number (expected a comma-separated list in " + unit + ")");
-    }
-  }
-  if (v.empty()) throw InputError(option + ": empty list (expected numbers in " + unit + ")");
-  return v;
-}
-
-std::string default_out(const std::string& file) {
-  return std::filesystem::path(file).stem().string() + ".fragility";
-}
 
 void run(const FragilityArgs& a) {
   // MPI only when launched by mpirun, loaded at run time (mpi_session.hpp).
@@ -74,52 +55,25 @@ void run(const FragilityArgs& a) {
   fo.method = a.ida ? FragilityMethod::ida : FragilityMethod::stripes;
   if (!a.stripes.empty()) {
     if (a.ida) throw InputError("--stripes: not with --ida (IDA levels are given by --ida-levels)");
-    fo.return_periods = parse_list(a.stripes, "--stripes", "years");
+    static const NumberRule stripe{"years", tr_min_years, tr_max_years, false, false, "the range of the hazard data"};
+    fo.return_periods = parse_number_list(a.stripes, "--stripes", stripe);
   }
   if (!a.ida_levels.empty()) {
     if (!a.ida) throw InputError("--ida-levels: only with --ida");
-    for (double g : parse_list(a.ida_levels, "--ida-levels", "g")) fo.ida_levels.push_back(g * units::g);
+    static const NumberRule level{"g", 0.0, 10.0, true, false, "a PGA above 0 and at most 10 g"};
+    for (double g : parse_number_list(a.ida_levels, "--ida-levels", level)) fo.ida_levels.push_back(g * units::g);
   }
   fo.records = a.records;
   fo.bootstrap = a.bootstrap;
   fo.seed = a.seed;
   const nlohmann::json doc = read_json_file(a.file, input_kinds::case_file);
-  CaseFile kase;
-  std::optional<BuildingCase> building;  // a building case: its errors name its paths and the mechanism
-  std::size_t mechanism_index = 0;
-  std::string out_default = default_out(a.file);
-  if (is_building_document(doc)) {
-    // A building case (issue 22): the mechanism named by --mechanism, else the
-    // governing one (docs/user/building.md, "Fragility").
-    const BuildingCase bc = parse_building(doc, a.file);
-    const BuildingMechanism* m = a.mechanism.empty() ? nullptr : &find_mechanism(bc, a.mechanism);
-    if (!m) {
-      const std::string approach = bc.mechanisms.front().kase.method == "linear" ? "strength" : "displacement";
-      m = &bc.mechanisms[governing_mechanism_kinematic(bc, approach)];
-      if (!a.quiet && rank == 0)
-        std::cerr << "assess fragility: " << m->id << " \"" << m->name << "\", the building's governing mechanism ("
-                  << "lowest NTC 2018 zetaE, " << approach << "); --mechanism ID for another\n";
-    }
-    kase = m->kase;
-    building = bc;
-    mechanism_index = static_cast<std::size_t>(m - bc.mechanisms.data());
-    out_default = std::filesystem::path(a.file).stem().string() + "." + m->id + ".fragility";
-  } else {
-    if (!a.mechanism.empty())
-      throw InputError(a.file + ": --mechanism applies to a building case (a file with \"walls\"), not to a "
-                       "single-mechanism case");
-    kase = parse_case(doc, a.file);
-  }
-  const FragilityStudy study = [&] {
-    try {
-      return prepare_fragility(kase, fo);
-    } catch (const InputError& e) {
-      if (!building) throw;
-      throw InputError(building_path_message(*building, building->mechanisms[mechanism_index], e.what()));
-    }
-  }();
+  // The mechanism studied (risk/fragility_case.hpp): a building case's named
+  // or governing one (issue 22; docs/user/building.md, "Fragility").
+  const FragilityCase fc = fragility_case(doc, a.file, a.mechanism);
+  if (!fc.note.empty() && !a.quiet && rank == 0) std::cerr << "assess fragility: " << fc.note << "\n";
+  const FragilityStudy study = prepare_case_fragility(fc, fo);
   const FragilityJob job(study);
-  const std::string out = a.out.empty() ? out_default : a.out;
+  const std::string out = a.out.empty() ? fc.default_out : a.out;
 
   CampaignRunOptions o;
   o.threads = a.threads ? a.threads : (ranks > 1 ? 1u : 0u);
@@ -127,8 +81,7 @@ void run(const FragilityArgs& a) {
   o.part = rank;
   o.parts = ranks;
   o.cancel = &g_cancel;
-  std::signal(SIGINT, on_fragility_signal);
-  std::signal(SIGTERM, on_fragility_signal);
+  set_interrupt_flag(&g_cancel);
   if (!a.quiet && rank == 0)
     std::cerr << "assess fragility: " << study.stripes.size() << " levels, " << job.size() << " analyses";
   std::string error;
@@ -186,11 +139,18 @@ void add_fragility_command(CLI::App& app) {
   cmd->add_flag("--ida", a->ida, "incremental dynamic analysis: one record set scaled to each PGA level");
   cmd->add_option("--ida-levels", a->ida_levels,
                   "PGA levels of the IDA, comma-separated (g; default 16 from half the 30-year to 3x the 2475-year PGA)");
-  cmd->add_option("--records", a->records, "records per stripe (default: the case's select/count, 7)");
-  cmd->add_option("--bootstrap", a->bootstrap, "bootstrap replicates over records for the bounds (default 500; 0 = none)");
-  cmd->add_option("--seed", a->seed, "seed of the bootstrap (default 1)");
+  // Every number option with its range and reason (FragilityOptions::validate's, one place each).
+  static const NumberRule records{"records", 1.0, 1000.0, false, false,
+                                  "records per stripe; leave --records out for the case's select/count"};
+  static const NumberRule bootstrap{"replicates", 0.0, 100000.0, false, false, "0 = no bounds"};
+  with_rule(cmd->add_option("--records", a->records, "records per stripe (default: the case's select/count, 7)"), records);
+  with_rule(cmd->add_option("--bootstrap", a->bootstrap,
+                            "bootstrap replicates over records for the bounds (default 500; 0 = none)"),
+            bootstrap);
+  with_rule(cmd->add_option("--seed", a->seed, "seed of the bootstrap (default 1)"), option_rules::seed);
   cmd->add_option("--out", a->out, "output directory (default CASE.fragility next to the working directory)");
-  cmd->add_option("--threads", a->threads, "worker threads (default: all cores; 1 per rank under mpirun)");
+  with_rule(cmd->add_option("--threads", a->threads, "worker threads (default: all cores; 1 per rank under mpirun)"),
+            option_rules::threads);
   cmd->add_flag("--resume", a->resume, "continue the results in --out after their last complete row");
   cmd->add_flag("--json", a->json, "print the summary as JSON");
   cmd->add_flag("--quiet", a->quiet, "no progress on stderr");

@@ -9,6 +9,7 @@
 #include <assess/report/kinematic_report.hpp>
 #include <assess/assessment/tie_intervention.hpp>
 #include <assess/report/tie_report.hpp>
+#include <assess/risk/run_report.hpp>
 #include <assess/support/error.hpp>
 #include <assess/support/units.hpp>
 
@@ -38,13 +39,11 @@ void run(const KinematicArgs& a) {
   const KinematicCaseResult out = run_kinematic_case(c);  // alpha0 <= 0: InputError "statically unstable"
   print_warnings(out.warnings);
   // Issue 23: ties before/after and their checks (they need the site's hazard).
-  std::optional<TieInterventionResult> ties;
-  if (has_ties(c) && c.site) ties = run_tie_intervention(c);
-  if (c.tie_design && !c.site)
-    print_warnings({c.file + ": /design: the design of ties needs the site's hazard (\"site\"): not done"});
+  std::vector<std::string> tie_warnings;
+  const std::optional<TieInterventionResult> ties = kinematic_ties(c, tie_warnings);
+  print_warnings(tie_warnings);
   if (a.json) {
-    nlohmann::json j = kinematic_json(c, out);
-    if (ties) j["ties"] = tie_json(*ties);
+    nlohmann::json j = kinematic_run_json(c, out, ties);
     std::cout << stamp_version(j).dump(2) << "\n";
   } else {
     std::cout << kinematic_text(c, out, a.wide ? TextWidth::wide : TextWidth::columns120);

@@ -6,6 +6,7 @@
 
 #include <assess/hazard/site.hpp>
 #include <assess/records/library_selection.hpp>
+#include <assess/report/records_report.hpp>
 #include <assess/records/record_catalogue.hpp>
 #include <assess/records/record_library.hpp>
 #include <assess/records/record_selection.hpp>
@@ -22,6 +23,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <optional>
@@ -48,6 +50,11 @@ struct RecordsArgs {
 
 std::string default_catalogue() { return data_dir() + "/spectra/records/catalogue.json"; }
 
+std::string directory_of(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? std::string(".") : slash == 0 ? std::string("/") : path.substr(0, slash);
+}
+
 std::string num(double v, const char* f = "%.3g") {
   if (!std::isfinite(v)) return "-";
   char buf[32];
@@ -55,57 +62,28 @@ std::string num(double v, const char* f = "%.3g") {
   return buf;
 }
 
-nlohmann::ordered_json jnum(double v) {
-  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
-}
-
-nlohmann::ordered_json entry_json(const CatalogueEntry& e) {
-  nlohmann::ordered_json j;
-  j["id"] = e.id;
-  j["file"] = e.file;
-  j["event"] = e.event;
-  j["date"] = e.date;
-  j["Mw"] = jnum(e.Mw);
-  j["station"] = e.station;
-  j["component"] = e.component;
-  j["positive_direction"] = e.positive_direction;
-  j["distance_km"] = jnum(e.distance_km);
-  j["distance_kind"] = e.distance_kind;
-  j["vs30_m_s"] = jnum(e.vs30_m_s);
-  j["site_class"] = e.site_class;
-  j["site_class_basis"] = e.site_class_basis;
-  j["vs30_class"] = e.vs30_class;
-  j["country"] = e.country;
-  j["lowest_usable_hz"] = jnum(e.lowest_usable_hz);
-  j["pulse"] = e.pulse;
-  j["pulse_period_s"] = jnum(e.pulse_period_s);
-  j["near_fault"] = near_fault_reason(e);
-  j["pga_g"] = e.pga_g;
-  j["significant_duration_s"] = e.significant_duration_s;
-  j["usable_for_design"] = e.usable_for_design;
-  j["note"] = e.note;
-  return j;
-}
-
-CatalogueFilters make_filters(const RecordsArgs& a) {
-  CatalogueFilters f;
-  if (a.mw_min) f.Mw_min = *a.mw_min, f.Mw_given = true;
-  if (a.mw_max) f.Mw_max = *a.mw_max, f.Mw_given = true;
-  if (a.r_min) f.R_min_km = *a.r_min, f.R_given = true;
-  if (a.r_max) f.R_max_km = *a.r_max, f.R_given = true;
-  f.site_classes = a.site_classes;
-  for (const auto& c : f.site_classes)
-    if (c.size() != 1 || std::string("ABCDE").find(c) == std::string::npos)
-      throw InputError("--site-class '" + c + "': expected A, B, C, D or E");
-  f.countries = a.countries;
-  f.relax_site_class = !a.no_relax;
-  return f;
+// The filter options of the command line (report/records_report.hpp).
+RecordFilterOptions filter_options(const RecordsArgs& a) {
+  RecordFilterOptions o;
+  o.mw_min = a.mw_min, o.mw_max = a.mw_max, o.r_min = a.r_min, o.r_max = a.r_max;
+  o.site_classes = a.site_classes;
+  o.countries = a.countries;
+  o.relax = !a.no_relax;
+  return o;
 }
 
 void run_build(const RecordsArgs& a) {
   const std::string table = a.metadata.empty() ? data_dir() + "/spectra/records/metadata.csv" : a.metadata;
+  const std::string out = a.output.empty() ? directory_of(table) + "/catalogue.json" : a.output;
+  const std::string spectra = directory_of(out) + "/" + library_spectra_file;
+  // The two outputs, neither an input (the table, a record) nor each other
+  // (--output DIR/spectra.bin), refused before the records are read.
+  check_output_files({{out, "--output", ""}, {spectra, "the record spectra", ""}});
   RecordCatalogue cat = build_catalogue(table);
-  const std::string out = a.output.empty() ? cat.directory + "/catalogue.json" : a.output;
+  // A catalogue written in another folder than the table's: its file paths
+  // relative to where it is, so that they resolve (issue 39).
+  std::error_code ec;
+  if (!std::filesystem::equivalent(directory_of(out), cat.directory, ec)) relocate_catalogue(cat, directory_of(out));
   const std::string text = catalogue_json(cat);
   write_output_file(out, text, "--output");
   std::size_t usable = 0;
@@ -113,9 +91,6 @@ void run_build(const RecordsArgs& a) {
   std::cout << "wrote " << out << ": " << cat.entries.size() << " components, " << usable << " usable for design\n";
   // The precomputed spectra beside it, tied to this text by its hash (record_spectra.hpp).
   cat.text_hash = content_hash(text);
-  const auto slash = out.find_last_of('/');
-  const std::string spectra = (slash == std::string::npos ? std::string(".") : out.substr(0, slash)) + "/" +
-                              library_spectra_file;
   const LibrarySpectra s = compute_library_spectra(cat);
   write_library_spectra(s, spectra);
   std::cout << "wrote " << spectra << ": 5 % PSA of " << s.ids.size() << " components at " << s.periods.size()
@@ -125,22 +100,10 @@ void run_build(const RecordsArgs& a) {
 
 void run_list(const RecordsArgs& a) {
   const RecordCatalogue cat = read_catalogue(a.catalogue.empty() ? default_catalogue() : a.catalogue);
-  std::vector<CatalogueEntry> shown;
-  std::vector<std::string> warnings;
-  const bool filtering = a.mw_min || a.mw_max || a.r_min || a.r_max || !a.site_classes.empty() || !a.countries.empty();
-  if (a.all && !filtering) {
-    shown = cat.entries;
-  } else {
-    CatalogueFilters f = make_filters(a);
-    if (!f.Mw_given) f.Mw_min = 0.0, f.Mw_max = 10.0, f.Mw_given = true;     // list: no default window
-    if (!f.R_given) f.R_min_km = 0.0, f.R_max_km = 1e9, f.R_given = true;
-    f.relax_site_class = false;
-    const CatalogueFilterResult r = filter_catalogue(cat.entries, f);
-    shown = r.kept;
-  }
+  const std::vector<CatalogueEntry> shown = catalogue_listing(cat, filter_options(a), a.all);
   if (a.json) {
     nlohmann::ordered_json j = nlohmann::ordered_json::array();
-    for (const auto& e : shown) j.push_back(entry_json(e));
+    for (const auto& e : shown) j.push_back(catalogue_entry_json(e));
     std::cout << j.dump(1) << "\n";
     return;
   }
@@ -165,7 +128,7 @@ void run_show(const RecordsArgs& a) {
   const std::vector<double> T = {0.0, 0.1, 0.2, 0.3, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0, 4.0};
   const ResponseSpectrum rs = response_spectrum(r, T);
   if (a.json) {
-    nlohmann::ordered_json j = entry_json(*e);
+    nlohmann::ordered_json j = catalogue_entry_json(*e);
     j["format"] = e->format;
     j["npts"] = e->npts;
     j["dt_s"] = e->dt_s;
@@ -213,7 +176,6 @@ void run_select(const RecordsArgs& a) {
     spec.lat = a.lat, spec.lon = a.lon;
   } else {
     if (!a.ag_g || !a.F0 || !a.Tc_star) throw InputError("--ag, --F0 and --Tc-star must be given together");
-    if (!(*a.ag_g > 0.0 && *a.ag_g < 2.0)) throw InputError("--ag: expected ag in g, 0 < ag < 2");
     for (LimitState ls : all_limit_states) spec.given[ls] = HazardParams{0.0, *a.ag_g, *a.F0, *a.Tc_star};
   }
   try {
@@ -222,9 +184,6 @@ void run_select(const RecordsArgs& a) {
   } catch (const InputError& e) {
     throw InputError(std::string("--soil/--topography: ") + e.what());
   }
-  // The number rules of the case files (support/number_rules.hpp).
-  check_number_option("--vn", a.vn, rules::nominal_life_years);
-  check_number_option("--cu", a.cu, rules::use_coefficient);
   spec.vn_years = a.vn;
   spec.cu = a.cu;
   const Site site(spec);
@@ -233,15 +192,11 @@ void run_select(const RecordsArgs& a) {
   for (LimitState l : all_limit_states)
     if (to_string(l) == a.limit_state) ls = l, found = true;
   if (!found) throw InputError("--limit-state '" + a.limit_state + "': expected SLO, SLD, SLV or SLC");
-  const ElasticSpectrum target = site.spectrum(ls);
   const std::shared_ptr<const RecordLibrary> lib =
       RecordLibrary::open(a.catalogue.empty() ? default_catalogue() : a.catalogue);
   LibrarySelectionRules rules;
-  rules.filters = make_filters(a);
-  if (rules.filters.site_classes.empty()) rules.filters.site_classes = {to_string(spec.conditions.soil)};
-  if (a.near_fault != "exclude" && a.near_fault != "include")
-    throw InputError("--near-fault '" + a.near_fault + "': expected exclude or include");
-  rules.include_near_fault = a.near_fault == "include";
+  rules.filters = catalogue_filters(filter_options(a));
+  rules.include_near_fault = parse_near_fault_option(a.near_fault);
   rules.near_fault_km = a.near_fault_km;
   SelectionOptions so;
   so.n_records = a.count;
@@ -252,62 +207,15 @@ void run_select(const RecordsArgs& a) {
   so.max_per_event = a.per_event;
   so.max_per_station = a.per_station;
   so.max_misfit = a.max_misfit;
-  const std::shared_ptr<const LibrarySelection> sel =
-      select_from_library(*lib, rules, [&](double T) { return target.Se(T); }, so);
+  const SiteRecordSelection chosen = select_for_site(site, ls, *lib, rules, so);
+  const LibrarySelection* sel = chosen.selection.get();
   const SelectionResult& res = sel->result;
-  if (sel->candidates.empty()) throw InputError("no record of the catalogue passes the filters (see `assess records list`)");
-  auto flags_of = [&](const SelectedRecord& s) {
-    const CatalogueEntry& e = sel->candidates[s.index];
-    std::vector<std::string> f;
-    const std::string nf = near_fault_reason(e, rules.near_fault_km);
-    if (!nf.empty()) f.push_back(nf);
-    if (s.misfit_flag) f.push_back("misfit " + num(s.deviation, "%.3f") + " > " + num(so.max_misfit, "%.2f"));
-    if (e.site_class != to_string(spec.conditions.soil))
-      f.push_back("site class " + e.site_class + ", not the site's " + to_string(spec.conditions.soil));
-    return f;
-  };
   if (a.json) {
-    nlohmann::ordered_json j;
-    j["limit_state"] = to_string(ls);
-    j["site"] = site.describe();
-    j["ag_S_g"] = target.Se(0.0) / units::g_n;
-    j["status"] = to_string(res.status);
-    j["message"] = res.message;
-    j["warnings"] = sel->warnings;
-    j["site_classes"] = sel->site_classes;
-    j["spectra"] = sel->spectra_source;
-    j["near_fault_excluded"] = sel->near_fault_excluded;
-    j["period_range_s"] = {so.range.T_min, so.range.T_max};
-    j["band"] = {1.0 - so.lower_tol, 1.0 + so.upper_tol};
-    j["min_ratio"] = res.min_ratio;
-    j["max_ratio"] = res.max_ratio;
-    j["mean_scale"] = res.mean_scale;
-    j["candidates"] = sel->candidates.size();
-    j["eligible"] = res.eligible;
-    j["combinations"] = res.combinations;
-    j["records"] = nlohmann::ordered_json::array();
-    for (const auto& s : res.records) {
-      const CatalogueEntry& e = sel->candidates[s.index];
-      nlohmann::ordered_json r = entry_json(e);
-      r["scale"] = s.scale;
-      r["scaled_pga_g"] = s.scaled_pga / units::g_n;
-      r["deviation"] = s.deviation;
-      r["rank"] = s.rank;
-      r["flags"] = flags_of(s);
-      j["records"].push_back(r);
-    }
-    j["rejected"] = nlohmann::ordered_json::array();
-    for (const auto& r : sel->excluded) j["rejected"].push_back({{"id", r.name}, {"reason", r.reason}});
-    for (const auto& r : res.rejected)
-      j["rejected"].push_back({{"id", sel->candidates[r.index].id}, {"scale", r.scale}, {"reason", r.reason}});
-    j["periods_s"] = res.periods;
-    j["target_m_s2"] = res.target;
-    j["mean_psa_m_s2"] = res.mean_psa;
-    std::cout << j.dump(1) << "\n";
+    std::cout << site_selection_json(chosen).dump(1) << "\n";
     return;
   }
   std::cout << "Target: " << to_string(ls) << " spectrum, " << site.describe() << ", soil " << a.soil
-            << ", ag S = " << num(target.Se(0.0) / units::g_n, "%.3f") << " g\n";
+            << ", ag S = " << num(chosen.ag_S_g, "%.3f") << " g\n";
   for (const auto& w : sel->warnings) std::cout << "warning: " << w << "\n";
   std::cout << sel->candidates.size() << " candidates after the filters (" << sel->near_fault_excluded
             << " near-fault or pulse-like left out), " << res.eligible << " within the per-record limits; "
@@ -319,10 +227,10 @@ void run_select(const RecordsArgs& a) {
     std::printf("%-30s %-34.34s %4s %-20.20s %6s %-4s %2s %6.3f %8.3f %6.3f %4d\n", e.id.c_str(), e.event.c_str(),
                 num(e.Mw, "%.2f").c_str(), e.station.c_str(), num(e.distance_km, "%.1f").c_str(),
                 e.distance_kind.c_str(), e.site_class.c_str(), s.scale, s.scaled_pga / units::g_n, s.deviation, s.rank);
-    for (const std::string& f : flags_of(s)) std::printf("  FLAG: %s\n", f.c_str());
+    for (const std::string& f : selection_flags(chosen, s)) std::printf("  FLAG: %s\n", f.c_str());
   }
   std::printf("mean scale %.3f; largest scaled PGA %.3f g (guard %.2f ag S = %.3f g)\n", res.mean_scale,
-              res.max_scaled_pga / units::g_n, so.max_pga_ratio, so.max_pga_ratio * target.Se(0.0) / units::g_n);
+              res.max_scaled_pga / units::g_n, so.max_pga_ratio, so.max_pga_ratio * chosen.ag_S_g);
 }
 
 }  // namespace
@@ -331,11 +239,17 @@ void add_records_command(CLI::App& app) {
   auto a = std::make_shared<RecordsArgs>();
   CLI::App* cmd = app.add_subcommand("records", "the record library: build, list, show, select");
   cmd->require_subcommand(1);
+  // Every number option with its range and reason: the rules of the case
+  // file's /dynamic/select (records/record_selection.hpp) and of its site
+  // (support/number_rules.hpp), checked as the command line is parsed.
+  namespace SR = selection_rules;
+  static const NumberRule records_count{"records", 1.0, double(SR::count_max), false, false,
+                                        "components of a set, of one event or of one station"};
   auto filters = [a](CLI::App* c) {
-    c->add_option("--mw-min", a->mw_min, "smallest moment magnitude");
-    c->add_option("--mw-max", a->mw_max, "largest moment magnitude");
-    c->add_option("--r-min", a->r_min, "smallest distance (km)");
-    c->add_option("--r-max", a->r_max, "largest distance (km)");
+    with_rule(c->add_option("--mw-min", a->mw_min, "smallest moment magnitude"), SR::Mw);
+    with_rule(c->add_option("--mw-max", a->mw_max, "largest moment magnitude"), SR::Mw);
+    with_rule(c->add_option("--r-min", a->r_min, "smallest distance (km)"), SR::distance_km);
+    with_rule(c->add_option("--r-max", a->r_max, "largest distance (km)"), SR::distance_km);
     c->add_option("--site-class", a->site_classes, "accepted site classes (A..E), repeatable");
     c->add_option("--country", a->countries, "accepted countries, repeatable");
     c->add_option("--catalogue", a->catalogue, "catalogue.json (default: the shipped spectra/records/catalogue.json)");
@@ -356,27 +270,32 @@ void add_records_command(CLI::App& app) {
   show->callback([a] { run_show(*a); });
   CLI::App* sel = cmd->add_subcommand("select", "select N records compatible with a site spectrum (no mechanism)");
   filters(sel);
-  sel->add_option("--lat", a->lat, "site latitude (decimal degrees)");
-  sel->add_option("--lon", a->lon, "site longitude (decimal degrees)");
-  sel->add_option("--ag", a->ag_g, "ag on rock (g), with --F0 and --Tc-star");
-  sel->add_option("--F0", a->F0, "F0 (-)");
-  sel->add_option("--Tc-star", a->Tc_star, "TC* (s)");
+  with_rule(sel->add_option("--lat", a->lat, "site latitude (decimal degrees)"), rules::latitude_deg);
+  with_rule(sel->add_option("--lon", a->lon, "site longitude (decimal degrees)"), rules::longitude_deg);
+  with_rule(sel->add_option("--ag", a->ag_g, "ag on rock (g), with --F0 and --Tc-star"), rules::ag_g);
+  with_rule(sel->add_option("--F0", a->F0, "F0 (-)"), rules::F0);
+  with_rule(sel->add_option("--Tc-star", a->Tc_star, "TC* (s)"), rules::Tc_star_s);
   sel->add_option("--soil", a->soil, "subsoil class A..E (default A); also the default site-class filter");
   sel->add_option("--topography", a->topography, "T1..T4 (default T1)");
-  sel->add_option("--vn", a->vn, "nominal life VN (years, default 50)");
-  sel->add_option("--cu", a->cu, "coefficient of use CU (default 1)");
+  with_rule(sel->add_option("--vn", a->vn, "nominal life VN (years, default 50)"), rules::nominal_life_years);
+  with_rule(sel->add_option("--cu", a->cu, "coefficient of use CU (default 1)"), rules::use_coefficient);
   sel->add_option("--limit-state", a->limit_state, "SLO|SLD|SLV|SLC (default SLV)");
-  sel->add_option("--count", a->count, "number of records N (default 7)")->check(CLI::Range(1, 50));
-  sel->add_option("--t-min", a->t_min, "shortest period of the range (s, default 0.15)");
-  sel->add_option("--t-max", a->t_max, "longest period of the range (s, default 2.0)");
-  sel->add_option("--max-scale", a->max_scale, "largest scale factor of a record (default 3)");
-  sel->add_option("--max-misfit", a->max_misfit, "individual misfit flagged above it (default 0.5)");
+  with_rule(sel->add_option("--count", a->count, "number of records N (default 7)"), records_count);
+  with_rule(sel->add_option("--t-min", a->t_min, "shortest period of the range (s, default 0.15)"), SR::period_s);
+  with_rule(sel->add_option("--t-max", a->t_max, "longest period of the range (s, default 2.0)"), SR::period_s);
+  with_rule(sel->add_option("--max-scale", a->max_scale, "largest scale factor of a record (default 3)"), SR::max_scale);
+  with_rule(sel->add_option("--max-misfit", a->max_misfit, "individual misfit flagged above it (default 0.5)"),
+            SR::max_misfit);
   sel->add_option("--near-fault", a->near_fault, "exclude (default) or include near-fault and pulse-like records");
-  sel->add_option("--near-fault-km", a->near_fault_km, "distance below which a record is near-fault (km, default 10)");
-  sel->add_option("--max-mean-scale", a->max_mean_scale, "largest mean scale factor (default 2)");
-  sel->add_option("--max-pga-ratio", a->max_pga_ratio, "guard: scaled PGA <= ratio * ag S (default 2.5)");
-  sel->add_option("--per-event", a->per_event, "components per event (default 3)")->check(CLI::Range(1, 50));
-  sel->add_option("--per-station", a->per_station, "components per station (default 1)")->check(CLI::Range(1, 50));
+  with_rule(sel->add_option("--near-fault-km", a->near_fault_km,
+                            "distance below which a record is near-fault (km, default 10)"),
+            SR::near_fault_km);
+  with_rule(sel->add_option("--max-mean-scale", a->max_mean_scale, "largest mean scale factor (default 2)"),
+            SR::max_mean_scale);
+  with_rule(sel->add_option("--max-pga-ratio", a->max_pga_ratio, "guard: scaled PGA <= ratio * ag S (default 2.5)"),
+            SR::max_pga_ratio);
+  with_rule(sel->add_option("--per-event", a->per_event, "components per event (default 3)"), records_count);
+  with_rule(sel->add_option("--per-station", a->per_station, "components per station (default 1)"), records_count);
   sel->add_flag("--no-relax", a->no_relax, "do not widen the site classes when they give no compatible set");
   sel->callback([a] { run_select(*a); });
 }

@@ -6,10 +6,13 @@
 #include <assess/assessment/case_file.hpp>
 #include <assess/assessment/mechanism_dynamics.hpp>
 #include <assess/support/error.hpp>
+#include <assess/support/number_rules.hpp>
 #include <assess/support/output_file.hpp>
 #include <assess/records/record_io.hpp>
 #include <assess/dynamics/analysis_limits.hpp>
 #include <assess/dynamics/rocking_analysis.hpp>
+#include <assess/dynamics/rocking_request.hpp>
+#include <assess/report/rocking_report.hpp>
 #include <assess/support/units.hpp>
 
 #include <nlohmann/json.hpp>
@@ -45,140 +48,38 @@ struct RockingArgs {
   double tail = RockingOptions{}.tail_s;  // the one default of every dynamic command
 };
 
-Restitution parse_restitution(const std::string& text, bool one_sided) {
-  if (text.empty()) return one_sided ? Restitution::one_sided_theory() : Restitution::housner();
-  if (text == "housner") return Restitution::housner();
-  if (text == "one-sided-theory") return Restitution::one_sided_theory();
-  if (text == "none") return Restitution::none();
-  char* end = nullptr;
-  const double e = std::strtod(text.c_str(), &end);
-  if (end == text.c_str() || *end != '\0')
-    throw InputError("--restitution expects a number in [-1, 1], 'housner', 'one-sided-theory' or 'none', got '" +
-                     text + "'");
-  return Restitution::given(e);
-}
-
-nlohmann::json optional_json(const std::optional<double>& v) {
-  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
-}
-
-// An option within [lo, hi] (the bounds of analysis_limits.hpp), else an error naming it and its unit.
-void check_range(const char* option, double v, double lo, double hi, const char* unit) {
-  if (std::isfinite(v) && v >= lo && v <= hi) return;
-  char buf[200];
-  if (std::isnan(v)) std::snprintf(buf, sizeof buf, "%s must lie in [%g, %g] %s, got not-a-number", option, lo, hi, unit);
-  else std::snprintf(buf, sizeof buf, "%s must lie in [%g, %g] %s, got %g", option, lo, hi, unit, v);
-  throw InputError(buf);
-}
-
 void run(const RockingArgs& a) {
-  if (a.model != "smooth" && a.model != "rigid") throw InputError("--model must be 'smooth' or 'rigid'");
-  check_range("--unit-weight", a.unit_weight_kN, 0.0, limits::unit_weight_max_N_m3 / units::kN, "kN/m^3");
-  check_range("--rtol", a.rtol, limits::rel_tol_min, limits::rel_tol_max, "(-)");
-  check_range("--atol", a.atol, limits::abs_tol_min, limits::abs_tol_max, "rad, rad/s");
-  check_range("--tail", a.tail, 0.0, limits::tail_max_s, "s");
-  if (!(std::isfinite(a.scale) && a.scale > 0.0 && a.scale <= limits::scale_max))
-    check_range("--scale", a.scale, 0.0, limits::scale_max, "(-, > 0)");
-  if (a.dt_given && !(std::isfinite(a.dt) && a.dt > 0.0))
-    throw InputError(std::isnan(a.dt) ? std::string("--dt: time step must be positive (s), got not-a-number")
-                                      : "--dt: time step must be positive (s), got " + std::to_string(a.dt));
-  if (!std::isnan(a.k_kN) && a.model == "smooth")
-    check_range("--k", a.k_kN, 0.0, limits::winkler_k_max_N_m3 / units::kN, "kN/m^3 (a stiffer base is rigid: use --model rigid)");
-  const RockingBody body = RockingBody::rectangle(a.thickness, a.height, a.unit_weight_kN * units::kN);
-  Foundation foundation = Foundation::rigid();
-  if (a.model == "smooth") {
-    if (std::isnan(a.k_kN)) throw InputError("--k (Winkler modulus, kN/m^3) is required for the smooth model");
-    if (!(a.k_kN > 0.0 && std::isfinite(a.k_kN))) throw InputError("--k must be a positive number (kN/m^3)");
-    foundation = Foundation::winkler(a.k_kN * units::kN);
-  } else if (!std::isnan(a.k_kN)) {
-    throw InputError("--k applies only to --model smooth");
-  }
-  const Sidedness sided = a.one_sided ? Sidedness::one_sided : Sidedness::two_sided;
-  const RockingModel model(body, foundation, sided, parse_restitution(a.restitution, a.one_sided));
+  // The options checked, the model built and the record read by the library
+  // (dynamics/rocking_request.hpp), as for the Python module's assess.rocking.
+  RockingRequest q;
+  q.model = a.model;
+  q.thickness = a.thickness;
+  q.height = a.height;
+  q.unit_weight_kN = a.unit_weight_kN;
+  if (!std::isnan(a.k_kN)) q.k_kN = a.k_kN;
+  q.restitution = a.restitution;
+  q.one_sided = a.one_sided;
+  q.record = a.record;
+  if (a.dt_given) q.dt = a.dt;
+  q.unit = a.unit;
+  q.scale = a.scale;
+  q.reverse = a.reverse;
+  q.overturn_at = a.overturn_at;
+  q.stepper = a.stepper;
+  q.rtol = a.rtol;
+  q.atol = a.atol;
+  q.tail = a.tail;
+  q.history = !a.history.empty();
+  const RockingSetup setup = prepare_rocking(q);
+  const Record& record = setup.record;
+  const RockingResult r = run_rocking(setup);
 
-  // A plain record: --dt (and --unit, default g) for one column; --unit alone
-  // for two columns (time, acceleration), dt read from the time column (the
-  // same readers as the case files' {"file", "dt", "unit"}).
-  Record record;
-  if (a.dt_given) {
-    record = read_plain_record(a.record, a.dt, parse_acceleration_unit(a.unit.empty() ? "g" : a.unit));
-  } else if (!a.unit.empty()) {
-    // --unit without --dt: a plain file of two columns (time in s,
-    // acceleration); the reader names the file, the line and what is wrong
-    // (a decreasing time is the file's fault, not --unit's). A record file
-    // with a header (AT2, ESM, .cor.acc) gives its own unit: --unit is wrong.
-    try {
-      record = read_plain_record(a.record, parse_acceleration_unit(a.unit));
-    } catch (const InputError& plain) {
-      std::string format;
-      try {
-        format = read_record(a.record).format;
-      } catch (const InputError&) {
-        throw plain;
-      }
-      throw InputError("--unit applies only to a plain record file: " + a.record + " is a " + format +
-                       " record, whose header gives the unit and the time step (leave --unit out)");
-    }
-  } else {
-    record = read_record(a.record);
-  }
-  RockingOptions opt;
-  opt.scale = a.scale;
-  opt.reverse = a.reverse;
-  opt.tail_s = a.tail;
-  opt.rel_tol = a.rtol;
-  opt.abs_tol = a.atol;
-  if (a.overturn_at == "theta_u") opt.overturn = OverturnCriterion::theta_u;
-  else if (a.overturn_at == "half_pi") opt.overturn = OverturnCriterion::half_pi;
-  else throw InputError("--overturn-at must be 'theta_u' or 'half_pi'");
-  const auto stepper = parse_stepper(a.stepper);
-  if (!stepper) throw InputError("--stepper must be rk8pd, rkck or rkf45");
-  opt.stepper = *stepper;
-  opt.record_history = !a.history.empty();
-
-  const RockingResult r = analyse(model, record, opt);
-  // A failed analysis is reported as a failure, never with its numbers as a result.
-  if (!succeeded(r))
-    throw InputError(std::string("the analysis failed (termination ") + to_string(r.termination) + " at t = " +
-                     std::to_string(r.t_end) + " s): " + r.message + "; no result is reported");
-
-  if (!a.history.empty()) {
-    // Whole or not at all; a full disk (/dev/full) is an error, never exit 0 (output_file.hpp).
-    std::string out = "t_s,theta_rad,omega_rad_s\n";
-    char line[96];
-    for (std::size_t i = 0; i < r.history.t.size(); ++i) {
-      std::snprintf(line, sizeof line, "%.9g,%.9g,%.9g\n", r.history.t[i], r.history.theta[i], r.history.omega[i]);
-      out += line;
-    }
-    write_output_file(a.history, out, "--history");
-  }
+  // Whole or not at all; a full disk (/dev/full) is an error, never exit 0 (output_file.hpp).
+  if (!a.history.empty())
+    write_output_file(a.history, rocking_history_csv(r.history, "t_s,theta_rad,omega_rad_s"), "--history");
 
   if (a.json) {
-    nlohmann::json j;
-    j["theta_max"] = r.theta_max;
-    j["t_theta_max"] = r.t_theta_max;
-    j["theta_u"] = r.theta_u;
-    j["theta_max_over_theta_u"] = r.theta_max / r.theta_u;
-    j["theta_cr"] = optional_json(r.theta_cr);
-    j["alpha"] = r.alpha;
-    j["restitution"] = optional_json(r.restitution);
-    j["overturned"] = r.overturned;
-    j["t_overturn"] = optional_json(r.t_overturn);
-    j["kinetic_energy_overturn"] = r.kinetic_energy_overturn / units::kN;  // kJ/m
-    j["impacts"] = r.impacts;
-    j["energy_demand"] = r.energy_demand / units::kN;  // kJ/m
-    j["capacity"] = r.capacity / units::kN;            // kJ/m
-    j["dc"] = r.dc;
-    j["d_max"] = r.d_max;
-    j["termination"] = to_string(r.termination);
-    j["end"] = to_string(r.end);
-    j["t_end"] = r.t_end;
-    j["motion_duration"] = r.motion_duration;
-    j["steps"] = r.steps;
-    j["rhs_evaluations"] = r.rhs_evaluations;
-    j["record"] = {{"name", record.name}, {"format", record.format}, {"npts", record.size()},
-                   {"dt", record.dt}, {"pga_g", record.pga() / units::g_n}, {"scale", a.scale},
-                   {"reverse", a.reverse}};
+    nlohmann::json j = rocking_json(r, record, a.scale, a.reverse);
     std::cout << stamp_version(j).dump(2) << "\n";
     return;
   }
@@ -227,19 +128,19 @@ void run_case(const CaseDynamicArgs& a) {
       d["records"] = nlohmann::json::array({nlohmann::json{{"file", "(--record)"}}});
     spec = parse_dynamic(d, kase.file, ".");
   }
+  // Errors about a value the command line gave name its option, not the case's JSON path.
   if (!a.model.empty()) {
     if (a.model != "smooth" && a.model != "rigid") throw InputError("--model must be 'smooth' or 'rigid'");
     spec.smooth = a.model == "smooth";
+    spec.model_from = "--model";
   }
-  if (!std::isnan(a.k_kN)) {
-    if (!(a.k_kN > 0.0 && std::isfinite(a.k_kN))) throw InputError("--k must be a positive number (kN/m^3)");
-    spec.k = a.k_kN * units::kN;
-  }
+  if (!std::isnan(a.k_kN)) spec.k = a.k_kN * units::kN, spec.k_from = "--k";
   if (spec.smooth && !(spec.k > 0.0))
     throw InputError("--k (Winkler modulus, kN/m^3) is required for the smooth model (or give /dynamic/k in the case)");
   if (!a.restitution.empty()) {
-    spec.restitutions = {parse_restitution(a.restitution, spec.sidedness == Sidedness::one_sided)};
+    spec.restitutions = {parse_restitution_option(a.restitution, spec.sidedness == Sidedness::one_sided)};
     spec.restitution_given = true;
+    spec.restitution_from = "--restitution";
   } else if (spec.restitutions.empty()) {
     spec.restitutions = {spec.sidedness == Sidedness::one_sided ? Restitution::one_sided_theory() : Restitution::housner()};
   }
@@ -267,16 +168,8 @@ void run_case(const CaseDynamicArgs& a) {
   const double d_control = md.control_displacement(k, r.theta_max_side * r.theta_max);
   const double d_star = d_control * k.d_star_per_dk;
 
-  if (!a.history.empty()) {
-    // Whole or not at all; a full disk (/dev/full) is an error, never exit 0 (output_file.hpp).
-    std::string out = "t_s,q_rad,qdot_rad_s\n";
-    char line[96];
-    for (std::size_t i = 0; i < r.history.t.size(); ++i) {
-      std::snprintf(line, sizeof line, "%.9g,%.9g,%.9g\n", r.history.t[i], r.history.theta[i], r.history.omega[i]);
-      out += line;
-    }
-    write_output_file(a.history, out, "--history");
-  }
+  // Whole or not at all; a full disk (/dev/full) is an error, never exit 0 (output_file.hpp).
+  if (!a.history.empty()) write_output_file(a.history, rocking_history_csv(r.history, "t_s,q_rad,qdot_rad_s"), "--history");
   if (a.json) {
     nlohmann::json j;
     j["case_file"] = a.file;
@@ -333,21 +226,22 @@ void add_case_dynamic_command(CLI::App& app) {
   cmd->add_option("case", a->file, "case file (JSON, see docs/user/case-file.md)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--record", a->record, "accelerogram file (PEER AT2, ESM/ITACA ASCII, .cor.acc; plain with --dt)")
       ->required();
-  cmd->add_option("--dt", a->dt, "time step of a plain record file (s)");
+  with_rule(cmd->add_option("--dt", a->dt, "time step of a plain record file (s)"), record_dt_rule);
   cmd->add_option("--unit", a->unit, "unit of a plain record file: g, m/s^2, cm/s^2 (default g)");
-  cmd->add_option("--scale", a->scale, "factor on the record (default 1)");
+  with_rule(cmd->add_option("--scale", a->scale, "factor on the record (default 1)"), limits::option::scale);
   cmd->add_flag("--reverse", a->reverse, "flip the record's polarity");
   cmd->add_flag("--floor-record", a->floor, "the record is the floor motion at the mechanism's base (not filtered)");
   cmd->add_option("--model", a->model, "smooth or rigid (default: the case's /dynamic/model, else rigid)");
-  cmd->add_option("--k", a->k_kN, "Winkler modulus (kN/m^3), smooth model");
+  with_rule(cmd->add_option("--k", a->k_kN, "Winkler modulus (kN/m^3), smooth model"), limits::option::winkler_k_kN_m3);
   cmd->add_option("--restitution", a->restitution,
                   "VALUE (chains: in [-1, 0]) | housner | one-sided-theory | none (one block)");
   cmd->add_option("--history", a->history, "write t, q, q' to this CSV file");
   cmd->add_flag("--json", a->json, "print the results as one JSON object");
   cmd->add_option("--stepper", a->stepper, "rk8pd (default), rkck or rkf45");
-  cmd->add_option("--rtol", a->rtol, "relative tolerance per step (default 1e-7)");
-  cmd->add_option("--atol", a->atol, "absolute tolerance per step, rad and rad/s (default 1e-9)");
-  cmd->add_option("--tail", a->tail, "cap on the free motion after the whole record (s, default 30): it ends earlier at rest or when the energy left cannot reach the peak");
+  with_rule(cmd->add_option("--rtol", a->rtol, "relative tolerance per step (default 1e-7)"), limits::option::rel_tol);
+  with_rule(cmd->add_option("--atol", a->atol, "absolute tolerance per step, rad and rad/s (default 1e-9)"),
+            limits::option::abs_tol);
+  with_rule(cmd->add_option("--tail", a->tail, "cap on the free motion after the whole record (s, default 30): it ends earlier at rest or when the energy left cannot reach the peak"), limits::option::tail_s);
   cmd->callback([a] { run_case(*a); });
 }
 
@@ -355,26 +249,29 @@ void add_rocking_command(CLI::App& app) {
   auto args = std::make_shared<RockingArgs>();
   auto* cmd = app.add_subcommand("rocking", "Non-linear rocking of a wall under an accelerogram (rigid or smooth block)");
   cmd->add_option("--model", args->model, "smooth (Winkler foundation) or rigid (Housner)")->required();
-  cmd->add_option("--thickness", args->thickness, "full thickness 2b (m)")->required();
-  cmd->add_option("--height", args->height, "full height 2h (m)")->required();
-  cmd->add_option("--unit-weight", args->unit_weight_kN, "unit weight (kN/m^3)")->required();
-  cmd->add_option("--k", args->k_kN, "Winkler modulus (kN/m^3), smooth model only");
+  with_rule(cmd->add_option("--thickness", args->thickness, "full thickness 2b (m)"), rules::dimension_m)->required();
+  with_rule(cmd->add_option("--height", args->height, "full height 2h (m)"), rules::dimension_m)->required();
+  with_rule(cmd->add_option("--unit-weight", args->unit_weight_kN, "unit weight (kN/m^3)"), rules::unit_weight_kN_m3)
+      ->required();
+  with_rule(cmd->add_option("--k", args->k_kN, "Winkler modulus (kN/m^3), smooth model only"),
+            limits::option::winkler_k_kN_m3);
   cmd->add_option("--restitution", args->restitution,
                   "VALUE in [-1, 1] | housner | one-sided-theory | none (default: housner, one-sided-theory if --one-sided)");
   cmd->add_flag("--one-sided", args->one_sided, "one-sided rocking (facade against transverse walls)");
   cmd->add_option("--record", args->record, "accelerogram file (PEER AT2, ESM/ITACA ASCII, .cor.acc; plain with --dt)")
       ->required();
-  cmd->add_option("--dt", args->dt, "time step of a plain record file (s)");
+  with_rule(cmd->add_option("--dt", args->dt, "time step of a plain record file (s)"), record_dt_rule);
   cmd->add_option("--unit", args->unit, "unit of a plain record file: g, m/s^2, cm/s^2 (default g)");
-  cmd->add_option("--scale", args->scale, "factor on the record (default 1)");
+  with_rule(cmd->add_option("--scale", args->scale, "factor on the record (default 1)"), limits::option::scale);
   cmd->add_flag("--reverse", args->reverse, "flip the record's polarity");
   cmd->add_option("--overturn-at", args->overturn_at, "theta_u (default) or half_pi");
   cmd->add_option("--history", args->history, "write t, theta, theta' to this CSV file");
   cmd->add_flag("--json", args->json, "print the results as one JSON object");
   cmd->add_option("--stepper", args->stepper, "rk8pd (default), rkck or rkf45");
-  cmd->add_option("--rtol", args->rtol, "relative tolerance per step (default 1e-7)");
-  cmd->add_option("--atol", args->atol, "absolute tolerance per step, rad and rad/s (default 1e-9)");
-  cmd->add_option("--tail", args->tail, "cap on the free motion after the whole record (s, default 30): it ends earlier at rest or when the energy left cannot reach the peak");
+  with_rule(cmd->add_option("--rtol", args->rtol, "relative tolerance per step (default 1e-7)"), limits::option::rel_tol);
+  with_rule(cmd->add_option("--atol", args->atol, "absolute tolerance per step, rad and rad/s (default 1e-9)"),
+            limits::option::abs_tol);
+  with_rule(cmd->add_option("--tail", args->tail, "cap on the free motion after the whole record (s, default 30): it ends earlier at rest or when the energy left cannot reach the peak"), limits::option::tail_s);
   cmd->callback([args, cmd] {
     args->dt_given = cmd->count("--dt") > 0;
     run(*args);

@@ -16,6 +16,7 @@
 #include <assess/assessment/tie_intervention.hpp>
 #include <assess/report/tie_report.hpp>
 #include <assess/risk/fragility_report.hpp>
+#include <assess/risk/run_report.hpp>
 
 #include <filesystem>
 #include <assess/report/report_files.hpp>
@@ -41,7 +42,6 @@ struct RunArgs {
 // The terminal summary's width: 120 columns, or one line per table row (--wide).
 std::size_t text_width(const RunArgs& a) { return a.wide ? std::size_t(100000) : std::size_t(120); }
 
-ReportFiles report_files(const RunArgs& a) { return {a.html, a.pdf, a.docx, a.txt}; }
 
 // The files the run wrote, one line each, in the summary's language: the
 // relazione's and, beside each, its tabulati di calcolo (issue 36).
@@ -64,25 +64,31 @@ void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_tex
 // file already read once, so the same checks).
 std::string read_text(const std::string& path) { return read_input_file(path, input_kinds::case_file); }
 
-// Refuses the outputs before a long run rather than after it: an --html or
-// --pdf, --docx or --txt that names an input of the run (the case file itself), a directory,
-// a link out of its folder (output_file.hpp; written the same way at the end).
-void check_outputs(const RunArgs& a) {
-  // Each file of the relazione and of its tabulati (NAME-tabulati.EXT beside it, issue 36).
-  const std::vector<std::pair<std::string, std::string>> outs = report_outputs(report_files(a));
-  for (const auto& [option, path] : outs) check_output_file(path, option);
-  for (std::size_t i = 0; i < outs.size(); ++i)
-    for (std::size_t j = i + 1; j < outs.size(); ++j)
-      if (outs[i].second == outs[j].second)
-        throw InputError(outs[i].first + " and " + outs[j].first + " name the same file '" + outs[i].second + "'");
+// Refuses the outputs before a long run rather than after it: an --html,
+// --pdf, --docx or --txt that names an input of the run (the case file
+// itself), a directory, a link out of its folder, or another output of the
+// run, the expanded cases included (output_file.hpp: by file identity;
+// written the same way at the end).
+ReportFiles report_files(const RunArgs& a) { return {a.html, a.pdf, a.docx, a.txt}; }
+
+void check_outputs(const RunArgs& a, const std::vector<OutputTarget>& more = {}) {
+  std::vector<OutputTarget> all = report_files(a).outputs();
+  all.insert(all.end(), more.begin(), more.end());
+  check_output_files(all);
+}
+
+// The expanded cases of --expand DIR (DIR created if needed), as outputs.
+std::vector<OutputTarget> expanded_outputs(const RunArgs& a, const std::vector<const BuildingMechanism*>& ms) {
+  make_output_folder(a.expand, "--expand");
+  std::vector<OutputTarget> out;
+  for (const BuildingMechanism* m : ms) out.push_back({a.expand + "/" + m->id + ".json", "--expand " + a.expand, a.expand});
+  return out;
 }
 
 // --expand DIR: each expanded case as DIR/<id>.json, written whole through
 // write_output_file: never over the building file or another input of the
 // run, never through a link out of DIR.
 void write_expanded(const RunArgs& a, const BuildingCase& b, const std::vector<const BuildingMechanism*>& ms) {
-  make_output_folder(a.expand, "--expand");
-  for (const BuildingMechanism* m : ms) check_output_file(a.expand + "/" + m->id + ".json", "--expand " + a.expand, a.expand);
   for (const BuildingMechanism* m : ms)
     write_output_file(a.expand + "/" + m->id + ".json", standalone_case(b, *m).dump(2) + "\n", "--expand " + a.expand,
                       a.expand);
@@ -96,7 +102,12 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
   if (!a.mechanism.empty()) {
     const BuildingMechanism& m = find_mechanism(bc, a.mechanism);
     // --expand with --mechanism: that mechanism's expanded case only.
-    if (!a.expand.empty()) write_expanded(a, bc, {&m});
+    if (!a.expand.empty()) {
+      check_outputs(a, expanded_outputs(a, {&m}));
+      write_expanded(a, bc, {&m});
+    } else {
+      check_outputs(a);
+    }
     // Its errors and warnings name the building file's paths and the mechanism.
     const MessageMap map = [&](const std::string& text) { return building_path_message(bc, m, text); };
     try {
@@ -107,11 +118,14 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
     if (!a.expand.empty() && !a.json) std::cout << "\nexpanded case written to " << a.expand << "/" << m.id << ".json\n";
     return;
   }
+  // Checked before the run, with the expanded cases (one file each), written
+  // after it (with the shared selections' ranges).
   if (!a.expand.empty()) {
-    // Checked before the run, written after it (with the shared selections' ranges).
-    make_output_folder(a.expand, "--expand");
-    for (const BuildingMechanism& m : bc.mechanisms)
-      check_output_file(a.expand + "/" + m.id + ".json", "--expand " + a.expand, a.expand);
+    std::vector<const BuildingMechanism*> all;
+    for (const BuildingMechanism& m : bc.mechanisms) all.push_back(&m);
+    check_outputs(a, expanded_outputs(a, all));
+  } else {
+    check_outputs(a);
   }
   FacadeOptions opt;
   opt.keep_going = a.keep_going;
@@ -146,8 +160,9 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
 
 void run(const RunArgs& a) {
   const nlohmann::json doc = read_json_file(a.file, input_kinds::case_file);
-  check_outputs(a);
+  // A building's outputs are checked with its expanded cases, once the file is parsed (run_building).
   if (is_building_document(doc)) return run_building(a, doc);
+  check_outputs(a);
   if (!a.mechanism.empty() || !a.expand.empty())
     throw InputError(a.file + ": --mechanism and --expand apply to a building case (a file with \"walls\"), "
                      "not to a single-mechanism case");
@@ -171,47 +186,22 @@ void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_tex
   print_warnings(warnings);
   // A fragility result of this case: --fragility DIR, or the default output
   // directory of `assess fragility` (CASE.fragility) when it holds this case's.
-  std::optional<nlohmann::json> frag;
-  std::string frag_dir;
-  const std::string auto_dir = std::filesystem::path(a.file).stem().string() + ".fragility";
-  if (!a.fragility.empty()) {
-    frag = read_fragility_summary(a.fragility, a.file);
-    frag_dir = a.fragility;
-  } else if (std::filesystem::exists(auto_dir + "/summary.json")) {
-    try {
-      frag = read_fragility_summary(auto_dir, a.file);
-      frag_dir = auto_dir;
-    } catch (const InputError&) {
-      // another case's results: not this report's business
-    }
-  }
-  // The additional probabilistic result of the report (HTML box, JSON).
-  std::optional<ProbabilisticResult> prob;
-  if (frag) prob = probabilistic_result(*frag, frag_dir + "/summary.json");
+  const std::optional<RunFragility> frag = run_fragility(a.file, a.fragility);
   if (a.wants_report()) {
     ReportOptions ro;
     ro.lang = lang;
-    ro.fragility = prob;
+    if (frag) ro.fragility = frag->result;
     if (ties) ro.ties = &*ties;
     ro.case_text = case_text;
     write_report_files(facade_relazione(res, ro), report_files(a));
   }
   if (a.json) {
-    nlohmann::json j = facade_json(res);
-    // zetaE = PGA_C/PGA_D and TR_C/TR_D per approach (docs/theory/building.md §4), as the building report gives them.
-    j["safety_indices"] = safety_indices_json(res.indices);
-    if (frag) {
-      nlohmann::json f = probabilistic_result_json(*prob);
-      f["line"] = fragility_line(*frag);
-      f["governing"] = (*frag)["governing"];
-      j["fragility"] = f;
-    }
-    if (ties) j["ties"] = tie_json(*ties);
+    nlohmann::json j = facade_run_json(res, ties, frag);
     std::cout << stamp_version(j).dump(2) << "\n";
   } else {
     ReportOptions ro;
     ro.lang = lang;
-    ro.fragility = prob;
+    if (frag) ro.fragility = frag->result;
     if (ties) ro.ties = &*ties;
     std::cout << to_text(facade_summary(res, ro), text_width(a), false) << files_written(a);
   }

@@ -6,6 +6,7 @@
 #include <assess/support/number_rules.hpp>
 #include <assess/hazard/comuni.hpp>
 #include <assess/hazard/site.hpp>
+#include <assess/report/spectrum_report.hpp>
 #include <assess/support/units.hpp>
 
 #include <nlohmann/json.hpp>
@@ -28,35 +29,13 @@ struct SpectrumArgs {
   bool json = false, periods_given = false;
 };
 
-std::vector<double> parse_periods(const std::string& list) {
-  if (list.empty()) return {0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.75, 1.0, 1.5, 2.0, 2.5, 3.0, 4.0};
-  std::vector<double> out;
-  std::stringstream ss(list);
-  std::string item;
-  while (std::getline(ss, item, ',')) {
-    std::size_t used = 0;
-    double v = 0.0;
-    try {
-      v = std::stod(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    while (used < item.size() && item[used] == ' ') ++used;
-    if (used == 0 || used != item.size() || !std::isfinite(v) || v < 0.0)
-      throw InputError("--periods '" + list + "': expected a comma-separated list of periods >= 0 s, got '" +
-                       item + "'");
-    out.push_back(v);
-  }
-  return out;
-}
+// The periods of the table: 0 (the PGA) to 100 s (the spectrum's periods, rules::period_s, and 0).
+constexpr NumberRule spectrum_period_s{"s", 1e-3, 100.0, false, true, "0 (the PGA) or a period of 1 ms to 100 s"};
 
-// One evaluated case: a limit state (or a given TR / given hazard).
-struct Column {
-  std::string label;
-  std::optional<LimitState> ls;
-  std::optional<double> PVR, TR;  // TR as computed (years)
-  HazardParams hazard;
-};
+std::vector<double> parse_periods(const std::string& list) {
+  if (list.empty()) return default_spectrum_periods();
+  return parse_number_list(list, "--periods", spectrum_period_s);
+}
 
 SiteSpec make_spec(const SpectrumArgs& a) {
   SiteSpec spec;
@@ -78,19 +57,11 @@ SiteSpec make_spec(const SpectrumArgs& a) {
   }
   if (has_ll) {
     if (!a.lat || !a.lon) throw InputError("--lat and --lon must be given together (decimal degrees)");
-    if (!(*a.lat >= -90.0 && *a.lat <= 90.0))
-      throw InputError("--lat " + std::to_string(*a.lat) + ": expected a latitude in decimal degrees, -90 to 90");
-    if (!(*a.lon >= -180.0 && *a.lon <= 180.0))
-      throw InputError("--lon " + std::to_string(*a.lon) + ": expected a longitude in decimal degrees, -180 to 180");
     spec.lat = a.lat, spec.lon = a.lon;
   }
   if (a.island) spec.island = a.island;
   if (has_given) {
     if (!a.ag_g || !a.F0 || !a.Tc_star) throw InputError("--ag, --F0 and --Tc-star must be given together");
-    if (!(*a.ag_g > 0.0 && *a.ag_g < 2.0)) throw InputError("--ag " + std::to_string(*a.ag_g) + ": expected ag in g, 0 < ag < 2");
-    if (!(*a.F0 >= 1.0 && *a.F0 <= 5.0)) throw InputError("--F0 " + std::to_string(*a.F0) + ": expected F0 between 1 and 5 (-)");
-    if (!(*a.Tc_star > 0.0 && *a.Tc_star <= 2.0))
-      throw InputError("--Tc-star " + std::to_string(*a.Tc_star) + ": expected TC* in s, 0 < TC* <= 2");
     const HazardParams h{0.0, *a.ag_g, *a.F0, *a.Tc_star};
     for (LimitState ls : all_limit_states) spec.given[ls] = h;
   }
@@ -104,16 +75,10 @@ SiteSpec make_spec(const SpectrumArgs& a) {
   } catch (const InputError& e) {
     throw InputError(std::string("--topography: ") + e.what());
   }
-  if (!(a.h_over_H >= 0.0 && a.h_over_H <= 1.0))
-    throw InputError("--h-over-H " + std::to_string(a.h_over_H) + ": expected the relative height of the site, 0 to 1");
   spec.conditions.h_over_H = a.h_over_H;
-  if (!(a.vn > 0.0)) throw InputError("--vn " + std::to_string(a.vn) + ": expected a nominal life VN in years > 0");
   spec.vn_years = a.vn;
   if (a.cu && a.use_class) throw InputError("give either --cu or --use-class, not both");
-  if (a.cu) {
-    if (!(*a.cu > 0.0)) throw InputError("--cu " + std::to_string(*a.cu) + ": expected a coefficient of use CU > 0");
-    spec.cu = *a.cu;
-  }
+  if (a.cu) spec.cu = *a.cu;
   if (a.use_class) {
     try {
       spec.cu = use_coefficient(parse_use_class(*a.use_class));
@@ -126,20 +91,8 @@ SiteSpec make_spec(const SpectrumArgs& a) {
   return spec;
 }
 
-std::vector<Column> evaluate(const SpectrumArgs& a, const Site& site) {
-  std::vector<Column> cols;
+std::vector<SpectrumColumn> evaluate(const SpectrumArgs& a, const Site& site) {
   if (a.tr && a.limit_state) throw InputError("give either --limit-state or --tr, not both");
-  if (a.tr) {
-    if (!(*a.tr > 0.0) || !std::isfinite(*a.tr))
-      throw InputError("--tr " + std::to_string(*a.tr) + ": expected a return period in years > 0");
-    if (!site.spec().given.empty()) throw InputError("--tr cannot be used with --ag/--F0/--Tc-star");
-    Column c;
-    c.label = "TR";
-    c.TR = *a.tr;
-    c.hazard = site.hazard_at_tr(*a.tr);
-    cols.push_back(c);
-    return cols;
-  }
   std::vector<LimitState> states(all_limit_states.begin(), all_limit_states.end());
   if (a.limit_state) {
     try {
@@ -148,26 +101,7 @@ std::vector<Column> evaluate(const SpectrumArgs& a, const Site& site) {
       throw InputError(std::string("--limit-state: ") + e.what());
     }
   }
-  if (!site.spec().given.empty()) {  // one hazard given directly: one column
-    Column c;
-    c.label = "given";
-    if (a.limit_state) c.ls = states[0];
-    c.hazard = site.action(states[0]).hazard;
-    c.hazard.TR = 0.0;
-    cols.push_back(c);
-    return cols;
-  }
-  for (LimitState ls : states) {
-    Column c;
-    c.ls = ls;
-    c.label = to_string(ls);
-    const SeismicAction act = site.action(ls);
-    c.PVR = act.PVR;
-    c.TR = act.TR;
-    c.hazard = act.hazard;
-    cols.push_back(c);
-  }
-  return cols;
+  return spectrum_columns(site, states, a.limit_state.has_value(), a.tr);
 }
 
 std::string fmt(const char* f, double v) {
@@ -176,48 +110,7 @@ std::string fmt(const char* f, double v) {
   return buf;
 }
 
-void warn_clamp(const Column& c) {
-  if (c.hazard.tr_clamped)
-    std::cerr << "assess: warning: " << c.label << ": TR = " << fmt("%.2f", c.hazard.tr_requested)
-              << " years is outside the tabulated 30-2475 years; the hazard of TR = " << fmt("%.0f", c.hazard.TR)
-              << " years is used (Circ. 2019 Tab. C3.2.I)\n";
-}
-
-nlohmann::json column_json(const Column& c, const ElasticSpectrum& s, const std::vector<double>& periods,
-                           std::optional<double> q) {
-  nlohmann::json j;
-  j["limit_state"] = c.ls ? nlohmann::json(to_string(*c.ls)) : nlohmann::json(nullptr);
-  j["PVR"] = c.PVR ? nlohmann::json(*c.PVR) : nlohmann::json(nullptr);
-  j["TR"] = c.TR ? nlohmann::json(*c.TR) : nlohmann::json(nullptr);
-  j["TR_used"] = c.TR ? nlohmann::json(c.hazard.TR) : nlohmann::json(nullptr);
-  j["TR_clamped"] = c.hazard.tr_clamped;
-  j["ag_g"] = s.ag_g();
-  j["F0"] = s.F0();
-  j["Tc_star"] = s.Tc_star();
-  j["SS"] = s.SS();
-  j["CC"] = s.CC();
-  j["ST"] = s.ST();
-  j["S"] = s.S();
-  j["eta"] = s.eta();
-  j["damping_pct"] = s.damping_pct();
-  j["TB"] = s.TB();
-  j["TC"] = s.TC();
-  j["TD"] = s.TD();
-  j["TE"] = s.TE();
-  j["TF"] = s.TF();
-  j["Fv"] = s.Fv();
-  j["PGA_g"] = s.PGA() / units::g;
-  nlohmann::json arr = nlohmann::json::array();
-  for (double T : periods) {
-    nlohmann::json p{{"T", T}, {"Se_g", s.Se(T) / units::g}, {"SDe_m", s.SDe(T)}, {"Sve_g", s.Sve(T) / units::g}};
-    if (q) p["Sd_g"] = s.Sd(T, *q) / units::g;
-    arr.push_back(p);
-  }
-  j["spectrum"] = arr;
-  return j;
-}
-
-void print_table(const Site& site, const std::vector<Column>& cols, const std::vector<ElasticSpectrum>& spectra,
+void print_table(const Site& site, const std::vector<SpectrumColumn>& cols, const std::vector<ElasticSpectrum>& spectra,
                  const std::vector<double>& periods, std::optional<double> q) {
   const SiteSpec& sp = site.spec();
   std::ostream& o = std::cout;
@@ -293,49 +186,22 @@ void print_table(const Site& site, const std::vector<Column>& cols, const std::v
 }
 
 void run(const SpectrumArgs& a) {
-  // The number rules of the case files (support/number_rules.hpp): TR, VN,
-  // damping and CU of 1e308 made "TR = inf" and an infinite spectrum.
-  if (a.tr) check_number_option("--tr", *a.tr, rules::return_period_years);
-  check_number_option("--vn", a.vn, rules::nominal_life_years);
-  check_number_option("--damping", a.damping, rules::damping_or_zero_pct);
-  if (a.cu) check_number_option("--cu", *a.cu, rules::use_coefficient);
-  if (a.q) check_number_option("--q", *a.q, rules::behaviour_factor);
+  // The number rules of the case files (support/number_rules.hpp) are the
+  // options' (add_spectrum_command): TR, VN, damping and CU of 1e308 made
+  // "TR = inf" and an infinite spectrum.
   const SiteSpec spec = make_spec(a);
   if (a.periods_given && a.periods.find_first_not_of(" ,") == std::string::npos)
     throw InputError("--periods '" + a.periods + "': expected a comma-separated list of periods >= 0 s, e.g. 0,0.5,1 "
                      "(leave the option out for the default periods)");
   const std::vector<double> periods = parse_periods(a.periods);
-  if (a.q && !(*a.q >= 1.0)) throw InputError("--q " + std::to_string(*a.q) + ": expected a behaviour factor q >= 1");
   const Site site(spec);
-  const std::vector<Column> cols = evaluate(a, site);
+  const std::vector<SpectrumColumn> cols = evaluate(a, site);
   std::vector<ElasticSpectrum> spectra;
-  for (const Column& c : cols) spectra.emplace_back(c.hazard, spec.conditions, a.damping);
-  for (const Column& c : cols) warn_clamp(c);
+  for (const SpectrumColumn& c : cols) spectra.emplace_back(c.hazard, spec.conditions, a.damping);
+  print_warnings(spectrum_warnings(cols));
   if (a.json) {
-    if (cols.size() == 1) {
-      nlohmann::json j = column_json(cols[0], spectra[0], periods, a.q);
-      if (!spec.comune.empty()) {
-        j["comune"] = spec.comune;
-        j["lat"] = *spec.lat;
-        j["lon"] = *spec.lon;
-        j["note"] = comune_note();
-      }
-      std::cout << stamp_version(j).dump(2) << "\n";
-    } else {
-      nlohmann::json j;
-      j["site"] = site.describe();
-      if (!spec.comune.empty()) {
-        j["comune"] = spec.comune;
-        j["lat"] = *spec.lat;
-        j["lon"] = *spec.lon;
-        j["note"] = comune_note();
-      }
-      j["VR"] = site.VR();
-      nlohmann::json arr = nlohmann::json::array();
-      for (std::size_t i = 0; i < cols.size(); ++i) arr.push_back(column_json(cols[i], spectra[i], periods, a.q));
-      j["limit_states"] = arr;
-      std::cout << stamp_version(j).dump(2) << "\n";
-    }
+    nlohmann::json j = spectrum_json(site, cols, a.damping, periods, a.q);
+    std::cout << stamp_version(j).dump(2) << "\n";
   } else {
     print_table(site, cols, spectra, periods, a.q);
   }
@@ -346,25 +212,29 @@ void run(const SpectrumArgs& a) {
 void add_spectrum_command(CLI::App& app) {
   auto a = std::make_shared<SpectrumArgs>();
   auto* cmd = app.add_subcommand("spectrum", "NTC 2018 elastic spectra of a site (§3.2), per limit state");
-  cmd->add_option("--lat", a->lat, "site latitude (decimal degrees, north)");
-  cmd->add_option("--lon", a->lon, "site longitude (decimal degrees, east)");
-  cmd->add_option("--ag", a->ag_g, "ag on rock, given directly (g)");
-  cmd->add_option("--F0", a->F0, "F0, given directly (-)");
-  cmd->add_option("--Tc-star", a->Tc_star, "TC*, given directly (s)");
+  // Every number option with its range and reason: the rules of the case file's
+  // site (support/number_rules.hpp), checked as the command line is parsed.
+  with_rule(cmd->add_option("--lat", a->lat, "site latitude (decimal degrees, north)"), rules::latitude_deg);
+  with_rule(cmd->add_option("--lon", a->lon, "site longitude (decimal degrees, east)"), rules::longitude_deg);
+  with_rule(cmd->add_option("--ag", a->ag_g, "ag on rock, given directly (g)"), rules::ag_g);
+  with_rule(cmd->add_option("--F0", a->F0, "F0, given directly (-)"), rules::F0);
+  with_rule(cmd->add_option("--Tc-star", a->Tc_star, "TC*, given directly (s)"), rules::Tc_star_s);
   cmd->add_option("--comune", a->comune,
                   "site by comune (ISTAT list): the coordinates of the municipal seat are used and printed");
   cmd->add_option("--province", a->province, "province (sigla, e.g. AQ) of --comune, for a name shared by two");
   cmd->add_option("--island", a->island, "island of Allegato B Tab. 2 (e.g. Sardegna, Lipari)");
   cmd->add_option("--soil", a->soil, "subsoil class A..E (default A)");
   cmd->add_option("--topography", a->topography, "topographic class T1..T4 (default T1)");
-  cmd->add_option("--h-over-H", a->h_over_H, "relative height of the site on the relief, 0..1 (default 1)");
-  cmd->add_option("--vn", a->vn, "nominal life VN (years, default 50)");
-  cmd->add_option("--cu", a->cu, "coefficient of use CU (default 1.0)");
+  with_rule(cmd->add_option("--h-over-H", a->h_over_H, "relative height of the site on the relief, 0..1 (default 1)"),
+            rules::relative_height);
+  with_rule(cmd->add_option("--vn", a->vn, "nominal life VN (years, default 50)"), rules::nominal_life_years);
+  with_rule(cmd->add_option("--cu", a->cu, "coefficient of use CU (default 1.0)"), rules::use_coefficient);
   cmd->add_option("--use-class", a->use_class, "use class I..IV (sets CU)");
   cmd->add_option("--limit-state", a->limit_state, "SLO|SLD|SLV|SLC (default: all four)");
-  cmd->add_option("--tr", a->tr, "return period (years) instead of a limit state");
-  cmd->add_option("--damping", a->damping, "viscous damping (%, default 5)");
-  cmd->add_option("--q", a->q, "behaviour factor: also print the design spectrum Sd");
+  with_rule(cmd->add_option("--tr", a->tr, "return period (years) instead of a limit state"),
+            rules::return_period_years);
+  with_rule(cmd->add_option("--damping", a->damping, "viscous damping (%, default 5)"), rules::damping_or_zero_pct);
+  with_rule(cmd->add_option("--q", a->q, "behaviour factor: also print the design spectrum Sd"), rules::behaviour_factor);
   cmd->add_option("--periods", a->periods, "comma-separated periods (s), e.g. 0,0.5,1")
       ->each([a](const std::string&) { a->periods_given = true; });
   cmd->add_option("--grid", a->grid, "hazard grid CSV (default: the shipped spectra/ntc2008_hazard_grid.csv)");

@@ -4,6 +4,8 @@
 #include <assess/support/error.hpp>
 #include <assess/support/json_input.hpp>
 #include <assess/support/number_rules.hpp>
+#include <assess/support/termination.hpp>
+#include <assess/support/version.hpp>
 
 #include <algorithm>
 #include <vector>
@@ -22,65 +24,80 @@
 #include <string>
 
 
+namespace {
+
+// The text of a number option as the user wrote it, without surrounding blanks.
+std::string trimmed(const std::string& text) {
+  const auto b = text.find_first_not_of(" \t");
+  if (b == std::string::npos) return "";
+  return text.substr(b, text.find_last_not_of(" \t") - b + 1);
+}
+
+}  // namespace
+
 void assess::cli::require_finite_numbers(CLI::App& app) {
-  const CLI::Validator finite(
+  // The rule of every number a user writes (number_rules.hpp): decimal, finite, of normal size.
+  const CLI::Validator decimal(
       [](std::string& text) -> std::string {
-        std::string t = text;
-        t.erase(0, t.find_first_not_of(" \t"));
-        const std::string lower = [&] {
-          std::string l;
-          for (char c : t) l += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-          return l;
-        }();
-        char* end = nullptr;
-        const double v = std::strtod(t.c_str(), &end);
-        if (end == t.c_str()) return "";  // not a number at all: CLI11's own message
-        if (lower.find("0x") != std::string::npos)
-          return "must be a decimal number, got '" + text + "' (a hexadecimal float)";
-        if (!std::isfinite(v)) return "must be a finite number, got '" + text + "'";
-        if (assess::is_subnormal(v))
-          return "must be a number of normal size, got '" + text + "' (a subnormal number, |x| < 2.2e-308)";
-        return "";
+        double v = 0.0;
+        const std::string t = trimmed(text);
+        const std::string bad = assess::decimal_number_violation(t, v);
+        return t.empty() ? "" : bad;  // an empty value: CLI11's own message
       },
-      "FINITE");
+      "DECIMAL");
   std::function<void(CLI::App&)> walk = [&](CLI::App& a) {
-    for (CLI::Option* o : a.get_options())
-      if (o->get_type_name() == "FLOAT") o->check(finite);
+    for (CLI::Option* o : a.get_options()) {
+      const std::string type = o->get_type_name();
+      if (type == "FLOAT" || type == "INT" || type == "UINT") o->check(decimal);
+    }
     for (CLI::App* sub : a.get_subcommands({})) walk(*sub);
   };
   walk(app);
 }
 
-void assess::cli::check_number_option(const char* option, double value, const assess::NumberRule& rule) {
-  const std::string bad = assess::number_rule_violation(value, rule);
-  if (!bad.empty()) throw assess::InputError(std::string(option) + ": " + bad);
+CLI::Option* assess::cli::with_rule(CLI::Option* option, const assess::NumberRule& rule) {
+  const assess::NumberRule r = rule;
+  option->check(CLI::Validator(
+      [r](std::string& text) -> std::string {
+        double v = 0.0;
+        const std::string t = trimmed(text);
+        std::string bad = assess::decimal_number_violation(t, v);
+        if (bad.empty()) bad = assess::number_rule_violation(v, r);
+        return bad;
+      },
+      std::string(rule.lo_open ? "(" : "[") + assess::number_for_message(rule.lo) + ", " +
+          assess::number_for_message(rule.hi) + "] " + rule.unit,
+      "RULE"));
+  return option;
 }
 
-namespace {
-
-// The last guard on a message (issue 31: "-nan" and "TR = inf" in messages):
-// a word inf, -inf, nan or -nan, as std::to_string and iostreams print a
-// number that is not finite, reads "infinite" / "not a number". The messages
-// format their numbers with number_for_message; this catches one that did not.
-std::string plain_numbers(const std::string& m) {
-  std::string out;
-  auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '/' || c == '\''; };
-  for (std::size_t i = 0; i < m.size();) {
-    const bool start = i == 0 || !word(m[i - 1]);
-    const std::size_t sign = (m[i] == '-') ? 1 : 0;
-    if (start && i + sign + 3 <= m.size()) {
-      const std::string w = m.substr(i + sign, 3);
-      const bool end = i + sign + 3 == m.size() || !word(m[i + sign + 3]);
-      if (end && (w == "inf" || w == "nan")) {
-        out += w == "nan" ? "not a number" : (sign ? "minus infinite" : "infinite");
-        i += sign + 3;
-        continue;
-      }
-    }
-    out += m[i++];
+std::vector<double> assess::cli::parse_number_list(const std::string& text, const char* option,
+                                                  const assess::NumberRule& rule) {
+  std::vector<double> out;
+  std::size_t from = 0;
+  for (std::size_t item = 1;; ++item) {
+    const std::size_t comma = text.find(',', from);
+    const std::string t = trimmed(text.substr(from, comma == std::string::npos ? std::string::npos : comma - from));
+    double v = 0.0;
+    std::string bad = assess::decimal_number_violation(t, v);
+    if (bad.empty()) bad = assess::number_rule_violation(v, rule);
+    if (!bad.empty())
+      throw assess::InputError(std::string(option) + ": item " + std::to_string(item) + ": " + bad +
+                               " (a comma-separated list of numbers in " + rule.unit + ")");
+    out.push_back(v);
+    if (comma == std::string::npos) break;
+    from = comma + 1;
   }
   return out;
 }
+
+namespace assess::cli::option_rules {
+const NumberRule threads{"threads", 1.0, 4096.0, false, false, "worker threads; leave --threads out for all cores"};
+const NumberRule seed{"-", 0.0, 18446744073709551615.0, false, false, "a 64-bit unsigned integer"};
+}  // namespace assess::cli::option_rules
+
+
+namespace {
 
 // The name among `names` nearest to `typed` (Levenshtein, json_input.hpp), if near enough to be a typo.
 std::string nearest(const std::string& typed, const std::vector<std::string>& names) {
@@ -139,17 +156,21 @@ void check_words(CLI::App& app, int argc, char** argv) {
 }  // namespace
 
 void assess::cli::print_warnings(const std::vector<std::string>& warnings) {
-  for (const std::string& w : warnings) std::cerr << "assess: warning: " << plain_numbers(w) << "\n";
+  for (const std::string& w : warnings) std::cerr << "assess: warning: " << assess::plain_numbers(w) << "\n";
 }
 
 int main(int argc, char** argv) {
+  // Before any thread starts: SIGINT, SIGTERM and SIGHUP stop the programs
+  // this run started and remove its temporaries; a write beyond `ulimit -f`
+  // is a full disk, not SIGXFSZ (support/termination.hpp, issue 39).
+  assess::install_termination_handling();
   CLI::App app{
       "assess: out-of-plane seismic assessment of masonry walls\n"
       "(NTC 2018 / Circolare 2019 spectra, kinematic checks, rocking dynamics)"};
   // "Usage: assess ..." whatever path the program was started from (help2man
   // builds the man page from this text).
   app.name("assess");
-  app.set_version_flag("--version", std::string("assess ") + ASSESS_VERSION_STRING);
+  app.set_version_flag("--version", std::string("assess ") + assess::version());
   app.require_subcommand(1);
   assess::cli::add_spectrum_command(app);
   assess::cli::add_kinematic_command(app);
@@ -184,20 +205,28 @@ int main(int argc, char** argv) {
   // "nan", "inf", a hexadecimal float or a subnormal (issue 31: --k nan was
   // taken for "no --k").
   assess::cli::require_finite_numbers(app);
-  // Every subcommand's options in one page (the man page is built from it).
+  // Every subcommand's options in one page (the man page is built from it;
+  // CLI11 would first ask for the required subcommand).
   app.set_help_all_flag("--help-all", "print the help of every subcommand");
+  if (argc == 2 && std::string(argv[1]) == "--help-all") {
+    std::cout << app.help("", CLI::AppFormatMode::All);
+    return 0;
+  }
   try {
     check_words(app, argc, argv);
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int rc = app.exit(e);
-    return rc == 0 ? 0 : assess::cli::exit_input_error;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    // An option's value or a missing argument: the same "assess: error: "
+    // line as every other input error (the Python module raises its text).
+    std::cerr << "assess: error: " << assess::plain_numbers(e.what()) << "\n";
+    return assess::cli::exit_input_error;
   } catch (const assess::InputError& e) {
-    std::cerr << "assess: error: " << plain_numbers(e.what()) << "\n";
+    std::cerr << "assess: error: " << assess::plain_numbers(e.what()) << "\n";
     return assess::cli::exit_input_error;
   } catch (const assess::SystemError& e) {
     // A failure of the machine (disk full, I/O error): exit status 1.
-    std::cerr << "assess: error: " << plain_numbers(e.what()) << "\n";
+    std::cerr << "assess: error: " << assess::plain_numbers(e.what()) << "\n";
     return 1;
   } catch (const std::bad_alloc&) {
     std::cerr << "assess: error: out of memory (the input asks for more memory than the machine has)\n";

@@ -2,7 +2,7 @@
 # Runs one libFuzzer harness for a bounded time on a seed corpus made from the
 # project's shipped files, and prints its figures (executions, time, crashes).
 #   fuzz/run_fuzzer.sh EXE NAME SECONDS SOURCE_DIR WORK_DIR [libFuzzer options...]
-# NAME: records | case_file | campaign | building | ties. Exit status: libFuzzer's (non-zero on a
+# NAME: records | case_file | campaign | building | ties | catalogue | metadata | spectra. Exit status: libFuzzer's (non-zero on a
 # crash, a leak, a sanitizer report or a timeout; the input is kept in WORK_DIR).
 set -eu
 exe=$1 name=$2 secs=$3 src=$4 work=$5
@@ -40,6 +40,31 @@ case "$name" in
   ties)
     seed '' "$src"/mechanisms/*-ties.json "$src"/tests/cli/ties/*.json "$src"/tests/cli/ties_bad/*.json \
             "$src"/tests/data/hostile/ties_*.json ;;
+  catalogue)
+    # A valid catalogue of the shipped catalogue's first records (the whole file is 680 kB), and the hostile ones.
+    python3 - "$src/spectra/records/catalogue.json" "$work/seeds/catalogue_head.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+d["records"] = d["records"][:4]
+open(sys.argv[2], "w").write(json.dumps(d, indent=1))
+PY
+    seed '' "$src"/tests/data/hostile/catalogue_*.json ;;
+  metadata)
+    seed '' "$src"/spectra/records/metadata.csv "$src"/tests/data/records_mini/metadata.csv \
+            "$src"/tests/data/hostile/metadata_*.csv ;;
+  spectra)
+    # The body of a valid spectra file for the harness's catalogue (records a and b, PGA 0.25 g):
+    # counts, periods 0, 0.1, 1 s, damping 0.05, the ids, the ordinates.
+    python3 - "$work/seeds/spectra_valid.bin" <<'PY'
+import struct, sys
+pga = 0.25 * 9.80665
+b = struct.pack("<III", 3, 1, 2) + struct.pack("<3d", 0.0, 0.1, 1.0) + struct.pack("<d", 0.05)
+for i in (b"a", b"b"):
+    b += struct.pack("<I", len(i)) + i
+b += struct.pack("<3d", pga, 2.5 * pga, 0.4 * pga) + struct.pack("<3d", pga, 2.0 * pga, 0.6 * pga)
+open(sys.argv[1], "wb").write(b)
+PY
+    ;;
   *) echo "unknown fuzzer '$name'" >&2; exit 2 ;;
 esac
 echo "fuzz $name: $(ls "$work/seeds" | wc -l) seed files, ${secs} s"

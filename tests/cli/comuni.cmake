@@ -12,7 +12,7 @@ assess_cli_test(spectrum_comune_province ARGS spectrum --comune Castro --provinc
 assess_cli_error_test(spectrum_comune_unknown "did you mean L'Aquila \\(AQ\\)" spectrum --comune Lakuila)
 assess_cli_error_test(spectrum_comune_and_lat "exactly one" spectrum --comune Roma --lat 41.9 --lon 12.5)
 # The same lookup from a case file; an unknown comune names the JSON path.
-assess_cli_test(run_site_comune ARGS run tests/cli/comuni/site_comune.json
-  PASS "site: comune L'Aquila \\(AQ\\), ISTAT 066049: lat 42\\.354, lon 13\\.392 \\(municipal seat\\).*note: municipal seat used")
+assess_cli_test(run_site_comune ARGS run tests/cli/comuni/site_comune.json --lang en
+  PASS "Site: comune L'Aquila \\(AQ\\), ISTAT 066049: lat 42\\.354, lon 13\\.392 \\(municipal seat\\).*Site given by comune: the coordinates of the municipal seat are used")
 assess_cli_error_test(run_site_comune_ambiguous "/site/comune: comune 'Castro' is ambiguous"
   run tests/cli/comuni/ambiguous.json)

@@ -26,14 +26,14 @@ assess_cli_error_test(records_build_missing "nope.csv: cannot open the record me
 assess_cli_error_test(run_select_bad_class "/dynamic/select/site_classes/0.*expected a site class" run tests/cli/run_bad/select_bad_class.json)
 assess_cli_error_test(run_select_bad_mw "/dynamic/select/Mw.*min <= max" run tests/cli/run_bad/select_bad_mw.json)
 # Issue 30: 7 class-C records, each scale <= 3.00, the range justified, no nan where metadata lack.
-assess_cli_test(run_church_why_chosen ARGS run mechanisms/church-facade.json
-  PASS "each scale <= 3\\.00, mean scale 1\\.509 <= 2\\.00, largest scaled PGA 0\\.446 g <= 2\\.50 ag S.*range: 0\\.500 x min.*cut at[ \n]+4\\.000 s.*T_SLC = 6\\.012 s.*site classes tried: class C: 88 candidates, compatible.*misfit rank.*class C \\(from Vs30, NTC 2018 Tab\\. 3\\.2\\.II\\).*integrated to its last sample"
+assess_cli_test(run_church_why_chosen ARGS run mechanisms/church-facade.json --lang en
+  PASS "C \\(Vs30 192\\).*Period range: 0\\.500 x min.*cut at[ \n]+4\\.000 s.*T_SLC = 6\\.012 s.*Site classes tried: class C: 88 candidates, compatible.*Limits: each scale ≤ 3\\.00, mean scale 1\\.509 ≤ 2\\.00, largest scaled PGA 0\\.446 g ≤ 2\\.50 ag S.*integrated to its last sample"
   FAIL_REGEX "site class relaxed|[ (]-?nan[ ,)]|[ (]-?inf[ ,)]")
 # Issue 30: the flags, computed, beside each record: near-fault and pulse-like records admitted on
 # request, a misfit above the case's limit; a listed file outside the library has no metadata ("—").
-assess_cli_test(run_record_flags ARGS run tests/cli/records/church_flags.json
-  PASS "near-fault and pulse-like records admitted \\(0 left[ \n]+out.*elCentro .*FLAG: near-fault: Rjb 6\\.09 km < 10 km.*FLAG: misfit 0\\.254 > 0\\.200 \\(rank 28\\).*FLAG: pulse-like \\(source classification, Tp = 4\\.51 s\\); near-fault: Rjb 8\\.6 km < 10 km"
+assess_cli_test(run_record_flags ARGS run tests/cli/records/church_flags.json --lang en
+  PASS "near-fault: Rjb 6\\.09 km < 10 km; misfit 0\\.254 > 0\\.200 \\(rank 28\\).*pulse-like \\(source classification, Tp = 4\\.51 s\\); near-fault: Rjb 8\\.6 km < 10 km.*near-fault and pulse-like records admitted \\(0 left[ \n]+out"
   FAIL_REGEX "[ (]-?nan[ ,)]|[ (]-?inf[ ,)]")
-assess_cli_test(run_listed_record_flags ARGS run tests/cli/verdict/plain_records.json
-  PASS "elcentro_plain_1col +1\\.000 +0\\.3187 +— +— +— +— — +— .*FLAG: not in the record library.*elCentro .*Rjb +C .*FLAG: near-fault: Rjb 6\\.09 km"
+assess_cli_test(run_listed_record_flags ARGS run tests/cli/verdict/plain_records.json --lang en
+  PASS "elcentro_plain_1col +— +— +— +— +— +1\\.000 +0\\.3187 +— +— +31\\.2.*not in the record library: Mw, distance, site class and near-fault status unknown.*elCentro .*6\\.1 Rjb +C \\(Vs30.*near-fault: Rjb 6\\.09 km < 10 km"
   FAIL_REGEX "[ (]-?nan[ ,)]|[ (]-?inf[ ,)]")

@@ -14,14 +14,14 @@ assess_cli_error_test(rel_inf_g "inf_g.txt:2: value overflows once converted to 
 assess_cli_error_test(rel_json_overflow "height_overflow.json: /mechanism/storeys/0/height: number out of the range of a double"
   kinematic tests/data/hostile/height_overflow.json)
 # Defect 6: k beyond what the integration resolves, from the CLI and a case file.
-assess_cli_error_test(rel_k_huge_cli "--k must lie in \\[0, 1e\\+09\\] kN/m\\^3"
+assess_cli_error_test(rel_k_huge_cli "--k: value 1e\\+20 out of range: expected in \\(0, 1e\\+09\\] kN/m\\^3 \\(a stiffer base is the rigid model"
   rocking --model smooth ${_rel_block} --k 1e20 --record ${_rel_stu})
 assess_cli_error_test(rel_k_huge_run "k_huge.json: /dynamic/k: value 1e\\+20 out of range"
   run tests/data/hostile/k_huge.json)
 # Defect 11: the same bounds as the case file.
-assess_cli_error_test(rel_tail "--tail must lie in \\[0, 600\\] s, got 1e\\+09"
+assess_cli_error_test(rel_tail "--tail: value 1e\\+09 out of range: expected in \\[0, 600\\] s"
   rocking --model rigid ${_rel_block} --record ${_rel_stu} --tail 1e9)
-assess_cli_error_test(rel_rtol "--rtol must lie in \\[1e-14, 0\\.01\\]"
+assess_cli_error_test(rel_rtol "--rtol: value 10 out of range: expected in \\[1e-14, 0\\.01\\]"
   rocking --model rigid ${_rel_block} --record ${_rel_stu} --rtol 10)
 # Defect 12: --dt nan is an error, not "no --dt"; a directory is not a format.
 assess_cli_error_test(rel_dt_nan "--dt: must be a finite number, got 'nan'"
@@ -29,7 +29,7 @@ assess_cli_error_test(rel_dt_nan "--dt: must be a finite number, got 'nan'"
 assess_cli_error_test(rel_directory "tests/data: is a directory, expected a record file"
   rocking --model rigid ${_rel_block} --record tests/data)
 # Defect 8: --limit 0 ran everything.
-assess_cli_error_test(rel_limit_zero "--limit 0 would run no analysis"
+assess_cli_error_test(rel_limit_zero "--limit: value 0 out of range: expected in \\[1, 1e\\+18\\] analyses \\(only the analyses with id < N run: 0 would run none\\)"
   campaign tests/data/campaign/tiny.json --out ${PROJECT_BINARY_DIR}/tests/rel_limit0 --limit 0)
 # Defect 9: a second writer on one --out is refused (flock(1) holds the lock
 # as a concurrent campaign would).
@@ -160,3 +160,128 @@ set_tests_properties(cli.rel4_campaign_tiny_scale PROPERTIES LABELS cli TIMEOUT 
 # name (another folder): its content differs, so the inputs do (issue 31).
 rel4_sh_test(rel4_fragility_resume_other_case 2 "cannot resume into .*its fragility.json describes a different campaign or fragility study"
   "rm -rf '${_r4}/frag' && mkdir -p '${_r4}/frag/a' '${_r4}/frag/b' && cp tests/data/fragility/free_wall.json '${_r4}/frag/a/case.json' && sed 's/\"thickness\": *0.5/\"thickness\": 0.55/' tests/data/fragility/free_wall.json > '${_r4}/frag/b/case.json' && cd '${_r4}/frag/a' && @EXE@ fragility case.json --stripes 475 --records 3 --bootstrap 0 --out ../out --quiet --no-plots --json > /dev/null && cd ../b && @EXE@ fragility case.json --stripes 475 --records 3 --bootstrap 0 --out ../out --resume --quiet --no-plots")
+
+# ---- Issue 39: hostile input, round five (docs/reliability.md, "Round five") ----
+set(_r5 ${PROJECT_BINARY_DIR}/tests/round5)
+file(MAKE_DIRECTORY ${_r5}/meta)
+# A copy of the small library (tests/data/records_mini) with its records in
+# DIR, built by `assess records build` there: the shell lines of the tests below.
+set(_r5_lib "mkdir -p DIR && cp spectra/records/elCentro.AT2 spectra/records/ARL360.at2 spectra/records/RSN289_1.AT2 DIR/ && grep -v FEMA tests/data/records_mini/metadata.csv | sed 's#../../../spectra/records/##' > DIR/metadata.csv && @EXE@ records build --metadata DIR/metadata.csv > /dev/null")
+
+# Class 1, no exception through std::call_once (SIGABRT before): records
+# changed since the build, seen by `run` (the selection's records), `records
+# show` and `fragility`; a window the wrong way round named as the options'.
+string(REPLACE "DIR" "${_r5}/changed" _r5_changed "${_r5_lib}")
+rel4_sh_test(rel5_changed_record_run 2 "select_local_catalogue.json: /dynamic/select: catalogue record [A-Za-z0-9_]+\\.(AT2|at2): .*the file changed since the catalogue was built"
+  "rm -rf '${_r5}/changed' && ${_r5_changed} && for f in '${_r5}'/changed/*.[Aa][Tt]2; do echo ' ' >> \"$f\"; done && cp tests/data/hostile/select_local_catalogue.json '${_r5}/changed/' && @EXE@ run '${_r5}/changed/select_local_catalogue.json'")
+string(REPLACE "DIR" "${_r5}/changed_show" _r5_changed_show "${_r5_lib}")
+rel4_sh_test(rel5_changed_record_show 2 "ARL360.at2: the file changed since the catalogue was built \\(content hash [0-9a-f]+, catalogue [0-9a-f]+\\): run `assess records build`"
+  "rm -rf '${_r5}/changed_show' && ${_r5_changed_show} && echo ' ' >> '${_r5}/changed_show/ARL360.at2' && @EXE@ records show ARL360 --catalogue '${_r5}/changed_show/catalogue.json'")
+string(REPLACE "DIR" "${_r5}/changed_frag" _r5_changed_frag "${_r5_lib}")
+rel4_sh_test(rel5_changed_record_fragility 2 "the file changed since the catalogue was built"
+  "rm -rf '${_r5}/changed_frag' && ${_r5_changed_frag} && for f in '${_r5}'/changed_frag/*.[Aa][Tt]2; do echo ' ' >> \"$f\"; done && cp tests/data/hostile/select_local_catalogue.json '${_r5}/changed_frag/' && @EXE@ fragility '${_r5}/changed_frag/select_local_catalogue.json' --stripes 475 --bootstrap 0 --out '${_r5}/changed_frag/out' --quiet --no-plots")
+assess_cli_error_test(rel5_select_mw_reversed "--mw-min 7 is above --mw-max 5: expected a window with min <= max"
+  records select --lat 43.44 --lon 12.64 --mw-min 7 --mw-max 5)
+# Class 2, the bounded reader for the record library: the catalogue a
+# directory (internal error before), /dev/zero (exit 1, out of memory), a
+# record that is a FIFO (a hang).
+assess_cli_error_test(rel5_select_catalogue_dir "tests/data: is a directory, expected a record catalogue"
+  records select --ag 0.25 --F0 2.4 --Tc-star 0.3 --catalogue tests/data)
+rel4_sh_test(rel5_select_catalogue_dev_zero 2 "/dev/zero: is a character device, expected a record catalogue"
+  "@EXE@ records select --ag 0.25 --F0 2.4 --Tc-star 0.3 --catalogue /dev/zero")
+string(REPLACE "DIR" "${_r5}/fifo" _r5_fifo "${_r5_lib}")
+rel4_sh_test(rel5_record_fifo 2 "ARL360.at2: is a FIFO \\(named pipe\\), expected a record file"
+  "rm -rf '${_r5}/fifo' && ${_r5_fifo} && rm '${_r5}/fifo/ARL360.at2' && mkfifo '${_r5}/fifo/ARL360.at2' && @EXE@ records show ARL360 --catalogue '${_r5}/fifo/catalogue.json'")
+# Class 3, spectra.bin validated after its hash: an ordinate of 1e300 (its
+# hash made right) is not used, with the reason, and the selection integrates.
+string(REPLACE "DIR" "${_r5}/spectra" _r5_spectra "${_r5_lib}")
+rel4_sh_test(rel5_spectra_huge_ordinate 3 "precomputed spectra were not used \\(record spectra '.*spectra.bin': record elCentro: PSA 1e\\+300 m/s\\^2 at T = .*expected a positive value at most PGA/\\(xi sqrt\\(1 - xi\\^2\\)\\).*integrated instead"
+  "rm -rf '${_r5}/spectra' && ${_r5_spectra} && python3 '${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/damage_spectra.py' '${_r5}/spectra/spectra.bin' 300 1e300 && @EXE@ records select --ag 0.25 --F0 2.4 --Tc-star 0.3 --near-fault include --mw-min 6 --mw-max 7.5 --r-max 100 --count 1 --catalogue '${_r5}/spectra/catalogue.json' 2>&1; exit 3")
+# Class 4, outputs of one run onto one file (exit 0 before, one replacing the other).
+rel4_sh_test(rel5_pdf_docx_same 2 "--pdf .*/r.pdf and --docx .*/r.pdf are the same file: one output would replace the other"
+  "mkdir -p '${_r5}/same' && @EXE@ run mechanisms/two_storey_facade.json --pdf '${_r5}/same/r.pdf' --docx '${_r5}/same/r.pdf'")
+rel4_sh_test(rel5_html_pdf_spelled 2 "--html .*/r.pdf and --pdf .*/./r.pdf are the same file"
+  "mkdir -p '${_r5}/same' && @EXE@ run mechanisms/two_storey_facade.json --html '${_r5}/same/r.pdf' --pdf '${_r5}/same/./r.pdf'")
+rel4_sh_test(rel5_txt_html_docx_one_name 2 "--html .*/one and --docx .*/one are the same file"
+  "mkdir -p '${_r5}/same' && @EXE@ run mechanisms/two_storey_facade.json --html '${_r5}/same/one' --txt '${_r5}/same/two' --docx '${_r5}/same/one'")
+rel4_sh_test(rel5_txt_onto_expanded 2 "--txt .*/D/M1.json and --expand .*/D .*/D/M1.json are the same file.*nothing written"
+  "rm -rf '${_r5}/expand' && @EXE@ run tests/cli/building/palazzo_sulmona.json --expand '${_r5}/expand/D' --txt '${_r5}/expand/D/M1.json'; rc=$?; test -z \"$(ls '${_r5}/expand/D')\" && echo nothing written >&2; exit $rc")
+# Class 5, process limits and signals: a write beyond `ulimit -f` is a full
+# disk (SIGXFSZ killed the tool, leaving .NAME.tmp.XXXXXX); SIGTERM and SIGINT
+# during --pdf and --docx stop the child and its children and remove every
+# temporary (tests/cli/scripts/signal_cleanup.py, with stand-in tools).
+rel4_sh_test(rel5_ulimit_html 1 "--html: .*/r.html: cannot write: File too large.*no temporary left"
+  "rm -rf '${_r5}/ulimit' && mkdir -p '${_r5}/ulimit' && (ulimit -f 64; @EXE@ run mechanisms/two_storey_facade.json --html '${_r5}/ulimit/r.html' > /dev/null); rc=$?; test -z \"$(ls -A '${_r5}/ulimit')\" && echo no temporary left >&2; exit $rc")
+foreach(_sig TERM INT)
+  foreach(_mode pdf docx)
+    add_test(NAME cli.rel5_sig${_sig}_${_mode}
+      COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/signal_cleanup.py $<TARGET_FILE:assess_cli> ${_mode} ${_sig}
+              ${_r5}/sig_${_sig}_${_mode}
+      WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+    set_tests_properties(cli.rel5_sig${_sig}_${_mode} PROPERTIES LABELS cli TIMEOUT 180
+      ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}" PASS_REGULAR_EXPRESSION "^ok: ${_sig} during --${_mode}")
+  endforeach()
+endforeach()
+# Class 6, the record library's inputs under the rules of case files.
+assess_cli_error_test(rel5_catalogue_escape "catalogue_escape.json: /records/0/event: the text holds a control character \\(U\\+001B\\)"
+  records list --catalogue tests/data/hostile/catalogue_escape.json)
+assess_cli_error_test(rel5_catalogue_mw "catalogue_numbers.json: /records/0/Mw: value 1e\\+308 out of range: expected in \\[2, 10\\] -"
+  records list --catalogue tests/data/hostile/catalogue_numbers.json)
+assess_cli_error_test(rel5_catalogue_distance "catalogue_distance.json: /records/0/distance_km: value -5 out of range: expected in \\[0, 20000\\] km"
+  records show RSN292_ITALY_A-STU270 --catalogue tests/data/hostile/catalogue_distance.json)
+assess_cli_error_test(rel5_catalogue_dt_zero "catalogue_dt_zero.json: /records/0/dt_s: value 0 out of range: expected in \\[1e-06, 10\\] s"
+  records select --ag 0.25 --F0 2.4 --Tc-star 0.3 --catalogue tests/data/hostile/catalogue_dt_zero.json)
+assess_cli_error_test(rel5_record_header_escape "header_escape.AT2: the header's event: the text holds a control character \\(U\\+001B\\)"
+  rocking --model rigid --thickness 0.25 --height 3 --unit-weight 12 --record tests/data/hostile/header_escape.AT2)
+assess_cli_test(rel5_catalogue_ok ARGS records show RSN292_ITALY_A-STU270 --catalogue tests/data/hostile/catalogue_ok.json
+  PASS "RSN292_ITALY_A-STU270 .*5 % spectrum")
+assess_cli_error_test(rel5_metadata_hex "metadata_hex_mw.csv:2 column Mw: must be a decimal number, got '0x1.bcp2' \\(a hexadecimal number\\)"
+  records build --metadata tests/data/hostile/metadata_hex_mw.csv --output ${_r5}/meta/catalogue.json)
+assess_cli_error_test(rel5_metadata_escape "metadata_escape.csv:2 column event: the text holds a control character \\(U\\+001B\\)"
+  records build --metadata tests/data/hostile/metadata_escape.csv --output ${_r5}/meta/catalogue.json)
+assess_cli_error_test(rel5_metadata_dup_column "metadata_dup_column.csv:1: column 'Mw' is named twice \\(columns 4 and 24\\)"
+  records build --metadata tests/data/hostile/metadata_dup_column.csv --output ${_r5}/meta/catalogue.json)
+assess_cli_error_test(rel5_metadata_empty_id "metadata_empty_id.csv:2 column file: '../../../spectra/records/.AT2' gives an empty record id"
+  records build --metadata tests/data/hostile/metadata_empty_id.csv --output ${_r5}/meta/catalogue.json)
+rel4_sh_test(rel5_build_output_elsewhere 3 "wrote .*elsewhere/deeper/catalogue.json: 4 components.*ARL360 \\(\\.\\./.*spectra/records/ARL360.at2, PEER AT2\\).*5 % spectrum"
+  "rm -rf '${_r5}/elsewhere' && mkdir -p '${_r5}/elsewhere/deeper' && @EXE@ records build --metadata tests/data/records_mini/metadata.csv --output '${_r5}/elsewhere/deeper/catalogue.json' && @EXE@ records show ARL360 --catalogue '${_r5}/elsewhere/deeper/catalogue.json'; exit 3")
+# Class 7, every option with its range and reason: generated over every
+# number option of every subcommand (tests/cli/scripts/option_ranges.py);
+# and the inputs of the issue.
+add_test(NAME cli.rel5_option_ranges
+  COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/option_ranges.py $<TARGET_FILE:assess_cli>
+  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.rel5_option_ranges PROPERTIES LABELS cli TIMEOUT 300
+  ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}" PASS_REGULAR_EXPRESSION "^ok: [0-9]+ number options of [0-9]+ subcommands")
+assess_cli_error_test(rel5_fragility_records_zero "--records: value 0 out of range: expected in \\[1, 1000\\] records"
+  fragility tests/data/fragility/free_wall.json --records 0)
+assess_cli_error_test(rel5_near_fault_km_negative "--near-fault-km: value -1 out of range: expected in \\[0, 100\\] km"
+  records select --lat 43.44 --lon 12.64 --near-fault-km -1)
+assess_cli_error_test(rel5_max_pga_ratio_zero "--max-pga-ratio: value 0 out of range: expected in \\[0\\.5, 10\\] -"
+  records select --lat 43.44 --lon 12.64 --max-pga-ratio 0)
+assess_cli_error_test(rel5_F0_huge "--F0: value 1e\\+300 out of range: expected in \\[1, 10\\] -"
+  records select --ag 0.25 --F0 1e300 --Tc-star 0.3)
+assess_cli_error_test(rel5_flexure_fm_tiny "flexure_fm_tiny.json: /mechanism/fm_MPa: value 1e-09 out of range: expected in \\[0\\.001, 10000\\] MPa"
+  kinematic tests/data/hostile/flexure_fm_tiny.json)
+assess_cli_error_test(rel5_corner_opening_beyond "corner_opening_beyond.json: /mechanism/wall_a/openings/0/to: the opening ends 9 m from the corner's outer face, beyond the wall's end \\(6\\.5 m"
+  kinematic tests/data/hostile/corner_opening_beyond.json)
+# Class 8, messages that name the user's file and the real cause.
+rel4_sh_test(rel5_tmpdir_missing 2 "cannot create a temporary folder in TMPDIR=/nonexistent/assess: No such file or directory \\(set TMPDIR to a writable folder\\)"
+  "mkdir -p '${_r5}/tmpdir' && TMPDIR=/nonexistent/assess @EXE@ run mechanisms/two_storey_facade.json --pdf '${_r5}/tmpdir/r.pdf' > /dev/null")
+rel4_sh_test(rel5_pandoc_missing 2 "--docx .*/nopandoc/r.docx: pandoc was not found on PATH: install it"
+  "mkdir -p '${_r5}/nopandoc' && PATH=/nonexistent @EXE@ run mechanisms/two_storey_facade.json --docx '${_r5}/nopandoc/r.docx' > /dev/null")
+# `assess dynamic --k`: a k the command line gave is named as --k, not as the
+# case's /dynamic/k (which this case does not have).
+assess_cli_error_test(rel5_dynamic_k_option "assess: error: --k: Winkler modulus k = 100000 kN/m\\^3 is too small"
+  dynamic mechanisms/vertical_flexure_dynamic.json --model smooth --k 1e5 --record spectra/records/RSN292_ITALY_A-STU270.AT2)
+# No `timeout` (nor pdftohtml, qpdf) on PATH: the PDF is printed all the same
+# (the programs run without a shell and time out in the tool).
+rel4_sh_test(rel5_pdf_without_timeout 3 "PDF report written to:? .*/notimeout/r.pdf"
+  "rm -rf '${_r5}/notimeout' && mkdir -p '${_r5}/notimeout' && PATH=/nonexistent CHROMIUM='${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/fake_chromium.sh' @EXE@ run mechanisms/two_storey_facade.json --lang en --pdf '${_r5}/notimeout/r.pdf' && head -c 4 '${_r5}/notimeout/r.pdf' | grep -q PDF; exit 3")
+# Class 9, bounded work: one horizontal-flexure mechanism at its caps (20
+# strips of 6 openings, 200 search points: 0.2-0.3 s of CPU; at the former
+# caps, 50 strips of 20 openings, 57 s; docs/reliability.md states the time).
+add_test(NAME cli.rel5_flexure_caps COMMAND $<TARGET_FILE:assess_cli> kinematic tests/data/hostile/flexure_caps.json
+  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.rel5_flexure_caps PROPERTIES LABELS cli TIMEOUT 30
+  ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}" PASS_REGULAR_EXPRESSION "horizontal_flexure")

@@ -57,8 +57,9 @@ assess_cli_test(help_usage ARGS --help
 assess_cli_test(help_run_example ARGS run --help PASS "Usage: assess run .*Example:.*assess run mechanisms/church-facade.json")
 if(TARGET assess_man)
   add_test(NAME cli.man_page
-    COMMAND sh -c "grep -q '^\\.TH ASSESS \"1\"' \"$1\" && grep -q 'assess run mechanisms/church\\\\-facade.json' \"$1\""
+    COMMAND sh -c "grep -q '^\\.TH ASSESS \"1\"' \"$1\" && grep -q 'assess run mechanisms/church\\\\-facade.json' \"$1\" && grep -q 'fB\\\\-\\\\-expand' \"$1\" && grep -q 'fB\\\\-\\\\-stripes' \"$1\""
             sh ${PROJECT_BINARY_DIR}/apps/assess.1)
+  # Issue 41: every subcommand's options (run --expand, fragility --stripes), from `assess --help-all`.
   set_tests_properties(cli.man_page PROPERTIES LABELS cli)
 endif()
 

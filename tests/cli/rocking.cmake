@@ -42,9 +42,9 @@ assess_cli_error_test(rocking_err_truncated "truncated record: the header declar
   rocking --model rigid ${_rk_block} --record tests/data/rocking_truncated.AT2)
 assess_cli_error_test(rocking_err_nonnumeric "rocking_nonnumeric.AT2:5: non-numeric value 'abc'"
   rocking --model rigid ${_rk_block} --record tests/data/rocking_nonnumeric.AT2)
-assess_cli_error_test(rocking_err_zero_dt "time step must be positive"
+assess_cli_error_test(rocking_err_zero_dt "--dt: value 0 out of range: expected in \\[1e-06, 10\\] s"
   rocking --model rigid ${_rk_block} --record tests/data/rocking_plain_1col.txt --dt 0 --unit cm/s^2)
-assess_cli_error_test(rocking_err_negative_dt "time step must be positive"
+assess_cli_error_test(rocking_err_negative_dt "--dt: value -0\\.01 out of range: expected in \\[1e-06, 10\\] s"
   rocking --model rigid ${_rk_block} --record tests/data/rocking_plain_1col.txt --dt -0.01)
 assess_cli_error_test(rocking_err_k_small "is too small: the block has no restoring branch unless k > 3 W h / \\(2 b\\^3\\)"
   rocking --model smooth ${_rk_block} --k 1e3 --record ${_rk_stu})

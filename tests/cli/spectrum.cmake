@@ -13,7 +13,7 @@ assess_cli_test(spectrum_use_class ARGS spectrum --lat 41.8933 --lon 12.4829 --u
   PASS "\"TR\": 1949\\.5")
 assess_cli_test(spectrum_clamp_warning ARGS spectrum --lat 42.3498 --lon 13.3995 --use-class I --limit-state SLO
   PASS "clamped|outside the tabulated")
-assess_cli_error_test(spectrum_bad_lat "--lat.*-90 to 90" spectrum --lat 95 --lon 13)
+assess_cli_error_test(spectrum_bad_lat "--lat: value 95 out of range: expected in \\[-90, 90\\] deg" spectrum --lat 95 --lon 13)
 assess_cli_error_test(spectrum_outside_grid "outside the NTC hazard grid" spectrum --lat 48.85 --lon 2.35)
 assess_cli_error_test(spectrum_bad_soil "--soil.*A, B, C, D, E" spectrum --lat 42.35 --lon 13.40 --soil Z)
 assess_cli_error_test(spectrum_bad_damping "--damping: value -3 out of range: expected in \\[0, 100\\] %" spectrum --lat 42.35 --lon 13.40 --damping -3)

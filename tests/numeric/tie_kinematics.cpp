@@ -25,6 +25,7 @@
 #include <assess/kinematic/tie_catalogue.hpp>
 #include <assess/kinematic/tie_checks.hpp>
 #include <assess/kinematic/tie_design.hpp>
+#include <assess/assessment/facade_assessment.hpp>
 #include <assess/support/error.hpp>
 #include <assess/support/units.hpp>
 
@@ -185,7 +186,7 @@ assess::Tie hand_tie() {
   t.rod.area = assess::units::pi * 0.020 * 0.020 / 4;  // 314.159e-6 m^2
   t.rod.fyk = 275e6;
   t.rod.ftk = 430e6;
-  t.rod.elongation = 0.23;
+  t.rod.eps_uk = 15.0 * 275e6 / 210e9;
   t.rod.thread_diameter = 0.020;
   t.rod.thread_area = 245e-6;  // ISO 898-1, M20
   t.rod.nut_width = 0.030;     // ISO 4032, M20
@@ -220,11 +221,15 @@ TEST_CASE("ISO metric threads: the table's stress areas against A_s = pi/4 (d - 
   CHECK_CLOSE(assess::tie_catalogue::find_thread(0.016)->As, 157e-6, rel_tol(1e-12));
   CHECK_CLOSE(assess::tie_catalogue::find_thread(0.020)->As, 245e-6, rel_tol(1e-12));
   CHECK(assess::tie_catalogue::find_thread(0.026) == nullptr);
-  // Grades: NTC 2018 Tab. 11.3.IX (t <= 40 mm) and the elongation of EN 10025-2 Tab. 7.
+  // Grades: NTC 2018 Tab. 11.3.IX (t <= 40 mm); the uniform elongation 15 fy / E of EN 1993-1-1 §3.2.2(1)
+  // (issue 37), (Agt)k = 7.5 % for B450C.
   CHECK_CLOSE(assess::tie_catalogue::find_grade("S235")->ftk, 360e6, rel_tol(1e-12));
   CHECK_CLOSE(assess::tie_catalogue::find_grade("S275")->ftk, 430e6, rel_tol(1e-12));
   CHECK_CLOSE(assess::tie_catalogue::find_grade("S355")->ftk, 510e6, rel_tol(1e-12));
-  CHECK_CLOSE(assess::tie_catalogue::find_grade("S275")->elongation, 0.23, rel_tol(1e-12));
+  CHECK_CLOSE(assess::tie_catalogue::find_grade("S235")->eps_uk, 0.016786, rel_tol(1e-4));
+  CHECK_CLOSE(assess::tie_catalogue::find_grade("S275")->eps_uk, 15.0 * 275e6 / 210e9, rel_tol(1e-12));  // 1.964 %
+  CHECK_CLOSE(assess::tie_catalogue::find_grade("S355")->eps_uk, 0.025357, rel_tol(1e-4));
+  CHECK_CLOSE(assess::tie_catalogue::find_grade("B450C")->eps_uk, 0.075, rel_tol(1e-12));
 }
 
 TEST_CASE("tie design strengths by hand: rod, thread (M16, M20), local compression, punching, plate and bar bending") {
@@ -289,17 +294,26 @@ TEST_CASE("tie design strengths by hand: rod, thread (M16, M20), local compressi
   dem.curve_force = 30e3;
   dem.dynamic_force = 25e3;
   const auto rows = assess::tie_checks(t, dem);
-  REQUIRE(rows.size() == 7);
+  // Issue 37: no crown given (z_c = infinity): no sliding row; the temperature rows and a new tie's
+  // pretension row follow the five components (the layout rows of issue 29 are gone: wedges are cut).
+  REQUIRE(rows.size() == 8);
   CHECK(rows[0].check == "rod yield");
   CHECK_CLOSE(rows[0].dc, 30e3 / 82279.8076, rel_tol(1e-8));
   CHECK(rows[1].check == "thread");
   CHECK_CLOSE(rows[1].dc, 30e3 / 75852.0, rel_tol(1e-12));
   CHECK(rows[4].check == "anchor bending");
   CHECK(rows[4].satisfied == (30e3 <= rb.anchor_bending));
-  CHECK(rows[5].check == "cone spacing");  // a + 2 s tan 45 = 0.6 + 1.3 = 1.9 m against 3 m
-  CHECK_CLOSE(rows[5].dc, 1.9 / 3.0, rel_tol(1e-12));
-  CHECK(rows[6].check == "edge distance");
-  CHECK_CLOSE(rows[6].dc, 0.95 / 1.5, rel_tol(1e-12));
+  // Temperature (NTC 2018 §3.5.5): E A alpha_T dT = 210e9 x 314.16e-6 x 12e-6 x 15 = 11 875 N; the
+  // fundamental combination 1.0 P0 + 1.5 x 11 875 = 17 813 N on the rod and the thread; P0 = 0 < 11 875 N.
+  const double NT = 210e9 * assess::units::pi * 0.02 * 0.02 / 4 * 12e-6 * 15.0;
+  CHECK_CLOSE(NT, 11875.2, rel_tol(1e-5));
+  CHECK(rows[5].check == "temperature rod");
+  CHECK_CLOSE(rows[5].demand, 1.5 * NT, rel_tol(1e-12));
+  CHECK_CLOSE(rows[5].capacity, 82279.8076, rel_tol(1e-8));
+  CHECK(rows[6].check == "temperature thread");
+  CHECK_CLOSE(rows[6].dc, 1.5 * NT / 75852.0, rel_tol(1e-12));
+  CHECK(rows[7].check == "pretension");
+  CHECK_FALSE(rows[7].satisfied);
 }
 
 TEST_CASE("capacity design by hand: Ø16 S275 with upset ends M22 is ductile, threaded M16 is not") {
@@ -326,8 +340,10 @@ TEST_CASE("capacity design by hand: Ø16 S275 with upset ends M22 is ductile, th
   CHECK(r.ductile);
   CHECK(r.governing == "rod");
   CHECK_CLOSE(r.design, A * 275e6 / 1.05, rel_tol(tol_strength));
-  // A ductile rod breaks at eps_ud L = 0.9 x 0.23 x 12 m = 2.484 m (EN 10025-2 A of S275).
-  CHECK_CLOSE(r.ultimate_elongation, 0.9 * 0.23 * 12.0, rel_tol(tol_strength));
+  // Issue 37: a ductile rod breaks at eps_ud L = 0.9 x 15 x 275 / 210 000 x 12 m = 0.2121 m (the uniform
+  // elongation of EN 1993-1-1 §3.2.2(1), not the 0.9 A = 2.484 m of issue 29).
+  CHECK_CLOSE(r.ultimate_elongation, 0.9 * 15.0 * 275e6 / 210e9 * 12.0, rel_tol(tol_strength));
+  CHECK_CLOSE(r.ultimate_elongation, 0.212143, rel_tol(1e-5));
   // Its checks: the rod against what the checks need, every brittle component against 76.0 kN, the elongation.
   assess::TieDemand dem;
   dem.static_force = 25e3;
@@ -392,17 +408,9 @@ TEST_CASE("tie: required force of each linear check = (alpha_req W h/2 - W b/2) 
   }
 }
 
-// Issue 29: the capacity of the tied wall stops where the tie reaches its
-// strength, e_y = T / k (P0 = 0): for the horizontal tie at (0, z_t),
-// z_t sin(theta_y) = T / k, d*_tie = 4/3 (x_c(theta_y) - x_c(0)); and each
-// displacement check takes the better of the tied wall and the bare one.
-namespace {
-double d_star_tie(double T, double k, double zt) {
-  if (!(T > 0.0) || T / (k * zt) >= 1.0) return std::numeric_limits<double>::infinity();
-  const double th = std::asin(T / (k * zt));
-  return 4.0 / 3.0 * (xr(-b / 2, h / 2, th) + b / 2);
-}
-}  // namespace
+// Issue 37: the restraint() of these tests is ductile with no ultimate
+// elongation (it yields at T and never breaks): its curve has no cap, d_SLV =
+// 0.4 d0* of the tied curve; no check takes the bare wall instead.
 
 TEST_CASE("tie: required force of the NTC 2018 SLV displacement check at ground, independent derivation") {
   const auto chain = block();
@@ -430,12 +438,12 @@ TEST_CASE("tie: required force of the NTC 2018 SLV displacement check at ground,
       (alpha_exact(mid, 0.0, zt, T, k, 0.0) > 0.0 ? lo : hi) = mid;
     }
     const double dk0 = xr(-b / 2, h / 2, lo) + b / 2;
-    const double d0 = 4.0 / 3.0 * dk0, d = std::min(0.4 * d0, d_star_tie(T, k, zt));
+    const double d0 = 4.0 / 3.0 * dk0, d = 0.4 * d0;
     const double a = alpha_exact(theta_of_dk(d * 0.75), 0.0, zt, T, k, 0.0) * g / (0.75 * opt.FC);
     const double Tp = 1.68 * assess::units::pi * std::sqrt(d / a);
     return assess::ElasticSpectrum(in.hazard.at(assess::LimitState::SLV), in.site, 8.0).SDe(Tp) / d;
   };
-  REQUIRE(dc(0.0) > 1.0);  // the bare wall fails: a force is needed (the better of the two is the tied wall's)
+  REQUIRE(dc(0.0) > 1.0);  // the bare wall fails: a force is needed
   double lo = 0.0, hi = 2e3;
   while (dc(hi) > 1.0) lo = hi, hi *= 2.0;
   for (int i = 0; i < 100; ++i) {
@@ -600,18 +608,17 @@ TEST_CASE("tie: required force of every displacement check (both editions, SLV/S
       const bool slc = f.limit_state == "SLC";
       auto dc_tied = [&](double T) {
         const double d0 = 4.0 / 3.0 * (xr(-b / 2, h / 2, theta0(T)) + b / 2);
-        const double dt = d_star_tie(T, k, zt);
         if (y2008) {
-          const double du = std::min(0.4 * d0, dt), ds = 0.4 * du;
+          const double du = 0.4 * d0, ds = 0.4 * du;
           const double Ts = two_pi * std::sqrt(ds / a_star(T, ds));
           return assess::ElasticSpectrum(in.hazard.at(assess::LimitState::SLV), in.site, 5.0).SDe(Ts) / du;
         }
-        const double d = std::min((slc ? 0.6 : 0.4) * d0, dt);
+        const double d = (slc ? 0.6 : 0.4) * d0;
         const double Tp = (slc ? 1.56 : 1.68) * assess::units::pi * std::sqrt(d / a_star(T, d));
         return demand(slc ? assess::LimitState::SLC : assess::LimitState::SLV, Tp, slc ? 10.0 : 8.0) / d;
       };
-      // The better of the tied wall and the bare one (T = 0: no tie, no cap).
-      auto dc = [&](double T) { return std::min(dc_tied(T), dc_tied(0.0)); };
+      // The wall as it is (issue 37: no "better of the tied and the bare wall").
+      auto dc = [&](double T) { return dc_tied(T); };
       // No force up to 100 W satisfies it: not reachable (the library's bound).
       double expected = 0.0;
       bool reachable = true;
@@ -644,5 +651,71 @@ TEST_CASE("tie: required force of every displacement check (both editions, SLV/S
       ++checked;
     }
     CHECK(checked >= 3);
+  }
+}
+
+// Issue 37: the capacity curve of the wall as it is. The block b x h with a
+// horizontal tie at (0, z_t), P0 = 0: e(theta) = z_t sin(theta); a ductile
+// tie yields at T and breaks at e_u (z_t sin(theta_u) = e_u), one that is not
+// ductile breaks at its strength (z_t sin(theta_y) = T / k); after the break
+// the bare block's alpha = -x_c / z_c. The break caps d_SLV, d_SLC and du*
+// when alpha after it is below half alpha before it (Circ. 2019
+// §C8.7.1.2.1.6: an element failing with a capacity drop above 50 %); d0* is
+// where the final curve vanishes (the bare block's tan(theta0) = b / h, or at
+// the break when the bare block is already beyond it).
+namespace {
+struct BreakCase {
+  double T, k, e_u;  // N, N/m, m (e_u: infinity for a tie that is not ductile)
+  bool ductile;
+};
+double x_c(double th) { return xr(-b / 2, h / 2, th); }
+double z_c(double th) { return zr(-b / 2, h / 2, th); }
+}  // namespace
+
+TEST_CASE("issue 37: a tie breaks where it fails; a drop of alpha above 50 % caps the capacity there") {
+  const auto chain = block();
+  const double zt = 7.8;
+  const double th0_bare = std::atan(b / h);
+  const double d0_bare = 4.0 / 3.0 * (x_c(th0_bare) + b / 2);
+  for (const BreakCase& bc : {BreakCase{20e3, 3e6, 0.1, true},    // ductile, strong: caps at its break
+                              BreakCase{2e3, 3e6, 0.1, true},     // ductile, weak: alpha drops by less than half
+                              BreakCase{20e3, 3e6, 0.0, false},   // not ductile: breaks at T / k, caps
+                              BreakCase{1e3, 3e6, 0.0, false},    // not ductile, weak: no cap
+                              BreakCase{20e3, 3e6, 7.8 * std::sin(0.1), true}}) {  // breaks beyond the bare block's d0
+    assess::TieRestraint r = restraint(0.0, zt, bc.T, bc.k, 0.0);
+    r.ductile = bc.ductile;
+    r.ultimate_elongation = bc.ductile ? bc.e_u : std::numeric_limits<double>::infinity();
+    const double e_fail = bc.ductile ? bc.e_u : bc.T / bc.k;
+    const double th_b = std::asin(e_fail / zt);
+    const auto res = assess::analyse_kinematic(chain, {}, {r});
+    CAPTURE(bc.T);
+    CAPTURE(bc.ductile);
+    REQUIRE(res.curve_complete());
+    REQUIRE(res.tie_breaks.size() == 1);
+    const auto& brk = res.tie_breaks[0];
+    const double d_b = 4.0 / 3.0 * (x_c(th_b) + b / 2);
+    const double a_before = (bc.T * zr(0.0, zt, th_b) - W * x_c(th_b)) / (W * z_c(th_b));
+    const double a_after = -x_c(th_b) / z_c(th_b);
+    CHECK_CLOSE(brk.d_star, d_b, abs_tol(1e-9));
+    CHECK_CLOSE(brk.alpha_before, a_before, abs_tol(tol_alpha_curve));
+    CHECK_CLOSE(brk.alpha_after, a_after, abs_tol(tol_alpha_curve));
+    const bool caps = a_after < 0.5 * a_before;
+    CHECK(brk.caps == caps);
+    // d0*: the bare block's, or the break itself when the bare block is already past it.
+    const double d0 = th_b >= th0_bare ? d_b : d0_bare;
+    CHECK_CLOSE(res.d0_star, d0, abs_tol(1e-9));
+    const double cap = caps ? d_b : std::numeric_limits<double>::infinity();
+    CHECK_CLOSE(res.d_SLV, std::min(0.4 * d0, cap), abs_tol(1e-9));
+    CHECK_CLOSE(res.d_SLC, std::min(0.6 * d0, cap), abs_tol(1e-9));
+    CHECK_CLOSE(res.du_star, std::min(0.4 * d0, cap), abs_tol(1e-9));
+    // The curve: the tie's force up to the break, none beyond.
+    for (const auto& p : res.curve) {
+      REQUIRE(p.tie_force.size() == 1);
+      const double th = theta_of_dk(p.dk);
+      if (th < th_b - 1e-6) CHECK_CLOSE(p.tie_force[0], std::min(bc.k * zt * std::sin(th), bc.T), abs_tol(1e-3));
+      if (th > th_b + 1e-6) CHECK(p.tie_force[0] == 0.0);
+    }
+    // One capacity (issue 37): the dynamic check's is the kinematic check's.
+    CHECK(assess::dynamic_d_SLV(res) == res.d_SLV);
   }
 }

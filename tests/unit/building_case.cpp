@@ -243,39 +243,96 @@ TEST_CASE("hostile values anywhere in a building file give an InputError naming 
   CHECK(refused > 100);
 }
 
-// Issue 23: "ties" and "design" are override keys of walls and mechanisms (not
-// building-wide); a mechanism's null removes its wall's; errors name the path
-// in the building file (docs/theory/building.md §8).
-TEST_CASE("tie rods in a building: a wall's design reaches its mechanisms, a mechanism's null or ties override it") {
+// Issues 23, 37: a wall's "ties" and "design" levels go to every mechanism of
+// the wall whose moving blocks they cross (and to no other); a mechanism's own
+// "ties" are added to them; a mechanism of a wall with a design cannot give
+// its own (nor null); errors name the path in the building file
+// (docs/theory/building.md §8).
+TEST_CASE("tie rods in a building: a wall's ties and design reach every mechanism of the wall they cross") {
   json d = building_doc();
   d.erase("dynamic");  // kinematic only: no record selection pre-pass
   const json masonry = {{"fm_MPa", 2.0}, {"tau_MPa", 0.035}, {"thickness_m", 0.45}};
   json level = {{"name", "eaves"}, {"point", {0.0, 7.3}}, {"free_length_m", 9.0}, {"masonry", masonry},
                 {"wall_length_m", 8.0}, {"spacing_m", 2.5}};
-  d["walls"][0]["design"] = {{"ties", {{"levels", {level}}, {"grades", {"S275", "S355"}}}}};
+  json low = level;  // at 3.0 m: below the first floor, it crosses the ground mechanism only
+  low["name"] = "low";
+  low["point"] = {0.0, 3.0};
+  d["walls"][0]["design"] = {{"ties", {{"levels", {level, low}}, {"grades", {"S275", "S355"}}}}};
   json given = level;
   given["name"] = "existing";
   given["existing"] = true;  // issue 29: part of the stato di fatto (it acts in the mechanism's own analyses)
   given["rod"] = {{"diameter_mm", 16}};
   given["anchor"] = {{"type", "plate"}, {"a_mm", 200}, {"t_mm", 15}};
-  d["walls"][0]["mechanisms"][1]["design"] = nullptr;
-  d["walls"][0]["mechanisms"][1]["ties"] = json::array({given});
+  d["walls"][0]["ties"] = json::array({given});
+  json own = given;  // a tie of the first-floor mechanism only
+  own["name"] = "own";
+  own["point"] = {0.0, 6.0};
+  d["walls"][0]["mechanisms"][1]["ties"] = json::array({own});
   const BuildingCase b = parse_building(d, "house.json");
   REQUIRE(b.mechanisms.size() == 3);
-  // M1: the wall's design, both grades, the level at 7.3 m.
-  REQUIRE(b.mechanisms[0].kase.tie_design.has_value());
-  CHECK(b.mechanisms[0].kase.ties.empty());
-  CHECK(b.mechanisms[0].expanded.at("design") == d["walls"][0]["design"]);
-  CHECK(b.mechanisms[0].kase.tie_design->levels.size() == 1);
-  CHECK(b.mechanisms[0].kase.tie_design->levels[0].point.y() == doctest::Approx(7.3).epsilon(1e-15));
-  // M2: no design (null), its own given tie (Ø16: A = pi 16^2 / 4 mm^2).
-  CHECK_FALSE(b.mechanisms[1].kase.tie_design.has_value());
-  CHECK_FALSE(b.mechanisms[1].expanded.contains("design"));
-  REQUIRE(b.mechanisms[1].kase.ties.size() == 1);
-  CHECK(b.mechanisms[1].kase.ties[0].rod.area == doctest::Approx(std::acos(-1.0) * 0.016 * 0.016 / 4.0).epsilon(1e-14));
-  CHECK(has_ties(b.mechanisms[1].kase));
+  // M1 (hinge at the foot): the wall's existing tie and both design levels.
+  const auto& m1 = b.mechanisms[0];
+  CHECK(m1.wall_ties);
+  REQUIRE(m1.kase.tie_design.has_value());
+  REQUIRE(m1.kase.tie_design->levels.size() == 2);
+  CHECK(m1.kase.tie_design->levels[1].point.y() == doctest::Approx(3.0).epsilon(1e-15));
+  REQUIRE(m1.kase.ties.size() == 1);
+  CHECK(m1.kase.ties[0].name == "existing");
+  CHECK(m1.tie_origin == std::vector<std::string>{"/walls/0/ties/0"});
+  CHECK(m1.design_origin == std::vector<std::string>{"/walls/0/design/ties/levels/0", "/walls/0/design/ties/levels/1"});
+  // The crown defaults to the top of the block the tie holds: 7.5 m in both mechanisms.
+  CHECK(m1.kase.ties[0].layout.crown == doctest::Approx(7.5).epsilon(1e-15));
+  // M2 (hinge at the first floor, 4.0 m): the existing tie and the eaves level cross it, the low level does not;
+  // its own tie is added after the wall's (Ø16: A = pi 16^2 / 4 mm^2).
+  const auto& m2 = b.mechanisms[1];
+  CHECK(m2.wall_ties);
+  REQUIRE(m2.kase.tie_design.has_value());
+  REQUIRE(m2.kase.tie_design->levels.size() == 1);
+  CHECK(m2.kase.tie_design->levels[0].name == "eaves");
+  REQUIRE(m2.kase.ties.size() == 2);
+  CHECK(m2.kase.ties[0].name == "existing");
+  CHECK(m2.kase.ties[1].name == "own");
+  CHECK(m2.kase.ties[1].rod.area == doctest::Approx(std::acos(-1.0) * 0.016 * 0.016 / 4.0).epsilon(1e-14));
+  CHECK(m2.tie_origin == std::vector<std::string>{"/walls/0/ties/0", "/walls/0/mechanisms/1/ties/0"});
+  CHECK(m2.design_origin == std::vector<std::string>{"/walls/0/design/ties/levels/0"});
   // M3 (another wall): none.
+  CHECK_FALSE(b.mechanisms[2].wall_ties);
   CHECK_FALSE(has_ties(b.mechanisms[2].kase));
+  // An error in a tie a mechanism took from its wall names the wall's path.
+  {
+    json bad = d;
+    bad["walls"][0]["ties"][0]["rod"]["grade"] = "S420";
+    try {
+      parse_building(bad, "house.json");
+      FAIL("a bad grade was accepted");
+    } catch (const InputError& e) {
+      CHECK(std::string(e.what()).find("house.json: /walls/0/ties/0/rod/grade") != std::string::npos);
+    }
+  }
+  // A mechanism of a wall with a design cannot give its own, nor null.
+  for (const json& v : {json(nullptr), d["walls"][0]["design"]}) {
+    json bad = d;
+    bad["walls"][0]["mechanisms"][1]["design"] = v;
+    try {
+      parse_building(bad, "house.json");
+      FAIL("a mechanism's design in a wall with a design was accepted");
+    } catch (const InputError& e) {
+      CHECK(std::string(e.what()).find("house.json: /walls/0/mechanisms/1/design: the wall gives a \"design\"") !=
+            std::string::npos);
+    }
+  }
+  // A wall's level that crosses no mechanism of the wall.
+  {
+    json bad = d;
+    bad["walls"][0]["ties"][0]["point"] = {0.0, 9.0};
+    try {
+      parse_building(bad, "house.json");
+      FAIL("a wall tie crossing no mechanism was accepted");
+    } catch (const InputError& e) {
+      CHECK(std::string(e.what()).find("house.json: /walls/0/ties/0/point: the anchor point is on no moving block of any "
+                                       "mechanism of the wall") != std::string::npos);
+    }
+  }
 
   // Not at the building level: the message says why.
   json top = building_doc();

@@ -89,11 +89,11 @@ TEST_CASE("catalogue completeness: every usable component has Mw, distance, site
   CHECK(cat.find("RSN160_IMPVALL.H_H-BCR140")->site_class_basis == "Vs30");
   CHECK(cat.find("RSN160_IMPVALL.H_H-BCR140")->distance_kind == "Rjb");
   CHECK(cat.find("RSN183_1")->distance_kind == "Repi");
-  // A class stated by a source comes first, with the class Vs30 implies beside it:
-  // Bagnoli Irpino, class A in the seed paper, Vs30 649.67 m/s (B).
+  // Issue 38: the class of the measured Vs30 comes first: Bagnoli Irpino, class A
+  // in the seed paper, Vs30 649.67 m/s: B (unit.record_site_class checks every entry).
   const CatalogueEntry* bag = cat.find("RSN285_ITALY_A-BAG000");
-  CHECK(bag->site_class == "A");
-  CHECK(bag->site_class_basis == "stated");
+  CHECK(bag->site_class == "B");
+  CHECK(bag->site_class_basis == "Vs30");
   CHECK(bag->vs30_class == "B");
   // Pulse classification of the PEER search report: Bagnoli and Sturno pulse-like (Tp 1.71, 3.27 s).
   CHECK(bag->pulse == "pulse-like");
@@ -196,13 +196,13 @@ TEST_CASE("near-fault and pulse-like flags from the metadata (record-selection.m
   CHECK(near_fault_reason(*cat.find("RSN170_2")).empty());
 }
 
-TEST_CASE("the class stated by a source comes first; a stated class its Vs30 contradicts keeps both") {
+TEST_CASE("the class of the measured Vs30 comes first; a stated class it contradicts gives way (issue 38)") {
   // tests/data/records_mini: Calitri with class C stated and Vs30 455.93 m/s (B).
   const RecordCatalogue cat = build_catalogue(std::string(ASSESS_TEST_DATA_DIR) + "/tests/data/records_mini/metadata.csv");
   const CatalogueEntry* clt = cat.find("RSN289_1");
   REQUIRE(clt);
-  CHECK(clt->site_class == "C");
-  CHECK(clt->site_class_basis == "stated");
+  CHECK(clt->site_class == "B");
+  CHECK(clt->site_class_basis == "Vs30");
   CHECK(clt->vs30_class == "B");
   CHECK(cat.find("ARL360")->site_class_basis == "Vs30");
   CHECK(cat.find("ARL360")->site_class == "C");  // Vs30 297.71 m/s

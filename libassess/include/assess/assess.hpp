@@ -6,6 +6,7 @@
 #include <assess/support/error.hpp>
 #include <assess/support/json_input.hpp>
 #include <assess/support/units.hpp>
+#include <assess/support/version.hpp>
 
 // hazard
 #include <assess/hazard/hazard.hpp>
@@ -44,11 +45,13 @@
 #include <assess/dynamics/rocking_body.hpp>
 #include <assess/dynamics/rocking_from_chain.hpp>
 #include <assess/dynamics/rocking_model.hpp>
+#include <assess/dynamics/rocking_request.hpp>
 
 // assessment
 #include <assess/assessment/case_file.hpp>
 #include <assess/assessment/dynamic_case.hpp>
 #include <assess/assessment/facade_assessment.hpp>
+#include <assess/assessment/site_block.hpp>
 #include <assess/assessment/verdict.hpp>
 
 // report
@@ -63,6 +66,9 @@
 #include <assess/report/plot.hpp>
 #include <assess/report/plot_layout.hpp>
 #include <assess/report/probabilistic_result.hpp>
+#include <assess/report/records_report.hpp>
+#include <assess/report/rocking_report.hpp>
+#include <assess/report/spectrum_report.hpp>
 
 // campaign
 #include <assess/campaign/campaign.hpp>
@@ -72,8 +78,10 @@
 
 // risk
 #include <assess/risk/collapse_rate.hpp>
+#include <assess/risk/fragility_case.hpp>
 #include <assess/risk/fragility_job.hpp>
 #include <assess/risk/fragility_report.hpp>
 #include <assess/risk/fragility_result.hpp>
 #include <assess/risk/fragility_study.hpp>
 #include <assess/risk/lognormal_fragility.hpp>
+#include <assess/risk/run_report.hpp>

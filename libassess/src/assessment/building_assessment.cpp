@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <memory>
 
 namespace assess {
 
@@ -39,9 +41,10 @@ std::size_t governing_mechanism_kinematic(const BuildingCase& b, const std::stri
     CaseFile k = b.mechanisms[i].kase;
     k.dynamic = nlohmann::json();  // kinematic checks only
     if (k.method == "dynamic") k.method = "nonlinear";
-    FacadeOptions o;
-    o.review = false;
-    const FacadeAssessment a = assess_facade(k, o);
+    FacadeOptions kinematic_only;
+    kinematic_only.sensitivity = false;
+    kinematic_only.review = false;
+    const FacadeAssessment a = assess_facade(k, kinematic_only);
     for (const char* code : {"NTC2018", "NTC2008"}) {
       for (const SafetyIndex& s : a.indices)
         if (s.code == code && s.approach == approach && s.defined) zeta[i] = s.index.zeta;
@@ -76,15 +79,52 @@ BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& o
   // Issue 23: the tie rods of each mechanism, as `assess run` of its case does
   // them (after the record sets are final): given ties decide the assessment's
   // dynamic rows, so the safety indices below are computed after this.
-  detail::parallel_for(n, [&](std::size_t i) {
+  // Issue 37: a wall's ties act on every mechanism of the wall they cross:
+  // those mechanisms are assessed (and designed) together, one group per wall.
+  std::vector<std::vector<std::size_t>> groups;
+  {
+    std::map<std::size_t, std::size_t> wall_group;
+    for (std::size_t i = 0; i < n; ++i) {
+      const BuildingMechanism& m = b.mechanisms[i];
+      if (!has_ties(m.kase)) continue;
+      if (!m.wall_ties) {
+        groups.push_back({i});
+        continue;
+      }
+      const auto it = wall_group.find(m.wall_index);
+      if (it == wall_group.end()) {
+        wall_group[m.wall_index] = groups.size();
+        groups.push_back({i});
+      } else {
+        groups[it->second].push_back(i);
+      }
+    }
+  }
+  std::vector<std::string> group_errors(groups.size());
+  std::vector<std::size_t> group_failing(groups.size(), 0);
+  detail::parallel_for(groups.size(), [&](std::size_t g) {
+    const std::vector<std::size_t>& members = groups[g];
     try {
-      out.results[i].ties = assess_ties(out.results[i].a);
+      if (members.size() == 1) {
+        out.results[members[0]].ties = assess_ties(out.results[members[0]].a);
+        return;
+      }
+      std::vector<const FacadeAssessment*> as;
+      std::vector<std::string> names;
+      for (std::size_t i : members) {
+        as.push_back(&out.results[i].a);
+        names.push_back(b.mechanisms[i].id);
+      }
+      std::vector<TieInterventionResult> rs = assess_wall_ties(as, names);
+      for (std::size_t k = 0; k < members.size(); ++k) out.results[members[k]].ties = std::move(rs[k]);
     } catch (const InputError& e) {
-      errors[i] = e.what();
+      group_errors[g] = e.what();
+      group_failing[g] = members.front();
     }
   });
-  for (std::size_t i = 0; i < n; ++i)
-    if (!errors[i].empty()) throw InputError(building_path_message(b, b.mechanisms[i], errors[i]));
+  for (std::size_t g = 0; g < groups.size(); ++g)
+    if (!group_errors[g].empty())
+      throw InputError(building_path_message(b, b.mechanisms[group_failing[g]], group_errors[g]));
 
   for (std::size_t i = 0; i < n; ++i) {
     BuildingMechanismResult& r = out.results[i];
@@ -168,8 +208,13 @@ BuildingVerdict building_verdict(const BuildingAssessment& b) {
   for (std::size_t i = 0; i < b.results.size(); ++i) {
     const BuildingMechanismResult& r = b.results[i];
     const MethodVerdict* m = r.a.verdict.conclusion();
-    if (!m) continue;
     ++v.mechanisms;
+    // No check by the adopted method (a dynamic method where the dynamic
+    // analysis does not apply): no verdict, never a silent pass (issue 41).
+    if (!m) {
+      v.undecided.push_back(int(i));
+      continue;
+    }
     if (m->undecided()) v.undecided.push_back(int(i));
     else if (!m->satisfied) v.failing.push_back(int(i));
     const double dc = std::isfinite(m->max_dc) ? m->max_dc : inf;

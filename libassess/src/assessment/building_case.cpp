@@ -9,6 +9,7 @@
 #include "assess/records/record_selection.hpp"
 #include "assess/support/error.hpp"
 #include "assess/support/json_input.hpp"
+#include "assess/kinematic/tie.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -22,11 +23,12 @@ namespace assess {
 namespace {
 
 // The keys a wall or a mechanism entry may override (the case keys but the site:
-// one building stands on one site). "ties" and "design" (issue 23) are given
-// in a wall or a mechanism only: their anchor points are in the mechanism's
-// own coordinates (docs/user/building.md, Tie rods).
+// one building stands on one site). "ties" and "design" (issues 23, 37) are
+// given in a wall or a mechanism only, and are not overrides: a wall's levels
+// go to the mechanisms they cross (wall_ties below); a mechanism's own "ties"
+// are added to them (docs/user/building.md, Tie rods).
 constexpr std::initializer_list<const char*> override_keys = {"knowledge_level", "FC", "codes", "method", "check_SLD",
-                                                               "building", "analysis", "dynamic", "ties", "design"};
+                                                               "building", "analysis", "dynamic"};
 
 std::string directory_of(const std::string& path) {
   const auto p = path.find_last_of('/');
@@ -61,10 +63,28 @@ std::string first_token(const std::string& path) {
 }
 
 // The building-file path of a path of the expanded case.
+// The index after `prefix` in `path` ("/ties/3/rod" -> 3, rest "/rod"), or -1.
+long index_after(const std::string& path, const std::string& prefix, std::string& rest) {
+  if (path.compare(0, prefix.size(), prefix) != 0) return -1;
+  std::size_t i = prefix.size(), j = i;
+  while (j < path.size() && std::isdigit(static_cast<unsigned char>(path[j]))) ++j;
+  if (j == i) return -1;
+  rest = path.substr(j);
+  return std::stol(path.substr(i, j - i));
+}
+
 std::string origin(const BuildingCase& b, const BuildingMechanism& m, const std::string& path) {
   const nlohmann::json& wall = b.doc.at("walls").at(m.wall_index);
   const nlohmann::json& entry = wall.at("mechanisms").at(m.index);
   const std::string wall_path = "/walls/" + std::to_string(m.wall_index);
+  // Issue 37: the tie levels of the expanded case come from the wall or the entry.
+  std::string rest;
+  long k = index_after(path, "/ties/", rest);
+  if (k >= 0 && static_cast<std::size_t>(k) < m.tie_origin.size()) return m.tie_origin[std::size_t(k)] + rest;
+  k = index_after(path, "/design/ties/levels/", rest);
+  if (k >= 0 && static_cast<std::size_t>(k) < m.design_origin.size()) return m.design_origin[std::size_t(k)] + rest;
+  if (path.compare(0, 7, "/design") == 0 && wall.contains("design")) return wall_path + path;
+  if (path == "/ties" && wall.contains("ties") && !entry.contains("ties")) return wall_path + path;
   if (path == "/project") return m.json_path + "/name";
   if (contains_pointer(entry, path)) return m.json_path + path;
   if (contains_pointer(wall, path) && first_token(path) != "mechanisms" && first_token(path) != "name")
@@ -130,6 +150,123 @@ std::string building_path_message(const BuildingCase& b, const BuildingMechanism
   // Name the mechanism for the reader.
   return out + " [" + m.id + " \"" + m.name + "\"]";
 }
+
+namespace {
+
+// Issue 37: each tie level given on a wall (its "ties", and the levels of its
+// "design") goes to every mechanism of the wall whose moving blocks it
+// crosses (a candidate's chain holds its anchor point); a level that crosses
+// none is an error. A wall's design with no level to design (the least change
+// to its existing ties) goes to the mechanisms that hold an existing tie. The
+// same level must meet the same wall in every mechanism (its crown and
+// masonry, which default to the block it holds): otherwise give them.
+void distribute_wall_ties(BuildingCase& b) {
+  const JsonNode root(b.doc, b.file);
+  const std::vector<JsonNode> walls = root.array("walls", 1);
+  for (std::size_t wi = 0; wi < walls.size(); ++wi) {
+    const JsonNode& w = walls[wi];
+    if (!w.find("ties") && !w.find("design")) continue;
+    const std::string wall_path = "/walls/" + std::to_string(wi);
+    const nlohmann::json ties = w.find("ties") && !w.value().at("ties").is_null() ? w.value().at("ties") : nlohmann::json();
+    const nlohmann::json design = w.find("design") ? w.value().at("design") : nlohmann::json();
+    if (!ties.is_null() && !ties.is_array()) w.at("ties").fail("expected an array of tie levels");
+    if (!design.is_null() && !(design.is_object() && design.contains("ties") && design["ties"].is_object()))
+      w.at("design").fail("expected {\"ties\": {...}}");
+    const nlohmann::json levels = design.is_null() || !design["ties"].contains("levels") ? nlohmann::json::array()
+                                                                                         : design["ties"]["levels"];
+    if (!levels.is_array()) w.at("design").at("ties").at("levels").fail("expected an array of tie levels");
+    // Whether level j (a JSON tie) crosses a moving block of mechanism m.
+    auto crosses = [&](const BuildingMechanism& m, const JsonNode& node) {
+      if (!node.is_object()) node.fail("expected an object (a tie level)");
+      const Eigen::Vector2d p = node.point("point");
+      const int block = node.find("block") ? node.integer("block", 0, 1000000) : -1;
+      for (const MechanismCandidate& c : m.kase.mechanism.candidates) {
+        if (block >= static_cast<int>(c.chain.blocks().size())) continue;
+        if (block >= 0 && !c.chain.contains(block, p)) continue;
+        if (tie_block(c.chain, block, p) >= 0) return true;
+      }
+      return false;
+    };
+    std::vector<bool> tie_used(ties.is_array() ? ties.size() : 0, false), level_used(levels.size(), false);
+    for (BuildingMechanism& m : b.mechanisms) {
+      if (m.wall_index != wi) continue;
+      nlohmann::json own = m.expanded.contains("ties") ? m.expanded["ties"] : nlohmann::json::array();
+      nlohmann::json mine = nlohmann::json::array();
+      std::vector<std::string> origins;
+      bool existing = false;
+      for (std::size_t j = 0; j < tie_used.size(); ++j) {
+        const JsonNode node = w.at("ties").at(j);
+        if (!crosses(m, node)) continue;
+        tie_used[j] = true;
+        mine.push_back(ties[j]);
+        origins.push_back(wall_path + "/ties/" + std::to_string(j));
+        existing = existing || (ties[j].is_object() && ties[j].value("existing", false));
+      }
+      for (std::size_t j = 0; j < own.size(); ++j) {
+        mine.push_back(own[j]);
+        origins.push_back(j < m.tie_origin.size() ? m.tie_origin[j] : m.json_path + "/ties/" + std::to_string(j));
+        existing = existing || (own[j].is_object() && own[j].value("existing", false));
+      }
+      nlohmann::json dlevels = nlohmann::json::array();
+      std::vector<std::string> dorigins;
+      for (std::size_t j = 0; j < levels.size(); ++j) {
+        const JsonNode node = w.at("design").at("ties").at("levels").at(j);
+        if (!crosses(m, node)) continue;
+        level_used[j] = true;
+        dlevels.push_back(levels[j]);
+        dorigins.push_back(wall_path + "/design/ties/levels/" + std::to_string(j));
+      }
+      const bool takes = !mine.empty() && mine.size() > own.size();
+      const bool designs = !design.is_null() && (!dlevels.empty() || (levels.empty() && existing));
+      if (!takes && !designs) continue;
+      m.wall_ties = true;
+      if (!mine.empty()) m.expanded["ties"] = mine;
+      m.tie_origin = origins;
+      if (designs) {
+        nlohmann::json d = design;
+        d["ties"]["levels"] = dlevels;
+        m.expanded["design"] = d;
+        m.design_origin = dorigins;
+      }
+      m.kase = parse_expanded(b, m);
+    }
+    for (std::size_t j = 0; j < tie_used.size(); ++j)
+      if (!tie_used[j])
+        w.at("ties").at(j).at("point").fail("the anchor point is on no moving block of any mechanism of the wall "
+                                            "(a wall's tie acts on the mechanisms whose moving blocks it crosses)");
+    for (std::size_t j = 0; j < level_used.size(); ++j)
+      if (!level_used[j])
+        w.at("design").at("ties").at("levels").at(j).at("point").fail(
+            "the anchor point is on no moving block of any mechanism of the wall (a wall's tie acts on the "
+            "mechanisms whose moving blocks it crosses)");
+    // One wall: the same level meets the same crown and masonry in every mechanism.
+    std::map<std::string, std::pair<const BuildingMechanism*, Tie>> seen;
+    for (const BuildingMechanism& m : b.mechanisms) {
+      if (m.wall_index != wi || !m.wall_ties) continue;
+      std::vector<const Tie*> all;
+      for (const Tie& t : m.kase.ties) all.push_back(&t);
+      for (const Tie& t : m.kase.new_ties) all.push_back(&t);
+      if (m.kase.tie_design)
+        for (const Tie& t : m.kase.tie_design->levels) all.push_back(&t);
+      for (const Tie* t : all) {
+        const auto it = seen.find(t->name);
+        if (it == seen.end()) {
+          seen.emplace(t->name, std::make_pair(&m, *t));
+          continue;
+        }
+        const Tie& u = it->second.second;
+        if (u.layout.crown != t->layout.crown || u.masonry.unit_weight != t->masonry.unit_weight)
+          w.fail("the tie level \"" + t->name + "\" meets a different wall in " + it->second.first->id + " (crown z = " +
+                 std::to_string(u.layout.crown) + " m) and in " + m.id + " (crown z = " +
+                 std::to_string(t->layout.crown) +
+                 " m), which default to the top of the block it holds: give \"crown_z_m\" (and "
+                 "\"masonry\"/\"unit_weight_kN_m3\") on the level");
+      }
+    }
+  }
+}
+
+}  // namespace
 
 BuildingCase parse_building(const nlohmann::json& doc, const std::string& file) {
   BuildingCase b;
@@ -200,12 +337,32 @@ BuildingCase parse_building(const nlohmann::json& doc, const std::string& file) 
       apply_overrides(x, e.value());
       x["mechanism"] = e.value().at("mechanism");
       x["project"] = (b.project.empty() ? std::string() : b.project + " — ") + wall_name + ": " + m.name;
+      // The mechanism's own ties and design (the wall's are added below, once
+      // the mechanism's chains are known).
+      if (e.value().contains("design") && w.value().contains("design") && !w.value().at("design").is_null())
+        e.at("design").fail("the wall gives a \"design\" of ties: it acts on every mechanism of the wall whose moving "
+                            "blocks its levels cross (issue 37), so a mechanism of that wall cannot give its own (nor "
+                            "null); give the design on the wall or on the mechanisms only");
+      if (e.find("ties") && !e.value().at("ties").is_null()) {
+        x["ties"] = e.value().at("ties");
+        for (std::size_t i = 0; i < x["ties"].size(); ++i)
+          m.tie_origin.push_back(m.json_path + "/ties/" + std::to_string(i));
+      }
+      if (e.find("design") && !e.value().at("design").is_null()) {
+        x["design"] = e.value().at("design");
+        const nlohmann::json& dl = x["design"];
+        if (dl.is_object() && dl.contains("ties") && dl["ties"].is_object() && dl["ties"].contains("levels") &&
+            dl["ties"]["levels"].is_array())
+          for (std::size_t i = 0; i < dl["ties"]["levels"].size(); ++i)
+            m.design_origin.push_back(m.json_path + "/design/ties/levels/" + std::to_string(i));
+      }
       // The expanded case in the order of a case file (nlohmann sorts keys; kept for diffing).
       m.expanded = std::move(x);
       b.mechanisms.push_back(std::move(m));
     }
   }
   for (BuildingMechanism& m : b.mechanisms) m.kase = parse_expanded(b, m);
+  distribute_wall_ties(b);
   b.report = b.mechanisms.front().kase.report;  // "report" is building-wide: every expanded case holds it
 
   // Record sets (docs/theory/building.md §3): mechanisms selecting with the

@@ -12,6 +12,7 @@
 #include "assessment/plausibility.hpp"
 #include "assess/support/error.hpp"
 #include "assess/support/json_input.hpp"
+#include "assess/assessment/site_block.hpp"
 #include "assess/support/number_rules.hpp"
 #include "assess/support/units.hpp"
 
@@ -178,7 +179,7 @@ void parse_crack_angle(const JsonNode& m, Params& p) {
 // corner about any axis (m, kN, kN/m, kN m, MPa at the file's edge) --------
 
 RoofSpec parse_roof(const JsonNode& r, double top_thickness) {
-  r.allow_only({"scheme", "load", "span", "pitch_deg", "seat_from_inner_face"});
+  r.allow_only({"scheme", "load", "span", "pitch_deg", "seat_from_inner_face", "held"});
   RoofSpec roof;
   const std::string scheme = r.choice("scheme", {"a_frame", "strut", "ridge_beam", "truss"});
   roof.scheme = scheme == "a_frame"  ? RoofScheme::AFrame
@@ -189,48 +190,61 @@ RoofSpec parse_roof(const JsonNode& r, double top_thickness) {
   roof.span = r.positive("span", "m");
   roof.pitch_deg = open_interval(r.at("pitch_deg"), "deg", 0.0, 90.0);
   roof.seat_from_inner_face = r.number_or("seat_from_inner_face", 0.5 * top_thickness, "m", 0.0, top_thickness);
+  roof.held = r.boolean_or("held", false);  // issue 38: the roof's mass moves with the wall unless held
   return roof;
 }
+
+// Rules of the issue-33 mechanisms' quantities that number_rules.hpp has no name for.
+// The caps of a horizontal flexure (docs/reliability.md, "Bounds and limits").
+constexpr std::size_t flexure_strips_max = 20, flexure_openings_max = 6;
+constexpr NumberRule moment_kNm{"kN m", 0.0, 1e6, false, false, "0 to 1 GN m"};
+constexpr NumberRule line_load_kN_m{"kN/m", 0.0, 1e6, false, false, "0 to 1 GN per metre of wall"};
 
 MechanismSet parse_horizontal_flexure(const JsonNode& m, double FC) {
   m.allow_only({"type", "span", "thickness", "unit_weight", "fm_MPa", "stress_block", "supports", "ring_beam_moment",
                 "strips", "search_points"});
   HorizontalFlexureParams p;
-  p.span = m.positive("span", "m");
-  p.thickness = m.positive("thickness", "m");
-  p.unit_weight = m.positive("unit_weight", "kN/m^3") * kN;
+  // The number rules of case files (support/number_rules.hpp; issue 39: fm_MPa 1e-9 was taken).
+  p.span = m.number("span", rules::dimension_m);
+  p.thickness = m.number("thickness", rules::dimension_m);
+  p.unit_weight = m.number("unit_weight", rules::unit_weight_kN_m3) * kN;
   // The strength at the hinges: the mean strength divided by FC (C8.5.4, C8.7.1.2.1 d)).
-  p.strength = m.positive("fm_MPa", "MPa") * 1e6 / FC;
+  p.strength = m.number("fm_MPa", rules::stress_MPa) * 1e6 / FC;
   if (m.find("stress_block"))
     p.stress_block = m.choice("stress_block", {"rectangular", "triangular"}) == "triangular" ? StressBlock::Triangular
                                                                                             : StressBlock::Rectangular;
   const JsonNode sup = m.at("supports");
   sup.allow_only({"rigid", "tie", "side_wall_friction", "side_wall_load", "restraint"});
   p.rigid_supports = sup.boolean_or("rigid", false);
-  p.tie = sup.number_or("tie", 0.0, "kN", 0.0) * kN;
+  p.tie = sup.number_or("tie", 0.0, rules::weight_kN) * kN;
   p.side_wall_friction = sup.number_or("side_wall_friction", 0.0, "-", 0.0, 2.0);
-  p.side_wall_load = sup.number_or("side_wall_load", 0.0, "kN", 0.0) * kN;
+  p.side_wall_load = sup.number_or("side_wall_load", 0.0, rules::weight_kN) * kN;
   if ((p.side_wall_friction > 0.0) != (p.side_wall_load > 0.0))
     sup.fail("the side walls' restraint needs both \"side_wall_friction\" (-) and \"side_wall_load\" (kN)");
-  p.restraint = sup.number_or("restraint", 0.0, "kN", 0.0) * kN;
+  p.restraint = sup.number_or("restraint", 0.0, rules::weight_kN) * kN;
   if (p.rigid_supports && (p.tie > 0.0 || p.side_wall_load > 0.0 || p.restraint > 0.0))
     sup.fail("give \"rigid\": true or the restraint's parts (tie, side walls, restraint), not both");
   if (!p.rigid_supports && !(p.tie > 0.0 || p.side_wall_load > 0.0 || p.restraint > 0.0))
     sup.fail("expected \"rigid\": true or at least one of \"tie\" (kN), \"side_wall_friction\" with "
              "\"side_wall_load\" (kN), \"restraint\" (kN): without a restraint no horizontal arch forms");
-  p.ring_beam_moment = m.number_or("ring_beam_moment", 0.0, "kN m", 0.0) * kN;
-  // Bounds that keep a run short whatever the input (docs/reliability.md): each strip is a candidate whose
-  // middle hinge is searched over a chain of 2 blocks per opening.
-  if (m.at("strips").value().is_array() && m.at("strips").value().size() > 50)
-    m.at("strips").fail("at most 50 strips (one candidate each)");
+  p.ring_beam_moment = m.number_or("ring_beam_moment", 0.0, moment_kNm) * kN;
+  // Bounds that keep a run short whatever the input (docs/reliability.md, "Round five"): each strip is a
+  // candidate whose chain has 2 blocks per opening, and a kinematic analysis grows with their square. At
+  // the caps (20 strips of 6 openings, 200 search points) a mechanism takes 0.2-0.3 s of CPU; at 50 strips
+  // of 20 openings it took 57 s (issue 39; 4 s with the closed-form search).
+  if (m.at("strips").value().is_array() && m.at("strips").value().size() > flexure_strips_max)
+    m.at("strips").fail("at most " + std::to_string(flexure_strips_max) + " strips (one candidate each: one per half "
+                        "metre of a 10 m wall)");
   for (const JsonNode& st : m.array("strips", 1)) {
     st.allow_only({"base_z", "height", "carried_weight", "openings", "middle_hinge"});
-    if (st.find("openings") && st.at("openings").value().is_array() && st.at("openings").value().size() > 20)
-      st.at("openings").fail("at most 20 openings per strip");
+    if (st.find("openings") && st.at("openings").value().is_array() &&
+        st.at("openings").value().size() > flexure_openings_max)
+      st.at("openings").fail("at most " + std::to_string(flexure_openings_max) + " openings per strip (the windows "
+                             "of a span between two transverse walls; each adds two blocks to the strip's chain)");
     HorizontalStrip s;
-    s.base_z = st.number_or("base_z", 0.0, "m", 0.0);
-    s.height = st.positive("height", "m");
-    s.carried_weight = st.number_or("carried_weight", 0.0, "kN/m", 0.0) * kN;
+    s.base_z = st.number_or("base_z", 0.0, rules::offset_m);
+    s.height = st.number("height", rules::dimension_m);
+    s.carried_weight = st.number_or("carried_weight", 0.0, line_load_kN_m) * kN;
     if (st.find("middle_hinge")) s.middle_hinge = open_interval(st.at("middle_hinge"), "m", 0.0, p.span);
     if (st.find("openings"))
       for (const JsonNode& o : st.array("openings")) {
@@ -250,8 +264,8 @@ MechanismSet parse_horizontal_flexure(const JsonNode& m, double FC) {
 
 MechanismSet parse_friction_overturning(const JsonNode& m) {
   m.allow_only({"type", "height", "thickness", "length", "unit_weight", "base_z", "side_walls", "side_thickness",
-                "side_length", "unit_length", "course_height", "friction", "activation", "side_load", "top_weight", "tie",
-                "floors"});
+                "side_length", "unit_length", "course_height", "friction", "activation", "side_load", "side_load_held",
+                "top_weight", "top_weight_held", "tie", "floors"});
   FrictionOverturningParams p;
   p.height = m.positive("height", "m");
   p.thickness = m.positive("thickness", "m");
@@ -266,7 +280,9 @@ MechanismSet parse_friction_overturning(const JsonNode& m) {
   p.friction = m.number("friction", "-", 1e-6, 2.0);
   p.activation = m.number_or("activation", 1.0, "-", 0.0, 1.0);
   p.side_load = m.number_or("side_load", 0.0, "kN/m", 0.0) * kN;
+  p.side_load_held = m.boolean_or("side_load_held", false);  // issue 38: every load moves unless held
   p.top_weight = m.number_or("top_weight", 0.0, "kN", 0.0) * kN;
+  p.top_weight_held = m.boolean_or("top_weight_held", false);
   p.tie = m.number_or("tie", 0.0, "kN", 0.0) * kN;
   if (m.find("floors"))
     for (const JsonNode& f : m.array("floors")) {
@@ -276,7 +292,7 @@ MechanismSet parse_friction_overturning(const JsonNode& m) {
       fl.z = open_interval(f.at("z"), "m", p.base_z, p.base_z + p.height + 1e-9);
       fl.distance_from_inner_face = f.number_or("distance_from_inner_face", 0.5 * p.thickness, "m", 0.0, p.thickness);
       fl.friction = f.number_or("friction", 0.0, "-", 0.0, 2.0);
-      fl.held = f.boolean_or("held", true);
+      fl.held = f.boolean_or("held", false);  // issue 38: moves with the façade unless held
       if (f.find("seat_length")) fl.seat_length = f.positive("seat_length", "m");
       p.floors.push_back(fl);
     }
@@ -312,9 +328,16 @@ CornerWall parse_corner_wall(const JsonNode& w) {
 }
 
 MechanismSet parse_corner(const JsonNode& m) {
-  m.allow_only({"type", "height", "thickness", "unit_weight", "wall_length", "base_z", "top_weight", "thrust", "tie",
-                "beta_deg", "unit_length", "course_height", "beta_min_deg", "beta_max_deg", "search_points", "wall_a",
-                "wall_b", "axis_deg", "axis_min_deg", "axis_max_deg", "axis_points"});
+  // Issue 38: the axis is no longer scanned (an intermediate axis never
+  // governs, docs/theory/mechanisms.md §4.2): the former scan's keys named.
+  for (const char* k : {"axis_min_deg", "axis_max_deg", "axis_points"})
+    if (m.has(k))
+      m.at(k).fail("the axis is not scanned: the two axes along the walls' outer faces (0 and 90 deg) are the "
+                   "candidates, an intermediate axis never governs (docs/theory/mechanisms.md §4.2); remove \"" +
+                   std::string(k) + "\", or give \"axis_deg\" (deg) for one axis");
+  m.allow_only({"type", "height", "thickness", "unit_weight", "wall_length", "base_z", "top_weight", "top_weight_held",
+                "thrust", "tie", "beta_deg", "unit_length", "course_height", "beta_min_deg", "beta_max_deg",
+                "search_points", "wall_a", "wall_b", "axis_deg"});
   CornerOverturningParams p;
   p.height = m.positive("height", "m");
   if (m.find("thickness")) p.thickness = m.positive("thickness", "m");
@@ -322,6 +345,7 @@ MechanismSet parse_corner(const JsonNode& m) {
   if (m.find("wall_length")) p.wall_length = m.positive("wall_length", "m");
   p.base_z = m.number_or("base_z", 0.0, "m", 0.0);
   p.top_weight = m.number_or("top_weight", 0.0, "kN", 0.0) * kN;
+  p.top_weight_held = m.boolean_or("top_weight_held", false);  // issue 38
   p.thrust = m.number_or("thrust", 0.0, "kN") * kN;
   p.tie = m.number_or("tie", 0.0, "kN", 0.0) * kN;
   parse_crack_angle(m, p);
@@ -339,25 +363,25 @@ MechanismSet parse_corner(const JsonNode& m) {
   for (const auto& [w, other, name] : {std::tuple<const CornerWall*, const CornerWall*, const char*>{&p.wall_a, &p.wall_b, "wall_a"},
                                        {&p.wall_b, &p.wall_a, "wall_b"}}) {
     const double t_other = other->thickness.value_or(p.thickness);
-    for (std::size_t i = 0; i < w->openings.size(); ++i)
+    const double end = t_other + w->length.value_or(p.wall_length), top = p.base_z + p.height;
+    for (std::size_t i = 0; i < w->openings.size(); ++i) {
+      const JsonNode o = m.at(name).at("openings").at(i);
       if (w->openings[i].from < t_other)
-        m.at(name).at("openings").at(i).at("from").fail(
-            "the opening starts " + std::to_string(w->openings[i].from) + " m from the corner's outer face, inside the "
-            "corner pier (the other wall's thickness, " + std::to_string(t_other) + " m): no corner mechanism with an "
-            "opening through the pier");
+        o.at("from").fail("the opening starts " + number_for_message(w->openings[i].from) + " m from the corner's outer "
+                          "face, inside the corner pier (the other wall's thickness, " + number_for_message(t_other) +
+                          " m): no corner mechanism with an opening through the pier");
+      // Within the wall (issue 39: an opening beyond it was clipped without a word).
+      if (w->openings[i].to > end + 1e-9)
+        o.at("to").fail("the opening ends " + number_for_message(w->openings[i].to) + " m from the corner's outer face, "
+                        "beyond the wall's end (" + number_for_message(end) + " m: the other wall's thickness and the "
+                        "wall's length)");
+      if (w->openings[i].top > top + 1e-9)
+        o.at("top").fail("the opening's top " + number_for_message(w->openings[i].top) + " m is above the wall's top (" +
+                         number_for_message(top) + " m above the foundation: base_z + height)");
+    }
   }
   if (m.find("axis_deg")) p.axis_deg = m.number("axis_deg", "deg", 0.0, 90.0);
-  p.axis_min_deg = m.number_or("axis_min_deg", p.axis_min_deg, "deg", 0.0, 90.0);
-  p.axis_max_deg = m.number_or("axis_max_deg", p.axis_max_deg, "deg", 0.0, 90.0);
-  p.axis_points = m.integer_or("axis_points", p.axis_points, 2, 91);
-  // A searched crack angle times a scanned axis: every pair is a candidate.
-  const bool own_a = p.wall_a.beta_deg || p.wall_a.unit_length || p.wall_a.crack_reach;
-  const bool own_b = p.wall_b.beta_deg || p.wall_b.unit_length || p.wall_b.crack_reach;
-  const bool beta_searched = !(own_a && own_b) && !p.beta_deg && !p.unit_length && !p.course_height;
-  if (beta_searched && !p.axis_deg && p.search_points * p.axis_points > 200)
-    m.fail("a searched crack angle (search_points = " + std::to_string(p.search_points) + ") and a scanned axis "
-           "(axis_points = " + std::to_string(p.axis_points) + ") make more than 200 candidates: give the crack "
-           "angle from the texture (unit_length, course_height) or the axis (axis_deg)");
+  // A searched crack angle (at most 100) times the two axes: at most 200 candidates.
   return corner_overturning(p);
 }
 
@@ -373,13 +397,18 @@ MechanismSet parse_mechanism(const JsonNode& m, double FC) {
       m.allow_only({"type", "storeys", "unit_weight", "length", "hinge_level", "hinge_setback"});
     SimpleOverturningParams p;
     for (const JsonNode& s : m.array("storeys", 1)) {
-      s.allow_only({"height", "thickness", "floor_weight", "floor_distance_from_inner_face", "floor_bears", "thrust", "tie"});
+      s.allow_only({"height", "thickness", "floor_weight", "floor_distance_from_inner_face", "floor_bears", "floor_held",
+                    "thrust", "tie"});
       Storey st;
       st.height = s.number("height", rules::dimension_m);
       st.thickness = s.number("thickness", rules::dimension_m);
       st.floor_weight = s.number_or("floor_weight", 0.0, rules::weight_kN) * kN;
       st.floor_distance_from_inner_face = s.number_or("floor_distance_from_inner_face", 0.0, "m", 0.0, st.thickness);
       st.floor_bears = s.boolean_or("floor_bears", true);
+      st.floor_held = s.boolean_or("floor_held", false);  // issue 38: the floor's mass moves with the wall unless held
+      if (st.floor_held && !st.floor_bears && st.floor_weight > 0.0)
+        s.at("floor_held").fail("a floor that neither bears (\"floor_bears\": false) nor pushes (\"floor_held\": true) "
+                                "acts on nothing: drop it or give one of the two");
       st.thrust = s.number_or("thrust", 0.0, rules::force_kN) * kN;
       st.tie = s.number_or("tie", 0.0, rules::weight_kN) * kN;
       p.storeys.push_back(st);
@@ -410,7 +439,7 @@ MechanismSet parse_mechanism(const JsonNode& m, double FC) {
   }
   if (type == "composite_overturning") {
     m.allow_only({"type", "height", "thickness", "length", "unit_weight", "side_thickness", "side_walls",
-                  "side_length", "base_z", "top_weight", "tie", "beta_deg", "unit_length", "course_height",
+                  "side_length", "base_z", "top_weight", "top_weight_held", "tie", "beta_deg", "unit_length", "course_height",
                   "beta_min_deg", "beta_max_deg", "search_points"});
     CompositeOverturningParams p;
     p.height = m.number("height", rules::dimension_m);
@@ -422,6 +451,7 @@ MechanismSet parse_mechanism(const JsonNode& m, double FC) {
     p.side_length = m.number("side_length", rules::dimension_m);
     p.base_z = m.number_or("base_z", 0.0, rules::offset_m);
     p.top_weight = m.number_or("top_weight", 0.0, rules::weight_kN) * kN;
+    p.top_weight_held = m.boolean_or("top_weight_held", false);  // issue 38: moves with the façade unless held
     p.tie = m.number_or("tie", 0.0, rules::weight_kN) * kN;
     parse_crack_angle(m, p);
     return composite_overturning(p);
@@ -429,7 +459,8 @@ MechanismSet parse_mechanism(const JsonNode& m, double FC) {
   if (type == "corner_overturning") return parse_corner(m);
   if (type == "horizontal_flexure") return parse_horizontal_flexure(m, FC);
   if (type == "friction_overturning") return parse_friction_overturning(m);
-  m.allow_only({"type", "width", "height", "thickness", "unit_weight", "base_z", "ridge_weight", "ridge_thrust", "tie", "slices"});
+  m.allow_only({"type", "width", "height", "thickness", "unit_weight", "base_z", "ridge_weight", "ridge_weight_held",
+                "ridge_thrust", "tie", "slices"});
   GableParams p;
   p.width = m.number("width", rules::dimension_m);
   p.height = m.number("height", rules::dimension_m);
@@ -437,6 +468,7 @@ MechanismSet parse_mechanism(const JsonNode& m, double FC) {
   p.unit_weight = m.number("unit_weight", rules::unit_weight_kN_m3) * kN;
   p.base_z = m.number_or("base_z", 0.0, rules::offset_m);
   p.ridge_weight = m.number_or("ridge_weight", 0.0, rules::weight_kN) * kN;
+  p.ridge_weight_held = m.boolean_or("ridge_weight_held", false);  // issue 38: moves with the gable unless held
   p.ridge_thrust = m.number_or("ridge_thrust", 0.0, rules::force_kN) * kN;
   p.tie = m.number_or("tie", 0.0, rules::weight_kN) * kN;
   p.slices = m.integer_or("slices", p.slices, 2, 200);
@@ -462,8 +494,8 @@ SiteSpec parse_site(const JsonNode& s) {
     }
   }
   if (s.has("lat") || s.has("lon")) {
-    spec.lat = s.number("lat", "deg", -90.0, 90.0);
-    spec.lon = s.number("lon", "deg", -180.0, 180.0);
+    spec.lat = s.number("lat", rules::latitude_deg);
+    spec.lon = s.number("lon", rules::longitude_deg);
   }
   if (s.has("island")) spec.island = s.string("island");
   if (s.has("hazard")) {
@@ -473,22 +505,17 @@ SiteSpec parse_site(const JsonNode& s) {
       if (const auto e = h.find(ls)) {
         e->allow_only({"ag_g", "F0", "Tc_star", "TR"});
         HazardParams p;
-        p.ag_g = e->number("ag_g", "g", 0.0, 5.0);
-        p.F0 = e->number("F0", "-", 1.0, 10.0);
-        p.Tc_star = e->number("Tc_star", rules::period_s);
+        p.ag_g = e->number("ag_g", rules::ag_g);
+        p.F0 = e->number("F0", rules::F0);
+        p.Tc_star = e->number("Tc_star", rules::Tc_star_s);
         p.TR = e->number_or("TR", 0.0, rules::return_period_years);
         p.tr_requested = p.TR;
         spec.given[parse_limit_state(ls)] = p;
       }
   }
-  // The subsoil category moves every demand (S = SS ST, TC = CC TC*): no
-  // default is assumed (issue 41: a missing soil ran as A, a silent default).
-  if (!s.has("soil"))
-    s.fail_missing("soil", "the subsoil category of NTC 2018 Tab. 3.2.II, \"A\", \"B\", \"C\", \"D\" or \"E\" "
-                           "(it sets S = SS ST and TC = CC TC* of every demand; no default is assumed)");
-  spec.conditions.soil = parse_soil_class(s.choice("soil", {"A", "B", "C", "D", "E"}));
+  if (s.has("soil")) spec.conditions.soil = parse_soil_class(s.choice("soil", {"A", "B", "C", "D", "E"}));
   if (s.has("topography")) spec.conditions.topography = parse_topography(s.choice("topography", {"T1", "T2", "T3", "T4"}));
-  spec.conditions.h_over_H = s.number_or("h_over_H", 1.0, "-", 0.0, 1.0);
+  spec.conditions.h_over_H = s.number_or("h_over_H", 1.0, rules::relative_height);
   spec.vn_years = s.number_or("VN_years", 50.0, rules::nominal_life_years);
   if (s.has("use_class") && s.has("CU")) s.fail("give \"use_class\" or \"CU\", not both");
   if (s.has("use_class")) spec.cu = use_coefficient(parse_use_class(s.choice("use_class", {"I", "II", "III", "IV"})));
@@ -500,6 +527,11 @@ SiteSpec parse_site(const JsonNode& s) {
   } catch (const InputError& e) {
     s.fail(e.what());
   }
+  // The subsoil category moves every demand (S = SS ST, TC = CC TC*): no
+  // default is assumed (issue 41: a missing soil ran as A, a silent default).
+  if (!s.has("soil"))
+    s.fail_missing("soil", "the subsoil category of NTC 2018 Tab. 3.2.II, \"A\", \"B\", \"C\", \"D\" or \"E\" "
+                           "(it sets S = SS ST and TC = CC TC* of every demand; no default is assumed)");
   return spec;
 }
 
@@ -615,6 +647,10 @@ TieLayout parse_layout(const JsonNode& t) {
 }
 
 // The fields a tie level shares with a level to design (no rod, no anchor).
+// Issue 37: the wall around the anchors (its crown, the load on it, its
+// openings), the masonry's sliding parameters, the temperature variation and
+// the corrosion allowance; the crown and the unit weight default to the block
+// the tie holds (resolve_ties below).
 void parse_tie_common(const JsonNode& t, Tie& tie, double FC, std::size_t index) {
   tie.name = t.find("name") ? t.string("name") : "tie " + std::to_string(index + 1);
   tie.point = t.point("point");
@@ -627,15 +663,40 @@ void parse_tie_common(const JsonNode& t, Tie& tie, double FC, std::size_t index)
   }
   tie.free_length = t.number("free_length_m", "m", TB::free_length_min, TB::free_length_max);
   const JsonNode m = t.at("masonry");
-  m.allow_only({"fm_MPa", "tau_MPa", "thickness_m", "FC", "gamma_M"});
+  m.allow_only({"fm_MPa", "tau_MPa", "thickness_m", "FC", "gamma_M", "fv0_MPa", "mu", "unit_weight_kN_m3"});
   tie.masonry.fm = m.number("fm_MPa", "MPa", TB::fm_min / 1e6, TB::fm_max / 1e6) * 1e6;
   tie.masonry.tau = m.number("tau_MPa", "MPa", TB::tau_min / 1e6, TB::tau_max / 1e6) * 1e6;
   tie.masonry.thickness = m.number("thickness_m", "m", TB::thickness_min, TB::thickness_max);
   tie.masonry.FC = m.number_or("FC", FC, "-", 1.0, 10.0);
   tie.masonry.gamma_M = m.number_or("gamma_M", tie_catalogue::masonry_gamma_M, "-", 1.0, 10.0);
+  tie.masonry.fv0 = m.number_or("fv0_MPa", tie.masonry.tau / 1e6, "MPa", TB::tau_min / 1e6, TB::tau_max / 1e6) * 1e6;
+  tie.masonry.mu = m.number_or("mu", tie_catalogue::sliding_mu, "-", 0.0, 1.5);
+  tie.masonry.unit_weight = m.number_or("unit_weight_kN_m3", 0.0, "kN/m^3", TB::unit_weight_min / 1e3,
+                                        TB::unit_weight_max / 1e3) * 1e3;  // 0: the block's (resolve_ties)
   tie.layout = parse_layout(t);
   tie.spacing = tie.layout.wall_length / tie.layout.count;
   tie.pretension = t.number_or("pretension_kN", 0.0, "kN", 0.0, TB::pretension_max / kN) * kN;
+  tie.delta_T = t.number_or("delta_T_K", tie_catalogue::delta_T, "K", 0.0, TB::delta_T_max);
+  tie.rod.corrosion = t.number_or("corrosion_mm", tie_catalogue::corrosion_loss * 1e3, "mm", 0.0,
+                                  TB::corrosion_max * 1e3) * 1e-3;
+  tie.layout.crown = t.number_or("crown_z_m", std::numeric_limits<double>::infinity(), "m", -1e4, 1e4);
+  tie.layout.crown_load = t.number_or("crown_load_kN_m", 0.0, "kN/m", 0.0, TB::crown_load_max / kN) * kN;
+  if (t.find("openings")) {
+    const std::vector<JsonNode> ops = t.array("openings");
+    if (ops.size() > static_cast<std::size_t>(TB::openings_max))
+      t.at("openings").fail(std::to_string(ops.size()) + " openings: expected at most " + std::to_string(TB::openings_max));
+    for (const JsonNode& o : ops) {
+      o.allow_only({"x0_m", "x1_m", "z0_m", "z1_m"});
+      WallOpening w;
+      w.x0 = o.number("x0_m", "m", -1e4, 1e4);
+      w.x1 = o.number("x1_m", "m", -1e4, 1e4);
+      w.z0 = o.number("z0_m", "m", -1e4, 1e4);
+      w.z1 = o.number("z1_m", "m", -1e4, 1e4);
+      if (!(w.x1 > w.x0) || !(w.z1 > w.z0))
+        o.fail("expected x0_m < x1_m (along the wall from its first end) and z0_m < z1_m (m)");
+      tie.layout.openings.push_back(w);
+    }
+  }
 }
 
 // The end of a rod: its ISO metric thread (the table of tie_catalogue.hpp).
@@ -673,7 +734,8 @@ void parse_rod_ends(const JsonNode& r, TieRod& rod) {
 
 Tie parse_tie(const JsonNode& t, double FC, std::size_t index) {
   t.allow_only({"name", "existing", "point", "block", "direction", "rod", "free_length_m", "anchor", "masonry",
-                "wall_length_m", "count", "spacing_m", "edge_distance_m", "pretension_kN"});
+                "wall_length_m", "count", "spacing_m", "edge_distance_m", "pretension_kN", "delta_T_K", "corrosion_mm",
+                "crown_z_m", "crown_load_kN_m", "openings"});
   Tie tie;
   tie.existing = t.boolean_or("existing", false);
   parse_tie_common(t, tie, FC, index);
@@ -689,7 +751,7 @@ Tie parse_tie(const JsonNode& t, double FC, std::size_t index) {
   const tie_catalogue::SteelGrade& g = grade_of(r, "grade", tie.rod.grade);
   tie.rod.fyk = g.fyk;
   tie.rod.ftk = g.ftk;
-  tie.rod.elongation = g.elongation;
+  tie.rod.eps_uk = g.eps_uk;
   if (r.find("fyk_MPa")) tie.rod.fyk = r.number("fyk_MPa", "MPa", TB::fyk_min / 1e6, TB::fyk_max / 1e6) * 1e6;
   if (r.find("ftk_MPa")) tie.rod.ftk = r.number("ftk_MPa", "MPa", tie.rod.fyk / 1e6, 2.0 * TB::fyk_max / 1e6) * 1e6;
   if (!(tie.rod.ftk >= tie.rod.fyk))
@@ -718,29 +780,42 @@ Tie parse_tie(const JsonNode& t, double FC, std::size_t index) {
     tie.anchor.b = a.number("diameter_mm", "mm", TB::bar_diameter_min * 1e3, TB::bar_diameter_max * 1e3) * 1e-3;
   }
   tie.anchor.fyk = grade_of(a, "grade", tie.anchor.grade).fyk;
-  try {
-    const TieResistance res = tie_resistance(tie);  // validate() and the pretension below the strength
-    (void)res;
-  } catch (const InputError& e) {
-    (t.has("pretension_kN") && std::string(e.what()).find("pretension") != std::string::npos ? t.at("pretension_kN") : t)
-        .fail(e.what());
-  }
-  return tie;
+  return tie;  // its default pretension and its wall by resolve_ties
 }
 
 TieDesignSpec parse_tie_design(const JsonNode& d, double FC) {
   d.allow_only({"ties"});
   const JsonNode t = d.at("ties");
-  t.allow_only({"levels", "grades", "ends", "min_rod_diameter_mm"});
+  t.allow_only({"levels", "grades", "plate_grades", "anchors", "ends", "min_rod_diameter_mm"});
   TieDesignSpec spec;
   std::size_t i = 0;
-  for (const JsonNode& l : t.array("levels", 1)) {
+  // Issue 37: no level to design is allowed (the design then changes only the
+  // existing ties that fail: the least change, tie_intervention.hpp).
+  for (const JsonNode& l : t.array("levels", 0)) {
     l.allow_only({"name", "point", "block", "direction", "free_length_m", "masonry", "wall_length_m", "count",
-                  "spacing_m", "edge_distance_m", "pretension_kN"});
+                  "spacing_m", "edge_distance_m", "pretension_kN", "delta_T_K", "corrosion_mm", "crown_z_m",
+                  "crown_load_kN_m", "openings"});
     Tie tie;
     parse_tie_common(l, tie, FC, i++);
     if (!l.find("name")) tie.name = "new tie " + std::to_string(i);
     spec.levels.push_back(tie);
+    spec.pretension_given.push_back(l.has("pretension_kN"));
+  }
+  if (t.find("plate_grades")) {
+    spec.plate_grades.clear();
+    for (const JsonNode& g : t.array("plate_grades", 1)) {
+      const std::string s = g.as_string();
+      if (!tie_catalogue::find_grade(s) || s == "B450C") g.fail("\"" + s + "\": expected \"S235\", \"S275\" or \"S355\"");
+      spec.plate_grades.push_back(s);
+    }
+  }
+  if (t.find("anchors")) {
+    spec.anchors.clear();
+    for (const JsonNode& g : t.array("anchors", 1)) {
+      const std::string s = g.as_string();
+      if (s != "plate" && s != "bar") g.fail("\"" + s + "\": expected \"plate\" or \"bar\" (paletto)");
+      spec.anchors.push_back(s == "plate" ? AnchorType::Plate : AnchorType::Bar);
+    }
   }
   if (t.find("grades")) {
     spec.grades.clear();
@@ -750,7 +825,10 @@ TieDesignSpec parse_tie_design(const JsonNode& d, double FC) {
       spec.grades.push_back(s);
     }
   }
-  if (t.find("ends")) spec.ends = t.choice("ends", {"threaded", "upset"}) == "upset" ? TieEnds::Upset : TieEnds::Threaded;
+  if (t.find("ends")) {
+    const std::string e = t.choice("ends", {"threaded", "upset", "welded"});
+    spec.ends = e == "upset" ? TieEnds::Upset : e == "welded" ? TieEnds::Welded : TieEnds::Threaded;
+  }
   spec.min_rod_diameter = t.number_or("min_rod_diameter_mm", tie_catalogue::min_rod_diameter * 1e3, "mm",
                                       tie_catalogue::rod_diameters.front() * 1e3,
                                       tie_catalogue::rod_diameters.back() * 1e3) *
@@ -759,9 +837,13 @@ TieDesignSpec parse_tie_design(const JsonNode& d, double FC) {
 }
 
 // Every level must hold a moving block of at least one candidate, and the
-// wall it is laid along must be at least as long as the candidates that hold it.
-void check_ties_hold(const JsonNode& arr, const std::vector<Tie>& ties, const std::vector<std::size_t>& index,
-                     const MechanismSet& set) {
+// wall it is laid along must be at least as long as the candidates that hold
+// it. Issue 37: the wall's defaults from the block it holds (the first
+// candidate's): its crown (the block's top) and the masonry's unit weight;
+// then every given tie is validated with its wall (an anchor within it).
+// `given`: the ties have a rod and an anchor (not a design's levels).
+void resolve_ties(const JsonNode& arr, std::vector<Tie>& ties, const std::vector<std::size_t>& index,
+                  const MechanismSet& set, bool given) {
   for (std::size_t i = 0; i < ties.size(); ++i) {
     const JsonNode node = arr.at(index[i]);
     bool holds = false;
@@ -773,8 +855,18 @@ void check_ties_hold(const JsonNode& arr, const std::vector<Tie>& ties, const st
         node.fail(e.what());
       }
       if (b < 0) continue;
+      const Block& blk = m.chain.blocks()[static_cast<std::size_t>(b)];
+      if (!holds) {
+        if (!node.has("crown_z_m")) {
+          double top = -std::numeric_limits<double>::infinity();
+          for (const Eigen::Vector2d& v : blk.polygon) top = std::max(top, v.y());
+          ties[i].layout.crown = top;
+        }
+        if (!(ties[i].masonry.unit_weight > 0.0))
+          ties[i].masonry.unit_weight = std::clamp(blk.unit_weight, TB::unit_weight_min, TB::unit_weight_max);
+      }
       holds = true;
-      const double length = m.chain.blocks()[static_cast<std::size_t>(b)].length;
+      const double length = blk.length;
       if (length > ties[i].layout.wall_length * (1.0 + 1e-9))
         node.at("wall_length_m")
             .fail("the wall is " + tnum(ties[i].layout.wall_length) + " m long, shorter than the mechanism (" +
@@ -785,6 +877,29 @@ void check_ties_hold(const JsonNode& arr, const std::vector<Tie>& ties, const st
                             tnum(ties[i].point.y()) +
                             ") m is on no moving block of the mechanism (the wall's outer face is x = 0, "
                             "the wall at x < 0, z up from the foundation)");
+    if (!given) continue;
+    // Issue 37: a new tie's pretension takes up the temperature range unless
+    // given: E A alpha_T dT, when below the tie's strength (else none, and
+    // its "pretension" check fails, saying so); an existing tie's is what it
+    // is (0 unless given).
+    if (!ties[i].existing && !node.has("pretension_kN")) {
+      Tie slack = ties[i];
+      slack.pretension = 0.0;
+      try {
+        const double P = thermal_pretension(slack);
+        if (P < tie_resistance(slack).design) ties[i].pretension = P;
+      } catch (const InputError&) {
+        // refused below, with the node
+      }
+    }
+    try {
+      (void)tie_resistance(ties[i]);  // validate() with the wall, and the pretension below the strength
+    } catch (const InputError& e) {
+      (node.has("pretension_kN") && std::string(e.what()).find("pretension") != std::string::npos
+           ? node.at("pretension_kN")
+           : node)
+          .fail(e.what());
+    }
   }
 }
 // ---- end issue 23 -------------------------------------------------------------
@@ -923,15 +1038,15 @@ CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
           for (const Tie& u : *w)
             if (&t != &u && t.name == u.name)
               root.at("ties").fail("two tie levels named \"" + t.name + "\": expected distinct names");
-    check_ties_hold(root.at("ties"), c.ties, idx_old, c.mechanism);
-    check_ties_hold(root.at("ties"), c.new_ties, idx_new, c.mechanism);
+    resolve_ties(root.at("ties"), c.ties, idx_old, c.mechanism, true);
+    resolve_ties(root.at("ties"), c.new_ties, idx_new, c.mechanism, true);
     levels += arr.size();
   }
   if (const auto d = root.find("design")) {
     c.tie_design = parse_tie_design(*d, c.options.FC);
     std::vector<std::size_t> idx(c.tie_design->levels.size());
     for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = i;
-    check_ties_hold(d->at("ties").at("levels"), c.tie_design->levels, idx, c.mechanism);
+    resolve_ties(d->at("ties").at("levels"), c.tie_design->levels, idx, c.mechanism, false);
     levels += idx.size();
     for (const Tie& t : c.tie_design->levels)
       for (const auto* v : {&c.ties, &c.new_ties})
@@ -943,6 +1058,10 @@ CaseFile parse_case(const nlohmann::json& doc, const std::string& file) {
   if (levels > static_cast<std::size_t>(TB::levels_max))
     root.fail(std::to_string(levels) + " tie levels in \"ties\" and \"design\": expected at most " +
               std::to_string(TB::levels_max));
+  if (c.tie_design && c.tie_design->levels.empty() && c.ties.empty())
+    root.at("design").at("ties").at("levels").fail("empty, and the case has no existing tie to change: expected at "
+                                      "least one level to design (or existing ties, whose failures the design then "
+                                      "changes by the least change)");
   c.warnings = input_warnings(doc.at("mechanism"), file);
   // Hook for the façade issue (dynamic rocking): kept raw, parsed there.
   if (root.has("dynamic")) c.dynamic = doc.at("dynamic");
@@ -1087,7 +1206,7 @@ std::vector<TieRestraint> case_tie_restraints(const CaseFile& c, const Chain& ch
   return out;
 }
 
-KinematicCaseResult run_kinematic_case(const CaseFile& c) {
+KinematicCaseResult run_kinematic_case(const CaseFile& c, bool indices) {
   KinematicCaseResult out;
   out.warnings = c.warnings;
   for (const MechanismCandidate& m : c.mechanism.candidates) {
@@ -1160,7 +1279,7 @@ KinematicCaseResult run_kinematic_case(const CaseFile& c) {
       double& m = cr.max_dc[row.code];
       m = std::max(m, std::isfinite(row.dc) ? row.dc : std::numeric_limits<double>::infinity());
       // The check's own index: the return period at which it reaches D/C = 1 (issue 41).
-      row.index = check_index(cr.result, in, row, axis);
+      if (indices) row.index = check_index(cr.result, in, row, axis);
       if (row.index.defined) {
         const auto it = cr.zeta_min.find(row.code);
         if (it == cr.zeta_min.end() || row.index.zeta < it->second) cr.zeta_min[row.code] = row.index.zeta;
@@ -1188,5 +1307,7 @@ KinematicCaseResult run_kinematic_case(const CaseFile& c) {
   out.verdict = build_verdict(all, c.method);
   return out;
 }
+
+SiteSpec parse_site_block(const nlohmann::json& site, const std::string& file) { return parse_site(JsonNode(site, file)); }
 
 }  // namespace assess

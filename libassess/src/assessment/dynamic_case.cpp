@@ -197,23 +197,24 @@ DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, co
     assumed(sel, "max_pga_ratio", text(rs.max_pga_ratio), "default.max_pga_ratio");
     assumed(sel, "near_fault", "exclude", "default.near_fault");
     assumed(sel, "site_classes", "= /site/soil", "default.site_classes");
-    rs.count = sel.integer_or("count", 7, 1, 50);
-    rs.max_scale = sel.number_or("max_scale", rs.max_scale, "(-)", 1.0, 100.0);
-    rs.max_mean_scale = sel.number_or("max_mean_scale", rs.max_mean_scale, "(-)", 0.1, 100.0);
-    rs.max_pga_ratio = sel.number_or("max_pga_ratio", rs.max_pga_ratio, "(-, multiple of ag S)", 0.5, 10.0);
-    rs.max_per_event = sel.integer_or("per_event", rs.max_per_event, 1, 50);
-    rs.max_per_station = sel.integer_or("per_station", rs.max_per_station, 1, 50);
-    auto window = [&](const char* key, const char* unit, double lo, double hi, std::optional<double>& a,
-                      std::optional<double>& b) {
+    // The ranges of record_selection.hpp (selection_rules), shared with the command line.
+    namespace SR = selection_rules;
+    rs.count = sel.integer_or("count", 7, 1, SR::count_max);
+    rs.max_scale = sel.number_or("max_scale", rs.max_scale, SR::max_scale);
+    rs.max_mean_scale = sel.number_or("max_mean_scale", rs.max_mean_scale, SR::max_mean_scale);
+    rs.max_pga_ratio = sel.number_or("max_pga_ratio", rs.max_pga_ratio, SR::max_pga_ratio);
+    rs.max_per_event = sel.integer_or("per_event", rs.max_per_event, 1, SR::count_max);
+    rs.max_per_station = sel.integer_or("per_station", rs.max_per_station, 1, SR::count_max);
+    auto window = [&](const char* key, const NumberRule& rule, std::optional<double>& a, std::optional<double>& b) {
       if (!sel.has(key)) return;
       const std::vector<JsonNode> w = sel.array(key, 2);
-      if (w.size() != 2) sel.at(key).fail(std::string("expected [min, max] in ") + unit);
-      a = w[0].as_number(unit, lo, hi);
-      b = w[1].as_number(unit, lo, hi);
-      if (!(*b >= *a)) sel.at(key).fail(std::string("expected min <= max (") + unit + ")");
+      if (w.size() != 2) sel.at(key).fail(std::string("expected [min, max] in ") + rule.unit);
+      a = w[0].as_number(rule);
+      b = w[1].as_number(rule);
+      if (!(*b >= *a)) sel.at(key).fail(std::string("expected min <= max (") + rule.unit + ")");
     };
-    window("Mw", "(-, moment magnitude)", 2.0, 10.0, rs.Mw_min, rs.Mw_max);
-    window("distance_km", "km", 0.0, 1000.0, rs.R_min_km, rs.R_max_km);
+    window("Mw", SR::Mw, rs.Mw_min, rs.Mw_max);
+    window("distance_km", SR::distance_km, rs.R_min_km, rs.R_max_km);
     if (sel.has("site_classes"))
       for (const JsonNode& c : sel.array("site_classes", 1)) {
         const std::string v = c.as_string();
@@ -223,15 +224,15 @@ DynamicSpec parse_dynamic(const nlohmann::json& doc, const std::string& file, co
       }
     rs.relax_site_class = sel.boolean_or("relax_site_class", true);
     if (sel.has("near_fault")) rs.include_near_fault = sel.choice("near_fault", {"exclude", "include"}) == "include";
-    rs.near_fault_km = sel.number_or("near_fault_km", rs.near_fault_km, "km", 0.0, 100.0);
-    rs.max_misfit = sel.number_or("max_misfit", rs.max_misfit, "(-, RMS of f S/Se - 1)", 0.01, 10.0);
+    rs.near_fault_km = sel.number_or("near_fault_km", rs.near_fault_km, SR::near_fault_km);
+    rs.max_misfit = sel.number_or("max_misfit", rs.max_misfit, SR::max_misfit);
     if (sel.has("countries"))
       for (const JsonNode& c : sel.array("countries", 1)) rs.countries.push_back(c.as_string());
     if (sel.has("period_range_s")) {
       const std::vector<JsonNode> pr = sel.array("period_range_s", 2);
       if (pr.size() != 2) sel.at("period_range_s").fail("expected [T_min, T_max] in s");
-      rs.T_min = pr[0].as_number("s", 0.01, 10.0);
-      rs.T_max = pr[1].as_number("s", 0.01, 10.0);
+      rs.T_min = pr[0].as_number(SR::period_s);
+      rs.T_max = pr[1].as_number(SR::period_s);
       if (!(*rs.T_max > *rs.T_min)) sel.at("period_range_s").fail("expected T_min < T_max (s)");
     }
     rs.catalogue = sel.has("catalogue") ? resolve(sel.string("catalogue"), case_dir)

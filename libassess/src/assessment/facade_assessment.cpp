@@ -397,9 +397,10 @@ std::vector<DynamicRun> dynamic_runs(const FacadeAssessment& a, const MechanismD
   return runs;
 }
 
-double dynamic_d_SLV(const KinematicResult& kin) {
-  return kin.without_ties ? std::max(kin.d_SLV, kin.without_ties->d_SLV) : kin.d_SLV;
-}
+// Issue 37: one displacement capacity per state, the same in the kinematic
+// and the dynamic check (the tied wall's, with its levels breaking where they
+// fail: docs/theory/ties.md §2).
+double dynamic_d_SLV(const KinematicResult& kin) { return kin.d_SLV; }
 
 std::vector<RestitutionSummary> summarise_runs(const std::vector<DynamicRun>& runs, const std::vector<double>& e,
                                                const KinematicResult& kin) {
@@ -560,6 +561,7 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   }
   if (!kase.dynamic.is_null()) add_dynamic_analysis(a, opt);
   finish(a);
+  if (opt.sensitivity) a.sensitivity = adopted_sensitivity(a);
   if (opt.review) {  // issue 36: the choices' alternatives, the checks of acceptability, the judgement
     a.choices = modelling_choices(a, opt.review_records);
     a.acceptability = acceptability_checks(a);
@@ -771,6 +773,7 @@ void add_dynamic_analysis(FacadeAssessment& a, const FacadeOptions& opt) {
   // 24): each analysed as the case restricted to it, as if run alone.
   if (kase.mechanism.candidates.size() > 1) {
     FacadeOptions sub_opt = opt;  // histories kept as asked: the relazione develops the candidate that governs
+    sub_opt.sensitivity = false;
     sub_opt.review = false;       // the review is the whole façade's
     for (std::size_t i : others) {
       CaseFile one = kase;

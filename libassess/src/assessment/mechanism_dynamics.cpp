@@ -19,6 +19,17 @@ namespace assess {
 
 namespace {
 
+// Where a value was given, for an error: "<file>: /dynamic/k" for a JSON path
+// of the case, the option itself ("--k") when the command line replaced it.
+std::string given_at(const std::string& file, const std::string& from) {
+  return !from.empty() && from[0] == '/' ? file + ": " + from : from;
+}
+std::string restitution_at(const std::string& file, const DynamicSpec& d, std::size_t i) {
+  return d.restitution_from.empty() || d.restitution_from[0] != '/' ? d.restitution_from
+                                                                   : given_at(file, d.restitution_from) + "/" + std::to_string(i);
+}
+
+
 // Where the sidedness a restitution is checked against comes from (issue 31:
 // a two-sided override in a building's wall was reported at restitution/0
 // alone): "<file>: /dynamic/sidedness" when given, which the building reader
@@ -210,7 +221,7 @@ MechanismDynamics build_bare(const CaseFile& kase, const CandidateResult& cand, 
       try {
         body_e.push_back(RockingModel(body->body, found, d.sidedness, d.restitutions[i]).restitution());
       } catch (const InputError& e) {
-        throw InputError(file + ": /dynamic/restitution/" + std::to_string(i) + ": " + e.what());
+        throw InputError(restitution_at(file, d, i) + ": " + e.what());
       }
     }
     body.reset();
@@ -220,7 +231,7 @@ MechanismDynamics build_bare(const CaseFile& kase, const CandidateResult& cand, 
       try {
         m.rocking.emplace_back(body->body, found, d.sidedness, d.restitutions[i]);
       } catch (const InputError& e) {
-        throw InputError(file + ": /dynamic/restitution/" + std::to_string(i) + ": " + e.what() + sidedness_note(file, d));
+        throw InputError(restitution_at(file, d, i) + ": " + e.what() + sidedness_note(file, d));
       }
       m.e.push_back(m.rocking.back().restitution());
     }
@@ -240,7 +251,7 @@ MechanismDynamics build_bare(const CaseFile& kase, const CandidateResult& cand, 
                      "laws \"housner\" and \"one-sided-theory\" are derived for one block");
   for (std::size_t i = 0; i < d.restitutions.size() && body_e.empty(); ++i) {
     const Restitution& r = d.restitutions[i];
-    const std::string path = file + ": /dynamic/restitution" + (d.restitutions.size() > 1 ? "/" + std::to_string(i) : "");
+    const std::string path = d.restitutions.size() > 1 ? restitution_at(file, d, i) : given_at(file, d.restitution_from);
     if (r.kind != Restitution::Kind::value)
       throw InputError(path + ": a chain of several blocks needs a given coefficient (q'+ = e q'-); \"" +
                        (r.kind == Restitution::Kind::housner ? "housner" : r.kind == Restitution::Kind::none ? "none"
@@ -262,7 +273,7 @@ MechanismDynamics build_bare(const CaseFile& kase, const CandidateResult& cand, 
   } catch (const InputError& e) {
     const std::string msg = e.what();
     if (d.smooth && (msg.find("Winkler") != std::string::npos || msg.find("smooth") != std::string::npos))
-      throw InputError(file + ": /dynamic/" + (msg.find("modulus") != std::string::npos ? "k" : "model") + ": " + msg);
+      throw InputError(given_at(file, msg.find("modulus") != std::string::npos ? d.k_from : d.model_from) + ": " + msg);
     m.note = msg;
     return m;
   }

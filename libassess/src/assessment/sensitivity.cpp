@@ -2,6 +2,7 @@
 // of sensitivity.hpp (issue 28).
 #include "assess/assessment/sensitivity.hpp"
 
+#include "assess/assessment/facade_assessment.hpp"
 #include "assess/kinematic/code_rules.hpp"
 
 #include <algorithm>
@@ -48,7 +49,8 @@ std::vector<SensitivityRow> adopted_sensitivity(const FacadeAssessment& a) {
     }
     return out;
   }
-  auto rerun = [&](const CaseFile& c) { return method_dc(run_kinematic_case(c), method); };
+  // The checks alone: their safety indices do not enter the D/C.
+  auto rerun = [&](const CaseFile& c) { return method_dc(run_kinematic_case(c, false), method); };
   const double FC0 = a.kase.options.FC;
   std::vector<double> fcs{1.00, 1.20, 1.35};
   if (std::find(fcs.begin(), fcs.end(), FC0) == fcs.end()) fcs.push_back(FC0);

@@ -9,8 +9,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <map>
+#include <memory>
+#include <optional>
 
 namespace assess {
 namespace {
@@ -61,9 +64,14 @@ bool counts(const CaseFile& c, const std::string& code) {
 // `required`: compute the force each check needs (a bisection per check); the
 // design's trials skip it: their mechanism's checks pass with T_Rd, which
 // bounds every required force.
+// Issue 37: with dynamic analyses of the state (`dyn`, or `dynamics_follow`
+// when they are still to run) a tie's demand is their response (its largest
+// force and elongation, and whether it broke): the static displacement demand
+// of the capacity-spectrum check, on a curve whose ties may have broken, is
+// used only without them (docs/theory/ties.md §3).
 std::vector<TieLevelResult> level_results(const CaseFile& c, const KinematicCaseResult& r, std::size_t first,
                                           std::size_t last, const std::map<std::string, LevelDynamics>* dyn,
-                                          bool required = true) {
+                                          bool required = true, bool dynamics_follow = false) {
   std::vector<TieLevelResult> out;
   const CandidateResult& cr = r.candidates[r.governing];
   const Chain& chain = c.mechanism.candidates[r.governing].chain;
@@ -81,7 +89,8 @@ std::vector<TieLevelResult> level_results(const CaseFile& c, const KinematicCase
     if (row.kind == "displacement" && counts(c, row.code) && std::isfinite(row.demand))
       d_demand = std::max(d_demand, row.demand);
   std::vector<double> elong;
-  if (d_demand >= 0.0 && cr.result.curve_complete()) elong = tie_elongations_at(chain, cr.result, ties, d_demand);
+  if (!dyn && !dynamics_follow && d_demand >= 0.0 && cr.result.curve_complete())
+    elong = tie_elongations_at(chain, cr.result, ties, d_demand);
   for (std::size_t i = first; i < last; ++i) {
     TieLevelResult L;
     L.tie = c.ties[i];
@@ -140,52 +149,120 @@ bool all_satisfied(const std::vector<TieLevelResult>& lv) {
 }
 
 // The thread of a designed rod's ends: its own (threaded), or the smallest
-// ISO thread up to max_upset_ratio d that satisfies the capacity design (upset).
-const tie_catalogue::Thread* design_thread(double d, const tie_catalogue::SteelGrade& g, TieEnds ends) {
+// ISO thread up to max_upset_ratio d that satisfies the capacity design with
+// its section after the corrosion allowance `corrosion` (m) (upset, welded).
+const tie_catalogue::Thread* design_thread(double d, const tie_catalogue::SteelGrade& g, TieEnds ends,
+                                           double corrosion) {
   namespace C = tie_catalogue;
   if (ends == TieEnds::Threaded) return C::find_thread(d);
   const double A = units::pi * d * d / 4.0;
-  for (const C::Thread& t : C::threads)
+  for (const C::Thread& t : C::threads) {
+    TieRod r;
+    r.thread_area = t.As;
+    r.corrosion = corrosion;
     if (t.d >= d - 1e-4 && t.d <= C::max_upset_ratio * d + 1e-4 &&
-        C::thread_k2 * g.ftk * t.As / C::gamma_M2 >= C::gamma_Rd * C::gamma_ov * A * g.fyk)
+        C::thread_k2 * g.ftk * r.corroded_thread_area() / C::gamma_M2 >= C::gamma_Rd * C::gamma_ov * A * g.fyk)
       return &t;
+  }
   return nullptr;
 }
 
-// The designed levels with rod (d, grade, ends) and plate p; nullopt when the
-// combination cannot be built (no thread, a plate no wider than its nut, a
-// pretension at or above the tie's strength).
-std::optional<std::vector<Tie>> designed_levels(const TieDesignSpec& spec, double d, const std::string& grade,
-                                                const tie_catalogue::Plate& p) {
+// ---- Issue 37: the search ---------------------------------------------------
+// docs/theory/ties.md §5. A commercial choice of rod and anchor, in the order
+// of the search: rods smallest first (from the smallest allowed), for each rod
+// the rod grades in the order given, for each grade the anchor types in the
+// order given (plates, bars), for each type its list smallest first, for each
+// anchor the anchor grades in the order given.
+struct Choice {
+  double d = 0.0;
+  const tie_catalogue::SteelGrade* grade = nullptr;
+  AnchorType type = AnchorType::Plate;
+  double a = 0.0, b = 0.0, t = 0.0;  // plate side and thickness, or bar length and diameter (m)
+  const tie_catalogue::SteelGrade* anchor_grade = nullptr;
+};
+
+std::vector<Choice> anchor_choices(const TieDesignSpec& spec) {
   namespace C = tie_catalogue;
-  const C::SteelGrade& g = *C::find_grade(grade);
-  const C::Thread* th = design_thread(d, g, spec.ends);
-  if (!th) return std::nullopt;
-  std::vector<Tie> levels = spec.levels;
-  for (Tie& t : levels) {
-    t.existing = false;
-    t.rod.diameter = d;
-    t.rod.area = units::pi * d * d / 4.0;
-    t.rod.grade = grade;
-    t.rod.fyk = g.fyk;
-    t.rod.ftk = g.ftk;
-    t.rod.elongation = g.elongation;
-    t.rod.gamma_M0 = C::gamma_M0;
-    t.rod.E = C::steel_E;
-    t.rod.ends = spec.ends;
-    t.rod.thread_diameter = th->d;
-    t.rod.thread_area = th->As;
-    t.rod.nut_width = th->s;
-    t.anchor.type = AnchorType::Plate;
-    t.anchor.a = t.anchor.b = p.a;
-    t.anchor.t = p.t;
-    t.anchor.grade = grade == "B450C" ? "S275" : grade;
-    t.anchor.fyk = C::find_grade(t.anchor.grade)->fyk;
-    try {
-      (void)tie_resistance(t);
-    } catch (const InputError&) {
-      return std::nullopt;
+  std::vector<Choice> out;
+  for (AnchorType type : spec.anchors) {
+    if (type == AnchorType::Plate) {
+      for (const C::Plate& p : C::plates)
+        for (const std::string& g : spec.plate_grades)
+          out.push_back({0.0, nullptr, type, p.a, p.a, p.t, C::find_grade(g)});
+    } else {
+      for (const C::Bar& x : C::bars)
+        for (const std::string& g : spec.plate_grades)
+          out.push_back({0.0, nullptr, type, x.a, x.b, 0.0, C::find_grade(g)});
     }
+  }
+  return out;
+}
+
+std::vector<Choice> choices(const TieDesignSpec& spec, double d_min) {
+  namespace C = tie_catalogue;
+  std::vector<Choice> out;
+  const std::vector<Choice> anchors = anchor_choices(spec);
+  for (double d : C::rod_diameters) {
+    if (d < d_min - 1e-6) continue;
+    for (const std::string& g : spec.grades)
+      for (Choice c : anchors) {
+        c.d = d;
+        c.grade = C::find_grade(g);
+        out.push_back(c);
+      }
+  }
+  return out;
+}
+
+void set_anchor(Tie& t, const Choice& c) {
+  t.anchor.type = c.type;
+  t.anchor.a = c.a;
+  t.anchor.b = c.b;
+  t.anchor.t = c.type == AnchorType::Plate ? c.t : 0.0;
+  t.anchor.grade = c.anchor_grade->name;
+  t.anchor.fyk = c.anchor_grade->fyk;
+}
+
+bool set_rod(Tie& t, const Choice& c, TieEnds ends) {
+  namespace C = tie_catalogue;
+  const C::Thread* th = design_thread(c.d, *c.grade, ends, t.rod.corrosion);
+  if (!th) return false;
+  t.rod.diameter = c.d;
+  t.rod.area = units::pi * c.d * c.d / 4.0;
+  t.rod.grade = c.grade->name;
+  t.rod.fyk = c.grade->fyk;
+  t.rod.ftk = c.grade->ftk;
+  t.rod.eps_uk = c.grade->eps_uk;
+  t.rod.gamma_M0 = C::gamma_M0;
+  t.rod.E = C::steel_E;
+  t.rod.ends = ends;
+  t.rod.thread_diameter = th->d;
+  t.rod.thread_area = th->As;
+  t.rod.nut_width = th->s;
+  return true;
+}
+
+bool buildable(const Tie& t) {
+  try {
+    (void)tie_resistance(t);
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
+// The designed levels with choice c; nullopt when it cannot be built (no
+// thread, an anchor no wider than its nut or not within the wall, a
+// pretension at or above the tie's strength).
+std::optional<std::vector<Tie>> designed_levels(const TieDesignSpec& spec, const Choice& c) {
+  std::vector<Tie> levels = spec.levels;
+  for (std::size_t i = 0; i < levels.size(); ++i) {
+    Tie& t = levels[i];
+    t.existing = false;
+    if (!set_rod(t, c, spec.ends)) return std::nullopt;
+    set_anchor(t, c);
+    if (!(i < spec.pretension_given.size() && spec.pretension_given[i])) t.pretension = thermal_pretension(t);
+    if (!buildable(t)) return std::nullopt;
   }
   return levels;
 }
@@ -194,7 +271,8 @@ std::optional<std::vector<Tie>> designed_levels(const TieDesignSpec& spec, doubl
 // stop: no level broken in any analysis and every dynamic check satisfied.
 struct DynamicVerdict {
   bool ok = true;
-  bool plate_may_help = false;  // a broken masonry or plate component: a larger plate may hold
+  std::string component;  // the first broken component
+  bool broke = false;
 };
 DynamicVerdict dynamic_verdict(const TieDynamicResult& d) {
   DynamicVerdict v;
@@ -203,185 +281,287 @@ DynamicVerdict dynamic_verdict(const TieDynamicResult& d) {
     for (const TieLevelRun& l : r.levels)
       if (l.broken) {
         v.ok = false;
-        v.plate_may_help = v.plate_may_help || l.component == "bearing" || l.component == "punching" ||
-                           l.component == "anchor bending";
+        if (!v.broke) v.component = l.component;
+        v.broke = true;
       }
   for (const TieDynamicSummary& s : d.summaries) v.ok = v.ok && s.satisfied_after;
   return v;
 }
 
-TieInterventionResult intervention(const CaseFile& c, const FacadeAssessment* a) {
-  if (!c.site) throw InputError(c.file + ": /site: missing: the ties are designed and checked against the site's hazard");
-  TieInterventionResult R;
-  R.designed = c.tie_design.has_value();
-  R.intervention = R.designed || !c.new_ties.empty();
-  // Stato di fatto: the case as read (its existing ties act), no intervention.
-  R.case_before = c;
-  R.case_before.tie_design.reset();
-  R.case_before.new_ties.clear();
-  R.before = run_kinematic_case(R.case_before);
-  R.zetaE_before = zeta_E(R.before, c.method);
-  const std::size_t n_existing = c.ties.size();
+// A key of what the analyses of a state depend on: every level's restraint
+// law (per tie: point, direction, tributary length, stiffness, strength,
+// pretension, ductility, ultimate elongation, governing component). Two
+// states with the same key have the same kinematic and dynamic results.
+std::string restraint_key(const std::vector<Tie>& ties) {
+  std::string k;
+  char buf[512];
+  for (const Tie& t : ties) {
+    const TieResistance r = tie_resistance(t);
+    std::snprintf(buf, sizeof buf, "%s|%d|%.17g,%.17g|%.17g,%.17g|%.17g|%.17g|%.17g|%.17g|%d|%.17g|%s;", t.name.c_str(),
+                  t.block, t.point.x(), t.point.y(), t.direction.x(), t.direction.y(), t.spacing, r.stiffness,
+                  r.design, t.pretension, r.ductile ? 1 : 0, r.ultimate_elongation, r.governing.c_str());
+    k += buf;
+  }
+  return k;
+}
 
-  // The dynamics of a state (after): the façade's model with its levels.
-  auto state_dynamics = [&](TieInterventionResult& T) {
-    if (a) T.dynamics = run_tie_dynamics(*a, T);
+// One mechanism of the search (a single case, or a mechanism of a wall).
+struct Member {
+  const CaseFile* c = nullptr;
+  const FacadeAssessment* a = nullptr;  // null: kinematic analyses only
+  std::string name;
+  CaseFile case_before;
+  KinematicCaseResult before;
+  // The analyses of a state, by restraint_key.
+  struct Cached {
+    KinematicCaseResult after;
+    std::optional<TieDynamicResult> dynamics;
   };
-  auto dyn_of = [](const std::vector<TieDynamicRun>& runs, bool applies) {
-    return applies ? std::optional<std::map<std::string, LevelDynamics>>(level_dynamics(runs)) : std::nullopt;
-  };
+  std::map<std::string, std::shared_ptr<Cached>> memo;
+};
 
-  if (!R.designed) {
-    R.case_after = R.case_before;
-    for (const Tie& t : c.new_ties) R.case_after.ties.push_back(t);
-    R.after = R.intervention ? run_kinematic_case(R.case_after) : R.before;
-    state_dynamics(R);
-  } else {
-    const TieDesignSpec& spec = *c.tie_design;
-    // Smallest rod first (from the minimum diameter), then grade, then plate
-    // (smallest first): the first combination with every check of the
-    // mechanism and of the ties satisfied, whose ties are ductile or stay
-    // elastic, and, with a dynamic section, break in no analysis with every
-    // dynamic check satisfied. A broken thread or rod is not helped by a
-    // larger plate: the next rod is tried.
-    bool done = false;
-    // Why the combinations were rejected (for the message when none passes),
-    // and the one that came closest (the furthest stage, then the smallest D/C).
-    int n_layout = 0, n_kinematic = 0, n_checks = 0, n_broken = 0, n_dynamic = 0;
-    std::map<std::string, int> broken_by;
-    std::optional<TieInterventionResult> closest;
-    std::pair<int, double> closest_score{-1, 0.0};
-    auto consider = [&](TieInterventionResult& T, int stage) {
-      double worst = 0.0;
-      for (const CandidateResult& cr : T.after.candidates)
-        for (const CheckRow& row : cr.checks)
-          if (counts(c, row.code)) worst = std::max(worst, std::isfinite(row.dc) ? row.dc : 1e300);
-      const std::pair<int, double> score{stage, -worst};
-      if (score > closest_score) {
-        closest_score = score;
-        closest = std::move(T);
-      }
-    };
-    // A plate whose masonry (local compression, punching) limits the tie and
-    // fails is not helped by a larger rod (the same strength, a stiffer tie).
-    std::vector<char> dead(tie_catalogue::plates.size(), 0);
-    for (double d : tie_catalogue::rod_diameters) {
-      if (d < spec.min_rod_diameter - 1e-6) continue;
-      for (const std::string& grade : spec.grades) {
-        for (std::size_t ip = 0; ip < tie_catalogue::plates.size(); ++ip) {
-          if (dead[ip]) continue;
-          const tie_catalogue::Plate& p = tie_catalogue::plates[ip];
-          const std::optional<std::vector<Tie>> levels = designed_levels(spec, d, grade, p);
-          if (!levels) continue;
-          ++R.tried;
-          const TieResistance res = tie_resistance(levels->front());
-          const bool masonry = res.governing == "bearing" || res.governing == "punching";
-          TieTrial trial{d, grade, levels->front().rod.thread_diameter, p.a, p.t, res.design, res.governing,
-                         res.ductile, "", ""};
-          auto log = [&](const char* outcome, const std::string& component = "") {
-            trial.outcome = outcome;
-            trial.component = component;
-            R.trials.push_back(trial);
-          };
-          TieInterventionResult T;
-          T.designed = T.intervention = true;
-          T.case_before = R.case_before;
-          T.before = R.before;
-          T.case_after = R.case_before;
-          for (const Tie& t : c.new_ties) T.case_after.ties.push_back(t);  // given new ties, if any
-          for (const Tie& t : *levels) T.case_after.ties.push_back(t);
-          // The layout first (no analysis needed), then the mechanism's checks.
-          bool layout = true;
-          for (const Tie& t : *levels)
-            for (const TieCheckRow& row : tie_checks(t, TieDemand{}))
-              if ((row.check == "cone spacing" || row.check == "edge distance") && !row.satisfied) layout = false;
-          if (!layout) {  // the layout does not depend on the rod: this plate is out for good
-            ++n_layout;
-            log("layout");
-            dead[ip] = 1;
-            continue;
-          }
-          T.after = run_kinematic_case(T.case_after);
-          if (!every_kinematic_check_satisfied(T.after)) {
-            ++n_kinematic;
-            log("mechanism");
-            if (masonry) dead[ip] = 1;
-            consider(T, 1);
-            if (res.governing == "rod" || res.governing == "thread") break;  // a larger plate gives the same T_Rd
-            continue;
-          }
-          T.levels = level_results(T.case_after, T.after, n_existing, T.case_after.ties.size(), nullptr, false);
-          if (!all_satisfied(T.levels)) {
-            ++n_checks;
-            log("tie");
-            if (masonry) dead[ip] = 1;
-            consider(T, 2);
-            // The same T_Rd with a larger plate, and no ductility to gain from one (the thread's is fixed).
-            if ((res.governing == "rod" || res.governing == "thread") && (res.ductile || res.thread < res.hierarchy_demand))
-              break;
-            continue;
-          }
-          state_dynamics(T);
-          const DynamicVerdict v = dynamic_verdict(T.dynamics);
-          if (!v.ok) {
-            bool broke = false;
-            std::string comp;
-            for (const TieDynamicRun& r : T.dynamics.runs)
-              for (const TieLevelRun& l : r.levels)
-                if (l.broken && !broke) {
-                  broke = true;
-                  comp = l.component;
-                  ++broken_by[l.component];
-                }
-            ++(broke ? n_broken : n_dynamic);
-            log(broke ? "broken" : "dynamic", comp);
-            if (masonry) dead[ip] = 1;
-            consider(T, 3);
-            if (v.plate_may_help) continue;
-            break;  // the thread, the rod or the wall itself: the next rod or grade
-          }
-          log("accepted");
-          R.case_after = std::move(T.case_after);
-          R.after = std::move(T.after);
-          R.dynamics = std::move(T.dynamics);
-          done = true;
-          break;
+// A state of the wall: the ties of every member in the stato di progetto.
+struct Proposal {
+  std::optional<Choice> choice;       // the design levels' rod and anchor (none: no level to design)
+  std::vector<Tie> design;            // the designed levels (all of the wall's)
+  std::vector<TieChange> changes;     // to existing levels
+};
+
+// The ties of member m in the proposal: its existing ties (changed or
+// removed), its given new ties, the designed levels it holds (by name).
+std::vector<Tie> member_ties(const Member& m, const Proposal& p) {
+  std::vector<Tie> out;
+  for (const Tie& t : m.c->ties) {
+    const TieChange* ch = nullptr;
+    for (const TieChange& x : p.changes)
+      if (x.level == t.name) ch = &x;
+    if (!ch) out.push_back(t);
+    else if (ch->after) out.push_back(*ch->after);
+  }
+  for (const Tie& t : m.c->new_ties) out.push_back(t);
+  if (m.c->tie_design)
+    for (const Tie& d : m.c->tie_design->levels)
+      for (const Tie& t : p.design)
+        if (t.name == d.name) {
+          Tie x = t;  // the wall's level, with this mechanism's anchoring of it (block, defaults)
+          x.block = d.block;
+          out.push_back(x);
         }
-        if (done) break;
-      }
-      if (done) break;
+  return out;
+}
+
+// What a proposal gives on one member.
+struct MemberEval {
+  TieInterventionResult T;
+  int stage = 0;  // 1 a check of the mechanism, 2 a check of a tie, 3 the dynamics, 4 every check satisfied
+  std::vector<std::string> failing_existing;  // existing levels (by name) whose checks fail
+  bool only_existing = false;                 // every failure is an existing level's check
+  std::string component;                      // the first broken component (stage 3)
+  bool broke = false;
+  double worst = 0.0;                          // the largest D/C of the mechanism's checks
+  int cost = 0;                                // analyses run (not reused): kinematic 1, dynamic set 20
+};
+
+MemberEval evaluate(Member& m, const Proposal& p) {
+  MemberEval E;
+  TieInterventionResult& T = E.T;
+  T.designed = m.c->tie_design.has_value();
+  T.intervention = true;
+  T.case_before = m.case_before;
+  T.before = m.before;
+  T.case_after = m.case_before;
+  T.case_after.ties = member_ties(m, p);
+  T.case_after.new_ties.clear();
+  T.case_after.tie_design.reset();
+  const std::string key = restraint_key(T.case_after.ties);
+  std::shared_ptr<Member::Cached>& cache = m.memo[key];
+  if (!cache) {
+    cache = std::make_shared<Member::Cached>();
+    cache->after = run_kinematic_case(T.case_after, false);  // a trial: no safety indices (finish)
+    E.cost += 1;
+  }
+  T.after = cache->after;
+  for (const CandidateResult& cr : T.after.candidates)
+    for (const CheckRow& row : cr.checks)
+      if (counts(*m.c, row.code)) E.worst = std::max(E.worst, std::isfinite(row.dc) ? row.dc : 1e300);
+  const bool kin_ok = every_kinematic_check_satisfied(T.after);
+  auto failing = [&](const std::vector<TieLevelResult>& lv) {
+    E.failing_existing.clear();
+    bool others = false;
+    for (const TieLevelResult& l : lv) {
+      if (l.satisfied) continue;
+      if (l.tie.existing) E.failing_existing.push_back(l.tie.name);
+      else others = true;
     }
-    R.found = done;
-    if (!done) {
-      std::string why;
-      auto add = [&](int n, const std::string& what) {
-        if (n > 0) why += (why.empty() ? "" : "; ") + std::to_string(n) + " " + what;
-      };
-      add(n_layout, "with the punching wedges of adjacent ties overlapping or beyond the wall's ends");
-      add(n_kinematic, "with a check of the mechanism not satisfied");
-      add(n_checks, "with a check of the tie not satisfied (it would not stay elastic at the displacement demand)");
-      std::string comps;
-      for (const auto& [k, n] : broken_by) comps += (comps.empty() ? "" : ", ") + k + " " + std::to_string(n);
-      add(n_broken, "with the tie broken in a dynamic analysis (" + comps + ")");
-      add(n_dynamic, "with the dynamic check not satisfied");
-      R.message = "no rod of the list (from " + std::to_string(static_cast<int>(std::lround(spec.min_rod_diameter * 1e3))) +
-                  " mm) with a plate of the list makes every check pass with a tie that is ductile or stays elastic in "
-                  "every analysis (" + std::to_string(R.tried) + " combinations: " + (why.empty() ? "none buildable" : why) +
-                  "); add ties along the wall or tie levels, use upset ends, or consider another intervention";
-      // Show the combination that came closest, so that the reader sees how far it is.
-      if (closest) {
-        R.case_after = std::move(closest->case_after);
-        R.after = std::move(closest->after);
-        R.dynamics = std::move(closest->dynamics);
-      } else {
-        R.case_after = R.case_before;
-        for (const Tie& t : c.new_ties) R.case_after.ties.push_back(t);
-        R.after = run_kinematic_case(R.case_after);
-        state_dynamics(R);
+    return others;
+  };
+  const bool dynamics_follow = m.a && m.a->mechanism_dynamics && !m.a->runs.empty();
+  T.levels = level_results(T.case_after, T.after, 0, T.case_after.ties.size(), nullptr, false, dynamics_follow);
+  const bool new_fail = failing(T.levels);
+  if (!kin_ok) {
+    E.stage = 1;
+    return E;
+  }
+  if (new_fail || !E.failing_existing.empty()) {
+    E.stage = 2;
+    E.only_existing = !new_fail;
+    return E;
+  }
+  if (m.a) {
+    if (!cache->dynamics) {
+      cache->dynamics = run_tie_dynamics(*m.a, T);
+      E.cost += 20;
+    }
+    T.dynamics = *cache->dynamics;
+    if (!T.dynamics.applies && dynamics_follow) {  // no tied dynamics after all: the static demand
+      T.levels = level_results(T.case_after, T.after, 0, T.case_after.ties.size(), nullptr, false);
+      const bool others = failing(T.levels);
+      if (others || !E.failing_existing.empty()) {
+        E.stage = 2;
+        E.only_existing = !others;
+        return E;
+      }
+    }
+    if (T.dynamics.applies) {
+      const std::map<std::string, LevelDynamics> dyn = level_dynamics(T.dynamics.runs);
+      T.levels = level_results(T.case_after, T.after, 0, T.case_after.ties.size(), &dyn, false);
+      const bool others = failing(T.levels);
+      const DynamicVerdict v = dynamic_verdict(T.dynamics);
+      if (!v.ok || others || !E.failing_existing.empty()) {
+        E.stage = 3;
+        E.broke = v.broke;
+        E.component = v.component;
+        E.only_existing = !others && !E.failing_existing.empty();
+        // A broken new level or a failed dynamic check is not the existing ties' alone.
+        if (v.broke) {
+          bool new_broke = false;
+          for (const TieDynamicRun& r : T.dynamics.runs)
+            for (const TieLevelRun& l : r.levels)
+              for (const TieLevelResult& x : T.levels)
+                if (l.broken && x.tie.name == l.name && !x.tie.existing) new_broke = true;
+          if (new_broke) E.only_existing = false;
+        }
+        for (const TieDynamicSummary& sm : T.dynamics.summaries)
+          if (!sm.satisfied_after && E.failing_existing.empty()) E.only_existing = false;
+        return E;
       }
     }
   }
-  // Each state's levels, with the dynamics of that state.
+  E.stage = 4;
+  return E;
+}
+
+// The changes tried for the existing levels that fail, in the order of the
+// least change (docs/theory/ties.md §5): for each level a new anchor on its
+// rod (the design's anchors, smallest first, each anchor grade), then a new
+// rod: the designed tie `x` (its rod, ends and anchor) through the same holes,
+// or without a level to design the design's rods from the level's own
+// diameter up with each anchor (ductile ones first), then its removal; for
+// several levels, the tuples of their options by the largest rank, then the
+// sum of the ranks.
+std::vector<std::vector<TieChange>> change_options(const TieDesignSpec& spec, const std::vector<const Tie*>& failing,
+                                                   const std::optional<Choice>& x, std::size_t cap) {
+  std::vector<std::vector<TieChange>> per;
+  for (const Tie* t : failing) {
+    std::vector<TieChange> opts;
+    for (const Choice& c : anchor_choices(spec)) {
+      Tie y = *t;
+      set_anchor(y, c);
+      if (buildable(y)) opts.push_back({t->name, "anchor", *t, y});
+    }
+    std::vector<Choice> rods;
+    if (x) rods.push_back(*x);
+    else rods = choices(spec, std::max(spec.min_rod_diameter, t->rod.diameter));
+    std::vector<TieChange> ductile, elastic;  // a new rod: ductile ones first, as the design
+    for (const Choice& c : rods) {
+      Tie y = *t;
+      y.existing = false;  // a new rod: a new tie through the same holes
+      if (!set_rod(y, c, spec.ends)) continue;
+      set_anchor(y, c);
+      y.pretension = thermal_pretension(y);
+      if (!buildable(y)) continue;
+      (tie_resistance(y).ductile ? ductile : elastic).push_back({t->name, "rod", *t, y});
+    }
+    opts.insert(opts.end(), ductile.begin(), ductile.end());
+    opts.insert(opts.end(), elastic.begin(), elastic.end());
+    opts.push_back({t->name, "removed", *t, std::nullopt});
+    per.push_back(std::move(opts));
+  }
+  std::vector<std::vector<std::size_t>> tuples{{}};
+  for (const auto& o : per) {
+    std::vector<std::vector<std::size_t>> next;
+    for (const auto& tu : tuples)
+      for (std::size_t i = 0; i < o.size() && next.size() < cap; ++i) {
+        auto y = tu;
+        y.push_back(i);
+        next.push_back(y);
+      }
+    tuples = std::move(next);
+  }
+  std::stable_sort(tuples.begin(), tuples.end(), [](const auto& a, const auto& b) {
+    const std::size_t ma = a.empty() ? 0 : *std::max_element(a.begin(), a.end());
+    const std::size_t mb = b.empty() ? 0 : *std::max_element(b.begin(), b.end());
+    if (ma != mb) return ma < mb;
+    std::size_t sa = 0, sb = 0;
+    for (std::size_t v : a) sa += v;
+    for (std::size_t v : b) sb += v;
+    return sa < sb;
+  });
+  std::vector<std::vector<TieChange>> out;
+  for (const auto& tu : tuples) {
+    std::vector<TieChange> ch;
+    for (std::size_t k = 0; k < tu.size(); ++k) ch.push_back(per[k][tu[k]]);
+    out.push_back(std::move(ch));
+  }
+  return out;
+}
+
+std::string changes_text(const std::vector<TieChange>& ch) {
+  std::string s;
+  for (const TieChange& c : ch) s += (s.empty() ? "" : "; ") + c.level + ": " + describe_change(c);
+  return s;
+}
+
+// The budget of one design's analyses (docs/theory/ties.md §5): a kinematic
+// analysis of a mechanism counts 1, the dynamic analyses of a state 20 (their
+// usual cost ratio), a state already analysed nothing; beyond it the search
+// stops and says so (no hang on a wall no tie can hold).
+constexpr int max_cost = 1000;
+
+// The results of the members in a final state (the accepted proposal, the one
+// that came closest, or the only one without a design): every level with the
+// force each check needs and its dynamics, both states' checks, zeta_E.
+TieInterventionResult finish(Member& m, const Proposal& p, bool designed) {
+  TieInterventionResult R;
+  if (designed || !m.c->new_ties.empty() || !p.changes.empty()) {
+    R = std::move(evaluate(m, p).T);
+    R.intervention = true;
+  } else {  // one state: the case as it is
+    R.case_before = R.case_after = m.case_before;
+    R.before = R.after = m.before;
+    R.intervention = false;
+    if (m.a) R.dynamics = run_tie_dynamics(*m.a, R);
+  }
+  R.designed = designed;
+  if (R.intervention && !R.dynamics.applies && m.a) {
+    // The dynamics of the state even when the evaluation stopped before them.
+    const std::string key = restraint_key(R.case_after.ties);
+    std::shared_ptr<Member::Cached>& cache = m.memo[key];
+    if (!cache) {
+      cache = std::make_shared<Member::Cached>();
+      cache->after = R.after;
+    }
+    if (!cache->dynamics) cache->dynamics = run_tie_dynamics(*m.a, R);
+    R.dynamics = *cache->dynamics;
+  }
+  // The state adopted, with its checks' safety indices (issue 41; a trial's
+  // analysis leaves them out: they cost 0.3 ms a check and only ζE reads them).
+  if (R.intervention) R.after = run_kinematic_case(R.case_after);
+  R.zetaE_before = zeta_E(R.before, m.c->method);
+  const std::size_t n_existing = m.c->ties.size();
+  auto dyn_of = [](const std::vector<TieDynamicRun>& runs, bool applies) {
+    return applies ? std::optional<std::map<std::string, LevelDynamics>>(level_dynamics(runs)) : std::nullopt;
+  };
   const auto dyn_before = dyn_of(R.dynamics.runs_before, R.dynamics.applies);
   const auto dyn_after = dyn_of(R.dynamics.runs, R.dynamics.applies);
   R.levels_before = level_results(R.case_before, R.before, 0, n_existing, dyn_before ? &*dyn_before : nullptr);
@@ -389,15 +569,267 @@ TieInterventionResult intervention(const CaseFile& c, const FacadeAssessment* a)
                                             dyn_after ? &*dyn_after : nullptr)
                             : R.levels_before;
   R.passes_before = every_kinematic_check_satisfied(R.before) && all_satisfied(R.levels_before);
-  R.passes_after = every_kinematic_check_satisfied(R.after) && all_satisfied(R.levels);
-  R.zetaE_after = R.intervention ? zeta_E(R.after, c.method) : R.zetaE_before;
-  if (R.designed) {
+  R.passes_after = every_kinematic_check_satisfied(R.after) && all_satisfied(R.levels) &&
+                   dynamic_verdict(R.dynamics).ok;
+  R.zetaE_after = R.intervention ? zeta_E(R.after, m.c->method) : R.zetaE_before;
+  for (const TieChange& ch : p.changes)
+    for (const Tie& t : m.c->ties)
+      if (t.name == ch.level) R.changes.push_back(ch);
+  for (const TieLevelResult& l : R.levels)
+    if (l.tie.existing && !l.satisfied) R.failing_existing.push_back(l.tie.name);
+  if (designed) {
     bool ductile = true;
     for (const TieLevelResult& l : R.levels)
       if (!l.tie.existing) ductile = ductile && l.resistance.ductile;
     R.regime = ductile ? "ductile" : "elastic";
   }
   return R;
+}
+
+// The search over the members together (docs/theory/ties.md §5).
+std::vector<TieInterventionResult> search(std::vector<Member>& members) {
+  // The design: the union of the members' design levels (by name) and their spec.
+  const TieDesignSpec* spec = nullptr;
+  TieDesignSpec wall;
+  for (const Member& m : members)
+    if (m.c->tie_design) {
+      if (!spec) {
+        wall = *m.c->tie_design;
+        wall.levels.clear();
+        wall.pretension_given.clear();
+        spec = &wall;
+      }
+      const TieDesignSpec& d = *m.c->tie_design;
+      for (std::size_t i = 0; i < d.levels.size(); ++i) {
+        bool seen = false;
+        for (const Tie& t : wall.levels) seen = seen || t.name == d.levels[i].name;
+        if (seen) continue;
+        wall.levels.push_back(d.levels[i]);
+        wall.pretension_given.push_back(i < d.pretension_given.size() && d.pretension_given[i]);
+      }
+    }
+  std::vector<TieInterventionResult> out;
+  if (!spec) {  // no design: each mechanism as it is given
+    for (Member& m : members) out.push_back(finish(m, Proposal{}, false));
+    return out;
+  }
+  int tried = 0, evaluations = 0, cost = 0;
+  std::vector<TieTrial> trials;
+  std::map<std::string, int> why;   // outcome -> count
+  std::map<std::string, int> broken_by;
+  std::optional<Proposal> accepted, closest;
+  std::pair<int, double> closest_score{-1, 0.0};
+  bool truncated = false;
+  // Every existing level of the wall, by name (its first member's).
+  auto existing_level = [&](const std::string& name) -> const Tie* {
+    for (const Member& m : members)
+      for (const Tie& t : m.c->ties)
+        if (t.name == name) return &t;
+    return nullptr;
+  };
+  // Evaluates a proposal on every member, in order, to the first that fails.
+  struct WallEval {
+    int stage = 4;
+    std::vector<std::string> failing_existing;
+    bool only_existing = true;
+    std::string component, mechanism;
+    bool broke = false;
+    double worst = 0.0;
+  };
+  // The members in the order they are evaluated: the one that failed last
+  // first (the same results, sooner: a state fails at its first failing member).
+  std::vector<std::size_t> order(members.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  auto evaluate_all = [&](const Proposal& p) {
+    WallEval W;
+    ++evaluations;
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      Member& m = members[order[k]];
+      const MemberEval E = evaluate(m, p);
+      cost += E.cost;
+      W.worst = std::max(W.worst, E.worst);
+      for (const std::string& n : E.failing_existing)
+        if (std::find(W.failing_existing.begin(), W.failing_existing.end(), n) == W.failing_existing.end())
+          W.failing_existing.push_back(n);
+      if (E.stage < 4) {
+        W.stage = E.stage;
+        W.only_existing = E.only_existing;
+        W.component = E.component;
+        W.broke = E.broke;
+        W.mechanism = m.name;
+        std::rotate(order.begin(), order.begin() + long(k), order.begin() + long(k) + 1);
+        return W;
+      }
+    }
+    return W;
+  };
+  auto log = [&](const Proposal& p, const WallEval& W) {
+    TieTrial t;
+    if (p.choice) {
+      const Choice& c = *p.choice;
+      t.diameter = c.d;
+      t.grade = c.grade->name;
+      t.anchor = c.type;
+      t.plate = c.a;
+      t.plate_t = c.type == AnchorType::Plate ? c.t : c.b;
+      t.plate_grade = c.anchor_grade->name;
+      t.T_Rd = std::numeric_limits<double>::infinity();
+      t.ductile = true;
+      for (const Tie& x : p.design) {
+        const TieResistance r = tie_resistance(x);
+        t.thread = x.rod.thread_diameter;
+        if (r.design < t.T_Rd) t.T_Rd = r.design, t.governing = r.governing;
+        t.ductile = t.ductile && r.ductile;
+      }
+    }
+    t.changes = changes_text(p.changes);
+    t.mechanism = members.size() > 1 ? W.mechanism : "";
+    t.component = W.component;
+    t.outcome = W.stage == 4 ? "accepted"
+                : W.stage == 1 ? "mechanism"
+                : W.only_existing ? "existing"
+                : W.stage == 2 ? "tie"
+                : W.broke ? "broken" : "dynamic";
+    ++why[t.outcome];
+    if (t.outcome == "broken") ++broken_by[W.component];
+    trials.push_back(t);
+  };
+  auto consider = [&](const Proposal& p, const WallEval& W) {
+    const std::pair<int, double> score{W.stage, -W.worst};
+    if (score > closest_score) {
+      closest_score = score;
+      closest = p;
+    }
+  };
+  // A proposal passes when every member passes and the final results (with
+  // the force each check needs) confirm it.
+  std::vector<TieInterventionResult> confirmed;
+  auto confirm = [&](const Proposal& p) {
+    confirmed.clear();
+    for (Member& m : members) {
+      confirmed.push_back(finish(m, p, true));
+      if (!confirmed.back().passes_after) return false;
+    }
+    return true;
+  };
+  // The designed levels' choices, ductile ones first (two passes over the order).
+  std::vector<std::optional<Choice>> xs;
+  if (wall.levels.empty()) xs.push_back(std::nullopt);
+  else
+    for (const Choice& c : choices(wall, wall.min_rod_diameter)) xs.push_back(c);
+  for (int pass = 0; pass < 2 && !accepted && !truncated; ++pass) {
+    for (const std::optional<Choice>& x : xs) {
+      if (accepted || truncated) break;
+      Proposal p;
+      p.choice = x;
+      if (x) {
+        const std::optional<std::vector<Tie>> lv = designed_levels(wall, *x);
+        if (!lv) continue;
+        p.design = *lv;
+        bool ductile = true;
+        for (const Tie& t : p.design) ductile = ductile && tie_resistance(t).ductile;
+        if ((pass == 0) != ductile) continue;
+      } else if (pass == 1) {
+        continue;
+      }
+      ++tried;
+      if (cost >= max_cost) {
+        truncated = true;
+        break;
+      }
+      const WallEval W = evaluate_all(p);
+      log(p, W);
+      consider(p, W);
+      if (W.stage == 4) {
+        if (confirm(p)) accepted = p;
+        continue;
+      }
+      // An existing level that fails: the least change that makes the state pass.
+      if (W.failing_existing.empty()) continue;
+      std::vector<const Tie*> failing;
+      for (const std::string& n : W.failing_existing)
+        if (const Tie* t = existing_level(n)) failing.push_back(t);
+      for (const std::vector<TieChange>& ch : change_options(wall, failing, x, 4096)) {
+        if (cost >= max_cost) {
+          truncated = true;
+          break;
+        }
+        Proposal q = p;
+        q.changes = ch;
+        const WallEval V = evaluate_all(q);
+        log(q, V);
+        consider(q, V);
+        if (V.stage == 4 && confirm(q)) {
+          accepted = q;
+          break;
+        }
+      }
+    }
+  }
+  const Proposal& final_p = accepted ? *accepted : closest ? *closest : Proposal{};
+  std::string message;
+  if (!accepted) {
+    std::string reasons;
+    auto add = [&](const char* key, const std::string& what) {
+      const auto it = why.find(key);
+      if (it != why.end() && it->second > 0)
+        reasons += (reasons.empty() ? "" : "; ") + std::to_string(it->second) + " " + what;
+    };
+    add("mechanism", "with a check of a mechanism not satisfied");
+    add("tie", "with a check of a new tie not satisfied");
+    add("existing", "with a check of an existing tie not satisfied");
+    std::string comps;
+    for (const auto& [k, n] : broken_by) comps += (comps.empty() ? "" : ", ") + k + " " + std::to_string(n);
+    add("broken", "with a tie broken in a dynamic analysis (" + comps + ")");
+    add("dynamic", "with the dynamic check not satisfied");
+    message = "no rod and anchor of the lists" +
+              std::string(wall.levels.empty() ? "" : " (rods from " +
+                                                        std::to_string(static_cast<int>(std::lround(wall.min_rod_diameter * 1e3))) +
+                                                        " mm)") +
+              ", with the least change to the existing ties that fail, makes every check pass (" +
+              std::to_string(evaluations) + " states analysed: " + (reasons.empty() ? "none buildable" : reasons) + ")" +
+              (truncated ? "; the search stopped at its budget of analyses (" + std::to_string(max_cost) +
+                               " units: a kinematic analysis 1, a state's dynamic analyses 20; docs/theory/ties.md "
+                               "§5): the later combinations were not tried"
+                         : "") +
+              "; add ties along the wall or tie levels, use upset ends or bar anchors, or consider another intervention";
+  }
+  for (std::size_t i = 0; i < members.size(); ++i) {
+    TieInterventionResult R = accepted && i < confirmed.size() ? std::move(confirmed[i]) : finish(members[i], final_p, true);
+    R.found = accepted.has_value();
+    R.message = message;
+    R.tried = tried;
+    R.trials = trials;
+    if (members.size() > 1)
+      for (const Member& m : members) R.wall_members.push_back(m.name);
+    out.push_back(std::move(R));
+  }
+  return out;
+}
+
+std::vector<TieInterventionResult> run_members(const std::vector<const CaseFile*>& cases,
+                                               const std::vector<const FacadeAssessment*>& assessments,
+                                               const std::vector<std::string>& names) {
+  std::vector<Member> members(cases.size());
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const CaseFile& c = *cases[i];
+    if (!c.site)
+      throw InputError(c.file + ": /site: missing: the ties are designed and checked against the site's hazard");
+    Member& m = members[i];
+    m.c = &c;
+    m.a = assessments[i];
+    m.name = names[i];
+    // Stato di fatto: the case as read (its existing ties act), no intervention.
+    m.case_before = c;
+    m.case_before.tie_design.reset();
+    m.case_before.new_ties.clear();
+    m.before = run_kinematic_case(m.case_before);
+  }
+  return search(members);
+}
+
+TieInterventionResult intervention(const CaseFile& c, const FacadeAssessment* a) {
+  return run_members({&c}, {a}, {""}).front();
 }
 
 // One analysis as the ties section reports it: each level's outcome per tie;
@@ -531,6 +963,37 @@ TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventi
   R.note = t.intervention ? "the façade's analyses (the stato di fatto) repeated with the ties of the intervention"
                           : "the façade's analyses are those of the wall with its existing ties";
   return R;
+}
+
+std::string describe_change(const TieChange& c) {
+  char b[256];
+  if (!c.after) return "removed";
+  const Tie& t = *c.after;
+  std::string anchor;
+  if (t.anchor.type == AnchorType::Plate)
+    std::snprintf(b, sizeof b, "plate %.0f x %.0f x %.0f mm %s", t.anchor.a * 1e3, t.anchor.b * 1e3, t.anchor.t * 1e3,
+                  t.anchor.grade.c_str());
+  else
+    std::snprintf(b, sizeof b, "bar anchor %.0f mm, diam. %.0f mm %s", t.anchor.a * 1e3, t.anchor.b * 1e3,
+                  t.anchor.grade.c_str());
+  anchor = b;
+  if (c.kind == "anchor") return "new anchor: " + anchor;
+  std::snprintf(b, sizeof b, "new rod diam. %.0f mm %s, %s ends M%.0f, ", t.rod.diameter * 1e3, t.rod.grade.c_str(),
+                to_string(t.rod.ends), t.rod.thread_diameter * 1e3);
+  return b + anchor;
+}
+
+std::vector<TieInterventionResult> assess_wall_ties(const std::vector<const FacadeAssessment*>& members,
+                                                    const std::vector<std::string>& names) {
+  std::vector<const CaseFile*> cases;
+  for (const FacadeAssessment* a : members) {
+    if (a->dynamic && a->dynamic->options.overturn != OverturnCriterion::theta_u)
+      throw InputError(a->kase.file + ": /dynamic/overturn_at: a wall held by tie rods (\"ties\" or \"design\") "
+                       "collapses where its net restoring moment with the ties at their strength vanishes; \"half_pi\" "
+                       "is not available with ties");
+    cases.push_back(&a->kase);
+  }
+  return run_members(cases, members, names);
 }
 
 std::optional<TieInterventionResult> assess_ties(const FacadeAssessment& a) {

@@ -32,6 +32,92 @@ bool same_check(const CheckRow& a, const CheckRow& b) {
   return a.code == b.code && a.limit_state == b.limit_state && a.kind == b.kind && a.location == b.location;
 }
 
+
+// The check's D/C along the axis x: TR (years) on the site's hazard, or ag (g) with the shape held.
+struct DcAlongAxis {
+  const KinematicResult& r;
+  const CheckRow& row;
+  const HazardAxis& axis;
+  LimitState ls;
+  HazardParams h_D;  // the limit state's hazard as the check used it
+  CheckInput one;    // the check's inputs, its code only
+
+  HazardParams hazard(double x) const {
+    if (axis) return axis(x);
+    HazardParams h = h_D;
+    h.ag_g = x;
+    return h;
+  }
+  double operator()(double x) {
+    one.hazard[ls] = hazard(x);
+    for (const CheckRow& c : run_code_checks(r, one))
+      if (same_check(c, row)) return c.dc;
+    return nan;
+  }
+};
+
+// The scan of the axis: log-spaced points, the tabulated return periods and
+// x_D (whose D/C is the row's own), with the D/C at each.
+struct Scan {
+  std::vector<double> xs, fs;
+  std::size_t iD = 0;  // index of x_D
+};
+
+Scan scan(DcAlongAxis& dc, double x_lo, double x_hi, double x_D, double dc_D) {
+  Scan s;
+  const double decades = std::log10(x_hi / x_lo);
+  const int n = int(std::ceil(decades * scan_per_decade));
+  for (int i = 0; i <= n; ++i) s.xs.push_back(x_lo * std::pow(10.0, decades * i / n));
+  if (dc.axis) s.xs.insert(s.xs.end(), grid_return_periods.begin(), grid_return_periods.end());
+  s.xs.push_back(x_D);
+  std::sort(s.xs.begin(), s.xs.end());
+  s.xs.erase(std::unique(s.xs.begin(), s.xs.end()), s.xs.end());
+  s.fs.resize(s.xs.size());
+  for (std::size_t i = 0; i < s.xs.size(); ++i) s.fs[i] = s.xs[i] == x_D ? dc_D : dc(s.xs[i]);
+  s.iD = std::size_t(std::find(s.xs.begin(), s.xs.end(), x_D) - s.xs.begin());
+  return s;
+}
+
+// The crossing D/C = 1 between xs[k-1] (D/C <= 1) and xs[k] (D/C > 1), by Brent in ln x.
+double crossing(DcAlongAxis& dc, const Scan& s, std::size_t k) {
+  const double c = detail::brent_root([&](double u) { return dc(std::exp(u)) - 1.0; }, std::log(s.xs[k - 1]),
+                                      std::log(s.xs[k]), ln_tol, 0.0);
+  return std::isfinite(c) ? std::exp(c) : 0.5 * (s.xs[k - 1] + s.xs[k]);
+}
+
+// The crossing on the side of the check: a failing check's lowest x at which
+// it fails; a satisfied check's lowest x above x_D at which it fails. The
+// other side's crossing marks a D/C that is not monotonic.
+void locate(CheckIndex& ix, DcAlongAxis& dc, const Scan& s, bool failing, double& x_C) {
+  const bool tr = static_cast<bool>(dc.axis);
+  const double x_lo = s.xs.front(), x_hi = s.xs.back();
+  if (failing) {
+    std::size_t k = 0;
+    while (k < s.iD && !(s.fs[k] > 1.0)) ++k;
+    x_C = k == 0 ? x_lo : crossing(dc, s, k);
+    ix.bound = k == 0 ? -1 : 0;
+    for (std::size_t j = k; j < s.iD; ++j)
+      if (!(s.fs[j] > 1.0)) {  // satisfied again between x_C and x_D
+        ix.non_monotonic = true;
+        std::size_t last = s.iD;  // the crossing nearest below x_D, where the check fails for good
+        while (last > 0 && s.fs[last - 1] > 1.0) --last;
+        ix.other_crossing_TR = tr ? crossing(dc, s, last) : nan;
+        break;
+      }
+    return;
+  }
+  std::size_t k = s.iD + 1;
+  while (k < s.xs.size() && !(s.fs[k] > 1.0)) ++k;
+  x_C = k == s.xs.size() ? x_hi : crossing(dc, s, k);
+  ix.bound = k == s.xs.size() ? +1 : 0;
+  for (std::size_t j = 0; j < s.iD; ++j)
+    if (s.fs[j] > 1.0) {  // the check fails at a lower x
+      ix.non_monotonic = true;
+      ix.other_crossing_TR = tr ? (j == 0 ? x_lo : crossing(dc, s, j)) : nan;
+      break;
+    }
+}
+
 }  // namespace
 
 CheckIndex check_index(const KinematicResult& r, const CheckInput& in, const CheckRow& row, const HazardAxis& axis) {
@@ -45,102 +131,33 @@ CheckIndex check_index(const KinematicResult& r, const CheckInput& in, const Che
     return ix;
   }
   const LimitState ls = parse_limit_state(row.limit_state);
-  const HazardParams& h_D = in.hazard.at(ls);
-  CheckInput one = in;
-  one.codes = {parse_code_edition(row.code)};
-  one.sld = ls == LimitState::SLD;
-  const bool has_axis = static_cast<bool>(axis);
-  ix.shape_held = !has_axis;
-  // The hazard at x: the site's at TR = x, or the limit state's with ag = x (g).
-  auto hazard = [&](double x) {
-    if (has_axis) return axis(x);
-    HazardParams h = h_D;
-    h.ag_g = x;
-    return h;
-  };
-  auto dc = [&](double x) {
-    one.hazard[ls] = hazard(x);
-    for (const CheckRow& c : run_code_checks(r, one))
-      if (same_check(c, row)) return c.dc;
-    return nan;
-  };
-  const double x_D = has_axis ? h_D.TR : h_D.ag_g;
-  const double x_lo = has_axis ? check_index_tr_min : check_index_ag_min_g;
-  const double x_hi = has_axis ? check_index_tr_max : check_index_ag_max_g;
+  DcAlongAxis dc{r, row, axis, ls, in.hazard.at(ls), in};
+  dc.one.codes = {parse_code_edition(row.code)};
+  dc.one.sld = ls == LimitState::SLD;
+  const bool tr = static_cast<bool>(axis);
+  ix.shape_held = !tr;
+  const double x_D = tr ? dc.h_D.TR : dc.h_D.ag_g;
+  const double x_lo = tr ? check_index_tr_min : check_index_ag_min_g;
+  const double x_hi = tr ? check_index_tr_max : check_index_ag_max_g;
   if (!(x_D >= x_lo && x_D <= x_hi)) {
     ix.note = "no index: the limit state's hazard lies outside the searched range";
     return ix;
   }
-  ix.TR_demand = has_axis ? x_D : nan;
-  ix.ag_demand_g = h_D.ag_g;
-
-  // The scan grid: log-spaced, the tabulated return periods and x_D.
-  std::vector<double> xs;
-  const double decades = std::log10(x_hi / x_lo);
-  const int n = int(std::ceil(decades * scan_per_decade));
-  for (int i = 0; i <= n; ++i) xs.push_back(x_lo * std::pow(10.0, decades * i / n));
-  if (has_axis) xs.insert(xs.end(), grid_return_periods.begin(), grid_return_periods.end());
-  xs.push_back(x_D);
-  std::sort(xs.begin(), xs.end());
-  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
-  std::vector<double> fs(xs.size());
-  for (std::size_t i = 0; i < xs.size(); ++i) fs[i] = xs[i] == x_D ? row.dc : dc(xs[i]);
-  const std::size_t iD = std::size_t(std::find(xs.begin(), xs.end(), x_D) - xs.begin());
-  // The crossing D/C = 1 between xs[k-1] (f <= 1) and xs[k] (f > 1), in ln x.
-  auto crossing = [&](std::size_t k) {
-    const double c = detail::brent_root([&](double u) { return dc(std::exp(u)) - 1.0; }, std::log(xs[k - 1]),
-                                        std::log(xs[k]), ln_tol, 0.0);
-    return std::isfinite(c) ? std::exp(c) : 0.5 * (xs[k - 1] + xs[k]);
-  };
+  ix.TR_demand = tr ? x_D : nan;
+  ix.ag_demand_g = dc.h_D.ag_g;
   const bool failing = row.dc > 1.0;
   double x_C = nan;
-  if (failing) {
-    // The lowest x at which the check fails: the first point of the scan above 1.
-    std::size_t k = 0;
-    while (k < iD && !(fs[k] > 1.0)) ++k;
-    if (k == 0) {
-      x_C = x_lo;
-      ix.bound = -1;
-    } else {
-      x_C = crossing(k);
-    }
-    // Satisfied again between x_C and x_D?
-    for (std::size_t j = k; j < iD; ++j)
-      if (!(fs[j] > 1.0)) {
-        ix.non_monotonic = true;
-        // The crossing nearest below x_D, where the check fails for good.
-        std::size_t last = iD;
-        while (last > 0 && fs[last - 1] > 1.0) --last;
-        ix.other_crossing_TR = has_axis ? crossing(last) : nan;
-        break;
-      }
-  } else {
-    // The lowest x above x_D at which the check fails.
-    std::size_t k = iD + 1;
-    while (k < xs.size() && !(fs[k] > 1.0)) ++k;
-    if (k == xs.size()) {
-      x_C = x_hi;
-      ix.bound = +1;
-    } else {
-      x_C = crossing(k);
-    }
-    for (std::size_t j = 0; j < iD; ++j)
-      if (fs[j] > 1.0) {
-        ix.non_monotonic = true;
-        ix.other_crossing_TR = has_axis ? (j == 0 ? x_lo : crossing(j)) : nan;
-        break;
-      }
-  }
-  const double ag_C = has_axis ? hazard(x_C).ag_g : x_C;
+  locate(ix, dc, scan(dc, x_lo, x_hi, x_D, row.dc), failing, x_C);
+
   ix.defined = true;
-  ix.ag_capacity_g = ag_C;
-  ix.zeta = ag_C / ix.ag_demand_g;
+  ix.ag_capacity_g = tr ? dc.hazard(x_C).ag_g : x_C;
+  ix.zeta = ix.ag_capacity_g / ix.ag_demand_g;
   // A crossing within rounding of x_D can give ag(TR_C) == ag(TR_D) in
   // floating point: the index keeps the side of its check (zetaE < 1 exactly
   // where D/C > 1), the next representable number.
   if (failing && !(ix.zeta < 1.0)) ix.zeta = std::nextafter(1.0, 0.0);
   if (!failing && ix.zeta < 1.0) ix.zeta = 1.0;
-  if (has_axis) {
+  if (tr) {
     ix.TR_capacity = x_C;
     ix.TR_ratio = x_C / x_D;
     ix.extrapolated = x_C < tr_min_years || x_C > tr_max_years;

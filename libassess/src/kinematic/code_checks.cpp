@@ -118,37 +118,10 @@ namespace {
 std::vector<CheckRow> checks_of(const KinematicResult& r, const CheckInput& in);
 }  // namespace
 
-// Issue 29: a mechanism held by tie levels whose displacement capacity stops
-// where the first level reaches its strength (kinematic_analysis.hpp) is also
-// the wall without them once they fail: each displacement check takes the
-// better of the two (the wall passes if either holds), so that a tie never
-// makes a check worse (docs/theory/ties.md §2).
-std::vector<CheckRow> run_code_checks(const KinematicResult& r, const CheckInput& in) {
-  std::vector<CheckRow> rows = checks_of(r, in);
-  if (!r.without_ties || !r.without_ties->activates || !r.without_ties->curve_complete()) return rows;
-  const std::vector<CheckRow> bare = checks_of(*r.without_ties, in);
-  for (const CheckRow& b : bare) {
-    if (b.kind != "displacement") continue;
-    bool found = false;
-    for (CheckRow& row : rows)
-      if (b.code == row.code && b.limit_state == row.limit_state && b.kind == row.kind && b.location == row.location) {
-        found = true;
-        if (b.dc < row.dc) {
-          row = b;
-          row.without_ties = true;
-          row.note = "satisfied by the wall without its tie levels (their failure leaves it)";
-        }
-      }
-    if (!found && !r.curve_complete()) {
-      // The tied wall has no complete curve (its levels hold it beyond the
-      // explored range): its displacement capacity is the bare wall's.
-      rows.push_back(b);
-      rows.back().without_ties = true;
-      rows.back().note = "the wall without its tie levels (the tied capacity curve is incomplete)";
-    }
-  }
-  return rows;
-}
+// Issue 37: a mechanism held by tie levels is checked as it is: its capacity
+// curve has each level breaking where it fails (kinematic_analysis.hpp), and
+// no check takes the wall without them instead (docs/theory/ties.md §2).
+std::vector<CheckRow> run_code_checks(const KinematicResult& r, const CheckInput& in) { return checks_of(r, in); }
 
 namespace {
 std::vector<CheckRow> checks_of(const KinematicResult& r, const CheckInput& in) {

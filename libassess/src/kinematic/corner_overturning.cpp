@@ -167,7 +167,10 @@ MechanismCandidate corner_candidate(const CornerOverturningParams& p, const Wall
       }
   }
   const V top(-sp, zt);
-  if (p.top_weight > 0.0) loads.push_back(weight("top load", 0, top, p.top_weight));
+  if (p.top_weight > 0.0) {
+    loads.push_back(weight("top load", 0, top, p.top_weight));
+    loads.back().seismic = !p.top_weight_held;  // issue 38: it pushes with the wedge unless held
+  }
   const double thrust = p.thrust * std::cos((psi - 45.0) * units::deg);
   if (std::fabs(thrust) > 1e-9 * std::fabs(p.thrust) && p.thrust != 0.0)
     loads.push_back(force(LoadType::Force, "hip rafter thrust (normal to the axis)", 0, top, V(thrust, 0.0)));
@@ -177,10 +180,9 @@ MechanismCandidate corner_candidate(const CornerOverturningParams& p, const Wall
     loads.push_back(force(LoadType::Tie, "tie along wall B (normal to the axis)", 0, top, V(-p.tie * C, 0.0)));
   MechanismCandidate c{"axis at " + fmt("%.1f", psi) + " deg from wall A" + crack_label, Chain(blocks, cons, loads), z0,
                        psi};
-  // The pier's own overturning: its weight and the top load pass over the axis.
-  const double Wp = g * A.t * B.t * p.height, N = p.top_weight;
-  const double zc = (Wp * 0.5 * p.height + N * p.height) / (Wp + N);
-  c.rotation_bound = std::atan(sp / zc);
+  // The pier's own overturning: its weight and the top load pass over the
+  // axis, tan theta_b = s_p / z_c (docs/theory/mechanisms.md §5).
+  c.rotation_bound = bearing_part_rotation(c.chain, 0);
   c.rotation_bound_reason = "the corner pier's own overturning about the axis";
   double W = 0.0;
   for (const Load& l : c.chain.loads())
@@ -226,6 +228,13 @@ Wall resolve(const CornerOverturningParams& p, const CornerWall& w, double other
       throw InputError(ol + "expected the other wall's thickness <= from < to (m from the corner's outer face): an "
                        "opening through the corner pier leaves no corner mechanism");
     if (!(o.top > o.bottom)) throw InputError(ol + "expected bottom < top (m above the foundation)");
+    // Within the wall (issue 39: an opening beyond it was clipped without a word).
+    if (!(o.to <= other_t + r.length + 1e-9))
+      throw InputError(ol + "ends " + fmt("%g", o.to) + " m from the corner's outer face, beyond the wall's end (" +
+                       fmt("%g", other_t + r.length) + " m: the other wall's thickness and the length)");
+    if (!(o.top <= p.base_z + p.height + 1e-9))
+      throw InputError(ol + "its top " + fmt("%g", o.top) + " m is above the wall's top (" +
+                       fmt("%g", p.base_z + p.height) + " m above the foundation)");
     r.openings.push_back(o);
   }
   return r;
@@ -250,17 +259,17 @@ MechanismSet corner_overturning(const CornerOverturningParams& p) {
   if (!own(p.wall_a) || !own(p.wall_b)) betas = wedge_angles(lab, p, beta_searched);
   if (betas.empty()) betas.push_back(0.0);  // unused
   const double tA = p.wall_a.thickness.value_or(p.thickness), tB = p.wall_b.thickness.value_or(p.thickness);
-  // Axes: given, or a grid then the refined interior minimum.
-  std::vector<double> axes;
+  // Axes (issue 38; docs/theory/mechanisms.md §4.2): the wedge stands on
+  // its pier's footprint and tips about one of its outer edges, the axes
+  // along the walls' outer faces (0 and 90 deg): about an axis through the
+  // outer vertex at psi, alpha0(psi) = (a sin psi + b cos psi)/D (every term
+  // of the numerator is the work of a point or a force with s = x sin psi +
+  // y cos psi, D does not depend on psi), never below min(alpha0(0),
+  // alpha0(90)); no intermediate axis can govern. Given: that axis alone.
+  std::vector<double> axes = {0.0, 90.0};
   if (p.axis_deg) {
     if (!(*p.axis_deg >= 0.0 && *p.axis_deg <= 90.0)) throw InputError(lab + "axis_deg must lie in [0, 90] deg");
-    axes.push_back(*p.axis_deg);
-  } else {
-    if (!(p.axis_min_deg >= 0.0 && p.axis_max_deg > p.axis_min_deg && p.axis_max_deg <= 90.0))
-      throw InputError(lab + "expected 0 <= axis_min_deg < axis_max_deg <= 90 deg");
-    if (p.axis_points < 2) throw InputError(lab + "axis_points must be >= 2");
-    for (int i = 0; i < p.axis_points; ++i)
-      axes.push_back(p.axis_min_deg + (p.axis_max_deg - p.axis_min_deg) * i / (p.axis_points - 1));
+    axes = {*p.axis_deg};
   }
   set.searched = !p.axis_deg || beta_searched;
   if (beta_searched)
@@ -277,19 +286,11 @@ MechanismSet corner_overturning(const CornerOverturningParams& p) {
     for (double psi : axes) set.candidates.push_back(corner_candidate(p, A, B, psi, cl));
     if (beta_searched && p.axis_deg) set.candidates.back().parameter = beta;  // the axis given: the crack varies
     if (!p.axis_deg) {
-      std::size_t ib = first;
-      double best = 1e300;
-      for (std::size_t i = first; i < set.candidates.size(); ++i) {
-        const double a = activation_multiplier(set.candidates[i].chain);
-        if (a < best) best = a, ib = i;
-      }
-      if (ib > first && ib + 1 < set.candidates.size()) {
-        const double g = golden_minimum(
-            [&](double psi) { return activation_multiplier(corner_candidate(p, A, B, psi, cl).chain); },
-            set.candidates[ib - 1].parameter, set.candidates[ib + 1].parameter, 1e-4);
-        set.candidates.push_back(corner_candidate(p, A, B, g, cl));
-        set.candidates.back().label += " (minimum of alpha0)";
-      }
+      // The classical 45 deg reduction, for comparison (never the lower).
+      const double a45 = activation_multiplier(corner_candidate(p, A, B, 45.0, cl).chain);
+      for (std::size_t i = first; i < set.candidates.size(); ++i)
+        set.candidates[i].quantities.push_back({"α0 about the axis at 45° (the classical reduction, for comparison)", a45,
+                                                "-", "docs/theory/mechanisms.md §4.2 [D]"});
     }
   }
   const double deg = 1.0 / units::deg;

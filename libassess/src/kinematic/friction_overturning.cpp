@@ -61,7 +61,10 @@ Built facade(const FrictionOverturningParams& p, bool floor_friction) {
   f.polygon = {V(0.0, z0), V(0.0, zt), V(-t, zt), V(-t, z0)};
   b.blocks.push_back(f);
   b.cons.push_back(ground_hinge("base hinge", 0, V(0.0, z0)));
-  if (p.top_weight > 0.0) b.loads.push_back(weight("top load", 0, V(-0.5 * t, zt), p.top_weight));
+  if (p.top_weight > 0.0) {
+    b.loads.push_back(weight("top load", 0, V(-0.5 * t, zt), p.top_weight));
+    b.loads.back().seismic = !p.top_weight_held;  // issue 38: it pushes with the façade unless held
+  }
   if (p.tie > 0.0) b.loads.push_back(force(LoadType::Tie, "tie", 0, V(-0.5 * t, zt), V(-p.tie, 0.0)));
   for (std::size_t i = 0; i < p.floors.size(); ++i) {
     const SupportedFloor& fl = p.floors[i];
@@ -149,8 +152,10 @@ MechanismSet friction_overturning(const FrictionOverturningParams& p) {
     wd.cons.push_back(hinge("weld bottom", 0, 1, V(-t, z0)));
     wd.cons.push_back(hinge("weld top", 0, 1, V(-t, zt)));
     if (p.side_load * reach > 0.0) {
+      // Issue 38: the load rests on the wedges and turns with them: its mass
+      // pushes (C8.7.1.1's Q weights) unless the case holds it.
       Load q = weight("side walls' load on the wedges", 1, V(-t - 0.5 * reach, zt), p.side_load * reach * p.side_walls);
-      q.seismic = false;  // the floors' load belongs to the building
+      q.seismic = !p.side_load_held;
       wd.loads.push_back(q);
     }
   }
@@ -179,7 +184,13 @@ MechanismSet friction_overturning(const FrictionOverturningParams& p) {
   q.push_back({"α0 with the side walls' wedges (composite)", a_wd, "-", "C8.7.1.1"});
   set.candidates.push_back({"facade sliding out of the side walls (friction)", Chain(fr.blocks, fr.cons, fr.loads), z0,
                             1.0, q});
-  set.candidates.push_back({"facade with the side walls' wedges", Chain(wd.blocks, wd.cons, wd.loads), z0, 2.0, q});
+  MechanismCandidate wc{"facade with the side walls' wedges", Chain(wd.blocks, wd.cons, wd.loads), z0, 2.0, q};
+  // Issue 38: the wedges hang on the façade: bounded by its own overturning (§5).
+  wc.rotation_bound = bearing_part_rotation(wc.chain, 0);
+  wc.rotation_bound_reason = "the façade's own overturning about its hinge";
+  wc.quantities.push_back({"rotation bound: the façade's weight and its loads over the hinge", wc.rotation_bound, "rad",
+                           "docs/theory/mechanisms.md §5 [I]"});
+  set.candidates.push_back(std::move(wc));
   set.data = {{"façade height above the hinge", p.height, "m", "input"},
               {"façade thickness", p.thickness, "m", "input"},
               {"façade length", p.length, "m", "input"},

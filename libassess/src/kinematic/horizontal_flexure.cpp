@@ -36,6 +36,38 @@ double net_height(const HorizontalStrip& s, double u0, double u1) {
   return s.height - cut;
 }
 
+// The strip cut at the supports, the openings' edges and the middle hinge
+// u_m: segments [u_i, u_i+1] of net height hn_i, the first right of u_m at
+// im, the thrust of the sections at the supports and at the middle hinge.
+struct StripGeometry {
+  std::vector<double> u, hn;
+  std::size_t im = 0;
+  double h_support = 0.0, h_middle = 0.0;
+  ArchThrust thrust;
+};
+
+StripGeometry strip_geometry(const HorizontalFlexureParams& p, const HorizontalStrip& s, double um) {
+  const double L = p.span;
+  StripGeometry g;
+  std::set<double> cuts = {0.0, L, um};
+  for (const StripOpening& o : s.openings) {
+    if (o.from > 0.0 && o.from < L) cuts.insert(o.from);
+    if (o.to > 0.0 && o.to < L) cuts.insert(o.to);
+  }
+  g.u.assign(cuts.begin(), cuts.end());
+  g.u.erase(std::unique(g.u.begin(), g.u.end(), [](double a, double b) { return std::fabs(a - b) < 1e-9; }), g.u.end());
+  const std::size_t nseg = g.u.size() - 1;
+  g.hn.resize(nseg);
+  for (std::size_t i = 0; i < nseg; ++i) {
+    g.hn[i] = net_height(s, g.u[i], g.u[i + 1]);
+    if (std::fabs(g.u[i] - um) < 1e-9) g.im = i;
+  }
+  g.h_support = std::min(g.hn.front(), g.hn.back());
+  g.h_middle = std::min(g.hn[g.im - 1], g.hn[g.im]);
+  g.thrust = arch_thrust(p, g.h_support, g.h_middle);
+  return g;
+}
+
 struct StripChain {
   Chain chain;
   ArchThrust thrust;
@@ -44,22 +76,12 @@ struct StripChain {
 
 StripChain strip_chain(const HorizontalFlexureParams& p, const HorizontalStrip& s, double um) {
   const double L = p.span, t = p.thickness;
-  std::set<double> cuts = {0.0, L, um};
-  for (const StripOpening& o : s.openings) {
-    if (o.from > 0.0 && o.from < L) cuts.insert(o.from);
-    if (o.to > 0.0 && o.to < L) cuts.insert(o.to);
-  }
-  std::vector<double> u(cuts.begin(), cuts.end());
-  u.erase(std::unique(u.begin(), u.end(), [](double a, double b) { return std::fabs(a - b) < 1e-9; }), u.end());
-  const std::size_t nseg = u.size() - 1;
-  std::vector<double> hn(nseg);
-  std::size_t im = 0;  // index of the first segment right of the middle hinge
-  for (std::size_t i = 0; i < nseg; ++i) {
-    hn[i] = net_height(s, u[i], u[i + 1]);
-    if (std::fabs(u[i] - um) < 1e-9) im = i;
-  }
-  const double h_support = std::min(hn.front(), hn.back()), h_middle = std::min(hn[im - 1], hn[im]);
-  const ArchThrust thrust = arch_thrust(p, h_support, h_middle);
+  const StripGeometry g = strip_geometry(p, s, um);
+  const std::vector<double>& u = g.u;
+  const std::vector<double>& hn = g.hn;
+  const std::size_t nseg = u.size() - 1, im = g.im;
+  const double h_support = g.h_support, h_middle = g.h_middle;
+  const ArchThrust thrust = g.thrust;
   const double es = thrust.e_support, em = thrust.e_middle, H = thrust.H;
   double ring_force = 0.0;
   std::vector<Block> blocks;
@@ -88,7 +110,12 @@ StripChain strip_chain(const HorizontalFlexureParams& p, const HorizontalStrip& 
   loads.push_back(force(LoadType::Force, "arch thrust", int(nseg) - 1, V(-es, L), V(0.0, -H)));
   if (p.ring_beam_moment > 0.0) {
     // Simply supported ring beam with a plastic hinge at u_m: M_Rd (theta_A +
-    // theta_B) = F dx_m with dx_m = theta_A u_m = theta_B (L - u_m).
+    // theta_B) = F dx_m with dx_m = theta_A u_m = theta_B (L - u_m). The
+    // force acts where the beam's hinge is, on the beam's axis: the wall's
+    // centre line at u_m (issue 38; docs/theory/mechanisms.md §1.2: at
+    // finite rotation the closer constant force to the exact M_Rd (theta_A
+    // + theta_B): within 0.5 % of it up to the worked example's theta_0, a
+    // force at the middle hinge 1.9 %).
     ring_force = p.ring_beam_moment * L / (um * (L - um));
     loads.push_back(force(LoadType::Force, "ring beam", int(im) - 1, V(-0.5 * t, um), V(-ring_force, 0.0)));
   }
@@ -96,6 +123,28 @@ StripChain strip_chain(const HorizontalFlexureParams& p, const HorizontalStrip& 
 }
 
 }  // namespace
+
+double strip_alpha0(const HorizontalFlexureParams& p, const HorizontalStrip& s, double um) {
+  // Virtual work of the chain of strip_chain (docs/theory/mechanisms.md §1.3,
+  // (1.3)): the left half turns by theta about its support hinge, the right
+  // half by theta u_m/(L - u_m) about the other, whose support slides apart
+  // by s = z theta L/(L - u_m); a point at u moves outward by theta u (left)
+  // or theta u_m (L - u)/(L - u_m) (right); the thrust -H does -H s, the ring
+  // beam's force M_Rd L/(u_m (L - u_m)) at the middle hinge -M_Rd L/(L - u_m)
+  // theta. Each segment's mass W_i = gamma t (u_i+1 - u_i) hn_i + n (u_i+1 -
+  // u_i) at its middle.
+  const double L = p.span;
+  const StripGeometry g = strip_geometry(p, s, um);
+  double left = 0.0, right = 0.0;
+  for (std::size_t i = 0; i + 1 < g.u.size(); ++i) {
+    const double du = g.u[i + 1] - g.u[i], uc = 0.5 * (g.u[i] + g.u[i + 1]);
+    const double W = p.unit_weight * p.thickness * du * g.hn[i] + s.carried_weight * du;
+    (i < g.im ? left : right) += i < g.im ? W * uc : W * (L - uc);
+  }
+  const double z = p.thickness - g.thrust.e_support - g.thrust.e_middle;
+  const double work_out = left + um / (L - um) * right;
+  return L / (L - um) * (g.thrust.H * z + p.ring_beam_moment) / work_out;
+}
 
 ArchThrust arch_thrust(const HorizontalFlexureParams& p, double h_s, double h_m) {
   ArchThrust a;
@@ -151,7 +200,10 @@ MechanismSet horizontal_flexure(const HorizontalFlexureParams& p) {
     }
     // The middle hinge: mid-span for a uniform strip, else the minimum of
     // alpha0 over a grid and the openings' edges, refined by golden section.
-    auto alpha = [&](double um) { return activation_multiplier(strip_chain(p, s, um).chain); };
+    // alpha0 in closed form (strip_alpha0, equal to the chain's virtual work,
+    // unit test): the search costs microseconds instead of a chain analysis
+    // per point (issue 39: 57 s of CPU for one mechanism at its caps).
+    auto alpha = [&](double um) { return strip_alpha0(p, s, um); };
     double um = 0.5 * p.span;
     if (s.middle_hinge) {
       if (!(*s.middle_hinge > 0.0 && *s.middle_hinge < p.span))
@@ -195,8 +247,8 @@ MechanismSet horizontal_flexure(const HorizontalFlexureParams& p) {
     q.push_back({"middle hinge from the inner face", a.e_middle, "m", "C8.7.1.2.1 d) [V-T]; " + src});
     q.push_back({"lever arm of the arch z", p.thickness - a.e_support - a.e_middle, "m", src});
     if (sc.ring_force > 0.0)
-      q.push_back({"ring beam: force at the middle hinge M_Rd L/(u_m (L - u_m))", sc.ring_force / units::kN, "kN",
-                   "docs/theory/mechanisms.md §1.3 [D]"});
+      q.push_back({"ring beam: force at u_m on the beam's axis (the wall's centre line) M_Rd L/(u_m (L - u_m))",
+                   sc.ring_force / units::kN, "kN", "docs/theory/mechanisms.md §1.2 [D]"});
     set.candidates.push_back({"strip z = " + fmt("%.2f", s.base_z) + "-" + fmt("%.2f", s.base_z + s.height) +
                                   " m, middle hinge at u = " + fmt("%.2f", um) + " m",
                               sc.chain, zm, zm, q});

@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace assess {
@@ -33,6 +34,8 @@ bool is_seismic_weight(const Load& l) {
 }
 
 // Equilibrium path of the chain, parametrised by the control displacement d_k.
+// Issue 37: tie level i acts up to broken_at[i] (the d_k at which it failed;
+// infinity while it holds) and is lost beyond.
 struct Path {
   const Chain& chain;
   const std::vector<TieRestraint>& ties;
@@ -40,6 +43,7 @@ struct Path {
   Eigen::Vector2d point;
   std::vector<double> dk;            // marched samples
   std::vector<Eigen::VectorXd> q;    // their configurations
+  std::vector<double> broken_at;     // per level (m)
 
   // Configuration at control displacement d (m), from the nearest sample below.
   bool configuration(double d, Eigen::VectorXd& out) const {
@@ -47,12 +51,29 @@ struct Path {
     while (i + 1 < dk.size() && dk[i + 1] <= d) ++i;
     return chain.solve_configuration(block, point, d, q[i], out);
   }
+  // The levels acting at d (those broken at or before d left out; `without`:
+  // also leave out level `without`).
+  std::vector<TieRestraint> acting(double d, std::size_t without = std::size_t(-1)) const {
+    std::vector<TieRestraint> out;
+    for (std::size_t i = 0; i < ties.size(); ++i)
+      if (i != without && d <= broken_at[i] * (1.0 + 1e-12)) out.push_back(ties[i]);
+    return out;
+  }
   double alpha(double d) const {
     Eigen::VectorXd qd;
     if (!configuration(d, qd)) return std::nan("");
-    return load_multiplier(chain, qd, ties);
+    return load_multiplier(chain, qd, acting(d));
   }
 };
+
+// Elongation at which a level fails (m): a ductile one at its ultimate
+// elongation, one that is not ductile at its strength; infinity for a level
+// without an elastic range (rigid-plastic, or at its strength from the start,
+// as in the search of required forces), which never breaks.
+double failure_elongation_of(const TieRestraint& t) {
+  if (!(t.stiffness > 0.0) || !(t.capacity > t.pretension)) return std::numeric_limits<double>::infinity();
+  return t.failure_elongation();
+}
 
 }  // namespace
 
@@ -259,11 +280,25 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
   }
 
   // Non-linear analysis: march d_k until alpha changes sign, then Brent.
-  Path path{chain, ties, R.control_block, R.control_point, {0.0}, {q0}};
+  // Issue 37: a level whose elongation reaches its failure elongation within
+  // a step breaks there (found by bisection); the curve goes on without it.
+  Path path{chain, ties, R.control_block, R.control_point, {0.0}, {q0},
+            std::vector<double>(ties.size(), std::numeric_limits<double>::infinity())};
   const double h = chain.size() / 1000.0;
   const int max_steps = 3000;
   R.termination = CurveTermination::NoZeroCrossing;
   R.message = "alpha stays > 0 up to d_k = 3 times the size of the chain";
+  // The first d_k in (lo, hi] at which level t's elongation reaches `lim` (m),
+  // by bisection on the path's configurations.
+  auto crossing = [&](const TieRestraint& t, double lim, double lo, double hi) {
+    Eigen::VectorXd q;
+    for (int it = 0; it < 60 && hi - lo > 1e-12 * chain.size(); ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (path.configuration(mid, q) && tie_elongation(chain, t, q) >= lim ? hi : lo) = mid;
+    }
+    return hi;
+  };
+  bool collapsed_at_break = false;
   for (int i = 1; i <= max_steps; ++i) {
     const Eigen::VectorXd& qp = path.q.back();
     const Eigen::VectorXd vp = chain.virtual_displacement(qp);
@@ -276,9 +311,44 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
       R.message = "no finite-displacement configuration found at d_k = " + std::to_string(dk) + " m";
       break;
     }
-    const double a = load_multiplier(chain, qn, ties);
     path.dk.push_back(dk);
     path.q.push_back(qn);
+    // Levels failing within this step, in the order they fail.
+    for (;;) {
+      double first = std::numeric_limits<double>::infinity();
+      std::size_t who = ties.size();
+      for (std::size_t l = 0; l < ties.size(); ++l) {
+        if (std::isfinite(path.broken_at[l])) continue;
+        const double lim = failure_elongation_of(ties[l]);
+        if (!std::isfinite(lim) || tie_elongation(chain, ties[l], qn) < lim) continue;
+        const double at = crossing(ties[l], lim, dk - h, dk);
+        if (at < first) first = at, who = l;
+      }
+      if (who == ties.size()) break;
+      KinematicResult::TieBreak b;
+      b.level = ties[who].name;
+      b.d_star = first * R.d_star_per_dk;
+      Eigen::VectorXd qb;
+      if (path.configuration(first, qb)) {
+        b.alpha_before = load_multiplier(chain, qb, path.acting(first));
+        b.alpha_after = load_multiplier(chain, qb, path.acting(first, who));
+      }
+      b.caps = b.alpha_after < 0.5 * b.alpha_before;
+      path.broken_at[who] = first;
+      R.tie_breaks.push_back(b);
+      if (b.caps && !std::isfinite(R.d_star_tie_cap)) R.d_star_tie_cap = b.d_star;
+      if (!(b.alpha_after > 0.0)) {  // the wall left holds no more: collapse at the break
+        R.dk0 = first;
+        collapsed_at_break = true;
+        break;
+      }
+    }
+    if (collapsed_at_break) {
+      R.termination = CurveTermination::Complete;
+      R.message.clear();
+      break;
+    }
+    const double a = load_multiplier(chain, qn, path.acting(dk));
     if (!(a > 0.0)) {
       const double lo = dk - h;
       R.dk0 = a == 0.0 ? dk
@@ -341,54 +411,31 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
     if (!ties.empty()) {
       Eigen::VectorXd qj;
       if (path.configuration(p.dk, qj))
-        for (const TieRestraint& t : ties) {
-          const double e = tie_elongation(chain, t, qj);
+        for (std::size_t l = 0; l < ties.size(); ++l) {
+          const double e = tie_elongation(chain, ties[l], qj);
           p.tie_elongation.push_back(e);
-          p.tie_force.push_back(tie_force(t, e));
+          p.tie_force.push_back(p.dk <= path.broken_at[l] * (1.0 + 1e-12) ? tie_force(ties[l], e) : 0.0);
         }
     }
     R.curve.push_back(p);
   }
 
-  // Tie levels (issue 29): where along the path the first level reaches its
-  // strength (its elongation (T_Rd - P0)/k) and where the first level fails
-  // (a ductile one at eps_ud L): the first crossing on the marching grid,
-  // refined by bisection on the path's configurations.
-  auto first_crossing = [&](auto elongation_limit) {
-    double best = std::numeric_limits<double>::infinity();
-    std::string who;
-    for (const TieRestraint& t : ties) {
-      // A level without an elastic range (rigid-plastic, or at its strength from
-      // the start, as in the search of required forces) limits nothing.
-      if (!(t.stiffness > 0.0) || !(t.capacity > t.pretension)) continue;
-      const double lim = elongation_limit(t);
-      double prev_dk = 0.0;
-      for (std::size_t i = 1; i < path.dk.size() && path.dk[i - 1] < best; ++i) {
-        if (path.dk[i] > R.dk0 + h) break;
-        if (tie_elongation(chain, t, path.q[i]) < lim) {
-          prev_dk = path.dk[i];
-          continue;
-        }
-        double lo = prev_dk, hi = std::min(path.dk[i], R.dk0);
-        Eigen::VectorXd q;
-        for (int it = 0; it < 60 && hi - lo > 1e-12 * chain.size(); ++it) {
-          const double mid = 0.5 * (lo + hi);
-          (path.configuration(mid, q) && tie_elongation(chain, t, q) >= lim ? hi : lo) = mid;
-        }
-        if (hi < best) {
-          best = hi;
-          who = t.name;
-        }
-        break;
+  // Tie levels: where the first level reaches its strength (its elongation
+  // (T_Rd - P0)/k; reported), by the first crossing on the marching grid.
+  for (std::size_t l = 0; l < ties.size(); ++l) {
+    const TieRestraint& t = ties[l];
+    if (!(t.stiffness > 0.0) || !(t.capacity > t.pretension)) continue;
+    const double lim = t.yield_elongation();
+    for (std::size_t i = 1; i < path.dk.size(); ++i) {
+      if (path.dk[i] > std::min(R.dk0, path.broken_at[l]) + h) break;
+      if (tie_elongation(chain, t, path.q[i]) < lim) continue;
+      const double at = std::min(crossing(t, lim, path.dk[i - 1], path.dk[i]), R.dk0) * R.d_star_per_dk;
+      if (at < R.d_star_tie_limit) {
+        R.d_star_tie_limit = at;
+        R.tie_limit_level = t.name;
       }
+      break;
     }
-    return std::make_pair(best * R.d_star_per_dk, who);
-  };
-  if (!ties.empty()) {
-    const auto lim = first_crossing([](const TieRestraint& t) { return t.yield_elongation(); });
-    R.d_star_tie_limit = lim.first;
-    R.tie_limit_level = lim.second;
-    R.d_star_tie_failure = first_crossing([](const TieRestraint& t) { return t.failure_elongation(); }).first;
   }
   // The displacement capacities with a cap d*_cap (m): (du*, d_SLV, d_SLC) and their periods.
   struct Caps {
@@ -410,7 +457,7 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
     c.TSLC = code_rules::T_SLC_factor_of_pi * units::pi * std::sqrt(c.dSLC / c.aSLC);
     return c;
   };
-  const Caps adopted = capacities(R.d_star_tie_limit);
+  const Caps adopted = capacities(R.d_star_tie_cap);
   R.du_star = adopted.du;
   R.ds_star = adopted.ds;
   R.as_star = adopted.as;
@@ -421,13 +468,6 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
   R.d_SLC = adopted.dSLC;
   R.a_SLC = adopted.aSLC;
   R.T_SLC = adopted.TSLC;
-  const Caps plastic = R.d_star_tie_failure > R.d_star_tie_limit ? capacities(R.d_star_tie_failure) : adopted;
-  R.du_star_plastic = plastic.du;
-  R.Ts_plastic = plastic.Ts;
-  R.d_SLV_plastic = plastic.dSLV;
-  R.T_SLV_plastic = plastic.TSLV;
-  R.d_SLC_plastic = plastic.dSLC;
-  R.T_SLC_plastic = plastic.TSLC;
   return R;
 }
 

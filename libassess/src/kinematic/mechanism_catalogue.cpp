@@ -28,6 +28,30 @@ double activation_multiplier(const Chain& chain) {
   return load_multiplier(chain, Eigen::VectorXd::Zero(static_cast<Eigen::Index>(chain.n_coordinates())));
 }
 
+// Issue 38: docs/theory/mechanisms.md §5 [I].
+double bearing_part_rotation(const Chain& chain, int part) {
+  if (part < 0 || part >= static_cast<int>(chain.blocks().size()))
+    throw InputError("bearing part: block " + std::to_string(part) + " is not in the mechanism");
+  const Constraint* hinge = nullptr;
+  for (const Constraint& c : chain.constraints())
+    if (c.type == ConstraintType::GroundHinge) {
+      if (hinge) throw InputError("bearing part: the mechanism has more than one ground hinge");
+      hinge = &c;
+    }
+  if (!hinge) throw InputError("bearing part: the mechanism has no ground hinge");
+  // x outward: the part's weights lie inward of the hinge (x < x_O) and above it.
+  double Ws = 0.0, Wz = 0.0;
+  for (const Load& l : chain.loads())
+    if (l.block == part && (l.type == LoadType::SelfWeight || l.type == LoadType::Weight) && l.vertical) {
+      Ws += l.weight * (hinge->point.x() - l.point.x());
+      Wz += l.weight * (l.point.y() - hinge->point.y());
+    }
+  if (!(Ws > 0.0 && Wz > 0.0))
+    throw InputError("bearing part \"" + chain.blocks()[static_cast<std::size_t>(part)].name +
+                     "\": its weight is not inward of and above the hinge");
+  return std::atan2(Ws, Wz);
+}
+
 std::size_t governing_candidate(const MechanismSet& set) {
   std::size_t best = 0;
   double a_best = 0.0;
@@ -58,6 +82,9 @@ MechanismSet simple_overturning(const SimpleOverturningParams& p) {
     require_non_negative(s.tie, lab + "tie", "kN");
     if (!(s.floor_distance_from_inner_face >= 0.0 && s.floor_distance_from_inner_face <= s.thickness))
       throw InputError(lab + "floor_distance_from_inner_face must lie in [0, thickness] m");
+    if (s.floor_held && !s.floor_bears && s.floor_weight > 0.0)
+      throw InputError(lab + "a floor that neither bears (floor_bears false) nor pushes (floor_held true) acts on "
+                       "nothing: drop it or give one of the two");
     z[i + 1] = z[i] + s.height;
   }
   RoofLoads roof;
@@ -104,14 +131,20 @@ MechanismSet simple_overturning(const SimpleOverturningParams& p) {
       const Storey& s = p.storeys[i];
       const V at(-s.thickness + s.floor_distance_from_inner_face, z[i + 1]);
       const std::string lvl = "level " + std::to_string(i + 1);
-      if (s.floor_weight > 0.0) loads.push_back(weight("floor " + lvl, 0, at, s.floor_weight, s.floor_bears));
+      if (s.floor_weight > 0.0) {
+        loads.push_back(weight("floor " + lvl, 0, at, s.floor_weight, s.floor_bears));
+        loads.back().seismic = !s.floor_held;  // issue 38: it moves with the wall unless held
+      }
       if (s.thrust != 0.0) loads.push_back(force(LoadType::Force, "thrust " + lvl, 0, at, V(s.thrust, 0.0)));
       if (s.tie > 0.0)
         loads.push_back(force(LoadType::Tie, "tie " + lvl, 0, V(-0.5 * s.thickness, z[i + 1]), V(-s.tie, 0.0)));
     }
     if (p.roof) {  // issue 33: the roof on the top storey, at its seat
       const V seat(-p.storeys.back().thickness + p.roof->seat_from_inner_face, z[n]);
-      if (roof.V > 0.0) loads.push_back(weight("roof weight", 0, seat, roof.V * p.length));
+      if (roof.V > 0.0) {
+        loads.push_back(weight("roof weight", 0, seat, roof.V * p.length));
+        loads.back().seismic = !p.roof->held;  // issue 38
+      }
       if (roof.H > 0.0) loads.push_back(force(LoadType::Force, "roof thrust", 0, seat, V(roof.H * p.length, 0.0)));
     }
     const V h(-p.hinge_setback, z[j]);
@@ -171,10 +204,15 @@ Chain vertical_flexure_chain(const VerticalFlexureParams& p, double hh) {
   top.point = V(0.0, zt);
   top.direction = V(0.0, 1.0);
   std::vector<Load> loads;
-  if (p.top_load > 0.0)
+  if (p.top_load > 0.0) {
     loads.push_back(weight("top load", 1, V(-t + p.top_load_distance_from_inner_face, zt), p.top_load));
-  // The top load belongs to the building above: its mass does not push the wall.
-  if (!loads.empty()) loads.back().seismic = false;
+    // It bears on the upper block at the top restraint, which takes its
+    // horizontal force: its point does not move horizontally (dx = 0), its
+    // mass belongs to the building above (the exception of C8A.4.1 [R]);
+    // counted in sum W it would only lower e* and raise a0* (issue 38,
+    // docs/theory/mechanisms.md §0).
+    loads.back().seismic = false;
+  }
   return Chain({lower, upper},
                {ground_hinge("base hinge", 0, V(0.0, z0)), hinge("middle hinge", 0, 1, V(-t, zh)), top},
                loads);
@@ -258,10 +296,19 @@ MechanismSet composite_overturning(const CompositeOverturningParams& p) {
     std::vector<Constraint> cons{ground_hinge("base hinge", 0, V(0.0, z0)),
                                  hinge("weld bottom", 0, 1, V(-t, z0)), hinge("weld top", 0, 1, V(-t, zt))};
     std::vector<Load> loads;
-    if (p.top_weight > 0.0) loads.push_back(weight("top load", 0, V(-0.5 * t, zt), p.top_weight));
+    if (p.top_weight > 0.0) {
+      loads.push_back(weight("top load", 0, V(-0.5 * t, zt), p.top_weight));
+      loads.back().seismic = !p.top_weight_held;  // issue 38
+    }
     if (p.tie > 0.0) loads.push_back(force(LoadType::Tie, "tie", 0, V(-0.5 * t, zt), V(-p.tie, 0.0)));
-    set.candidates.push_back({"wedge beta = " + fmt("%.1f", beta) + " deg", Chain({facade, wedge}, cons, loads),
-                              z0, beta});
+    MechanismCandidate c{"wedge beta = " + fmt("%.1f", beta) + " deg", Chain({facade, wedge}, cons, loads), z0, beta};
+    // Issue 38: the wedges hang on the façade by the interlocking; the body
+    // bears on the hinge through the façade: bounded by its own overturning.
+    c.rotation_bound = bearing_part_rotation(c.chain, 0);
+    c.rotation_bound_reason = "the façade's own overturning about its hinge";
+    c.quantities = {{"rotation bound: the façade's weight and its loads over the hinge", c.rotation_bound, "rad",
+                     "docs/theory/mechanisms.md §5 [I]"}};
+    set.candidates.push_back(std::move(c));
   }
   return set;
 }
@@ -297,7 +344,10 @@ MechanismSet gable_overturning(const GableParams& p) {
   const int top = p.slices - 1;
   const V apex(-0.5 * t, z0 + p.height);
   std::vector<Load> loads;
-  if (p.ridge_weight > 0.0) loads.push_back(weight("ridge beam", top, apex, p.ridge_weight));
+  if (p.ridge_weight > 0.0) {
+    loads.push_back(weight("ridge beam", top, apex, p.ridge_weight));
+    loads.back().seismic = !p.ridge_weight_held;  // issue 38
+  }
   if (p.ridge_thrust != 0.0) loads.push_back(force(LoadType::Force, "ridge thrust", top, apex, V(p.ridge_thrust, 0.0)));
   if (p.tie > 0.0) loads.push_back(force(LoadType::Tie, "tie", top, apex, V(-p.tie, 0.0)));
   MechanismSet set;

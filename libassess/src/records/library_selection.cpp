@@ -7,6 +7,7 @@
 #include "assess/records/selection_candidates.hpp"
 #include "assess/support/content_hash.hpp"
 #include "assess/support/error.hpp"
+#include "support/once_value.hpp"
 #include "support/parallel_for.hpp"
 
 #include <algorithm>
@@ -212,26 +213,30 @@ std::shared_ptr<const LibrarySelection> select_from_library(const RecordLibrary&
     ++memo_computed;
     return compute(lib, rules, target, opts);
   }
-  struct Slot {
-    std::once_flag once;
-    std::shared_ptr<const LibrarySelection> value;
-  };
   static std::mutex mutex;
-  static std::map<std::string, std::shared_ptr<Slot>> memo;
-  std::shared_ptr<Slot> slot;
+  static std::map<std::string, std::shared_ptr<detail::OnceValue<LibrarySelection>>> memo;
+  std::shared_ptr<detail::OnceValue<LibrarySelection>> slot;
   {
     std::lock_guard<std::mutex> lock(mutex);
-    std::shared_ptr<Slot>& s = memo[memo_key(lib, rules, opts, values)];
-    if (!s) s = std::make_shared<Slot>();
+    auto& s = memo[memo_key(lib, rules, opts, values)];
+    if (!s) s = std::make_shared<detail::OnceValue<LibrarySelection>>();
     slot = s;
   }
+  // Computed once; its value or its error (a window Mw_min > Mw_max, a
+  // record changed since the build) is every caller's (support/once_value.hpp).
   bool computed_here = false;
-  std::call_once(slot->once, [&] {
-    slot->value = compute(lib, rules, target, opts);
-    computed_here = true;
-  });
+  std::shared_ptr<const LibrarySelection> value;
+  try {
+    value = slot->get([&] {
+      computed_here = true;
+      return compute(lib, rules, target, opts);
+    });
+  } catch (...) {
+    ++(computed_here ? memo_computed : memo_reused);
+    throw;
+  }
   ++(computed_here ? memo_computed : memo_reused);
-  return slot->value;
+  return value;
 }
 
 SelectionMemoStats selection_memo_stats() { return {memo_computed.load(), memo_reused.load()}; }

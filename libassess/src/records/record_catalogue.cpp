@@ -21,11 +21,11 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <iterator>
+#include <filesystem>
 #include <map>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 namespace assess {
 
@@ -73,19 +73,14 @@ std::vector<std::string> split_csv(const std::string& line, const std::string& w
 
 double nan() { return std::numeric_limits<double>::quiet_NaN(); }
 
-/// A number or NaN for an empty cell; range-checked.
-double number_cell(const std::string& text, const std::string& where, const char* unit, double lo, double hi) {
+/// A number or NaN for an empty cell: a decimal number within `rule` (its
+/// unit), the rules of case files (number_rules.hpp).
+double number_cell(const std::string& text, const std::string& where, const NumberRule& rule) {
   if (text.empty()) return nan();
-  std::size_t used = 0;
   double v = 0.0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || !std::isfinite(v) || v < lo || v > hi)
-    throw InputError(where + ": expected a number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] " +
-                     unit + " or an empty cell, got '" + text + "'");
+  std::string bad = decimal_number_violation(text, v);
+  if (bad.empty()) bad = number_rule_violation(v, rule);
+  if (!bad.empty()) throw InputError(where + ": " + bad + " (or an empty cell: unknown)");
   return v;
 }
 
@@ -107,9 +102,16 @@ nlohmann::ordered_json num_or_null(double v) {
   return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
 }
 
-double num_or_nan(const nlohmann::json& r, const char* key) {
-  if (!r.contains(key) || r.at(key).is_null()) return nan();
-  return r.at(key).get<double>();
+/// An optional number of a catalogue entry: null or absent is unknown (NaN).
+double num_or_nan(const JsonNode& r, const char* key, const NumberRule& rule) {
+  const auto n = r.find(key);
+  if (!n || n->value().is_null()) return nan();
+  return n->as_number(rule);
+}
+
+std::string text_or(const JsonNode& r, const char* key) {
+  const auto n = r.find(key);
+  return n ? n->as_string() : std::string();
 }
 
 }  // namespace
@@ -120,6 +122,16 @@ std::string site_class_from_vs30(double v) {
   if (v >= 360.0) return "B";
   if (v >= 180.0) return "C";
   return "D";
+}
+
+SiteClass site_class_of(double vs30_m_s, const std::string& stated) {
+  const std::string v = site_class_from_vs30(vs30_m_s);
+  // E: the velocities of C or D over a substrate within 30 m (Tab. 3.2.II),
+  // which Vs30 alone cannot show: a stated E its Vs30 does not contradict stands.
+  if (stated == "E" && (v == "C" || v == "D")) return {"E", "stated"};
+  if (!v.empty()) return {v, "Vs30"};
+  if (!stated.empty()) return {stated, "stated"};
+  return {"", ""};
 }
 
 std::string near_fault_reason(const CatalogueEntry& e, double threshold_km) {
@@ -148,12 +160,17 @@ std::vector<CatalogueEntry> RecordCatalogue::design_candidates() const {
 
 Record RecordCatalogue::load(const CatalogueEntry& e) const {
   const std::string path = directory + "/" + e.file;
-  if (!e.plain_unit.empty()) {
-    Record r = read_plain_record(path, e.plain_dt_s, parse_acceleration_unit(e.plain_unit));
-    r.name = e.id;
-    return r;
-  }
-  Record r = read_record(path);
+  // The bounded reader (a directory, a device or a FIFO is named), and the
+  // bytes the catalogue was built from (issue 39: every command refuses a
+  // record changed since `assess records build`, not only the selections).
+  const std::string bytes = read_input_file(path, input_kinds::record_file);
+  if (!e.content_hash.empty() && hash_hex(content_hash(bytes)) != e.content_hash)
+    throw InputError(path + ": the file changed since the catalogue was built (content hash " +
+                     hash_hex(content_hash(bytes)) + ", catalogue " + e.content_hash +
+                     "): run `assess records build`");
+  Record r = e.plain_unit.empty()
+                 ? parse_record_text(bytes, path)
+                 : parse_plain_record_text(bytes, path, e.plain_dt_s, parse_acceleration_unit(e.plain_unit));
   r.name = e.id;
   return r;
 }
@@ -179,7 +196,14 @@ std::vector<Record> RecordCatalogue::load_all(const std::vector<CatalogueEntry>&
 }
 
 RecordCatalogue build_catalogue(const std::string& table) {
-  std::istringstream in(read_input_file(table, input_kinds::metadata_table));
+  return catalogue_from_metadata(read_input_file(table, input_kinds::metadata_table), table,
+                                 [](const std::string& path) { return read_input_file(path, input_kinds::record_file); });
+}
+
+RecordCatalogue catalogue_from_metadata(const std::string& text, const std::string& table,
+                                        const std::function<std::string(const std::string&)>& read_record_file) {
+  // A UTF-8 byte order mark (spreadsheets write one) is not part of the first column's name.
+  std::istringstream in(text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? text.substr(3) : text);
   RecordCatalogue cat;
   cat.directory = directory_of(table);
   cat.description =
@@ -195,7 +219,13 @@ RecordCatalogue build_catalogue(const std::string& table) {
       "distance_km", "distance_kind", "vs30_m_s", "site_class_stated", "country", "lowest_usable_hz", "pulse",
       "pulse_period_s", "plain_dt_s", "plain_unit", "excluded_reason", "source", "terms", "notes"};
   std::map<std::string, std::size_t> col;
-  for (std::size_t i = 0; i < header.size(); ++i) col[header[i]] = i;
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    const std::string bad = control_character_violation(header[i]);
+    if (!bad.empty()) throw InputError(table + ":1: column " + std::to_string(i + 1) + ": " + bad);
+    if (!col.emplace(header[i], i).second)
+      throw InputError(table + ":1: column '" + header[i] + "' is named twice (columns " +
+                       std::to_string(col[header[i]] + 1) + " and " + std::to_string(i + 1) + ")");
+  }
   for (const auto& r : required)
     if (!col.count(r)) throw InputError(table + ":1: missing column '" + r + "'");
   std::set<std::string> ids;
@@ -208,10 +238,19 @@ RecordCatalogue build_catalogue(const std::string& table) {
                        std::to_string(cells.size()));
     auto cell = [&](const char* name) { return cells[col.at(name)]; };
     auto at = [&](const char* name) { return where + " column " + name; };
+    // Every cell is text printed by `records list`/`show` and in reports: no
+    // control characters (an ESC sequence re-programs a terminal; issue 39).
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      const std::string bad = control_character_violation(cells[i]);
+      if (!bad.empty()) throw InputError(where + " column " + header[i] + ": " + bad);
+    }
     CatalogueEntry e;
     e.file = cell("file");
     if (e.file.empty()) throw InputError(at("file") + ": expected a record file name");
     e.id = stem_of(e.file);
+    if (e.id.empty())
+      throw InputError(at("file") + ": '" + e.file + "' gives an empty record id (the id is the file's name "
+                       "without its folder and extension)");
     if (!ids.insert(e.id).second) throw InputError(where + ": duplicate record id '" + e.id + "'");
     e.event = cell("event");
     e.date = cell("date");
@@ -224,48 +263,62 @@ RecordCatalogue build_catalogue(const std::string& table) {
     e.country = cell("country");
     e.source = cell("source");
     e.terms = cell("terms");
-    e.Mw = number_cell(cell("Mw"), at("Mw"), "(-)", 2.0, 10.0);
-    e.distance_km = number_cell(cell("distance_km"), at("distance_km"), "km", 0.0, 20000.0);
+    e.Mw = number_cell(cell("Mw"), at("Mw"), catalogue_rules::Mw);
+    e.distance_km = number_cell(cell("distance_km"), at("distance_km"), catalogue_rules::distance_km);
     if (std::isfinite(e.distance_km) && e.distance_kind != "Rjb" && e.distance_kind != "Repi" &&
         e.distance_kind != "Rrup")
       throw InputError(at("distance_kind") + ": expected Rjb, Repi or Rrup, got '" + e.distance_kind + "'");
-    e.vs30_m_s = number_cell(cell("vs30_m_s"), at("vs30_m_s"), "m/s", 50.0, 5000.0);
-    e.lowest_usable_hz = number_cell(cell("lowest_usable_hz"), at("lowest_usable_hz"), "Hz", 0.0, 100.0);
+    e.vs30_m_s = number_cell(cell("vs30_m_s"), at("vs30_m_s"), catalogue_rules::vs30_m_s);
+    e.lowest_usable_hz = number_cell(cell("lowest_usable_hz"), at("lowest_usable_hz"), catalogue_rules::lowest_usable_hz);
     const std::string stated = cell("site_class_stated");
     if (!stated.empty() && stated.find_first_not_of("ABCDE") != std::string::npos)
       throw InputError(at("site_class_stated") + ": expected one of A, B, C, D, E, got '" + stated + "'");
     if (!stated.empty() && stated.size() != 1)
       throw InputError(at("site_class_stated") + ": expected one of A, B, C, D, E, got '" + stated + "'");
-    // The class the source states first (it may know the stratigraphy: class
-    // E needs it), else the Tab. 3.2.II band of Vs30 (record-selection.md §3).
+    // Issue 38: the Tab. 3.2.II band of the measured Vs30 first, the stated
+    // class only without one (record-selection.md §3; site_class_of).
     e.vs30_class = site_class_from_vs30(e.vs30_m_s);
-    if (!stated.empty()) e.site_class = stated, e.site_class_basis = "stated";
-    else if (!e.vs30_class.empty()) e.site_class = e.vs30_class, e.site_class_basis = "Vs30";
+    const SiteClass sc = site_class_of(e.vs30_m_s, stated);
+    e.site_class = sc.site_class;
+    e.site_class_basis = sc.basis;
     e.pulse = cell("pulse");
     if (!e.pulse.empty() && e.pulse != "pulse-like" && e.pulse != "non-pulse")
       throw InputError(at("pulse") + ": expected pulse-like, non-pulse or an empty cell, got '" + e.pulse + "'");
-    e.pulse_period_s = number_cell(cell("pulse_period_s"), at("pulse_period_s"), "s", 0.01, 100.0);
+    e.pulse_period_s = number_cell(cell("pulse_period_s"), at("pulse_period_s"), catalogue_rules::pulse_period_s);
     if (std::isfinite(e.pulse_period_s) && e.pulse != "pulse-like")
       throw InputError(at("pulse_period_s") + ": a pulse period needs pulse = pulse-like");
     e.plain_unit = cell("plain_unit");
     Record rec;
     try {
+      // One read of the file: its record and the hash of the same bytes.
+      const std::string path = cat.directory + "/" + e.file;
       if (!e.plain_unit.empty()) {
-        e.plain_dt_s = number_cell(cell("plain_dt_s"), at("plain_dt_s"), "s", 1e-5, 1.0);
+        e.plain_dt_s = number_cell(cell("plain_dt_s"), at("plain_dt_s"), catalogue_rules::plain_dt_s);
         if (!std::isfinite(e.plain_dt_s)) throw InputError(at("plain_dt_s") + ": a plain text file needs its time step (s)");
-        rec = read_plain_record(cat.directory + "/" + e.file, e.plain_dt_s, parse_acceleration_unit(e.plain_unit));
+        const AccelerationUnit unit = parse_acceleration_unit(e.plain_unit);
+        const std::string bytes = read_record_file(path);
+        rec = parse_plain_record_text(bytes, path, e.plain_dt_s, unit);
+        e.content_hash = hash_hex(content_hash(bytes));
       } else {
-        rec = read_record(cat.directory + "/" + e.file);
+        const std::string bytes = read_record_file(path);
+        rec = parse_record_text(bytes, path);
+        e.content_hash = hash_hex(content_hash(bytes));
       }
     } catch (const InputError& err) {
       throw InputError(where + ": " + err.what());
     }
     e.format = rec.format;
-    e.content_hash = hash_hex(file_content_hash(cat.directory + "/" + e.file));
+    if (rec.acc.empty()) throw InputError(where + ": " + cat.directory + "/" + e.file + ": the record has no samples");
     e.npts = long(rec.size());
     e.dt_s = rec.dt;
     e.pga_g = round6(rec.pga() / units::g_n);
     e.significant_duration_s = round6(significant_duration(rec));
+    // What the build computes obeys the rules the catalogue is read with (parse_catalogue_text).
+    for (const auto& [v, rule, name] : {std::tuple<double, const NumberRule&, const char*>{e.pga_g, catalogue_rules::pga_g, "PGA"},
+                                        {e.significant_duration_s, catalogue_rules::significant_duration_s, "D5-95"}}) {
+      const std::string bad = number_rule_violation(v, rule);
+      if (!bad.empty()) throw InputError(where + ": " + cat.directory + "/" + e.file + ": its " + name + ": " + bad);
+    }
     std::string reason = cell("excluded_reason");
     std::vector<std::string> missing;
     if (!std::isfinite(e.Mw)) missing.push_back("Mw");
@@ -282,6 +335,20 @@ RecordCatalogue build_catalogue(const std::string& table) {
     cat.entries.push_back(std::move(e));
   }
   return cat;
+}
+
+void relocate_catalogue(RecordCatalogue& cat, const std::string& directory) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path to = fs::weakly_canonical(fs::absolute(directory, ec), ec);
+  for (CatalogueEntry& e : cat.entries) {
+    const fs::path file = fs::weakly_canonical(fs::absolute(fs::path(cat.directory) / e.file, ec), ec);
+    const fs::path rel = file.lexically_relative(to);
+    if (ec || rel.empty())
+      throw InputError(directory + ": no path from this folder to the record file " + cat.directory + "/" + e.file);
+    e.file = rel.generic_string();
+  }
+  cat.directory = directory;
 }
 
 std::string catalogue_json(const RecordCatalogue& cat) {
@@ -333,52 +400,84 @@ std::string catalogue_json(const RecordCatalogue& cat) {
 RecordCatalogue read_catalogue(const std::string& path) {
   // The bounded reader and the JSON parser of case files (depth limit, the
   // path of a malformed value); a directory or /dev/zero is named.
-  const std::string text = read_input_file(path, input_kinds::record_catalogue);
+  return parse_catalogue_text(read_input_file(path, input_kinds::record_catalogue), path);
+}
+
+RecordCatalogue parse_catalogue_text(const std::string& text, const std::string& path) {
   const nlohmann::json j = parse_json_text(text, path);
   RecordCatalogue cat;
   cat.directory = directory_of(path);
   cat.path = path;
   cat.text_hash = content_hash(text);
-  try {
-    cat.description = j.value("description", "");
-    for (const auto& r : j.at("records")) {
-      CatalogueEntry e;
-      e.id = r.at("id").get<std::string>();
-      e.file = r.at("file").get<std::string>();
-      e.format = r.at("format").get<std::string>();
-      e.event = r.value("event", "");
-      e.date = r.value("date", "");
-      e.station = r.value("station", "");
-      e.component = r.value("component", "");
-      e.source = r.value("source", "");
-      e.note = r.value("note", "");
-      e.mechanism = r.value("mechanism", "");
-      e.station_code = r.value("station_code", "");
-      e.positive_direction = r.value("positive_direction", "");
-      e.distance_kind = r.value("distance_kind", "");
-      e.site_class = r.value("site_class", "");
-      e.site_class_basis = r.value("site_class_basis", "");
-      e.vs30_class = r.value("vs30_class", "");
-      e.pulse = r.value("pulse", "");
-      e.pulse_period_s = num_or_nan(r, "pulse_period_s");
-      e.content_hash = r.value("content_hash", "");
-      e.country = r.value("country", "");
-      e.terms = r.value("terms", "");
-      e.Mw = num_or_nan(r, "Mw");
-      e.distance_km = num_or_nan(r, "distance_km");
-      e.vs30_m_s = num_or_nan(r, "vs30_m_s");
-      e.lowest_usable_hz = num_or_nan(r, "lowest_usable_hz");
-      e.significant_duration_s = r.value("significant_duration_s", 0.0);
-      e.npts = r.at("npts").get<long>();
-      e.dt_s = r.at("dt_s").get<double>();
-      e.pga_g = r.at("pga_g").get<double>();
-      e.plain_dt_s = r.value("plain_dt_s", 0.0);
-      e.plain_unit = r.value("plain_unit", "");
-      e.usable_for_design = r.value("usable_for_design", true);
-      cat.entries.push_back(std::move(e));
+  // The rules of case files and of metadata.csv (issue 39): the file and the
+  // JSON path of a bad value, numbers within catalogue_rules, no control
+  // characters in any text (JsonNode::as_string).
+  const JsonNode root(j, path);
+  if (!root.is_object()) root.fail("expected a record catalogue (an object with \"records\")");
+  cat.description = text_or(root, "description");
+  std::set<std::string> ids;
+  for (const JsonNode& r : root.array("records")) {
+    if (!r.is_object()) r.fail("expected a record entry (an object)");
+    CatalogueEntry e;
+    e.id = r.string("id");
+    if (e.id.empty() || e.id.find('/') != std::string::npos)
+      r.at("id").fail("expected a record id (the file's name without folder and extension)");
+    if (!ids.insert(e.id).second) r.at("id").fail("duplicate record id '" + e.id + "'");
+    e.file = r.string("file");
+    if (e.file.empty()) r.at("file").fail("expected the record file's path (relative to the catalogue's folder)");
+    e.format = r.string("format");
+    e.event = text_or(r, "event");
+    e.date = text_or(r, "date");
+    e.station = text_or(r, "station");
+    e.component = text_or(r, "component");
+    e.source = text_or(r, "source");
+    e.note = text_or(r, "note");
+    e.mechanism = text_or(r, "mechanism");
+    e.station_code = text_or(r, "station_code");
+    e.positive_direction = text_or(r, "positive_direction");
+    e.distance_kind = text_or(r, "distance_kind");
+    e.site_class = text_or(r, "site_class");
+    if (!e.site_class.empty() && (e.site_class.size() != 1 || std::string("ABCDE").find(e.site_class) == std::string::npos))
+      r.at("site_class").fail("\"" + e.site_class + "\": expected one of A, B, C, D, E or \"\" (unknown)");
+    e.site_class_basis = text_or(r, "site_class_basis");
+    e.vs30_class = text_or(r, "vs30_class");
+    e.pulse = text_or(r, "pulse");
+    e.pulse_period_s = num_or_nan(r, "pulse_period_s", catalogue_rules::pulse_period_s);
+    e.content_hash = text_or(r, "content_hash");
+    if (!e.content_hash.empty() &&
+        (e.content_hash.size() != 16 || e.content_hash.find_first_not_of("0123456789abcdef") != std::string::npos))
+      r.at("content_hash").fail("expected 16 hexadecimal digits (the FNV-1a 64 of the file) or \"\"");
+    e.country = text_or(r, "country");
+    e.terms = text_or(r, "terms");
+    e.Mw = num_or_nan(r, "Mw", catalogue_rules::Mw);
+    e.distance_km = num_or_nan(r, "distance_km", catalogue_rules::distance_km);
+    if (std::isfinite(e.distance_km) && e.distance_kind != "Rjb" && e.distance_kind != "Repi" && e.distance_kind != "Rrup")
+      r.fail("distance_kind \"" + e.distance_kind + "\": expected Rjb, Repi or Rrup with a distance");
+    e.vs30_m_s = num_or_nan(r, "vs30_m_s", catalogue_rules::vs30_m_s);
+    e.lowest_usable_hz = num_or_nan(r, "lowest_usable_hz", catalogue_rules::lowest_usable_hz);
+    e.significant_duration_s = r.number_or("significant_duration_s", 0.0, catalogue_rules::significant_duration_s);
+    const JsonNode npts = r.at("npts");
+    if (!npts.value().is_number_integer() || npts.value().get<double>() < 1.0 ||
+        npts.value().get<double>() > catalogue_rules::npts_max)
+      npts.fail("expected a number of samples, an integer from 1 to 1e9");
+    e.npts = npts.value().get<long>();
+    e.dt_s = r.number("dt_s", catalogue_rules::dt_s);
+    e.pga_g = r.number("pga_g", catalogue_rules::pga_g);
+    e.plain_unit = text_or(r, "plain_unit");
+    if (!e.plain_unit.empty()) {
+      try {
+        parse_acceleration_unit(e.plain_unit);
+      } catch (const InputError& ex) {
+        r.at("plain_unit").fail(ex.what());
+      }
+      e.plain_dt_s = r.number("plain_dt_s", catalogue_rules::plain_dt_s);
     }
-  } catch (const nlohmann::json::exception& ex) {
-    throw InputError("malformed record catalogue '" + path + "': " + ex.what());
+    e.usable_for_design = r.boolean_or("usable_for_design", true);
+    // A record usable for design has what the selection filters on (build_catalogue's rule).
+    if (e.usable_for_design && (!std::isfinite(e.Mw) || !std::isfinite(e.distance_km) || e.site_class.empty()))
+      (r.has("usable_for_design") ? r.at("usable_for_design") : r).fail("true, but the entry has no Mw, distance or site class: the selection "
+                                     "cannot filter it (rebuild the catalogue with `assess records build`)");
+    cat.entries.push_back(std::move(e));
   }
   return cat;
 }

@@ -8,6 +8,7 @@
 
 #include "assess/support/error.hpp"
 #include "assess/support/input_file.hpp"
+#include "assess/support/number_rules.hpp"
 #include "assess/support/units.hpp"
 
 #include <algorithm>
@@ -366,6 +367,15 @@ Record parse_record_text(const std::string& text, const std::string& path) {
                             "for a plain file give the time step and unit)");
   r.name = stem(path);
   r.source = path;
+  // The header's texts are printed in the reports (a listed record's event,
+  // station, component): the text rule of case files, a tab read as a blank
+  // (issue 39: an ESC sequence in a header re-programs the terminal).
+  for (const auto& [text, field] : {std::pair<std::string*, const char*>{&r.event, "event"},
+                                    {&r.station, "station"}, {&r.component, "component"}}) {
+    std::replace(text->begin(), text->end(), '\t', ' ');
+    const std::string bad = control_character_violation(*text);
+    if (!bad.empty()) throw InputError(path + ": the header's " + field + ": " + bad);
+  }
   return r;
 }
 
@@ -439,6 +449,27 @@ Record read_plain_record(const std::string& path, AccelerationUnit unit) {
     throw InputError(path + ": the time column must increase: the first two times give dt = " + show(dt) + " s");
   check_dt_range(dt, path, "the first two times give the time step");
   return parse_plain_record_text(text, path, dt, unit);
+}
+
+Record make_plain_record(const double* values, std::size_t n, double dt_s, AccelerationUnit unit,
+                         const std::string& name) {
+  check_dt_range(dt_s, name, "time step");
+  if (n < 2) throw InputError(name + ": a record needs at least 2 values");
+  Record r;
+  r.format = "plain";
+  r.dt = dt_s;
+  r.name = name;
+  const double factor = to_m_s2(unit);
+  r.acc.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = values[i] * factor;
+    if (!std::isfinite(a))
+      throw InputError(name + ": value " + std::to_string(i) + " is " + show(values[i]) +
+                       (std::isfinite(values[i]) ? ", which overflows once converted to m/s^2" : "") +
+                       " (expected a finite acceleration)");
+    r.acc.push_back(a);
+  }
+  return r;
 }
 
 double scale_factor_to_pga(const Record& record, double target_pga_m_s2) {

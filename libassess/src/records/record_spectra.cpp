@@ -16,15 +16,15 @@
 #include "assess/support/content_hash.hpp"
 #include "assess/support/error.hpp"
 #include "assess/support/input_file.hpp"
+#include "assess/support/number_rules.hpp"
 #include "assess/support/output_file.hpp"
+#include "assess/support/units.hpp"
 #include "support/parallel_for.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 
 namespace assess {
 
@@ -130,25 +130,38 @@ void write_library_spectra(const LibrarySpectra& s, const std::string& path) {
 
 LibrarySpectra read_library_spectra(const std::string& path, const RecordCatalogue& cat) {
   if (!std::filesystem::exists(path)) throw InputError("record spectra '" + path + "' not found");
-  const std::string bytes = read_input_file(path, input_kinds::own_output);  // bounded, not a FIFO
+  // The bounded reader: a regular file within its limit, never a FIFO.
+  return parse_library_spectra(read_input_file(path, input_kinds::record_spectra), path, cat);
+}
+
+LibrarySpectra parse_library_spectra(const std::string& bytes, const std::string& path, const RecordCatalogue& cat) {
+  const std::string where = "record spectra '" + path + "'";
   if (bytes.size() < 16 + 8 + 8 + 12 + 8 || bytes.compare(0, 16, magic) != 0)
-    throw InputError("record spectra '" + path + "': not a spectra file of this version (" + magic + ")");
+    throw InputError(where + ": not a spectra file of this version (" + magic + ")");
   std::uint64_t stored;
   std::memcpy(&stored, bytes.data() + bytes.size() - 8, 8);
   if (content_hash(bytes.data(), bytes.size() - 8) != stored)
-    throw InputError("record spectra '" + path + "': content hash mismatch (damaged file)");
+    throw InputError(where + ": content hash mismatch (damaged file)");
   Reader rd{bytes, path, 16};
-  if (rd.get<double>() != 1.0) throw InputError("record spectra '" + path + "': written with another byte order");
+  if (rd.get<double>() != 1.0) throw InputError(where + ": written with another byte order");
   LibrarySpectra s;
   s.catalogue_hash = rd.get<std::uint64_t>();
   if (s.catalogue_hash != cat.text_hash)
-    throw InputError("record spectra '" + path + "' were computed for another catalogue.json (catalogue hash " +
+    throw InputError(where + " were computed for another catalogue.json (catalogue hash " +
                      hash_hex(s.catalogue_hash) + ", this one " + hash_hex(cat.text_hash) +
                      "): stale, rebuild them with `assess records build`");
-  const std::uint32_t np = rd.get<std::uint32_t>(), nd = rd.get<std::uint32_t>(), nr = rd.get<std::uint32_t>();
-  const std::size_t body = bytes.size() - 8;
-  if (np < 2 || nd < 1 || (std::size_t(np) + nd) * 8 > body || std::size_t(nr) * nd * np * 8 > body)
-    throw InputError("record spectra '" + path + "': sizes do not fit the file");
+  // The counts, checked against what the file holds in 64-bit arithmetic
+  // before anything is allocated (issue 39: the product of three 32-bit
+  // counts wrapped, and a 600 kB file asked for 64 GB).
+  const std::uint64_t np = rd.get<std::uint32_t>(), nd = rd.get<std::uint32_t>(), nr = rd.get<std::uint32_t>();
+  const std::uint64_t left = bytes.size() - 8 - rd.pos;  // < 2^63: a string's size
+  const auto sizes = [&] { return where + ": its counts (" + std::to_string(np) + " periods, " + std::to_string(nd) +
+                                  " dampings, " + std::to_string(nr) + " records) do not fit the file"; };
+  // Each quotient bounds the next product: np + nd <= left/8, nd np <= left/8.
+  if (np < 2 || nd < 1 || np > left / 8 || nd > left / 8 - np || nd > left / 8 / np) throw InputError(sizes());
+  // Each record takes an id (4 bytes of length at least) and nd np ordinates.
+  const std::uint64_t per_record = 4 + 8 * nd * np;
+  if (nr > (left - 8 * (np + nd)) / per_record) throw InputError(sizes());
   s.periods.resize(np);
   for (double& T : s.periods) T = rd.get<double>();
   s.dampings.resize(nd);
@@ -156,16 +169,59 @@ LibrarySpectra read_library_spectra(const std::string& path, const RecordCatalog
   s.ids.resize(nr);
   for (std::string& id : s.ids) {
     const std::uint32_t len = rd.get<std::uint32_t>();
-    if (len > body - rd.pos) throw InputError("record spectra '" + path + "': truncated file");
+    if (len > bytes.size() - 8 - rd.pos) throw InputError(where + ": truncated file");
     id.assign(bytes, rd.pos, len);
     rd.pos += len;
   }
-  const std::size_t n = std::size_t(nr) * nd * np;
-  if ((body - rd.pos) != n * 8) throw InputError("record spectra '" + path + "': sizes do not fit the file");
+  const std::uint64_t n = nr * nd * np;
+  if (bytes.size() - 8 - rd.pos != n * 8) throw InputError(sizes());
   s.psa.resize(n);
-  std::memcpy(s.psa.data(), bytes.data() + rd.pos, n * 8);
-  if (s.periods.front() != 0.0 || !std::is_sorted(s.periods.begin(), s.periods.end()))
-    throw InputError("record spectra '" + path + "': the period grid must start at 0 and increase");
+  if (n) std::memcpy(s.psa.data(), bytes.data() + rd.pos, n * 8);
+  // The content, checked after the hash (which only says the file is as it
+  // was written; issue 39: NaN, zero, negative or 1e300 ordinates and a NaN
+  // or repeated period grid became selections).
+  for (std::size_t j = 0; j < s.periods.size(); ++j) {
+    const double T = s.periods[j];
+    if (!(std::isfinite(T) && (j == 0 ? T == 0.0 : T > s.periods[j - 1])))
+      throw InputError(where + ": the period grid must start at 0 s and increase strictly with finite periods "
+                       "(period " + std::to_string(j) + " is " + number_for_message(T) + " s)");
+  }
+  for (std::size_t d = 0; d < s.dampings.size(); ++d)
+    if (!(s.dampings[d] > 0.0 && s.dampings[d] < 1.0) ||
+        std::find(s.dampings.begin(), s.dampings.begin() + long(d), s.dampings[d]) != s.dampings.begin() + long(d))
+      throw InputError(where + ": damping " + number_for_message(s.dampings[d]) +
+                       " is not a fraction of critical in (0, 1) distinct from the others");
+  // The records: the catalogue's usable ones, in its order (compute_library_spectra).
+  std::vector<const CatalogueEntry*> usable;
+  for (const CatalogueEntry& e : cat.entries)
+    if (e.usable_for_design) usable.push_back(&e);
+  if (usable.size() != s.ids.size())
+    throw InputError(where + ": " + std::to_string(s.ids.size()) + " records, the catalogue has " +
+                     std::to_string(usable.size()) + " usable for design: rebuild them with `assess records build`");
+  for (std::size_t i = 0; i < usable.size(); ++i) {
+    const CatalogueEntry& e = *usable[i];
+    if (s.ids[i] != e.id)
+      throw InputError(where + ": record " + std::to_string(i + 1) + " is '" + s.ids[i] + "', the catalogue's is '" +
+                       e.id + "': rebuild them with `assess records build`");
+    for (std::size_t d = 0; d < s.dampings.size(); ++d) {
+      const double* r = s.row(i, d);
+      // T = 0: the record's PGA, as the catalogue gives it (6 digits).
+      const double pga = e.pga_g * units::g_n;
+      if (!(std::fabs(r[0] - pga) <= 1e-5 * pga))
+        throw InputError(where + ": record " + e.id + ": PSA(0) = " + number_for_message(r[0]) +
+                         " m/s^2 is not its PGA " + number_for_message(pga) + " m/s^2");
+      // 0 < PSA(T) <= PGA / (xi sqrt(1 - xi^2)): the oscillator's impulse
+      // response h(t) = e^(-xi w t) sin(w_d t) / w_d gives |w^2 u| <= max|a|
+      // w^2 / w_d int e^(-xi w t) dt = PGA w / (xi w_d) (docs/theory/record-selection.md §2.6).
+      const double xi = s.dampings[d], bound = pga / (xi * std::sqrt(1.0 - xi * xi)) * (1.0 + 1e-9);
+      for (std::size_t j = 0; j < s.periods.size(); ++j)
+        if (!(r[j] > 0.0 && r[j] <= bound))
+          throw InputError(where + ": record " + e.id + ": PSA " + number_for_message(r[j]) + " m/s^2 at T = " +
+                           number_for_message(s.periods[j]) + " s, damping " + number_for_message(xi) +
+                           ": expected a positive value at most PGA/(xi sqrt(1 - xi^2)) = " + number_for_message(bound) +
+                           " m/s^2");
+    }
+  }
   return s;
 }
 

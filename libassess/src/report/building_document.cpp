@@ -417,6 +417,12 @@ std::string tie_label(Lang L, const TieInterventionResult& t, bool after) {
     if (g.levels > 1) s += " (" + std::to_string(g.levels) + " " + bt(L, "ties_levels") + ")";
     out += (out.empty() ? "" : "; ") + s;
   }
+  // Issue 37: the existing levels the design changed.
+  if (after)
+    for (const TieChange& c : t.changes)
+      out += (out.empty() ? "" : "; ") + msg(L, "tie.existing") + ": " +
+             (c.kind == "removed" ? msg(L, "tie.change.removed")
+                                  : msg(L, c.kind == "anchor" ? "tie.change_short.anchor" : "tie.change_short.rod"));
   if (after && t.designed && !t.found) out = bt(L, "ties_not_found") + " (" + out + ")";
   return out.empty() ? "—" : out;
 }
@@ -569,7 +575,11 @@ bool has_shared_set(const BuildingAssessment& b) {
   return false;
 }
 
-void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d, const ReportOptions& options) {
+void add_record_sets(Lang L, const BuildingAssessment& b, DocumentBuilder& t, const ReportOptions& options, int level = 2);
+
+// `tabulati`: the relazione, whose record sets are in its tabulati; the
+// terminal's summary (no tabulati) describes them itself.
+void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d, const ReportOptions& options, bool tabulati) {
   const BuildingCase& bc = b.building;
   d.add_heading(bt(L, "summary"), 2, true, true, "summary");
   d.add_paragraph(bt(L, "site_line") + ": " + relazione::decimal_comma(L == Lang::it ? localise(L, b.site_description) : b.site_description) +
@@ -660,24 +670,26 @@ void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d, const 
   for (const SharedSelection& s : bc.selections)
     if (s.fell_back) d.add_paragraph(s.id + ": " + (L == Lang::it ? relazione::decimal_comma(localise(L, s.note)) : s.note));
   // Each shared set is described in the tabulati (add_record_sets; issue 36: the body's length).
-  if (has_shared_set(b))
+  if (has_shared_set(b) && tabulati)
     d.add_paragraph(Inline{reference(bt(L, "sets_in_tab"), "record-sets", tabulati_key)}, "note");
+  else
+    add_record_sets(L, b, d, options, 3);
   if (b.tie_index.any_ties) add_ties_summary(L, b, d);
 }
 
 // Each shared set described once (its first member's records, flags, selection and compatibility),
 // in the tabulati: the mechanisms' dynamic sections refer to it (issue 28, item 11; issue 36).
-void add_record_sets(Lang L, const BuildingAssessment& b, DocumentBuilder& t, const ReportOptions& options) {
+void add_record_sets(Lang L, const BuildingAssessment& b, DocumentBuilder& t, const ReportOptions& options, int level) {
   if (!has_shared_set(b)) return;
   const BuildingCase& bc = b.building;
-  t.add_heading(bt(L, "sets"), 2, false, true, "record-sets");
+  if (level == 2) t.add_heading(bt(L, "sets"), 2, false, true, "record-sets");
   std::set<std::string> shown;
   for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
     const BuildingMechanism& m = bc.mechanisms[i];
     const FacadeAssessment& a = b.results[i].a;
     if (m.record_set != RecordSetKind::shared || !a.dynamic || !a.dynamic_applies || !shown.insert(m.record_group).second)
       continue;
-    t.add_heading(bt(L, "set") + " " + m.record_group, 3, false, true, "set-" + m.record_group);
+    t.add_heading(bt(L, "set") + " " + m.record_group, level + 1, false, true, "set-" + m.record_group);
     ReportOptions ro = options;
     relazione::Ctx c{a, ro, L, t, nullptr};
     relazione::add_record_set(c, a, "fig-compatibility-" + m.record_group);
@@ -836,7 +848,7 @@ Document building_summary(const BuildingAssessment& b, const ReportOptions& opti
                  detail::shown_file(bc.file) + ". " + msg(L, "sum.full"));
   add_verdict(L, b, d);
   facade_site_section(b.results.front().a, options, d);
-  add_summary(L, b, d, options);
+  add_summary(L, b, d, options, false);
   add_interventions(L, b, d, options);
   add_warnings(L, b, d);
   return d.document();
@@ -909,7 +921,7 @@ Relazione building_relazione(const BuildingAssessment& b, const ReportOptions& o
     relazione::Ctx c{a0, mo, L, d, &readings, true, true};
     relazione::add_formulas(c);
   }
-  add_summary(L, b, d, options);
+  add_summary(L, b, d, options, true);
 
   // The tabulati: what they hold, then each mechanism's part in the order of the body.
   t.add_contents(msg(L, "doc.contents"), 2);
@@ -944,6 +956,24 @@ Relazione building_relazione(const BuildingAssessment& b, const ReportOptions& o
   for (DocumentBuilder* x : {&d, &t}) {
     x->set_heading_shift(0);
     x->set_id_prefix("");
+  }
+  // Issue 37: the ties of each wall once, with the mechanisms they restrain.
+  for (std::size_t w = 0; w < bc.doc.at("walls").size(); ++w) {
+    std::vector<std::pair<std::string, const TieInterventionResult*>> members;
+    const FacadeAssessment* first = nullptr;
+    std::string wall;
+    for (std::size_t i = 0; i < bc.mechanisms.size(); ++i)
+      if (bc.mechanisms[i].wall_index == w && bc.mechanisms[i].wall_ties && b.results[i].ties &&
+          b.results[i].ties->wall_members.size() > 1) {
+        members.push_back({bc.mechanisms[i].id + " " + bc.mechanisms[i].name, &*b.results[i].ties});
+        if (!first) first = &b.results[i].a, wall = bc.mechanisms[i].wall;
+      }
+    if (members.empty()) continue;
+    mo.ties = members.front().second;
+    d.set_id_prefix("wall" + std::to_string(w + 1) + "-");
+    relazione::Ctx c{*first, mo, L, d, &readings};
+    relazione::add_wall_tie_section(c, wall, members);
+    d.set_id_prefix("");
   }
   mo.ties = nullptr;
   mo.shared_records.clear();

@@ -128,7 +128,8 @@ std::string to_pandoc_html(const Document& d) {
          "</body>\n</html>\n";
 }
 
-void write_docx(const Document& d, const std::string& path) {
+void write_docx(const Document& d, const std::string& path, const std::string& shown) {
+  const std::string what = shown.empty() ? "--docx " + path : shown;
   detail::TempDir dir("assess_docx_");
   write_figures(d.blocks, dir.path());
   detail::write_file(dir.path() / "report.html", to_pandoc_html(d), "--docx");
@@ -142,17 +143,18 @@ void write_docx(const Document& d, const std::string& path) {
                                         "--resource-path=" + dir.path().string(), "--output=" + out.string(),
                                         (dir.path() / "report.html").string()},
                                        log);
-  if (code == 127)
-    throw InputError("--docx " + path + ": pandoc was not found on PATH: install it (Debian: apt-get install pandoc "
-                     "librsvg2-bin)");
+  if (code == detail::program_not_found)
+    throw InputError(what + ": pandoc was not found on PATH: install it (Debian: apt-get install pandoc librsvg2-bin)");
+  if (code == detail::program_timed_out)
+    throw InputError(what + ": pandoc did not finish within its time limit (180 s)");
   if (code != 0 || !std::filesystem::exists(out)) {
     std::string msg = detail::read_file(log);
     if (msg.size() > 400) msg = msg.substr(0, 400) + "…";
-    throw InputError("--docx " + path + ": pandoc could not write the document (exit " + std::to_string(code) + "): " + msg);
+    throw InputError(what + ": pandoc could not write the document (exit " + std::to_string(code) + "): " + msg);
   }
   std::error_code ec;
   std::filesystem::copy_file(out, path, std::filesystem::copy_options::overwrite_existing, ec);
-  if (ec) throw InputError("--docx " + path + ": cannot write the file (" + ec.message() + ")");
+  if (ec) throw InputError(what + ": cannot write the file (" + ec.message() + ")");
 }
 
 }  // namespace assess

@@ -2,38 +2,32 @@
 #include "report/external_tool.hpp"
 
 #include "assess/support/error.hpp"
+#include "assess/support/termination.hpp"
 
-#include <sys/wait.h>
-
-#include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 
 namespace assess::detail {
 
-TempDir::TempDir(const std::string& stem) {
-  std::string tmpl = (std::filesystem::temp_directory_path() / (stem + "XXXXXX")).string();
-  if (!::mkdtemp(tmpl.data())) throw InputError("cannot create a temporary directory in " + tmpl);
-  path_ = tmpl;
-}
+TempDir::TempDir(const std::string& stem) : path_(make_temporary_folder(stem)) {}
 
 TempDir::~TempDir() {
   std::error_code ec;
   std::filesystem::remove_all(path_, ec);
-}
-
-std::string sh_quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
+  release_temporary(path_.string());
 }
 
 int run_program(const std::vector<std::string>& argv, const std::filesystem::path& log, int timeout_s) {
-  std::string cmd = "timeout " + std::to_string(timeout_s);
-  for (const std::string& a : argv) cmd += " " + sh_quote(a);
-  cmd += " >" + sh_quote(log.string()) + " 2>&1";
-  const int status = std::system(cmd.c_str());
-  return (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : 1;
+  // Its TMPDIR is the private temporary directory of its log: what it leaves
+  // there (Chromium's org.chromium.* when it is stopped) goes with it.
+  const ProgramResult r = assess::run_program(argv, log.string(), timeout_s, log.parent_path().string());
+  if (!r.started) {
+    if (r.start_error == ENOENT) return program_not_found;
+    throw InputError("cannot start " + argv.front() + ": " + std::strerror(r.start_error));
+  }
+  if (r.timed_out) return program_timed_out;
+  return r.signal ? 128 + r.signal : r.exit_status;
 }
 
 void write_file(const std::filesystem::path& path, const std::string& text, const std::string& what) {

@@ -1,8 +1,9 @@
 // external_tool.hpp (private to the report layer): the programs the report
 // writers run (headless Chromium for the PDF, pdftohtml for its outline,
-// pandoc for the Word document, rsvg-convert through pandoc), each in a
-// private temporary directory removed afterwards, with shell-quoted arguments
-// and a time limit.
+// qpdf, pandoc for the Word document, rsvg-convert through pandoc), each in a
+// private temporary directory removed afterwards, without a shell, in its own
+// process group, with a time limit; a signal that stops `assess` stops them
+// and removes the directory (support/termination.hpp, issue 39).
 #pragma once
 
 #include <filesystem>
@@ -11,7 +12,9 @@
 
 namespace assess::detail {
 
-/// A private temporary directory (mkdtemp), removed with its content.
+/// A private temporary directory (support/termination.hpp's
+/// make_temporary_folder: under TMPDIR, removed on a signal), removed with
+/// its content when it goes out of scope.
 class TempDir {
  public:
   explicit TempDir(const std::string& stem);
@@ -24,11 +27,15 @@ class TempDir {
   std::filesystem::path path_;
 };
 
-/// POSIX shell single-quoting.
-std::string sh_quote(const std::string& s);
+/// Exit status of run_program for a program not found on PATH.
+inline constexpr int program_not_found = 127;
+/// Exit status of run_program for a program killed at its time limit.
+inline constexpr int program_timed_out = 124;
 
-/// Runs `argv` (program and arguments, quoted here) with `timeout` seconds,
-/// standard output and error to `log`. Returns the exit status (127: not found).
+/// Runs `argv` (program and arguments) with `timeout_s` seconds, standard
+/// output and error to `log`, TMPDIR the folder of `log` (a TempDir). Returns its exit status: program_not_found,
+/// program_timed_out, 128 + N when signal N ended it. A program that cannot
+/// be started for another reason is an InputError naming it and the cause.
 int run_program(const std::vector<std::string>& argv, const std::filesystem::path& log, int timeout_s = 180);
 
 /// Writes `text` to `path` (binary); InputError naming `what` on failure.

@@ -38,6 +38,12 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
   for (const CaseDefault& x : assessment_defaults(a))
     defaults.push_back({{"path", x.path}, {"value", x.value}, {"effect", msg(Lang::en, x.effect)}});
   j["defaults"] = defaults;
+  // The adopted verdict under the readings a verificatore questions first (sensitivity.hpp).
+  nlohmann::json sens = nlohmann::json::array();
+  for (const SensitivityRow& r : a.sensitivity)
+    sens.push_back({{"parameter", r.parameter}, {"value", r.value}, {"adopted", r.adopted},
+                    {"dc", finite_or_null(r.dc)}, {"satisfied", r.satisfied}});
+  j["sensitivity"] = sens;
   if (a.kase.site) {
     const SiteSpec& sp = *a.kase.site;
     nlohmann::json s{{"description", a.site_description}, {"soil", to_string(sp.conditions.soil)},

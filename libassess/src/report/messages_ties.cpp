@@ -14,14 +14,8 @@ const std::map<std::string, std::pair<std::string, std::string>>& tie_messages()
       {"tie.in_tab", {"Le formule delle resistenze con le loro fonti, la verifica dinamica dopo l'intervento e i dettagli costruttivi delle catene di questo meccanismo sono nei tabulati, §{§}.",
         "The strength formulas with their sources, the dynamic check after the intervention and the detailing of this mechanism's ties are in the tabulati, §{§}."}},
       {"tie.intro_design",
-       {"Stato di fatto: la parete come è, con le catene esistenti. Stato di progetto: con le catene progettate, la più "
-        "piccola barra commerciale con la più piccola piastra che soddisfano tutte le verifiche del meccanismo e della "
-        "catena, con catene duttili (gerarchia delle resistenze) o che restano in campo elastico in ogni analisi "
-        "(riparazione o intervento locale, NTC 2018 §8.4.1).",
-        "Existing state: the wall as it is, with its existing ties. Design state: with the designed ties, the smallest "
-        "commercial rod with the smallest plate that satisfy every check of the mechanism and of the tie, with ties "
-        "that are ductile (capacity design) or stay elastic in every analysis (repair or local intervention, NTC 2018 "
-        "§8.4.1)."}},
+       {"Stato di fatto: la parete come è, con le catene esistenti. Stato di progetto: con le catene progettate, la prima barra commerciale con il primo capochiave, nell'ordine documentato e preferendo le catene duttili, che soddisfano tutte le verifiche del meccanismo e di ogni catena, comprese quelle esistenti; una catena esistente che non è verificata è modificata con il minimo intervento (un nuovo capochiave, una nuova barra, la sua rimozione) (riparazione o intervento locale, NTC 2018 §8.4.1).",
+        "Existing state: the wall as it is, with its existing ties. Design state: with the designed ties, the first commercial rod with the first anchor, in the documented order and preferring ductile ties, that satisfy every check of the mechanism and of every tie, the existing ones included; an existing tie that fails is changed by the least change (a new anchor, a new rod, its removal) (repair or local intervention, NTC 2018 §8.4.1)."}},
       {"tie.intro_given",
        {"Stato di fatto: la parete come è, con le catene esistenti. Stato di progetto: con le catene nuove indicate; "
         "verifiche del meccanismo e delle catene nei due stati.",
@@ -33,11 +27,8 @@ const std::map<std::string, std::pair<std::string, std::string>>& tie_messages()
         "The existing ties are part of the existing state: the mechanism is checked with them and their checks are "
         "those of the existing state; no intervention is given."}},
       {"tie.regime_ductile",
-       {"Le catene progettate sono duttili: ogni resistenza fragile (filettatura, compressione locale, punzonamento, "
-        "capochiave) supera la resistenza a snervamento della barra amplificata per la sovraresistenza, e la barra "
-        "può snervarsi senza rotture fragili.",
-        "The designed ties are ductile: every brittle strength (thread, local compression, punching, anchor) exceeds "
-        "the rod's yield strength amplified for overstrength, so the rod may yield without a brittle failure."}},
+       {"Le catene progettate sono duttili: le estremità sono ringrossate o saldate e ogni resistenza fragile (filettatura, compressione locale, punzonamento, scorrimento, capochiave) supera la resistenza a snervamento della barra amplificata per la sovraresistenza; la barra può snervarsi senza rotture fragili fino al suo allungamento uniforme di progetto, e la capacità dello stato di progetto ne tiene conto.",
+        "The designed ties are ductile: their ends are upset or welded and every brittle strength (thread, local compression, punching, sliding, anchor) exceeds the rod's yield strength amplified for overstrength; the rod may yield without a brittle failure up to its design uniform elongation, and the design state's capacity counts on it."}},
       {"tie.regime_elastic",
        {"Le catene progettate non sono duttili (la filettatura o la muratura cedono prima dello snervamento "
         "amplificato della barra): sono dimensionate per restare in campo elastico, e la forza massima che sviluppano "
@@ -46,10 +37,8 @@ const std::map<std::string, std::pair<std::string, std::string>>& tie_messages()
         "are sized to stay elastic, and the largest force they develop in the checks and in every SLV dynamic "
         "analysis stays below each of their strengths."}},
       {"tie.not_found",
-       {"Nessuna combinazione degli elenchi soddisfa tutte le verifiche con catene duttili o in campo elastico; si "
-        "riporta la più grande.",
-        "No combination of the lists satisfies every check with ties that are ductile or stay elastic; the largest "
-        "is shown."}},
+       {"Nessuna combinazione degli elenchi, con il minimo intervento sulle catene esistenti non verificate, soddisfa tutte le verifiche; si riporta quella che vi si è avvicinata di più.",
+        "No combination of the lists, with the least change to the existing ties that fail, satisfies every check; the one that came closest is shown."}},
       {"tie.drawing",
        {"Le catene sul meccanismo nello stato considerato: per ogni livello la resistenza di progetto di una catena "
         "e quella dell'intero livello lungo la parete.",
@@ -86,30 +75,31 @@ const std::map<std::string, std::pair<std::string, std::string>>& tie_messages()
       {"tie.component.bearing", {"compressione locale della muratura", "local compression of the masonry"}},
       {"tie.component.punching", {"punzonamento del cuneo murario", "punching of the masonry wedge"}},
       {"tie.component.anchor bending", {"flessione del capochiave", "bending of the anchor"}},
+      {"tie.component.sliding",
+       {"scorrimento della muratura sopra il capochiave", "sliding of the masonry above the anchor"}},
       {"tie.component.elongation", {"allungamento ultimo della barra", "ultimate elongation of the rod"}},
       // Formulas and their sources.
       {"tie.formulas_title", {"Resistenze: formule e fonti", "Strengths: formulas and sources"}},
       {"tie.f.rod",
-       {"Snervamento della barra: N_pl,Rd = A f_yk / γ_M0, γ_M0 = 1,05 (NTC 2018 §4.2.4.1.2, [4.2.6]); f_yk, f_tk "
-        "dalla Tab. 11.3.IX delle NTC 2018 per spessori fino a 40 mm.",
-        "Rod yield: N_pl,Rd = A f_yk / γ_M0, γ_M0 = 1.05 (NTC 2018 §4.2.4.1.2, [4.2.6]); f_yk, f_tk from NTC 2018 "
-        "Tab. 11.3.IX for thicknesses up to 40 mm."}},
+       {"Snervamento della barra: N_pl,Rd = A_c f_yk / γ_M0, γ_M0 = 1,05 (NTC 2018 §4.2.4.1.2, [4.2.6]); f_yk, f_tk dalla Tab. 11.3.IX delle NTC 2018 per spessori fino a 40 mm; A_c è la sezione ridotta dal sovraspessore di corrosione δ su ogni faccia, A_c = π/4 (d − 2δ)² (EN 1993-5 §4.4).",
+        "Rod yield: N_pl,Rd = A_c f_yk / γ_M0, γ_M0 = 1.05 (NTC 2018 §4.2.4.1.2, [4.2.6]); f_yk, f_tk from NTC 2018 Tab. 11.3.IX for thicknesses up to 40 mm; A_c is the section reduced by the corrosion allowance δ on every face, A_c = π/4 (d − 2δ)² (EN 1993-5 §4.4)."}},
       {"tie.f.thread",
-       {"Rottura dell'estremità filettata, come bullone a trazione: N_t,Rd = 0,9 f_tk A_res / γ_M2, γ_M2 = 1,25 (NTC 2018 "
-        "§4.2.8.1.1), con f_tk dell'acciaio della barra e A_res area resistente della filettatura metrica ISO "
-        "(ISO 898-1).",
-        "Rupture of the threaded end, as a bolt in tension: N_t,Rd = 0.9 f_tk A_res / γ_M2, γ_M2 = 1.25 (NTC 2018 "
-        "§4.2.8.1.1), with f_tk of the rod's steel and A_res the stress area of the ISO metric thread (ISO 898-1)."}},
+       {"Rottura dell'estremità filettata, come bullone a trazione: N_t,Rd = 0,9 f_tk A_res,c / γ_M2, γ_M2 = 1,25 (NTC 2018 §4.2.8.1.1), con f_tk dell'acciaio della barra e A_res,c l'area resistente della filettatura metrica ISO (ISO 898-1) ridotta dal sovraspessore di corrosione.",
+        "Rupture of the threaded end, as a bolt in tension: N_t,Rd = 0.9 f_tk A_res,c / γ_M2, γ_M2 = 1.25 (NTC 2018 §4.2.8.1.1), with f_tk of the rod's steel and A_res,c the stress area of the ISO metric thread (ISO 898-1) reduced by the corrosion allowance."}},
       {"tie.f.bearing",
        {"Compressione locale della muratura sotto il capochiave: N_c,Rd = f_d A_b, f_d = f_m / (FC γ_M), A_b area di "
         "appoggio (ipotesi del progettista, in appendice).",
         "Local compression of the masonry under the anchor: N_c,Rd = f_d A_b, f_d = f_m / (FC γ_M), A_b the bearing "
         "area (designer's assumption, in the appendix)."}},
       {"tie.f.punching",
-       {"Punzonamento del cuneo murario: N_p,Rd = f_vd s (2(a + b) + 4 s tan 45°), f_vd = τ / (FC γ_M), cuneo a 45° "
-        "nello spessore s della parete (ipotesi del progettista, in appendice).",
-        "Punching of the masonry wedge: N_p,Rd = f_vd s (2(a + b) + 4 s tan 45°), f_vd = τ / (FC γ_M), a wedge at 45° "
-        "through the wall's thickness s (designer's assumption, in the appendix)."}},
+       {"Punzonamento del cuneo murario: N_p,Rd = f_vd A_p, f_vd = τ / (FC γ_M); il cuneo si allarga a 45° dai bordi del capochiave nello spessore s della parete, e A_p è l'integrale sullo spessore del suo contorno laterale che giace nella muratura: il cuneo è tagliato dal coronamento della parete, dalle sue estremità, dalle aperture e dai cunei delle catene adiacenti (la mezzeria dell'interasse). Senza tagli A_p = s (2 (a + b) + 4 s); vale la catena del livello con A_p minore (ipotesi del progettista, in appendice).",
+        "Punching of the masonry wedge: N_p,Rd = f_vd A_p, f_vd = τ / (FC γ_M); the wedge spreads at 45° from the anchor's edges through the wall's thickness s, and A_p is the integral over the thickness of its lateral boundary that lies in masonry: the wedge is cut by the wall's crown, its ends, its openings and the wedges of the adjacent ties (the middle of the spacing). Uncut, A_p = s (2 (a + b) + 4 s); the tie of the level with the smallest A_p governs (designer's assumption, in the appendix)."}},
+      {"tie.f.sliding",
+       {"Scorrimento della muratura sopra il capochiave sul giunto di malta al suo bordo inferiore: N_s,Rd = f_vd A_lat + (f_v0 / (FC γ_M) + μ σ_n / γ_M) A_base, con il blocco che si allarga a 45° nello spessore come il cuneo, i suoi fianchi dal giunto fino al coronamento (o alla prima apertura), σ_n il peso della muratura sovrastante più il carico sul coronamento, μ = 0,4 (NTC 2018 §4.5.6.1; Engineering Structures 2016: la resistenza è la minore fra lo scorrimento dei conci sui letti di malta e l'estrazione del cuneo).",
+        "Sliding of the masonry above the anchor on the bed joint at its lower edge: N_s,Rd = f_vd A_sides + (f_v0 / (FC γ_M) + μ σ_n / γ_M) A_base, the block spreading at 45° through the thickness as the wedge does, its sides from the joint up to the crown (or the first opening), σ_n the weight of the masonry above plus the load on the crown, μ = 0.4 (NTC 2018 §4.5.6.1; Engineering Structures 2016: the strength is the smaller of the units sliding on the mortar beds and the wedge pulled out)."}},
+      {"tie.f.temperature",
+       {"Azione termica sulla barra vincolata agli estremi: N_T = E A α_T ΔT, α_T = 12·10⁻⁶/K, ΔT dato (di norma 15 K, NTC 2018 §3.5.5 Tab. 3.5.II, acciaio protetto); non si combina con il sisma (ψ2 = 0, NTC 2018 Tab. 2.5.I): barra e filettatura sono verificate nella combinazione fondamentale γ_P P0 + γ_Q N_T (γ_P = 1,0, γ_Q = 1,5), e la pretensione di una catena nuova P0 ≥ N_T assorbe l'escursione termica senza che la barra, scaldandosi, si allenti.",
+        "Temperature action on the rod restrained at its ends: N_T = E A α_T ΔT, α_T = 12·10⁻⁶/K, ΔT given (15 K by default, NTC 2018 §3.5.5 Tab. 3.5.II, protected steel); it is not combined with the earthquake (ψ2 = 0, NTC 2018 Tab. 2.5.I): rod and thread are checked in the fundamental combination γ_P P0 + γ_Q N_T (γ_P = 1.0, γ_Q = 1.5), and a new tie's pretension P0 ≥ N_T takes up the temperature range so that the rod, warming, does not go slack."}},
       {"tie.f.plate",
        {"Flessione della piastra: strisce a mensola dai lati del dado sotto la pressione uniforme, N_b,Rd = 2 a b t² "
         "f_yk / (4 γ_M0 c²), c = (max(a, b) − s_dado) / 2 (ipotesi del progettista, in appendice).",
@@ -121,12 +111,8 @@ const std::map<std::string, std::pair<std::string, std::string>>& tie_messages()
         "Bending of a bar anchor of length a and diameter b, loaded at its middle: N_b,Rd = 8 b³ f_yk / (6 γ_M0 a) "
         "(designer's assumption, in the appendix)."}},
       {"tie.f.hierarchy",
-       {"Gerarchia delle resistenze: la catena è duttile se ogni resistenza fragile (filettatura, compressione locale, "
-        "punzonamento, capochiave) è almeno γ_Rd γ_ov A f_yk, con γ_ov = 1,25 (sovraresistenza dell'acciaio) e "
-        "γ_Rd = 1,1 (EN 1998-1 §6.1.3 e §6.5.5; NTC 2018 §7.5.1); allora solo la barra si snerva.",
-        "Capacity design: the tie is ductile if every brittle strength (thread, local compression, punching, anchor) "
-        "is at least γ_Rd γ_ov A f_yk, with γ_ov = 1.25 (the steel's overstrength) and γ_Rd = 1.1 (EN 1998-1 §6.1.3 "
-        "and §6.5.5; NTC 2018 §7.5.1); then only the rod yields."}},
+       {"Gerarchia delle resistenze: la catena è duttile se le estremità sono ringrossate o saldate (una barra filettata su sé stessa si snerva solo nella filettatura) e ogni resistenza fragile (filettatura, compressione locale, punzonamento, scorrimento, capochiave) è almeno γ_Rd γ_ov A f_yk, con γ_ov = 1,25 (sovraresistenza dell'acciaio) e γ_Rd = 1,1 (EN 1998-1 §6.1.3 e §6.5.5; NTC 2018 §7.5.1); allora solo la barra si snerva.",
+        "Capacity design: the tie is ductile if its ends are upset or welded (a rod threaded on itself yields only in its thread) and every brittle strength (thread, local compression, punching, sliding, anchor) is at least γ_Rd γ_ov A f_yk, with γ_ov = 1.25 (the steel's overstrength) and γ_Rd = 1.1 (EN 1998-1 §6.1.3 and §6.5.5; NTC 2018 §7.5.1); then only the rod yields."}},
       {"tie.f.elastic",
        {"Una catena non duttile deve restare in campo elastico: ogni sua resistenza è verificata con la forza massima "
         "che la catena sviluppa (nelle verifiche del meccanismo, allo spostamento di domanda e in ogni analisi "
@@ -135,26 +121,14 @@ const std::map<std::string, std::pair<std::string, std::string>>& tie_messages()
         "develops (in the mechanism's checks, at the displacement demand and in every dynamic analysis); reaching it "
         "in a dynamic analysis breaks the tie, and the wall goes on without it."}},
       {"tie.f.elongation",
-       {"Allungamento di una barra duttile: fino a ε_ud L, ε_ud = 0,9 A, con A allungamento minimo a rottura della "
-        "norma di prodotto (EN 10025-2, Tab. 7: S235 26 %, S275 23 %, S355 22 %); oltre, la barra si rompe.",
-        "Elongation of a ductile rod: up to ε_ud L, ε_ud = 0.9 A, with A the minimum elongation after fracture of the "
-        "product standard (EN 10025-2, Tab. 7: S235 26 %, S275 23 %, S355 22 %); beyond it the rod breaks."}},
+       {"Allungamento di una barra duttile: fino a ε_ud L, ε_ud = 0,9 ε_uk (NTC 2018 §4.1.2.1.2.3), con ε_uk l'allungamento uniforme (alla forza massima, prima della strizione) dell'acciaio: ε_uk = 15 f_yk / E per gli acciai S (EN 1993-1-1 §3.2.2: S235 1,68 %, S275 1,96 %, S355 2,54 %), (A_gt)k = 7,5 % per il B450C (NTC 2018 Tab. 11.3.Ib); la barra si snerva su tutta la lunghezza libera L tra le estremità più resistenti; oltre, si rompe. L'allungamento a rottura A della norma di prodotto comprende la strizione su una base corta e non è usato.",
+        "Elongation of a ductile rod: up to ε_ud L, ε_ud = 0.9 ε_uk (NTC 2018 §4.1.2.1.2.3), with ε_uk the uniform elongation (at the maximum force, before necking) of the steel: ε_uk = 15 f_yk / E for the S grades (EN 1993-1-1 §3.2.2: S235 1.68 %, S275 1.96 %, S355 2.54 %), (A_gt)k = 7.5 % for B450C (NTC 2018 Tab. 11.3.Ib); the rod yields over its whole free length L between its stronger ends; beyond it, it breaks. The elongation after fracture A of the product standard includes the necking on a short gauge and is not used."}},
       {"tie.f.capacity",
-       {"Capacità dopo l'intervento: lo spostamento ultimo (d_SLV, d_SLC, du*) è limitato allo spostamento per cui la "
-        "prima catena raggiunge la propria resistenza, come per la crisi di un elemento (Circolare 2019 "
-        "§C8.7.1.2.1.6): la curva di capacità adottata è quella con le catene in campo elastico; la riserva "
-        "plastica delle catene duttili è riportata a parte e non è adottata.",
-        "Capacity after the intervention: the ultimate displacement (d_SLV, d_SLC, du*) is limited to the "
-        "displacement at which the first tie reaches its strength, as for the failure of an element (Circolare 2019 "
-        "§C8.7.1.2.1.6): the adopted capacity curve is that with the ties elastic; the plastic reserve of ductile "
-        "ties is shown apart and not adopted."}},
+       {"Capacità di ogni stato, com'è: la curva di capacità ha ogni catena elastica, una catena duttile snervata alla sua resistenza fino al suo allungamento ultimo, e ogni catena rotta dove cede (la duttile a ε_ud L, la non duttile alla sua resistenza), la curva proseguendo con le catene rimaste; d0 è dove essa si annulla. Lo spostamento ultimo (d_SLV, d_SLC, du*) è limitato alla prima rottura che riduce α di oltre il 50 %, come la crisi di un elemento (Circolare 2019 §C8.7.1.2.1.6). La stessa capacità vale nella verifica cinematica e in quella dinamica.",
+        "Capacity of each state, as it is: the capacity curve has each tie elastic, a ductile tie yielded at its strength up to its ultimate elongation, and every tie broken where it fails (a ductile one at ε_ud L, one that is not ductile at its strength), the curve going on with the ties left; d0 is where it vanishes. The ultimate displacement (d_SLV, d_SLC, du*) is limited to the first break that drops α by more than 50 %, as the failure of an element (Circolare 2019 §C8.7.1.2.1.6). The same capacity serves the kinematic and the dynamic check."}},
       {"tie.f.layout",
-       {"Disposizione: n catene su una parete lunga L (interasse e distanza dalle estremità indicati); l'analisi per "
-        "metro di parete usa n / L catene al metro; i cunei di punzonamento di catene adiacenti non si sovrappongono "
-        "(a + 2 s tan 45° ≤ interasse) e quelli delle catene d'estremità restano nella parete.",
-        "Layout: n ties on a wall of length L (spacing and edge distance given); the analysis per metre of wall uses "
-        "n / L ties per metre; the punching wedges of adjacent ties do not overlap (a + 2 s tan 45° ≤ spacing) and "
-        "those of the end ties stay within the wall."}},
+       {"Disposizione: n catene su una parete lunga L (interasse e distanza dalle estremità indicati); l'analisi per metro di parete usa n / L catene al metro; ogni capochiave giace nella parete (sotto il coronamento, entro le estremità, fuori dalle aperture, separato dai vicini).",
+        "Layout: n ties on a wall of length L (spacing and edge distance given); the analysis per metre of wall uses n / L ties per metre; every anchor lies within the wall (below its crown, within its ends, off its openings, apart from its neighbours)."}},
       {"tie.f.note",
        {"Le grandezze, i valori assunti e la loro base sono elencati in appendice (Ipotesi e letture adottate).",
         "The quantities, the values adopted and their basis are listed in the appendix (assumptions and readings "
@@ -164,15 +138,16 @@ const std::map<std::string, std::pair<std::string, std::string>>& tie_messages()
       {"tie.state_before", {"stato di fatto", "existing state"}},
       {"tie.state_after", {"stato di progetto", "design state"}},
       {"tie.ductile_text",
-       {"Catena duttile: ogni resistenza fragile supera γ_Rd γ_ov A f_yk = {} kN (la minore, {}, vale {} kN); la barra "
-        "può snervarsi fino all'allungamento ε_ud L = {} mm.",
-        "Ductile tie: every brittle strength exceeds γ_Rd γ_ov A f_yk = {} kN (the smallest, {}, is {} kN); the rod "
-        "may yield up to the elongation ε_ud L = {} mm."}},
+       {"Catena duttile: ogni resistenza fragile supera γ_Rd γ_ov A f_yk = {} kN (la minore, {}, vale {} kN); la barra può snervarsi fino all'allungamento ε_ud L = {} mm.",
+        "Ductile tie: every brittle strength exceeds γ_Rd γ_ov A f_yk = {} kN (the smallest, {}, is {} kN); the rod may yield up to the elongation ε_ud L = {} mm."}},
       {"tie.elastic_text",
        {"Catena non duttile ({} = {} kN < γ_Rd γ_ov A f_yk = {} kN): deve restare in campo elastico; ogni sua "
         "resistenza è verificata con la forza massima che sviluppa, {} kN.",
         "Tie not ductile ({} = {} kN < γ_Rd γ_ov A f_yk = {} kN): it must stay elastic; each of its strengths is "
         "checked with the largest force it develops, {} kN."}},
+      {"tie.elastic_text_threaded",
+       {"Catena non duttile (estremità filettate sulla barra: la filettatura, {} kN, è più debole della barra): deve restare in campo elastico; ogni sua resistenza è verificata con la forza massima che sviluppa, {} kN.",
+        "Tie not ductile (ends threaded on the rod: the thread, {} kN, is weaker than the rod): it must stay elastic; each of its strengths is checked with the largest force it develops, {} kN."}},
       {"tie.demand_static",
        {"Forza massima richiesta dalle verifiche del meccanismo: {} kN per catena",
         "Largest force the mechanism's checks need: {} kN per tie"}},
@@ -201,6 +176,12 @@ const std::map<std::string, std::pair<std::string, std::string>>& tie_messages()
       {"tie.check.local compression", {"compressione locale della muratura", "local compression of the masonry"}},
       {"tie.check.punching", {"punzonamento del cuneo murario", "punching of the masonry wedge"}},
       {"tie.check.anchor bending", {"flessione del capochiave", "bending of the anchor"}},
+      {"tie.check.sliding", {"scorrimento della muratura sopra il capochiave", "sliding of the masonry above the anchor"}},
+      {"tie.check.hierarchy sliding", {"gerarchia: scorrimento", "capacity design: sliding"}},
+      {"tie.check.temperature rod", {"azione termica: barra", "temperature action: rod"}},
+      {"tie.check.temperature thread", {"azione termica: filettatura", "temperature action: thread"}},
+      {"tie.check.pretension",
+       {"pretensione contro l'escursione termica", "pretension against the temperature range"}},
       {"tie.check.hierarchy thread", {"gerarchia: filettatura", "capacity design: thread"}},
       {"tie.check.hierarchy local compression",
        {"gerarchia: compressione locale", "capacity design: local compression"}},
@@ -216,13 +197,19 @@ const std::map<std::string, std::pair<std::string, std::string>>& tie_messages()
       {"tie.clause.local compression", {"ipotesi del progettista", "designer's assumption"}},
       {"tie.clause.punching", {"ipotesi del progettista", "designer's assumption"}},
       {"tie.clause.anchor bending", {"ipotesi del progettista", "designer's assumption"}},
+      {"tie.clause.sliding", {"ipotesi del progettista", "designer's assumption"}},
+      {"tie.clause.hierarchy sliding", {"EN 1998-1 §6.5.5; NTC 2018 §7.5.1", "EN 1998-1 §6.5.5; NTC 2018 §7.5.1"}},
+      {"tie.clause.temperature rod", {"NTC 2018 §3.5.5, §2.5.3", "NTC 2018 §3.5.5, §2.5.3"}},
+      {"tie.clause.temperature thread", {"NTC 2018 §3.5.5, §2.5.3", "NTC 2018 §3.5.5, §2.5.3"}},
+      {"tie.clause.pretension", {"NTC 2018 §3.5.5", "NTC 2018 §3.5.5"}},
       {"tie.clause.hierarchy thread", {"EN 1998-1 §6.5.5; NTC 2018 §7.5.1", "EN 1998-1 §6.5.5; NTC 2018 §7.5.1"}},
       {"tie.clause.hierarchy local compression",
        {"EN 1998-1 §6.5.5; NTC 2018 §7.5.1", "EN 1998-1 §6.5.5; NTC 2018 §7.5.1"}},
       {"tie.clause.hierarchy punching", {"EN 1998-1 §6.5.5; NTC 2018 §7.5.1", "EN 1998-1 §6.5.5; NTC 2018 §7.5.1"}},
       {"tie.clause.hierarchy anchor bending",
        {"EN 1998-1 §6.5.5; NTC 2018 §7.5.1", "EN 1998-1 §6.5.5; NTC 2018 §7.5.1"}},
-      {"tie.clause.rod elongation", {"EN 10025-2 Tab. 7", "EN 10025-2 Tab. 7"}},
+      {"tie.clause.rod elongation",
+       {"NTC 2018 §4.1.2.1.2.3, EN 1993-1-1 §3.2.2", "NTC 2018 §4.1.2.1.2.3, EN 1993-1-1 §3.2.2"}},
       {"tie.clause.cone spacing", {"ipotesi del progettista", "designer's assumption"}},
       {"tie.clause.edge distance", {"ipotesi del progettista", "designer's assumption"}},
       {"tie.clause.dynamic rupture", {"Circolare 2019 C8.7.1.2.1.9", "Circolare 2019 C8.7.1.2.1.9"}},
@@ -248,20 +235,14 @@ const std::map<std::string, std::pair<std::string, std::string>>& tie_messages()
       {"tie.after", {"stato di progetto", "design state"}},
       {"tie.d_tie",
        {"d* per cui la prima catena raggiunge la resistenza (m)", "d* at which the first tie reaches its strength (m)"}},
-      {"tie.d_SLV_plastic",
-       {"d_SLV con la riserva plastica, non adottato (m)", "d_SLV with the plastic reserve, not adopted (m)"}},
-      {"tie.bare_mark", {" (parete senza catene)", " (the wall without its ties)"}},
+      {"tie.d_cap",
+       {"d* della prima rottura che riduce α di oltre il 50 % (m)",
+        "d* of the first break that drops α by more than 50 % (m)"}},
       {"tie.zeta", {"ζE = PGA capacità / PGA domanda (NTC 2018)", "ζE = PGA capacity / PGA demand (NTC 2018)"}},
       {"tie.all_checks", {"tutte le verifiche", "every check"}},
-      {"tie.plastic_note",
-       {"Gli spostamenti adottati si fermano dove la prima catena raggiunge la propria resistenza; la riga della "
-        "riserva plastica indica quanto si avrebbe contando sull'allungamento plastico delle catene duttili fino a "
-        "ε_ud L, e non entra nelle verifiche. Una verifica di spostamento che la parete senza catene soddisfa meglio "
-        "(quella che resta se le catene si rompono) ne prende il valore, indicato tra parentesi.",
-        "The adopted displacements stop where the first tie reaches its strength; the plastic-reserve row shows what "
-        "the plastic elongation of ductile ties up to ε_ud L would give, and does not enter the checks. A "
-        "displacement check that the wall without its ties satisfies better (the wall left if the ties break) "
-        "takes its value, marked in brackets."}},
+      {"tie.capacity_note",
+       {"Ogni stato è calcolato com'è: le catene si rompono dove cedono e la parete prosegue con quelle rimaste; gli spostamenti adottati si fermano alla prima rottura che riduce il moltiplicatore α di oltre il 50 %, e sono gli stessi nella verifica dinamica.",
+        "Each state is computed as it is: the ties break where they fail and the wall goes on with those left; the adopted displacements stop at the first break that drops the multiplier α by more than 50 %, and are the same in the dynamic check."}},
       // Dynamics.
       {"tie.dyn_title",
        {"Verifica dinamica nello stato di fatto e nello stato di progetto (Circolare 2019 C8.7.1.2.1.9)",
@@ -422,15 +403,11 @@ const std::map<std::string, std::pair<std::string, std::string>>& tie_messages()
         "steel grade not above 1.20 [R]: the larger is adopted [I]"}},
       {"tie.reading.5.q", {"Allungamento di progetto di una barra duttile", "Design elongation of a ductile rod"}},
       {"tie.reading.5.r",
-       {"ε_ud = 0,9 A, A allungamento minimo a rottura della norma di prodotto (S235 26 %, S275 23 %, S355 22 %; "
-        "B450C: A_gt 7,5 %)",
-        "ε_ud = 0.9 A, A the minimum elongation after fracture of the product standard (S235 26 %, S275 23 %, S355 "
-        "22 %; B450C: A_gt 7.5 %)"}},
+       {"ε_ud = 0,9 ε_uk, ε_uk allungamento uniforme: 15 f_yk / E per gli acciai S (S235 1,68 %, S275 1,96 %, S355 2,54 %), (A_gt)k = 7,5 % per il B450C; su tutta la lunghezza libera per estremità ringrossate o saldate; nessuno per estremità filettate sulla barra",
+        "ε_ud = 0.9 ε_uk, ε_uk the uniform elongation: 15 f_yk / E for the S grades (S235 1.68 %, S275 1.96 %, S355 2.54 %), (A_gt)k = 7.5 % for B450C; over the whole free length with upset or welded ends; none with ends threaded on the rod"}},
       {"tie.reading.5.b",
-       {"EN 10025-2 Tab. 7 [R]; il fattore 0,9 come in NTC 2018 §4.1.2.1.2.3 [I]; A comprende la strizione su una "
-        "base corta: la capacità adottata non ne dipende",
-        "EN 10025-2 Tab. 7 [R]; the factor 0.9 as in NTC 2018 §4.1.2.1.2.3 [I]; A includes the necking on a short "
-        "gauge: the adopted capacity does not depend on it"}},
+       {"EN 1993-1-1 §3.2.2(1), ε_u ≥ 15 ε_y, valore raccomandato [R]; NTC 2018 Tab. 11.3.Ib [R]; il fattore 0,9 come in NTC 2018 §4.1.2.1.2.3 [R/I]; la EN 10025-2 dà solo l'allungamento a rottura A, che comprende la strizione: non usato [I]",
+        "EN 1993-1-1 §3.2.2(1), ε_u ≥ 15 ε_y, recommended value [R]; NTC 2018 Tab. 11.3.Ib [R]; the factor 0.9 as in NTC 2018 §4.1.2.1.2.3 [R/I]; EN 10025-2 gives only the elongation after fracture A, which includes the necking: not used [I]"}},
       {"tie.reading.6.q", {"Compressione locale della muratura", "Local compression of the masonry"}},
       {"tie.reading.6.r",
        {"f_d A_b, f_d = f_m / (FC γ_M), γ_M = 2, senza incremento per carico concentrato (β = 1)",
@@ -442,17 +419,11 @@ const std::map<std::string, std::pair<std::string, std::string>>& tie_messages()
         "§4.5.6.2 allow β ≥ 1 [R]: β = 1 [I]"}},
       {"tie.reading.7.q", {"Punzonamento della muratura", "Punching of the masonry"}},
       {"tie.reading.7.r",
-       {"cuneo a 45° nello spessore della parete, τ sulla superficie laterale media; lo scorrimento dei giunti non è "
-        "verificato a parte",
-        "a wedge at 45° through the wall's thickness, τ on its mean lateral surface; sliding on the joints is not "
-        "checked apart"}},
+       {"cuneo a 45° dai bordi del capochiave nello spessore della parete, τ sul suo contorno laterale nella muratura, integrato sullo spessore: tagliato dal coronamento, dalle estremità, dalle aperture e dai cunei adiacenti (mezzeria dell'interasse); l'estremità della parete come bordo libero",
+        "a wedge at 45° from the anchor's edges through the wall's thickness, τ on its lateral boundary in masonry, integrated over the thickness: cut by the crown, the ends, the openings and the adjacent wedges (the middle of the spacing); the wall's end as a free edge"}},
       {"tie.reading.7.b",
-       {"prassi [R]; letteratura: Engineering Structures 2016, capacità delle piastre di ancoraggio su muratura "
-        "(cono troncato o scorrimento dei conci, letto il solo sommario) [V-S]; DTU R-134, 2006 [V-S]; nessuna "
-        "formula di norma trovata [I]",
-        "practice [R]; literature: Engineering Structures 2016, load-carrying capacity of anchor plates on masonry "
-        "(truncated cone or sliding of the units, abstract only) [V-S]; DTU R-134, 2006 [V-S]; no code formula "
-        "found [I]"}},
+       {"prassi [R]; letteratura: Engineering Structures 2016, capacità delle piastre di ancoraggio su muratura (cono troncato o scorrimento dei conci, letto il solo sommario) [V-S]; DTU R-134, 2006 (punzonamento e scorrimento a un bordo parallelo ai letti, letto il sommario) [V-S]; nessuna formula di norma trovata (Linee guida 2011 per i beni culturali, CNR-DT 212/2013: testo non trovato) [I]; il taglio del cuneo da parte della parete [I]",
+        "practice [R]; literature: Engineering Structures 2016, load-carrying capacity of anchor plates on masonry (truncated cone or sliding of the units, abstract only) [V-S]; DTU R-134, 2006 (punching, and sliding at an edge parallel to the bed joints, abstract read) [V-S]; no code formula found (Guidelines 2011 for cultural heritage, CNR-DT 212/2013: text not found) [I]; the wedge cut by the wall [I]"}},
       {"tie.reading.8.q", {"Flessione del capochiave", "Bending of the anchor"}},
       {"tie.reading.8.r",
        {"piastra: strisce a mensola dai lati del dado (larghezza in chiave ISO 4032); paletto: trave appoggiata "
@@ -467,15 +438,11 @@ const std::map<std::string, std::pair<std::string, std::string>>& tie_messages()
       {"tie.reading.9.b", {"ipotesi del progettista [I]", "designer's assumption [I]"}},
       {"tie.reading.10.q", {"Capacità dopo l'intervento", "Capacity after the intervention"}},
       {"tie.reading.10.r",
-       {"spostamenti ultimi limitati dove la prima catena raggiunge la resistenza; la riserva plastica è riportata a "
-        "parte",
-        "ultimate displacements limited where the first tie reaches its strength; the plastic reserve is reported "
-        "apart"}},
+       {"la curva della parete com'è: catene elastiche, duttili snervate fino a ε_ud L, ciascuna rotta dove cede; spostamenti ultimi limitati alla prima rottura che riduce α di oltre il 50 %; la stessa capacità nella verifica dinamica",
+        "the curve of the wall as it is: ties elastic, ductile ones yielded up to ε_ud L, each broken where it fails; ultimate displacements limited at the first break that drops α by more than 50 %; the same capacity in the dynamic check"}},
       {"tie.reading.10.b",
-       {"Circolare 2019 §C8.7.1.2.1.6: d_SLV sulla curva con le sole forze sicuramente presenti fino al collasso, e "
-        "non oltre la crisi di un elemento [V-T]; la catena al limite elastico come tale elemento [I]",
-        "Circolare 2019 §C8.7.1.2.1.6: d_SLV on the curve with only the forces surely present up to collapse, and not "
-        "beyond the failure of an element [V-T]; the tie at its elastic limit as that element [I]"}},
+       {"Circolare 2019 §C8.7.1.2.1.6: d_SLV al 40 % di d0 sulla curva con le sole forze sicuramente presenti fino al collasso, e non oltre lo spostamento per cui un elemento cede con una riduzione di capacità superiore al 50 % [V-T]; la rottura di una catena come tale elemento, la riduzione misurata su α [I]",
+        "Circolare 2019 §C8.7.1.2.1.6: d_SLV at 40 % of d0 on the curve with only the forces surely present up to collapse, and not beyond the displacement at which an element fails with a capacity drop above 50 % [V-T]; the break of a tie as that element, the drop measured on α [I]"}},
       {"tie.reading.11.q", {"Catena nel moltiplicatore α0", "Tie in the multiplier α0"}},
       {"tie.reading.11.r",
        {"ogni livello alla sua resistenza di progetto T_Rd nel lavoro virtuale", "each level at its design strength "
@@ -490,14 +457,65 @@ const std::map<std::string, std::pair<std::string, std::string>>& tie_messages()
       {"tie.reading.12.b", {"modello del progettista [I]", "designer's model [I]"}},
       {"tie.reading.13.q", {"Disposizione lungo la parete", "Layout along the wall"}},
       {"tie.reading.13.r",
-       {"numero intero di catene, analisi per metro con n / L catene al metro; cunei di punzonamento separati e "
-        "interni alla parete",
-        "an integer number of ties, analysis per metre with n / L ties per metre; punching wedges apart and within "
-        "the wall"}},
+       {"numero intero di catene, analisi per metro con n / L catene al metro; ogni capochiave nella parete, i cunei tagliati dai vicini",
+        "an integer number of ties, analysis per metre with n / L ties per metre; every anchor within the wall, the wedges cut by their neighbours"}},
       {"tie.reading.13.b", {"ipotesi del progettista [I]", "designer's assumption [I]"}},
       {"tie.reading.14.q", {"Diametro minimo della barra di progetto", "Smallest designed rod"}},
       {"tie.reading.14.r", {"16 mm, modificabile nel file del caso", "16 mm, editable in the case file"}},
       {"tie.reading.14.b", {"prassi per catene in muratura storica [I]", "practice for ties in historic masonry [I]"}},
+      {"tie.reading.15.q", {"Scorrimento sopra il capochiave", "Sliding above the anchor"}},
+      {"tie.reading.15.r",
+       {"blocco sopra il bordo inferiore del capochiave, sul giunto orizzontale: f_vd sui fianchi, f_v0 / (FC γ_M) + μ σ_n / γ_M alla base; f_v0 = τ se non dato, μ = 0,4; σ_n dal peso della muratura sovrastante e dal carico sul coronamento (0 se non dato)",
+        "the block above the anchor's lower edge, on the horizontal joint: f_vd on its sides, f_v0 / (FC γ_M) + μ σ_n / γ_M on its base; f_v0 = τ unless given, μ = 0.4; σ_n from the weight of the masonry above and the load on the crown (0 unless given)"}},
+      {"tie.reading.15.b",
+       {"Engineering Structures 2016 (scorrimento dei conci sui letti di malta, sommario) [V-S]; NTC 2018 §4.5.6.1, f_vk = f_vk0 + 0,4 σ_n [R]; Circolare 2019 Tab. C8.5.I dà f_v0 solo per murature regolari [R]: f_v0 = τ [I]",
+        "Engineering Structures 2016 (units sliding on the mortar beds, abstract) [V-S]; NTC 2018 §4.5.6.1, f_vk = f_vk0 + 0.4 σ_n [R]; Circolare 2019 Tab. C8.5.I gives f_v0 only for regular masonry [R]: f_v0 = τ [I]"}},
+      {"tie.reading.16.q", {"Azione termica sulla barra", "Temperature action on the rod"}},
+      {"tie.reading.16.r",
+       {"N_T = E A α_T ΔT, ΔT = 15 K se non dato, α_T = 12·10⁻⁶/K; combinazione fondamentale γ_P P0 + 1,5 N_T su barra e filettatura, non combinata con il sisma; pretensione di una catena nuova ≥ N_T",
+        "N_T = E A α_T ΔT, ΔT = 15 K unless given, α_T = 12·10⁻⁶/K; fundamental combination γ_P P0 + 1.5 N_T on rod and thread, not combined with the earthquake; a new tie's pretension ≥ N_T"}},
+      {"tie.reading.16.b",
+       {"NTC 2018 §3.5.5 Tab. 3.5.II (acciaio protetto ±15 °C), §3.5.7 Tab. 3.5.III (α_T), Tab. 2.5.I (ψ2 = 0), Tab. 2.6.I (γ_Q = 1,5) [R]; vincolo rigido agli estremi [I]",
+        "NTC 2018 §3.5.5 Tab. 3.5.II (protected steel ±15 °C), §3.5.7 Tab. 3.5.III (α_T), Tab. 2.5.I (ψ2 = 0), Tab. 2.6.I (γ_Q = 1.5) [R]; rigid restraint at the ends [I]"}},
+      {"tie.reading.17.q", {"Sovraspessore di corrosione", "Corrosion allowance"}},
+      {"tie.reading.17.r",
+       {"perdita di spessore δ = 0,5 mm su ogni faccia se non data: barra e filettatura con le sezioni ridotte; la gerarchia confronta la filettatura ridotta con la barra integra",
+        "a loss of thickness δ = 0.5 mm on every face unless given: rod and thread with the reduced sections; the capacity design compares the reduced thread with the intact rod"}},
+      {"tie.reading.17.b",
+       {"EN 1993-5 §4.4, 0,01 mm/anno in atmosfera normale per 50 anni [R]; applicata alle catene [I]",
+        "EN 1993-5 §4.4, 0.01 mm/year in a normal atmosphere over 50 years [R]; applied to tie rods [I]"}},
+      {"tie.reading.18.q", {"Ricerca del progetto", "Search of the design"}},
+      {"tie.reading.18.r",
+       {"barre dalla più piccola, classi, capochiavi (piastre, paletti) dal più piccolo, classi dei capochiavi; prima le combinazioni duttili; ogni catena esistente non verificata cambiata con il minimo intervento (capochiave, barra, rimozione); scartate senza analisi solo le combinazioni non realizzabili e quelle con lo stesso vincolo di una già analizzata",
+        "rods smallest first, grades, anchors (plates, bars) smallest first, anchor grades; ductile combinations first; every existing tie that fails changed by the least change (anchor, rod, removal); only combinations that cannot be built, or with the restraint of one already analysed, are skipped without an analysis"}},
+      {"tie.reading.18.b", {"note teoriche, catene §5 [I]", "docs/theory/ties.md §5 [I]"}},
+      // Issue 37: changes to existing ties, the wedge drawn, a wall's ties.
+      {"tie.change_title", {"Catene esistenti modificate", "Existing ties changed"}},
+      {"tie.change_intro",
+       {"Le catene esistenti che non sono verificate nello stato di progetto sono modificate con il minimo intervento che le rende verificate:",
+        "The existing ties that fail in the design state are changed by the least change that makes them pass:"}},
+      {"tie.change.anchor", {"nuovo capochiave sulla barra esistente: {}", "a new anchor on the existing rod: {}"}},
+      {"tie.change.rod", {"nuova barra {} con {}, nei fori esistenti", "a new rod {} with {}, through the existing holes"}},
+      {"tie.change.removed", {"rimossa", "removed"}},
+      {"tie.change_short.anchor", {"nuovo capochiave", "new anchor"}},
+      {"tie.change_short.rod", {"nuova barra", "new rod"}},
+      {"tie.failing_existing",
+       {"Catene esistenti non verificate: {}. Il caso non chiede un progetto: aggiungendo la sezione di progetto delle catene (anche senza livelli nuovi) si ottiene il minimo intervento che le rende verificate.",
+        "Existing ties that fail: {}. The case asks for no design: adding the design section of the ties (even without new levels) gives the least change that makes them pass."}},
+      {"tie.wedge_title", {"Il cuneo di punzonamento nella parete", "The punched wedge in the wall"}},
+      {"tie.wedge_caption",
+       {"Prospetto della parete attorno al capochiave della catena che governa il punzonamento ({}): il capochiave, il cuneo a 45° alla faccia interna, il coronamento, le aperture e la mezzeria dell'interasse con le catene vicine; in tratteggio il cuneo intero, a tinta piena la parte nella muratura. Area laterale nella muratura {} m² su {} m².",
+        "Elevation of the wall around the anchor of the tie that governs the punching ({}): the anchor, the 45° wedge at the inner face, the crown, the openings and the middle of the spacing with the neighbouring ties; dashed the whole wedge, shaded the part in masonry. Lateral area in masonry {} m² of {} m²."}},
+      {"tie.wedge_crown", {"coronamento", "crown"}},
+      {"tie.wall_title", {"Catene della parete {}", "Ties of the wall {}"}},
+      {"tie.wall_intro",
+       {"Le catene sono date una volta sulla parete, alla loro quota, e agiscono su ogni meccanismo della parete i cui blocchi in moto attraversano: {}. Il progetto è unico per la parete e soddisfa tutti questi meccanismi insieme.",
+        "The ties are given once on the wall, at their height, and act on every mechanism of the wall whose moving blocks they cross: {}. The design is one for the wall and satisfies all those mechanisms together."}},
+      {"tie.wall_restrains", {"Meccanismi trattenuti", "Mechanisms restrained"}},
+      {"tie.wall_governing", {"Meccanismo che governa", "Governing mechanism"}},
+      {"tie.wall_member",
+       {"Le catene di questa parete agiscono anche su altri suoi meccanismi ({}) e sono progettate e descritte una volta, nella sezione delle catene della parete; qui il meccanismo nei due stati.",
+        "The ties of this wall act on other mechanisms of it too ({}) and are designed and described once, in the section on the wall's ties; here the mechanism in both states."}},
       {"tie.reading.caption",
        {"Catene: grandezze, valori adottati e loro base (certezza: [V-T] letto in una trascrizione del testo ufficiale, "
         "[V-S] letto in una fonte secondaria, [R] richiamato, non verificato, [I] scelta nostra; note teoriche di assess, catene).",

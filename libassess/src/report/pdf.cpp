@@ -41,8 +41,10 @@ void html_to_pdf(const std::string& html, const std::string& pdf_path) {
        "--no-pdf-header-footer", "--print-to-pdf-no-header", "--generate-pdf-document-outline",
        "--print-to-pdf=" + out.string(), "file://" + page.string()},
       log);
-  if (code == 127)
+  if (code == detail::program_not_found)
     throw InputError("--pdf: " + browser + " was not found on PATH: install it (Debian: apt-get install chromium)");
+  if (code == detail::program_timed_out)
+    throw InputError("--pdf: " + browser + " did not finish printing within its time limit (180 s)");
   if (code != 0 || !fs::exists(out) || detail::read_file(out).compare(0, 4, "%PDF") != 0)
     throw InputError("--pdf: " + browser + " could not print the report (exit " + std::to_string(code) + ")");
   // Whole or not at all, never over an input of the run (output_file.hpp).

@@ -116,6 +116,10 @@ void add_comparison(Ctx& c);             // D/C by approach: bars and the method
 void add_interventions(Ctx& c);          // ties, or what a failing mechanism needs
 /// The tie rods' section (relazione_ties.cpp): states, drawing, levels, formulas, checks, dynamics, detailing.
 void add_tie_section(Ctx& c, const TieInterventionResult& t);
+/// Issue 37: the ties of a wall once (relazione_ties.cpp): each level with the mechanisms it restrains
+/// (`members`: a label and the mechanism's tie result), its wedge, its checks in every mechanism, the detailing.
+void add_wall_tie_section(Ctx& c, const std::string& wall,
+                          const std::vector<std::pair<std::string, const TieInterventionResult*>>& members);
 void add_probabilistic(Ctx& c);
 void add_evaluation(Ctx& c);             // valutazione dei risultati: margin, methods, choices, judgement
 void add_conclusions(Ctx& c, bool signature = true);

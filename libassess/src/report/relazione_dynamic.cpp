@@ -150,6 +150,17 @@ void add_records(Ctx& c, const FacadeAssessment& x) {
     if (!x.selection_shared_note.empty())
       why.push_back({Span{c.t("dyn.shared_why") + ": ", true}, Span{c.loc(x.selection_shared_note)}});
     for (const std::string& st : x.selection_steps) why.push_back({Span{c.t("dyn.classes_tried") + ": ", true}, Span{c.loc(st)}});
+    // The limits the set obeys and the rules it was chosen by (what the terminal printed before issue 41).
+    const SelectionResult& s = *x.selection;
+    why.push_back({Span{c.t("dyn.limits") + ": ", true},
+                   Span{msgf(c.L, "dyn.limits_text", c.n(x.selection_max_scale, 2), c.n(s.mean_scale, 3),
+                             c.n(x.selection_max_mean_scale, 2), c.n(s.max_scaled_pga / g, 3),
+                             c.n(x.selection_max_pga_ratio, 2), c.n(x.selection_max_pga_ratio * s.target_pga / g, 3))}});
+    why.push_back({Span{c.t("dyn.rules") + ": ", true},
+                   Span{msgf(c.L, x.selection_include_near_fault ? "dyn.rules_nf_in" : "dyn.rules_nf_out",
+                             x.selection_near_fault_excluded, c.n(x.selection_near_fault_km, 0),
+                             c.n(x.selection_max_misfit, 2)) +
+                        c.t(x.selection_spectra == "precomputed" ? "dyn.spectra_pre" : "dyn.spectra_int")}});
     if (!why.empty()) c.d.add_list(why);
   }
   if (x.compatibility.computed) c.d.add_paragraph(c.t("dyn.compat_msg") + ": " + c.loc(x.compatibility.message) + ".");

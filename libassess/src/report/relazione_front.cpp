@@ -8,6 +8,7 @@
 #include "report/text_format.hpp"
 
 #include <cmath>
+#include <map>
 
 namespace assess::relazione {
 

@@ -15,9 +15,12 @@
 #include "assess/report/mechanism_drawing.hpp"
 #include "assess/support/units.hpp"
 #include "report/relazione_context.hpp"
+#include "report/svg_text.hpp"
 #include "report/text_format.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace assess {
 
@@ -25,7 +28,7 @@ std::string tie_section_title(Lang lang) { return msg(lang, "tie.title"); }
 
 std::vector<TieReading> tie_readings(const TieInterventionResult&, Lang lang) {
   std::vector<TieReading> out;
-  for (int i = 1; i <= 14; ++i) {
+  for (int i = 1; i <= 18; ++i) {
     const std::string k = "tie.reading." + std::to_string(i);
     out.push_back({msg(lang, k + ".q"), msg(lang, k + ".r"), msg(lang, k + ".b")});
   }
@@ -142,8 +145,8 @@ void levels_table(const TieText& x, const std::vector<TieLevelResult>& levels) {
 
 void formulas(const TieText& x) {
   std::vector<Inline> items;
-  for (const char* k : {"f.rod", "f.thread", "f.bearing", "f.punching", "f.plate", "f.bar", "f.hierarchy", "f.elastic",
-                        "f.elongation", "f.capacity", "f.layout"})
+  for (const char* k : {"f.rod", "f.thread", "f.bearing", "f.punching", "f.sliding", "f.plate", "f.bar", "f.hierarchy",
+                        "f.elastic", "f.elongation", "f.temperature", "f.capacity", "f.layout"})
     items.push_back({Span{x.t(k)}});
   x.c.d.add_list(items);
   x.c.d.add_paragraph(x.t("f.note"));
@@ -198,8 +201,10 @@ void level_block(const TieText& x, const TieLevelResult& L, const std::string& s
   const TieResistance& r = L.resistance;
   x.c.d.add_paragraph(r.ductile ? x.f("ductile_text", x.n(r.hierarchy_demand / kN, 1), x.component(r.weakest_brittle),
                                       x.n(r.weakest_brittle_capacity / kN, 1), x.n(r.ultimate_elongation * 1e3, 0))
-                                : x.f("elastic_text", x.component(r.weakest_brittle), x.n(r.weakest_brittle_capacity / kN, 1),
-                                      x.n(r.hierarchy_demand / kN, 1), x.n(L.demand.elastic_demand() / kN, 2)));
+                      : L.tie.rod.ends == TieEnds::Threaded
+                          ? x.f("elastic_text_threaded", x.n(r.thread / kN, 1), x.n(L.demand.elastic_demand() / kN, 2))
+                          : x.f("elastic_text", x.component(r.weakest_brittle), x.n(r.weakest_brittle_capacity / kN, 1),
+                                x.n(r.hierarchy_demand / kN, 1), x.n(L.demand.elastic_demand() / kN, 2)));
   std::string dem = x.f("demand_static", x.n(L.demand.static_force / kN, 2));
   if (L.demand.curve_force) dem += "; " + x.f("demand_curve", x.n(*L.demand.curve_force / kN, 2));
   if (L.demand.dynamic_force)
@@ -224,9 +229,10 @@ void states_table(const TieText& x, const TieInterventionResult& t) {
   // A state without ties has no such displacement.
   row(x.t("d_tie"), t.levels_before.empty() ? numeric_cell("—") : dk(b, b.d_star_tie_limit),
       t.levels.empty() ? numeric_cell("—") : dk(a, a.d_star_tie_limit));
+  row(x.t("d_cap"), t.levels_before.empty() ? numeric_cell("—") : dk(b, b.d_star_tie_cap),
+      t.levels.empty() ? numeric_cell("—") : dk(a, a.d_star_tie_cap));
   row("d_SLV (m)", dk(b, b.d_SLV), dk(a, a.d_SLV));
   row("d_SLC (m)", dk(b, b.d_SLC), dk(a, a.d_SLC));
-  row(x.t("d_SLV_plastic"), dk(b, b.d_SLV_plastic), dk(a, a.d_SLV_plastic));
   row(x.t("zeta"), x.num(t.zetaE_before, 3), x.num(t.zetaE_after, 3));
   row(x.t("all_checks"), x.ok(t.passes_before), x.ok(t.passes_after));
   const CandidateResult& cb = t.before.candidates[t.before.governing];
@@ -235,22 +241,12 @@ void states_table(const TieText& x, const TieInterventionResult& t) {
     const CheckRow* r2 = nullptr;
     for (const CheckRow& y : ca.checks)
       if (y.code == r.code && y.limit_state == r.limit_state && y.kind == r.kind && y.location == r.location) r2 = &y;
-    auto dc = [&](const CheckRow* y) {
-      if (!y) return numeric_cell("—");
-      Cell z = x.c.dc_cell(*y);
-      if (y->without_ties) {  // the bare wall's row: said in the cell's second line, the D/C stays a number
-        std::string m = x.t("bare_mark");
-        while (!m.empty() && (m.front() == ' ' || m.front() == '(')) m.erase(0, 1);
-        while (!m.empty() && (m.back() == ' ' || m.back() == ')')) m.pop_back();
-        z.note = m;
-      }
-      return z;
-    };
+    auto dc = [&](const CheckRow* y) { return y ? x.c.dc_cell(*y) : numeric_cell("—"); };
     row(r.code + " " + r.limit_state + " " + x.t("kind." + r.kind) + " " + x.t("where." + r.location) + " D/C", dc(&r),
         dc(r2));
   }
   x.c.d.add_cell_table({Cell(""), numeric_cell(x.t("before")), numeric_cell(x.t("after"))}, rows, x.t("before_after"));
-  x.c.d.add_paragraph(x.t("plastic_note"));
+  x.c.d.add_paragraph(x.t("capacity_note"));
 }
 
 Cell run_outcome(const TieText& x, const TieDynamicRun& r) {
@@ -304,10 +300,10 @@ void dynamics(const TieText& x, const TieInterventionResult& t) {
                        rows, x.t("dyn_runs_intro"));
 }
 
-void detailing(const TieText& x, const TieInterventionResult& t) {
+void detailing(const TieText& x, const std::vector<TieLevelResult>& levels) {
   x.c.d.add_heading(x.t("det_title"), 3, false);
   std::vector<Inline> items;
-  for (const TieLevelResult& L : t.levels) {
+  for (const TieLevelResult& L : levels) {
     const Tie& tie = L.tie;
     const tie_catalogue::Thread* th = tie_catalogue::find_thread(tie.rod.thread_diameter);
     std::string item = x.f("det_anchor", anchor_text(x, tie), x.t(tie.anchor.type == AnchorType::Plate ? "det_plate" : "det_bar"));
@@ -328,6 +324,100 @@ void detailing(const TieText& x, const TieInterventionResult& t) {
   x.c.d.add_list(items);
 }
 
+// The punched wedge of the tie that governs the punching, drawn in the wall's
+// elevation against the crown, the openings and the neighbours' strips (issue
+// 37): the wall (grey), the openings (white), the strip the tie owns between
+// the dash-dot lines, the whole wedge at the inner face (dashed), its part in
+// masonry (shaded), the anchor (dark), the crown (thick line, labelled).
+std::string wedge_svg(const TieText& x, const Tie& tie, const TieResistance& r) {
+  using detail::coord;
+  const AnchorWedge& W = r.wedge;
+  const double w = tie.anchor.width(), h = tie.anchor.height(), s = tie.masonry.thickness;
+  const double xc = W.x, zc = tie.point.y();
+  const TieLayout& L = tie.layout;
+  const double m = 0.25 * (w + 2 * s);
+  double x0 = xc - w / 2 - s - m, x1 = xc + w / 2 + s + m;
+  double z0 = zc - h / 2 - s - m, z1 = zc + h / 2 + s + m;
+  if (std::isfinite(L.crown)) z1 = std::min(z1, L.crown + m);
+  const double Wd = 520.0, Hd = 340.0, pad = 30.0;
+  const double sc = std::min((Wd - 2 * pad) / (x1 - x0), (Hd - 2 * pad) / (z1 - z0));
+  const double left = 0.5 * (Wd - (x1 - x0) * sc);  // the view centred
+  auto X = [&](double v) { return left + (v - x0) * sc; };
+  auto Z = [&](double v) { return Hd - pad - (v - z0) * sc; };
+  std::string o = "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " + coord(Wd) + " " + coord(Hd) +
+                  "\" width=\"" + coord(Wd) + "\" height=\"" + coord(Hd) + "\" font-family=\"DejaVu Sans, sans-serif\">\n";
+  auto rect = [&](double a0, double b0, double a1, double b1, const std::string& style) {
+    a0 = std::max(a0, x0), a1 = std::min(a1, x1), b0 = std::max(b0, z0), b1 = std::min(b1, z1);
+    if (!(a1 > a0) || !(b1 > b0)) return;
+    o += "<rect x=\"" + coord(X(a0)) + "\" y=\"" + coord(Z(b1)) + "\" width=\"" + coord((a1 - a0) * sc) + "\" height=\"" +
+         coord((b1 - b0) * sc) + "\" " + style + "/>\n";
+  };
+  const double top = std::isfinite(L.crown) ? L.crown : z1;
+  rect(0.0, L.base, L.wall_length, top, "fill=\"#e6e1d8\" stroke=\"none\"");
+  for (const WallOpening& op : L.openings) rect(op.x0, op.z0, op.x1, op.z1, "fill=\"#ffffff\" stroke=\"#888\"");
+  // The wedge at the inner face: its part in masonry shaded, the whole dashed.
+  const double wa = xc - w / 2 - s, wb = xc + w / 2 + s, za = zc - h / 2 - s, zb = zc + h / 2 + s;
+  rect(std::max(wa, W.x_lo), std::max(za, L.base), std::min(wb, W.x_hi), std::min(zb, top),
+       "fill=\"#c0504d\" fill-opacity=\"0.35\" stroke=\"none\"");
+  for (const WallOpening& op : L.openings)
+    rect(std::max(op.x0, wa), std::max(op.z0, za), std::min(op.x1, wb), std::min(op.z1, zb), "fill=\"#ffffff\" stroke=\"none\"");
+  o += "<rect x=\"" + coord(X(wa)) + "\" y=\"" + coord(Z(zb)) + "\" width=\"" + coord((wb - wa) * sc) + "\" height=\"" +
+       coord((zb - za) * sc) + "\" fill=\"none\" stroke=\"#c0504d\" stroke-dasharray=\"6 4\"/>\n";
+  rect(xc - w / 2, zc - h / 2, xc + w / 2, zc + h / 2, "fill=\"#333\" stroke=\"none\"");
+  for (double xl : {W.x_lo, W.x_hi})
+    if (xl > x0 && xl < x1)
+      o += "<line x1=\"" + coord(X(xl)) + "\" y1=\"" + coord(pad) + "\" x2=\"" + coord(X(xl)) + "\" y2=\"" +
+           coord(Hd - pad) + "\" stroke=\"#555\" stroke-dasharray=\"8 3 2 3\"/>\n";
+  if (std::isfinite(L.crown) && L.crown < z1) {
+    o += "<line x1=\"" + coord(X(std::max(x0, 0.0))) + "\" y1=\"" + coord(Z(L.crown)) + "\" x2=\"" +
+         coord(X(std::min(x1, L.wall_length))) + "\" y2=\"" + coord(Z(L.crown)) +
+         "\" stroke=\"#000\" stroke-width=\"2.5\"/>\n";
+    o += "<text x=\"" + coord(X(std::max(x0, 0.0)) + 4) + "\" y=\"" + coord(Z(L.crown) - 5) + "\" font-size=\"11\">" +
+         detail::svg_escape(x.t("wedge_crown") + " z = " + x.n(L.crown, 2) + " m") + "</text>\n";
+    // The distance from the anchor's centre to the crown.
+    const double xd = xc + w / 2 + 0.15 * s;
+    o += "<line x1=\"" + coord(X(xd)) + "\" y1=\"" + coord(Z(zc)) + "\" x2=\"" + coord(X(xd)) + "\" y2=\"" +
+         coord(Z(L.crown)) + "\" stroke=\"#000\" marker-start=\"none\"/>\n";
+    o += "<text x=\"" + coord(X(xd) + 4) + "\" y=\"" + coord(0.5 * (Z(zc) + Z(L.crown)) + 4) + "\" font-size=\"11\">" +
+         detail::svg_escape(x.n(L.crown - zc, 2) + " m") + "</text>\n";
+  }
+  o += "<text x=\"" + coord(left) + "\" y=\"" + coord(Hd - 8) + "\" font-size=\"11\">" +
+       detail::svg_escape("x = " + x.n(xc, 2) + " m, z = " + x.n(zc, 2) + " m, s = " + x.n(s, 2) + " m") + "</text>\n";
+  return o + "</svg>\n";
+}
+
+void wedge_figure(const TieText& x, const TieLevelResult& L, const std::string& id) {
+  const TieResistance& r = L.resistance;
+  x.c.d.add_svg(wedge_svg(x, L.tie, r),
+                x.f("wedge_caption", L.tie.name + ", " + std::to_string(r.wedge.tie + 1) + "/" +
+                                         std::to_string(L.tie.layout.count),
+                    x.n(r.wedge.area, 3), x.n(r.wedge.full_area, 3)),
+                id);
+}
+
+std::string change_text(const TieText& x, const TieChange& ch) {
+  if (!ch.after) return x.t("change.removed");
+  const Tie& a = *ch.after;
+  if (ch.kind == "anchor") return x.f("change.anchor", anchor_text(x, a));
+  return x.f("change.rod", rod_text(x, a) + ", " + ends_text(x, a), anchor_text(x, a));
+}
+
+void changes_block(const TieText& x, const TieInterventionResult& t) {
+  if (!t.changes.empty()) {
+    x.c.d.add_heading(x.t("change_title"), 3, false);
+    x.c.d.add_paragraph(x.t("change_intro"));
+    std::vector<Inline> items;
+    for (const TieChange& ch : t.changes)
+      items.push_back({Span(ch.level, true, Tone::plain, "", true), Span{": " + change_text(x, ch)}});
+    x.c.d.add_list(items);
+  }
+  if (!t.designed && !t.failing_existing.empty()) {
+    std::string n;
+    for (const std::string& f : t.failing_existing) n += (n.empty() ? "" : ", ") + f;
+    x.c.d.add_paragraph(Inline{Span{x.f("failing_existing", n), true}});
+  }
+}
+
 }  // namespace
 
 void add_tie_section(Ctx& c, const TieInterventionResult& t) {
@@ -337,8 +427,24 @@ void add_tie_section(Ctx& c, const TieInterventionResult& t) {
   if (t.designed && !t.found) c.d.add_paragraph(Inline{Span{x.t("not_found"), true}});
   c.d.add_svg(drawing(x, t.intervention ? t.case_after : t.case_before, t.intervention ? t.after : t.before, t.levels),
               x.t("drawing"), "ties-drawing");
+  if (t.wall_members.size() > 1) {
+    // A mechanism of a wall whose ties are described once in the wall's
+    // section (issue 37): here the mechanism with them.
+    c.d.add_paragraph(x.f("wall_member", [&] {
+      std::string m;
+      for (const std::string& n : t.wall_members) m += (m.empty() ? "" : ", ") + n;
+      return m;
+    }()));
+    c.d.add_heading(x.t("before_after"), 3, false);
+    states_table(x, t);
+    dynamics(x, t);
+    return;
+  }
   c.d.add_heading(x.t("levels_title"), 3, false);
   levels_table(x, t.levels);
+  changes_block(x, t);
+  c.d.add_heading(x.t("wedge_title"), 3, false);
+  for (std::size_t i = 0; i < t.levels.size(); ++i) wedge_figure(x, t.levels[i], "ties-wedge-" + std::to_string(i + 1));
   // A building's mechanism (issue 36: length): the formulas, the dynamic check
   // after the intervention and the detailing are in the tabulati (add_tab_ties).
   const bool brief = c.building && c.tabulati;
@@ -356,17 +462,111 @@ void add_tie_section(Ctx& c, const TieInterventionResult& t) {
   states_table(x, t);
   if (brief) return;
   dynamics(x, t);
-  detailing(x, t);
+  detailing(x, t.levels);
+}
+
+
+// Issue 37: the ties of a wall, once: each level with the mechanisms it
+// restrains, its wedge, its checks in every mechanism (the governing one per
+// row), the changes to existing ties, the formulas and the detailing.
+void add_wall_tie_section(Ctx& c, const std::string& wall,
+                          const std::vector<std::pair<std::string, const TieInterventionResult*>>& members) {
+  if (members.empty()) return;
+  const TieText x{c};
+  const TieInterventionResult& first = *members.front().second;
+  std::string names;
+  for (const auto& [n, r] : members) names += (names.empty() ? "" : ", ") + n;
+  c.d.add_heading(x.f("wall_title", wall), 2, false);
+  c.d.add_paragraph(x.f("wall_intro", names));
+  c.d.add_paragraph(x.t(first.designed ? "intro_design" : first.intervention ? "intro_given" : "intro_existing"));
+  if (first.designed && first.found) c.d.add_paragraph(x.t(first.regime == "ductile" ? "regime_ductile" : "regime_elastic"));
+  if (first.designed && !first.found) c.d.add_paragraph(Inline{Span{x.t("not_found"), true}});
+  // Every level of the wall once (the stato di progetto's, else the stato di
+  // fatto's), with the mechanisms it acts on.
+  std::vector<TieLevelResult> levels;
+  std::map<std::string, std::string> restrains;
+  for (const auto& [n, r] : members)
+    for (const TieLevelResult& l : r->intervention ? r->levels : r->levels_before) {
+      if (!(l.count > 0.0)) continue;
+      std::string& who = restrains[l.tie.name];
+      who += (who.empty() ? "" : ", ") + n;
+      bool seen = false;
+      for (const TieLevelResult& v : levels) seen = seen || v.tie.name == l.tie.name;
+      if (!seen) levels.push_back(l);
+    }
+  c.d.add_heading(x.t("levels_title"), 3, false);
+  levels_table(x, levels);
+  {
+    std::vector<std::vector<Cell>> rows;
+    for (const TieLevelResult& l : levels) {
+      Cell name(l.tie.name);
+      name.user = true;
+      rows.push_back({name, Cell(restrains[l.tie.name])});
+    }
+    c.d.add_cell_table({Cell(x.t("level")), Cell(x.t("wall_restrains"))}, rows, x.t("wall_restrains"));
+  }
+  changes_block(x, first);
+  c.d.add_heading(x.t("wedge_title"), 3, false);
+  for (std::size_t i = 0; i < levels.size(); ++i) wedge_figure(x, levels[i], "wall-wedge-" + std::to_string(i + 1));
+  c.d.add_heading(x.t("formulas_title"), 3, false);
+  formulas(x);
+  // Each level's checks in every mechanism it restrains: one table per level
+  // and state, each row the mechanism whose D/C is the largest.
+  c.d.add_heading(x.t("checks_title"), 3, false);
+  for (bool after : {false, true}) {
+    std::vector<std::string> done;
+    for (const auto& [n0, r0] : members)
+      for (const TieLevelResult& l0 : after ? r0->levels : r0->levels_before) {
+        if (after && !r0->intervention) continue;
+        if (std::find(done.begin(), done.end(), l0.tie.name) != done.end() || !(l0.count > 0.0)) continue;
+        done.push_back(l0.tie.name);
+        // The envelope over the members of each check row.
+        std::vector<std::pair<TieCheckRow, std::string>> env;
+        for (const auto& [n, r] : members)
+          for (const TieLevelResult& l : after ? r->levels : r->levels_before) {
+            if (l.tie.name != l0.tie.name || !(l.count > 0.0)) continue;
+            for (const TieCheckRow& row : l.checks) {
+              auto it = std::find_if(env.begin(), env.end(), [&](const auto& e) { return e.first.check == row.check; });
+              const double key = row.unit == "analyses" ? row.demand : row.dc;
+              if (it == env.end()) env.push_back({row, n});
+              else if (!row.satisfied && it->first.satisfied) *it = {row, n};
+              else if (row.satisfied == it->first.satisfied &&
+                       key > (it->first.unit == "analyses" ? it->first.demand : it->first.dc))
+                *it = {row, n};
+            }
+          }
+        x.c.d.add_heading(l0.tie.name + " (" + x.t(after ? "state_after" : "state_before") + ")", 4, false);
+        std::vector<std::vector<Cell>> rows;
+        for (const auto& [row, who] : env) {
+          const double sc = row.unit == "mm" ? 1e3 : row.unit == "kN" ? 1.0 / kN : 1.0;
+          const bool count = row.unit == "analyses";
+          Cell demand = !row.reachable ? Cell(x.t("unreachable")) : count ? x.num(row.demand, 0) : x.num(row.demand * sc, 2);
+          demand.numeric = true;
+          Cell dc = row.reachable && !count ? x.num(row.dc, 3) : numeric_cell(row.satisfied ? "0" : "∞");
+          dc.tone = row.satisfied ? Tone::ok : Tone::fail;
+          dc.strong = true;
+          rows.push_back({Cell(x.t("check." + row.check)), Cell(row.clause.empty() ? "" : x.t("clause." + row.check)),
+                          Cell(who), demand, count ? numeric_cell("0") : x.num(row.capacity * sc, 2),
+                          Cell(count ? x.t("unit_analyses") : row.unit), dc, x.ok(row.satisfied)});
+        }
+        x.c.d.add_cell_table({Cell(x.t("check")), Cell(x.t("clause")), Cell(x.t("wall_governing")),
+                              numeric_cell(x.t("demand")), numeric_cell(x.t("capacity")), Cell(x.t("unit")),
+                              numeric_cell("D/C"), Cell(x.t("outcome"))},
+                             rows, x.t("checks_title") + " — " + l0.tie.name);
+      }
+  }
+  detailing(x, levels);
 }
 
 void add_tab_ties(Ctx& c) {
-  if (!c.o.ties) return;
+  // A wall's ties shared by several mechanisms are described once in the wall's section (issue 37).
+  if (!c.o.ties || c.o.ties->wall_members.size() > 1) return;
   const TieText x{c};
   c.d.add_heading(x.t("title"), 2, false, true, "ties");
   c.d.add_heading(x.t("formulas_title"), 3, false);
   formulas(x);
   dynamics(x, *c.o.ties);
-  detailing(x, *c.o.ties);
+  detailing(x, c.o.ties->levels);
 }
 
 }  // namespace relazione

@@ -73,7 +73,7 @@ void install(const std::string& option, const std::string& path, const fs::path*
 bool overlay_first_pages(const fs::path& base, const fs::path& overlay, const fs::path& out, const fs::path& dir) {
   const fs::path log = dir / "qpdf.log";
   const int code = detail::run_program({"qpdf", "--show-npages", overlay.string()}, log);
-  if (code == 127) return false;
+  if (code == detail::program_not_found) return false;
   const std::string n = detail::read_file(log);
   int pages = 0;
   for (char ch : n) {
@@ -122,17 +122,6 @@ std::string tabulati_path(const std::string& path) {
   return (p.parent_path() / (stem + "-tabulati" + ext)).string();
 }
 
-std::vector<std::pair<std::string, std::string>> report_outputs(const ReportFiles& files) {
-  std::vector<std::pair<std::string, std::string>> out;
-  for (const auto& [option, path] : {std::pair<std::string, std::string>{"--html", files.html}, {"--pdf", files.pdf},
-                                     {"--docx", files.docx}, {"--txt", files.txt}})
-    if (!path.empty()) {
-      out.push_back({option, path});
-      out.push_back({option, tabulati_path(path)});
-    }
-  return out;
-}
-
 void write_report_files(const Relazione& r, const ReportFiles& files) {
   const Document* docs[2] = {&r.body, &r.tabulati};
   auto path_of = [](const std::string& body_path, int k) { return k == 0 ? body_path : tabulati_path(body_path); };
@@ -148,7 +137,8 @@ void write_report_files(const Relazione& r, const ReportFiles& files) {
   try {
     for (int k = 0; k < 2 && !files.docx.empty(); ++k)
       jobs.push_back(std::async(std::launch::async, [&, k] {
-        write_docx(*docs[k], (dir.path() / ("report-" + std::to_string(k) + ".docx")).string());
+        write_docx(*docs[k], (dir.path() / ("report-" + std::to_string(k) + ".docx")).string(),
+                   "--docx " + path_of(files.docx, k));
       }));
     if (!files.pdf.empty()) {
       jobs.push_back(std::async(std::launch::async, [&] {

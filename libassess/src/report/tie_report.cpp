@@ -29,14 +29,18 @@ std::string anchor_label(const Tie& t) {
   if (t.anchor.type == AnchorType::Plate)
     return format("plate %.0f x %.0f x %.0f mm %s", t.anchor.a * 1e3, t.anchor.b * 1e3, t.anchor.t * 1e3,
                   t.anchor.grade.c_str());
-  return format("bar anchor %.0f mm, diam. %.0f mm %s", t.anchor.a * 1e3, t.anchor.b * 1e3, t.anchor.grade.c_str());
+  return format("bar anchor (paletto) %.0f mm, diam. %.0f mm %s", t.anchor.a * 1e3, t.anchor.b * 1e3,
+                t.anchor.grade.c_str());
 }
 
 std::string layout_label(const Tie& t) {
   const TieLayout& L = t.layout;
   std::string s = format("%d ties on the %.2f m wall", L.count, L.wall_length);
   if (L.count > 1) s += format(", spacing %.2f m", L.centre_spacing());
-  return s + format(", edge distance %.2f m", L.edge_distance);
+  s += format(", edge distance %.2f m", L.edge_distance);
+  if (std::isfinite(L.crown)) s += format(", crown at z = %.2f m", L.crown);
+  if (!L.openings.empty()) s += format(", %zu opening(s)", L.openings.size());
+  return s;
 }
 
 std::string num_or_dash(double v, const char* f) { return std::isfinite(v) ? format(f, v) : std::string("-"); }
@@ -72,13 +76,18 @@ nlohmann::json side_json(const KinematicCaseResult& r, double zeta, bool passes)
   j["T_SLC"] = num(k.T_SLC);
   j["du_star"] = num(k.du_star);
   j["Ts"] = num(k.Ts);
-  // Issue 29: the capacity stops where a tie reaches its strength; the plastic reserve apart.
+  // Issue 37: the curve with each level breaking where it fails; the first
+  // break that drops the capacity by more than 50 % caps it (C8.7.1.2.1.6).
   j["d_star_tie_limit"] = num(k.d_star_tie_limit);
   j["tie_limit_level"] = k.tie_limit_level;
-  j["plastic_reserve"] = {{"d_star_tie_failure", num(k.d_star_tie_failure)}, {"du_star", num(k.du_star_plastic)},
-                          {"d_SLV", num(k.d_SLV_plastic)},  {"d_SLC", num(k.d_SLC_plastic)},
-                          {"Ts", num(k.Ts_plastic)},        {"T_SLV", num(k.T_SLV_plastic)},
-                          {"T_SLC", num(k.T_SLC_plastic)}};
+  j["d_star_tie_cap"] = num(k.d_star_tie_cap);
+  j["tie_breaks"] = nlohmann::json::array();
+  for (const KinematicResult::TieBreak& b : k.tie_breaks)
+    j["tie_breaks"].push_back({{"level", b.level},
+                               {"d_star", num(b.d_star)},
+                               {"alpha_before", num(b.alpha_before)},
+                               {"alpha_after", num(b.alpha_after)},
+                               {"caps", b.caps}});
   // The capacity curve with each tie level's force (kN) and elongation (m) at each point.
   nlohmann::json curve = nlohmann::json::array();
   for (const CapacityPoint& p : k.curve) {
@@ -144,8 +153,26 @@ nlohmann::json level_json(const TieLevelResult& L) {
   const TieResistance& r = L.resistance;
   l["strength_kN"] = {{"rod", r.rod / kN},           {"thread", r.thread / kN},
                       {"local_compression", r.bearing / kN}, {"punching", r.punching / kN},
-                      {"anchor_bending", r.anchor_bending / kN}, {"design", r.design / kN},
-                      {"governing", r.governing}};
+                      {"sliding", num(r.sliding / kN)},       {"anchor_bending", r.anchor_bending / kN},
+                      {"design", r.design / kN},             {"governing", r.governing}};
+  l["sections_mm2"] = {{"rod_corroded", r.area_c * 1e6}, {"thread_corroded", r.thread_area_c * 1e6},
+                       {"corrosion_mm", tie.rod.corrosion * 1e3}};
+  l["wedge"] = {{"tie", r.wedge.tie + 1},
+                {"x_m", r.wedge.x},
+                {"strip_m", {r.wedge.x_lo, r.wedge.x_hi}},
+                {"area_m2", r.wedge.area},
+                {"full_area_m2", r.wedge.full_area},
+                {"crown_z_m", num(tie.layout.crown)},
+                {"distance_to_crown_m", num(tie.layout.crown - tie.point.y())}};
+  l["sliding"] = {{"tie", r.slide.tie + 1},
+                  {"block_top_z_m", num(r.slide.block_top)},
+                  {"side_area_m2", r.slide.side_area},
+                  {"base_area_m2", r.slide.base_area},
+                  {"sigma_n_kPa", r.slide.sigma_n / 1e3},
+                  {"base_strength_kPa", r.sliding_strength / 1e3}};
+  l["temperature"] = {{"delta_T_K", tie.delta_T},
+                      {"thermal_force_kN", r.thermal_force / kN},
+                      {"fundamental_demand_kN", r.temperature_demand / kN}};
   l["per_level_kN"] = L.count > 0.0 ? num(r.design * tie.layout.count / kN) : nlohmann::json(nullptr);
   l["ductile"] = r.ductile;
   l["capacity_design"] = {{"yield_force_kN", r.yield_force / kN},
@@ -156,6 +183,7 @@ nlohmann::json level_json(const TieLevelResult& L) {
                           {"weakest_brittle_kN", r.weakest_brittle_capacity / kN}};
   l["stiffness_kN_m"] = r.stiffness / kN;
   l["yield_elongation_mm"] = r.yield_elongation * 1e3;
+  l["eps_ud"] = r.eps_ud;
   l["ultimate_elongation_mm"] = r.ultimate_elongation * 1e3;
   l["required"] = nlohmann::json::array();
   for (const RequiredTieForce& f : L.required) {
@@ -293,23 +321,44 @@ std::string level_text(const TieLevelResult& L) {
                             4) +
                   "\n";
   const TieResistance& r = L.resistance;
-  s += wrap_text(format("    design strengths per tie (kN): rod %.1f, thread %.1f, local compression %.1f, punching "
-                        "%.1f, anchor bending %.1f -> T_Rd = %.1f (%s), %.1f kN per level of %d ties; k = EA/L = %.0f "
-                        "kN/m; the chain analysed (%.2f m of wall) carries %.3f of them",
-                        r.rod / kN, r.thread / kN, r.bearing / kN, r.punching / kN, r.anchor_bending / kN,
-                        r.design / kN, r.governing.c_str(), r.design * tie.layout.count / kN, tie.layout.count,
-                        r.stiffness / kN, L.count * tie.layout.wall_length / tie.layout.count, L.count),
+  s += wrap_text(format("    design strengths per tie (kN): rod %.1f, thread %.1f (sections after a corrosion allowance "
+                        "of %.1f mm), local compression %.1f, punching %.1f, sliding %s, anchor bending %.1f -> T_Rd = "
+                        "%.1f (%s), %.1f kN per level of %d ties; k = EA/L = %.0f kN/m; the chain analysed (%.2f m of "
+                        "wall) carries %.3f of them",
+                        r.rod / kN, r.thread / kN, tie.rod.corrosion * 1e3, r.bearing / kN, r.punching / kN,
+                        num_or_dash(r.sliding / kN, "%.1f").c_str(), r.anchor_bending / kN, r.design / kN,
+                        r.governing.c_str(), r.design * tie.layout.count / kN, tie.layout.count, r.stiffness / kN,
+                        L.count * tie.layout.wall_length / tie.layout.count, L.count),
+                 6) +
+       "\n";
+  s += wrap_text(format("    punched wedge (45 deg through %.2f m) of tie %d at %.2f m along the wall: lateral area in "
+                        "masonry %.3f m2 of %.3f m2 uncut%s; sliding block above its lower edge up to z = %s m, sides "
+                        "%.3f m2 + base %.3f m2 at %.1f kPa (sigma_n %.1f kPa)",
+                        tie.masonry.thickness, r.wedge.tie + 1, r.wedge.x, r.wedge.area, r.wedge.full_area,
+                        std::isfinite(tie.layout.crown)
+                            ? format(" (anchor %.2f m below the crown at %.2f m)", tie.layout.crown - tie.point.y(),
+                                     tie.layout.crown).c_str()
+                            : "",
+                        num_or_dash(r.slide.block_top, "%.2f").c_str(), r.slide.side_area, r.slide.base_area,
+                        r.sliding_strength / 1e3, r.slide.sigma_n / 1e3),
                  6) +
        "\n";
   s += wrap_text(r.ductile ? format("    DUCTILE: every brittle capacity >= gamma_Rd gamma_ov A fyk = %.2f x %.2f x %.1f = "
-                                    "%.1f kN (the weakest, %s, %.1f kN): the rod may yield, up to eps_ud L = %.0f mm",
+                                    "%.1f kN (the weakest, %s, %.1f kN): the rod may yield, up to eps_ud L = %.4f x "
+                                    "%.2f m = %.0f mm (eps_ud = 0.9 eps_uk, the grade's uniform elongation)",
                                     tie_catalogue::gamma_Rd, tie_catalogue::gamma_ov, r.yield_force / kN,
                                     r.hierarchy_demand / kN, r.weakest_brittle.c_str(),
-                                    r.weakest_brittle_capacity / kN, r.ultimate_elongation * 1e3)
-                           : format("    NOT DUCTILE (%s %.1f kN < gamma_Rd gamma_ov A fyk = %.1f kN): the tie must "
-                                    "stay elastic; its checks take the largest force it develops (%.2f kN)",
-                                    r.weakest_brittle.c_str(), r.weakest_brittle_capacity / kN, r.hierarchy_demand / kN,
-                                    L.demand.elastic_demand() / kN),
+                                    r.weakest_brittle_capacity / kN, r.eps_ud, tie.free_length,
+                                    r.ultimate_elongation * 1e3)
+                           : tie.rod.ends == TieEnds::Threaded
+                               ? format("    NOT DUCTILE (threaded on the rod: the thread, %.1f kN, is weaker than the "
+                                        "rod): the tie must stay elastic; its checks take the largest force it develops "
+                                        "(%.2f kN)",
+                                        r.thread / kN, L.demand.elastic_demand() / kN)
+                               : format("    NOT DUCTILE (%s %.1f kN < gamma_Rd gamma_ov A fyk = %.1f kN): the tie must "
+                                        "stay elastic; its checks take the largest force it develops (%.2f kN)",
+                                        r.weakest_brittle.c_str(), r.weakest_brittle_capacity / kN,
+                                        r.hierarchy_demand / kN, L.demand.elastic_demand() / kN),
                  6) +
        "\n";
   s += "    force needed by each check of the mechanism (this level, the others as given):\n";
@@ -354,9 +403,10 @@ std::vector<TieGroup> tie_groups(const TieInterventionResult& t, bool after) {
 std::string tie_text(const TieInterventionResult& t) {
   std::string s = "\nTie rods (catene): stato di fatto and stato di progetto\n";
   if (t.designed) {
-    s += wrap_text(t.found ? format("  design: the smallest rod and plate of the lists that make every check pass (%d "
-                                    "combinations analysed); the ties are %s",
-                                    t.tried,
+    s += wrap_text(t.found ? format("  design: the first rod and anchor of the order, ductile ties first, that make every "
+                                    "check pass, every existing tie's included (%d combination%s of the order reached); "
+                                    "the new ties are %s",
+                                    t.tried, t.tried == 1 ? "" : "s",
                                     t.regime == "ductile" ? "DUCTILE (capacity design satisfied)"
                                                           : "NOT ductile and stay ELASTIC in every analysis")
                            : "  design: NOT FOUND: " + t.message + "; the combination that came closest is shown",
@@ -365,14 +415,48 @@ std::string tie_text(const TieInterventionResult& t) {
     if (t.passes_before)
       s += "  note: the mechanism already satisfies every check without the ties designed here; the smallest tie of the "
            "lists is shown\n";
-    for (const TieTrial& x : t.trials)
-      if (x.outcome != "layout")
-        s += format("    tried diam. %.0f %s M%.0f, plate %.0f x %.0f: T_Rd %.1f kN (%s%s): %s%s\n", x.diameter * 1e3,
-                    x.grade.c_str(), x.thread * 1e3, x.plate * 1e3, x.plate_t * 1e3, x.T_Rd / kN, x.governing.c_str(),
-                    x.ductile ? ", ductile" : "", x.outcome.c_str(),
-                    x.component.empty() ? "" : (" (" + x.component + ")").c_str());
+    if (!t.wall_members.empty()) {
+      std::string m;
+      for (const std::string& n : t.wall_members) m += (m.empty() ? "" : ", ") + n;
+      s += wrap_text("  the wall's ties act on every mechanism they cross: designed for " + m + " together", 4) + "\n";
+    }
+    // The trials (all in the JSON): the first ones and the last.
+    const std::size_t shown = 30;
+    for (std::size_t i = 0; i < t.trials.size(); ++i) {
+      if (i == shown && t.trials.size() > shown + 1) {
+        s += format("    ... %zu more (JSON: ties.trials)\n", t.trials.size() - shown - 1);
+        i = t.trials.size() - 1;
+      }
+      const TieTrial& x = t.trials[i];
+      std::string what = x.diameter > 0.0
+                             ? format("diam. %.0f %s M%.0f, %s %.0f x %.0f %s: T_Rd %.1f kN (%s%s)", x.diameter * 1e3,
+                                      x.grade.c_str(), x.thread * 1e3,
+                                      x.anchor == AnchorType::Plate ? "plate" : "bar", x.plate * 1e3, x.plate_t * 1e3,
+                                      x.plate_grade.c_str(), x.T_Rd / kN, x.governing.c_str(),
+                                      x.ductile ? ", ductile" : "")
+                             : std::string("no new level");
+      if (!x.changes.empty()) what += "; " + x.changes;
+      s += wrap_text(format("    tried %s: %s%s%s", what.c_str(), x.outcome.c_str(),
+                            x.component.empty() ? "" : (" (" + x.component + ")").c_str(),
+                            x.mechanism.empty() ? "" : (" in " + x.mechanism).c_str()),
+                     8) +
+           "\n";
+    }
+    for (const TieChange& c : t.changes)
+      s += wrap_text("  existing level \"" + c.level + "\" fails: changed in the stato di progetto (the least change): " +
+                         describe_change(c),
+                     4) +
+           "\n";
   } else if (!t.intervention) {
     s += "  no intervention: the existing ties are part of the stato di fatto\n";
+  }
+  if (!t.designed && !t.failing_existing.empty()) {
+    std::string n;
+    for (const std::string& x : t.failing_existing) n += (n.empty() ? "\"" : ", \"") + x + "\"";
+    s += wrap_text("  existing tie(s) " + n + " NOT satisfied: add \"design\": {\"ties\": {\"levels\": []}} to have "
+                   "the least change proposed (a new anchor, a new rod, or its removal; docs/theory/ties.md §5)",
+                   4) +
+         "\n";
   }
   if (!t.levels_before.empty()) {
     s += "  stato di fatto: the existing ties\n";
@@ -395,10 +479,19 @@ std::string tie_text(const TieInterventionResult& t) {
               dcol(a.result, a.result.d0_star).c_str());
   s += format("      %-44s %14s %14s\n", "d* where a tie reaches its strength (m)",
               dcol(b.result, b.result.d_star_tie_limit).c_str(), dcol(a.result, a.result.d_star_tie_limit).c_str());
-  s += format("      %-44s %14s %14s\n", "d_SLV (m), adopted", dcol(b.result, b.result.d_SLV).c_str(),
+  s += format("      %-44s %14s %14s\n", "d* of a break dropping alpha > 50 % (m)",
+              dcol(b.result, b.result.d_star_tie_cap).c_str(), dcol(a.result, a.result.d_star_tie_cap).c_str());
+  s += format("      %-44s %14s %14s\n", "d_SLV (m)", dcol(b.result, b.result.d_SLV).c_str(),
               dcol(a.result, a.result.d_SLV).c_str());
-  s += format("      %-44s %14s %14s\n", "d_SLV (m), plastic reserve (not adopted)",
-              dcol(b.result, b.result.d_SLV_plastic).c_str(), dcol(a.result, a.result.d_SLV_plastic).c_str());
+  s += format("      %-44s %14s %14s\n", "d_SLC (m)", dcol(b.result, b.result.d_SLC).c_str(),
+              dcol(a.result, a.result.d_SLC).c_str());
+  for (const auto* k : {&b.result, &a.result})
+    for (const KinematicResult::TieBreak& x : k->tie_breaks)
+      s += wrap_text(format("      %s: \"%s\" breaks at d* = %.4f m, alpha %.4f -> %.4f%s", k == &b.result ? "di fatto" : "di progetto",
+                            x.level.c_str(), x.d_star, x.alpha_before, x.alpha_after,
+                            x.caps ? " (a drop above 50 %: the capacity stops there, Circ. 2019 C8.7.1.2.1.6)" : ""),
+                     8) +
+           "\n";
   s += format("      %-44s %14s %14s\n", "zeta_E = PGA capacity / demand", num_or_dash(t.zetaE_before, "%.3f").c_str(),
               num_or_dash(t.zetaE_after, "%.3f").c_str());
   s += format("      %-44s %14s %14s\n", "every check", t.passes_before ? "satisfied" : "NOT satisfied",
@@ -409,11 +502,10 @@ std::string tie_text(const TieInterventionResult& t) {
   s += format("      %-8s %-4s %-13s %-8s %14s %14s\n", "code", "LS", "kind", "where", "D/C fatto", "D/C progetto");
   for (const CheckRow& row : b.checks) {
     const CheckRow* r2 = find_row(t.after, row);
-    auto dc = [](const CheckRow* x) { return num_or_dash(x->dc, "%.3f") + (x->without_ties ? " (bare)" : ""); };
+    auto dc = [](const CheckRow* x) { return num_or_dash(x->dc, "%.3f"); };
     s += format("      %-8s %-4s %-13s %-8s %14s %14s\n", row.code.c_str(), row.limit_state.c_str(), row.kind.c_str(),
                 row.location.c_str(), dc(&row).c_str(), r2 ? dc(r2).c_str() : "-");
   }
-  s += "      (bare): the wall without its ties satisfies that displacement check better (the wall left if they break)\n";
   s += dynamics_text(t);
   s += "  readings adopted (for the appendix):\n";
   for (const TieReading& r : tie_readings(t, Lang::en))
@@ -433,10 +525,17 @@ nlohmann::json tie_json(const TieInterventionResult& t) {
     j["trials"] = nlohmann::json::array();
     for (const TieTrial& x : t.trials)
       j["trials"].push_back({{"diameter_mm", x.diameter * 1e3}, {"grade", x.grade}, {"thread_mm", x.thread * 1e3},
+                             {"anchor", x.anchor == AnchorType::Plate ? "plate" : "bar"},
                              {"plate_mm", x.plate * 1e3}, {"plate_t_mm", x.plate_t * 1e3},
-                             {"T_Rd_kN", x.T_Rd / kN}, {"governing", x.governing}, {"ductile", x.ductile},
-                             {"outcome", x.outcome}, {"component", x.component}});
+                             {"anchor_grade", x.plate_grade}, {"T_Rd_kN", num(x.T_Rd / kN)},
+                             {"governing", x.governing}, {"ductile", x.ductile}, {"changes", x.changes},
+                             {"outcome", x.outcome}, {"component", x.component}, {"mechanism", x.mechanism}});
+    j["changes"] = nlohmann::json::array();
+    for (const TieChange& c : t.changes)
+      j["changes"].push_back({{"level", c.level}, {"kind", c.kind}, {"description", describe_change(c)}});
   }
+  j["failing_existing"] = t.failing_existing;
+  j["wall_members"] = t.wall_members;
   j["levels_before"] = nlohmann::json::array();
   for (const TieLevelResult& L : t.levels_before) j["levels_before"].push_back(level_json(L));
   j["levels"] = nlohmann::json::array();

@@ -6,6 +6,7 @@
 #include "assess/risk/fragility_job.hpp"
 
 #include "assess/support/error.hpp"
+#include "assess/support/content_hash.hpp"
 #include "assess/support/input_file.hpp"
 
 #include "campaign/csv_fields.hpp"
@@ -20,20 +21,15 @@ namespace assess {
 
 namespace {
 
-// FNV-1a 64-bit hash of a file's bytes as 16 hex digits ("" if unreadable),
-// as the fragility summary's case_fnv1a64 (fragility_report.cpp).
+// FNV-1a 64 of a file's bytes as 16 hex digits ("" if unreadable), as the
+// fragility summary's case_fnv1a64 (fragility_report.cpp): the bounded reader
+// and the one hash of support/content_hash.hpp.
 std::string content_fnv1a64(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return "";
-  std::uint64_t h = 14695981039346656037ull;
-  char c;
-  while (in.get(c)) {
-    h ^= static_cast<unsigned char>(c);
-    h *= 1099511628211ull;
+  try {
+    return hash_hex(file_content_hash(path, input_kinds::case_file));
+  } catch (const InputError&) {
+    return "";
   }
-  char buf[20];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
 }
 
 

@@ -10,11 +10,13 @@
 #include "assess/risk/collapse_rate.hpp"
 #include "assess/support/error.hpp"
 #include "assess/support/input_file.hpp"
+#include "assess/support/number_rules.hpp"
 #include "assess/support/json_input.hpp"
 #include "assess/support/output_file.hpp"
 #include "assess/support/units.hpp"
 
 #include <cmath>
+#include <limits>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -81,7 +83,7 @@ json curve_json(const FragilityStudy& st, const FragilityCurve& c) {
 // the fragility of a case edited since (support/content_hash.hpp).
 std::string file_fnv1a64(const std::string& path) {
   try {
-    return hash_hex(file_content_hash(path));
+    return hash_hex(file_content_hash(path, input_kinds::case_file));
   } catch (const InputError&) {
     return "";
   }
@@ -400,6 +402,31 @@ json read_fragility_summary(const std::string& dir, const std::string& case_file
     throw InputError("'" + path + "': the case file '" + case_file +
                      "' has changed since this fragility was computed (content hash differs): rerun `assess fragility " +
                      case_file + " --out " + dir + "`");
+  // The numbers a report prints from it, held to their ranges (issue 39: a
+  // summary edited to beta = -1 was printed by `assess run --fragility`).
+  const JsonNode root(j, path);
+  static constexpr NumberRule pga{"m/s^2", 0.0, 1e3, true, false, "a PGA above 0 and at most 100 g"};
+  static constexpr NumberRule beta{"-", 0.0, 10.0, true, false, "the lognormal dispersion: above 0"};
+  static constexpr NumberRule rate{"1/year", 0.0, 1e3, false, false, "an annual frequency"};
+  static constexpr NumberRule probability{"-", 0.0, 1.0, false, false, "a probability"};
+  static constexpr NumberRule years{"years", 0.0, 1e300, true, false, "a return period above 0"};
+  root.number("VN_years", rules::nominal_life_years);
+  root.at("method").as_string();
+  const JsonNode slv = root.at("code").at("SLV");
+  slv.number("TR_years", rules::return_period_years);
+  slv.number("pga_m_s2", pga);
+  if (const auto p = slv.find("P_overturning_at_pga"); p && !p->value().is_null()) p->as_number(probability);
+  const JsonNode g = root.at("governing");
+  g.at("restitution").as_string();
+  if (g.has("return_period_years")) {
+    g.number("theta_m_s2", pga);
+    g.number("beta", beta);
+    g.number("lambda_per_year", rate);
+    if (!g.at("return_period_years").value().is_null()) g.number("return_period_years", years);
+    g.number("probability_in_VN", probability);
+  }
+  for (const char* count : {"analyses", "failed"})
+    if (root.has(count)) root.integer(count, 0, std::numeric_limits<int>::max());
   return j;
 }
 

@@ -4,8 +4,6 @@
 #include "assess/support/error.hpp"
 
 #include <cstdio>
-#include <fstream>
-#include <iterator>
 
 namespace assess {
 
@@ -26,11 +24,8 @@ std::string hash_hex(std::uint64_t h) {
   return buf;
 }
 
-std::uint64_t file_content_hash(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot open '" + path + "' to hash it");
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return content_hash(bytes);
+std::uint64_t file_content_hash(const std::string& path, const InputKind& kind) {
+  return content_hash(read_input_file(path, kind));
 }
 
 }  // namespace assess

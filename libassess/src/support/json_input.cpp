@@ -284,19 +284,11 @@ std::string JsonNode::as_string() const {
   if (!value_->is_string()) fail(std::string("expected a string, got ") + type_name(*value_));
   const std::string& s = value_->get_ref<const std::string&>();
   // Names, paths and labels are printed in reports, tables and HTML: no
-  // control characters (U+0000-U+001F, U+007F, U+0080-U+009F), which broke
-  // the text tables and put a NUL byte into the HTML (issue 31).
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    const unsigned char c = static_cast<unsigned char>(s[i]);
-    const bool c1 = c == 0xC2 && i + 1 < s.size() && static_cast<unsigned char>(s[i + 1]) >= 0x80 &&
-                    static_cast<unsigned char>(s[i + 1]) <= 0x9F;
-    if (c < 0x20 || c == 0x7F || c1) {
-      char code[16];
-      std::snprintf(code, sizeof code, "U+%04X", c1 ? static_cast<unsigned char>(s[i + 1]) : c);
-      fail(std::string("the text holds a control character (") + code + ") at character " + std::to_string(i + 1) +
-           ": names and file names are printed in the reports; write it without control characters");
-    }
-  }
+  // control characters, which broke the text tables and put a NUL byte into
+  // the HTML (issue 31; number_rules.hpp).
+  const std::string bad = control_character_violation(s);
+  if (!bad.empty())
+    fail(bad + ": names and file names are printed in the reports; write it without control characters");
   return s;
 }
 

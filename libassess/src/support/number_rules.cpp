@@ -1,9 +1,11 @@
 // number_rules.cpp: the rule set for numbers of input files (number_rules.hpp).
 #include "assess/support/number_rules.hpp"
 
+#include <cerrno>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace assess {
 
@@ -15,6 +17,50 @@ std::string number_for_message(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%g", v);
   return b;
+}
+
+std::string decimal_number_violation(const std::string& text, double& v) {
+  const std::string got = "got '" + (text.size() > 40 ? text.substr(0, 40) + "..." : text) + "'";
+  // Only the characters of a decimal number: digits, a sign, a point, an
+  // exponent (strtod alone also reads "0x1p3", "inf", "nan" and " 6.5").
+  bool other = text.empty();
+  for (char c : text)
+    if (!((c >= '0' && c <= '9') || c == '+' || c == '-' || c == '.' || c == 'e' || c == 'E')) {
+      if (c == 'x' || c == 'X') return "must be a decimal number, " + got + " (a hexadecimal number)";
+      other = true;
+    }
+  if (other) {
+    std::string lower;
+    for (char d : text) lower += static_cast<char>(d >= 'A' && d <= 'Z' ? d - 'A' + 'a' : d);
+    if (lower.find("inf") != std::string::npos || lower.find("nan") != std::string::npos)
+      return "must be a finite number, " + got;
+    return "expected a number, " + got;
+  }
+  char* end = nullptr;
+  errno = 0;
+  const double x = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0') return "expected a number, " + got;
+  if (!std::isfinite(x)) return "must be a finite number, " + got + " (beyond the range of a double, 1.8e308)";
+  const std::size_t exp = text.find_first_of("eE");
+  const bool underflow = errno == ERANGE && x == 0.0 && text.find_first_of("123456789") < exp;
+  if (is_subnormal(x) || underflow)
+    return "must be a number of normal size, " + got + " (a subnormal number, |x| < 2.2e-308)";
+  v = x;
+  return "";
+}
+
+std::string control_character_violation(const std::string& s) {
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    const bool c1 = c == 0xC2 && i + 1 < s.size() && static_cast<unsigned char>(s[i + 1]) >= 0x80 &&
+                    static_cast<unsigned char>(s[i + 1]) <= 0x9F;
+    if (c < 0x20 || c == 0x7F || c1) {
+      char code[16];
+      std::snprintf(code, sizeof code, "U+%04X", c1 ? static_cast<unsigned char>(s[i + 1]) : c);
+      return std::string("the text holds a control character (") + code + ") at character " + std::to_string(i + 1);
+    }
+  }
+  return "";
 }
 
 std::string number_rule_violation(double v, const NumberRule& r) {

@@ -2,14 +2,17 @@
 #include "assess/support/output_file.hpp"
 
 #include "assess/support/error.hpp"
+#include "assess/support/termination.hpp"
 
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <mutex>
 #include <set>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -179,17 +182,15 @@ void write_output_file(const std::string& path, const std::string& content, cons
   // The temporary file beside the target (same file system: rename is atomic).
   const fs::path t(target);
   const std::string dir = t.has_parent_path() ? t.parent_path().string() : ".";
-  std::string tmpl = dir + "/." + t.filename().string() + ".tmp.XXXXXX";
-  std::vector<char> buf(tmpl.begin(), tmpl.end());
-  buf.push_back('\0');
-  const int fd = ::mkstemp(buf.data());
+  // Registered while it exists: a SIGINT or SIGTERM removes it (termination.hpp).
+  std::string tmp = dir + "/." + t.filename().string() + ".tmp.XXXXXX";
+  const int fd = make_temporary_file(tmp);
   if (fd < 0) {
     const int err = errno;
     struct stat dst {};
     if (::stat(dir.c_str(), &dst) != 0) fail(what, path, "no such folder '" + dir + "'", err);
     fail(what, path, "cannot create a file in '" + dir + "'", err);
   }
-  const std::string tmp(buf.data());
   // The permissions a new file gets (umask), or those of the file replaced.
   mode_t mode = 0;
   if (exists) {
@@ -204,12 +205,46 @@ void write_output_file(const std::string& path, const std::string& content, cons
   if (::close(fd) != 0 && !err) err = errno;
   if (err) {
     ::unlink(tmp.c_str());
+    release_temporary(tmp);
     fail(what, path, "cannot write", err);
   }
   if (::rename(tmp.c_str(), target.c_str()) != 0) {
     err = errno;
     ::unlink(tmp.c_str());
+    release_temporary(tmp);
     fail(what, path, "cannot replace the file", err);
+  }
+  release_temporary(tmp);
+}
+
+void check_output_files(const std::vector<OutputTarget>& outputs) {
+  // Each output's file: by device and inode when it exists, else by its
+  // folder's device and inode and its name (after following a link that
+  // stays in its folder), so that "r.pdf", "./r.pdf", "d/../r.pdf", a hard
+  // link and a link to it are one file.
+  struct Identity {
+    dev_t dev;
+    ino_t ino;
+    std::string name;
+    bool operator<(const Identity& o) const { return std::tie(dev, ino, name) < std::tie(o.dev, o.ino, o.name); }
+  };
+  std::map<Identity, const OutputTarget*> seen;
+  for (const OutputTarget& o : outputs) {
+    struct stat st {};
+    bool exists = false, device = false;
+    const std::string target = resolve_output(o.path, o.what, o.folder, st, exists, device);
+    if (device) continue;  // /dev/null, /dev/stdout, a pipe: written in place, nothing replaced
+    Identity id{st.st_dev, st.st_ino, ""};
+    if (!exists) {
+      const fs::path t(target);
+      struct stat dst {};
+      if (::stat((t.has_parent_path() ? t.parent_path().string() : std::string(".")).c_str(), &dst) != 0) continue;
+      id = Identity{dst.st_dev, dst.st_ino, t.filename().string()};
+    }
+    const auto [it, fresh] = seen.emplace(id, &o);
+    if (!fresh)
+      throw InputError(it->second->what + " " + it->second->path + " and " + o.what + " " + o.path +
+                       " are the same file: one output would replace the other (give each its own file name)");
   }
 }
 

@@ -14,7 +14,16 @@ be the building's. Issue 23: a mechanism with "ties" or "design" carries the
 tie result of its single run (`"ties"`: the design found, every level's checks
 and required forces, before/after, the tied dynamics; numbers within 1e-12
 relative), its zetaE before/after are the single run's, and the building's
-index before/after is recomputed from the single runs. Exit 0 pass, 1 fail.
+index before/after is recomputed from the single runs. Issue 37: a wall's
+"ties" and "design" levels go to the mechanisms of the wall whose moving
+blocks they cross (the expanded case holds the wall's crossing levels, then
+the mechanism's own ties); the building designs a wall's ties for all those
+mechanisms together, the single run for its mechanism alone (which may
+accept an earlier combination, or keep an existing tie the wall removes): for
+a mechanism of such a wall the stato di fatto is compared (the assessment,
+`before`, `levels_before`, the analyses of the existing ties), and the
+stato di progetto must pass every check in every mechanism of the wall when
+the design is found. Exit 0 pass, 1 fail.
 """
 import json
 import math
@@ -67,8 +76,7 @@ def same(x, y, path, single_file):
         failures.append(f"{path}: {x!r} != {y!r}")
 
 
-OVERRIDES = ("knowledge_level", "FC", "codes", "method", "check_SLD", "building", "analysis", "dynamic", "ties",
-             "design")
+OVERRIDES = ("knowledge_level", "FC", "codes", "method", "check_SLD", "building", "analysis", "dynamic")
 
 
 def merge_patch(target, patch):  # RFC 7386
@@ -99,6 +107,32 @@ def compose(doc, wall, entry):
     return case
 
 
+def tie_composition(wall, entry, got):
+    """Issue 37: the expanded case's ties are some of the wall's, in order, then the entry's own; its design
+    levels some of the wall's (or the entry's own design when its wall has none). Returns an error or None."""
+    ties = got.get("ties", [])
+    own = entry.get("ties") or []
+    wall_ties = wall.get("ties") or []
+    head = ties[:len(ties) - len(own)] if own else ties
+    if own and ties[len(ties) - len(own):] != own:
+        return "the mechanism's own ties are not at the end of its expanded ties"
+    it = iter(wall_ties)
+    if not all(any(t == w for w in it) for t in head):
+        return "the expanded ties are not the wall's levels in their order"
+    if "design" in wall:
+        if "design" in got:
+            levels = got["design"]["ties"].get("levels", [])
+            it = iter(wall["design"]["ties"].get("levels", []))
+            if not all(any(t == w for w in it) for t in levels):
+                return "the expanded design levels are not the wall's in their order"
+            rest = {k: v for k, v in got["design"]["ties"].items() if k != "levels"}
+            if rest != {k: v for k, v in wall["design"]["ties"].items() if k != "levels"}:
+                return "the expanded design's settings are not the wall's"
+    elif entry.get("design") is not None and got.get("design") != entry.get("design"):
+        return "the mechanism's own design is not its expanded design"
+    return None
+
+
 doc = json.load(open(os.path.join(src, building), encoding="utf-8"))
 b = run(["run", building, "--json", "--expand", work])
 # The expanded cases are the documented composition (plus the shared range when shared).
@@ -116,6 +150,10 @@ for wall in doc["walls"]:
             sel.pop("period_range_s", None)
         elif "period_range_s" in sel and "period_range_s" not in expected.get("dynamic", {}).get("select", {}):
             failures.append(f"{m['id']}: a period range written for a mechanism that does not share its records")
+        err = tie_composition(wall, entry, got)
+        if err:
+            failures.append(f"{m['id']}: {err}")
+        got = {k: v for k, v in got.items() if k not in ("ties", "design")}
         if got != expected:
             failures.append(f"{m['id']}: expanded case != the documented composition:\n{json.dumps(got, sort_keys=True)}\n"
                             f"{json.dumps(expected, sort_keys=True)}")
@@ -132,6 +170,17 @@ for m in b["mechanisms"]:
     ties_note = ""
     if ("ties" in m) != ("ties" in s):
         failures.append(f"{m['id']}: tie result only in {'the building' if 'ties' in m else 'the single run'}")
+    elif "ties" in m and m["ties"].get("wall_members"):
+        # A wall's ties: the stato di fatto as the single run; the wall's design passes in this mechanism.
+        for key in ("before", "levels_before", "designed"):
+            same(m["ties"][key], s["ties"][key], f"{m['id']}/ties/{key}", f)
+        same(m["ties"]["dynamic"]["runs_before"], s["ties"]["dynamic"]["runs_before"], f"{m['id']}/ties/dynamic/runs_before", f)
+        if m["ties"].get("found") and not m["ties"]["after"]["every_check_satisfied"]:
+            failures.append(f"{m['id']}: the wall's design is found but this mechanism does not pass every check")
+        same(m["intervention"]["zeta_E_before"], s["ties"]["before"]["zeta_E"], f"{m['id']}/intervention/zeta_E_before", f)
+        same(m["intervention"]["zeta_E_after"], m["ties"]["after"]["zeta_E"], f"{m['id']}/intervention/zeta_E_after", f)
+        ties_note = (f", the wall's ties ({'found' if m['ties'].get('found') else 'not found'}): stato di fatto identical, "
+                     f"zetaE {m['intervention']['zeta_E_before']:.3f} -> {m['intervention']['zeta_E_after']:.3f}")
     elif "ties" in m:
         same(m["ties"], s["ties"], f"{m['id']}/ties", f)
         numbers = []
@@ -144,7 +193,7 @@ for m in b["mechanisms"]:
                 walk.extend(x)
             elif isinstance(x, (int, float)) and not isinstance(x, bool):
                 numbers.append(x)
-        if len(numbers) < 50:
+        if len(numbers) < 50 and not m["ties"].get("wall_members"):
             failures.append(f"{m['id']}/ties: only {len(numbers)} numbers compared")
         iv = m["intervention"]
         same(iv["zeta_E_before"], s["ties"]["before"]["zeta_E"], f"{m['id']}/intervention/zeta_E_before", f)
@@ -188,7 +237,9 @@ ti = b["tie_index"]
 for when in ("before", "after"):
     best, best_id = None, None
     for m, s in zip(b["mechanisms"], singles):
-        if "ties" in s:
+        if "ties" in s and when == "after" and m.get("ties", {}).get("wall_members"):
+            z = m["ties"]["after"]["zeta_E"]  # the wall's design (checked against its own result above)
+        elif "ties" in s:
             z = s["ties"][when]["zeta_E"]
         else:
             z = m["intervention"]["zeta_E_" + when]  # no ties: checked equal to the mechanism's own below
@@ -205,6 +256,16 @@ for when in ("before", "after"):
                         f"single runs {best_id} {best}")
     elif best is not None:
         print(f"ok   building index {when} the ties: {best_id} (zetaE {best:.4f})")
+
+# Issue 41: a mechanism alone (`--mechanism ID`) is its building line, a shared
+# selection that fell back included: the same records, the same numbers.
+for m in b["mechanisms"]:
+    alone = run(["run", building, "--mechanism", m["id"], "--json"])
+    n0 = len(failures)
+    same(m["assessment"], {k: v for k, v in alone.items() if k not in ("safety_indices", "ties")},
+         f"{m['id']}/--mechanism", building)
+    if len(failures) == n0:
+        print(f"ok   {m['id']}: --mechanism {m['id']} = its building line")
 
 for f in failures[:40]:
     print("FAIL", f)

@@ -73,9 +73,10 @@ def main():
     if not 0.0 < j["TR_SLV_years"] < 1e4 or not 0.0 < j["probability_in_VN"] < 1.0:
         errors.append("TR_SLV or P in VN out of range")
 
-    text = run(exe, "run", case, "--fragility", frag)
-    if "additional probabilistic result, not a code check" not in text:
-        errors.append("terminal: no labelled fragility line")
+    # The terminal's summary (issue 41: the relazione's own sections) carries the labelled box.
+    text = run(exe, "run", case, "--fragility", frag, "--lang", "en")
+    if "Additional probabilistic result" not in text or "Not a code check" not in text:
+        errors.append("terminal: no labelled probabilistic result")
     long_lines = [l for l in text.splitlines() if len(l) > 120]
     if long_lines:
         errors.append(f"terminal: {len(long_lines)} lines over 120 columns: {long_lines[0]!r}")

@@ -181,7 +181,7 @@ for case in CASES:
                             sat += 1
                         elif s.get("failing", 0) > 0:
                             fail += 1
-            if (sat, fail) != (g.get("satisfied"), g.get("failing")):
+            if (sat, fail) != (g.get("satisfied_count"), g.get("failing")):
                 defects.append(f"{case}: building {g['code']} {g['approach']}: counts {g.get('satisfied')}/{g.get('failing')} "
                                f"but the mechanisms give {sat}/{fail}")
     out = os.path.join(OUT, stem + ".html")

@@ -69,9 +69,9 @@ struct BuildingTieIndex {
 /// dynamic method have none (NaN when no mechanism has one).
 struct BuildingVerdict {
   bool satisfied = false;
-  int mechanisms = 0;               ///< mechanisms with an adopted verdict
+  int mechanisms = 0;               ///< mechanisms of the building
   std::vector<int> failing;         ///< indices of the mechanisms that do not satisfy it
-  std::vector<int> undecided;       ///< indices of those without a verdict
+  std::vector<int> undecided;       ///< indices of those without a verdict (or without a check by their method)
   double zeta = std::numeric_limits<double>::quiet_NaN();
   int zeta_mechanism = -1;          ///< index of the mechanism that gives zeta
   double max_dc = 0.0;              ///< the largest adopted D/C over the mechanisms (+inf: a collapse)

@@ -6,6 +6,10 @@
 // the wall's overrides, then the mechanism's, merged as a JSON merge patch
 // (RFC 7386: objects merge key by key, null deletes). The expanded case is
 // parsed by parse_case and run by assess_facade, the code path of a single run.
+// Issue 37: a wall's "ties" and "design" are not merged whole: each tie level
+// given on the wall (existing, new, or to design) acts on every mechanism of
+// the wall whose moving blocks it crosses, and only on those; a mechanism's
+// own "ties" are added to them.
 #pragma once
 
 #include "assess/assessment/case_file.hpp"
@@ -50,6 +54,15 @@ struct BuildingMechanism {
   /// The period range the mechanism alone would select over (s), from its
   /// governing candidate's Ts and T_SLV (0 when not selecting).
   double own_T_min = 0.0, own_T_max = 0.0;
+  /// Issue 37: the mechanism holds some of its wall's tie levels ("ties" or
+  /// "design" of the wall that cross its moving blocks): the wall's ties are
+  /// assessed and designed for all such mechanisms of the wall together.
+  bool wall_ties = false;
+  /// Where each tie level of the expanded case was written in the building
+  /// file ("/walls/0/ties/1", "/walls/0/mechanisms/1/ties/0"), and each level
+  /// of its design: the expanded case lists only the wall's levels that cross
+  /// the mechanism, so its indices differ from the file's.
+  std::vector<std::string> tie_origin, design_origin;
 };
 
 /// A shared record selection: mechanisms with the same "select" settings whose

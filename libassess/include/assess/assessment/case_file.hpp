@@ -148,6 +148,8 @@ std::vector<TieRestraint> case_tie_restraints(const CaseFile& c, const Chain& ch
 /// @throws InputError when a candidate is statically unstable (alpha0 <= 0:
 ///   it overturns under its static loads alone), naming alpha0 and the loads;
 ///   for a building block that cannot be used (naming the file and /building).
-KinematicCaseResult run_kinematic_case(const CaseFile& c);
+/// `indices` false leaves the checks' safety indices undefined (a
+/// recomputation that only needs their D/C: sensitivity.hpp).
+KinematicCaseResult run_kinematic_case(const CaseFile& c, bool indices = true);
 
 }  // namespace assess

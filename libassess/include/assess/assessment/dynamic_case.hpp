@@ -65,6 +65,11 @@ struct DynamicSpec {
   Sidedness sidedness = Sidedness::one_sided;
   std::vector<Restitution> restitutions;  ///< one analysis set per value
   bool restitution_given = false;      ///< "restitution" present (a multi-block chain needs values)
+  /// Where k, the model and the restitution were given, named in errors: the
+  /// case file's JSON paths, or the command-line options that replaced them
+  /// (`assess dynamic --k`; issue 39: "/dynamic/k" was named for a case
+  /// without one).
+  std::string k_from = "/dynamic/k", model_from = "/dynamic/model", restitution_from = "/dynamic/restitution";
   Polarity polarity = Polarity::normal;
   RockingOptions options;              ///< overturning criterion, integrator, tail
   std::vector<ListedRecord> records;   ///< listed records (empty if selected)

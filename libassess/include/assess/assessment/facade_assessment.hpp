@@ -11,6 +11,7 @@
 #include "assess/assessment/mechanism_dynamics.hpp"
 #include "assess/assessment/modelling_choices.hpp"
 #include "assess/assessment/safety_index.hpp"
+#include "assess/assessment/sensitivity.hpp"
 #include "assess/assessment/verdict.hpp"
 #include "assess/records/record_selection.hpp"
 #include "assess/dynamics/rocking_from_chain.hpp"
@@ -39,6 +40,9 @@ struct FacadeOptions {
   /// even when it cannot change the adopted verdict: the relazione's table of
   /// the modelling choices (`assess run` with a report file).
   bool review_records = true;
+  /// Compute the sensitivity of the adopted verdict (sensitivity.hpp); the
+  /// other candidates' dynamic assessments do without.
+  bool sensitivity = true;
 };
 
 /// A record used by the dynamic analysis.
@@ -210,6 +214,9 @@ struct FacadeAssessment {
   /// The safety indices per code and approach (safety_index.hpp): the lowest
   /// index of the approach's checks beside its verdict, computed once here.
   std::vector<SafetyIndex> indices;
+  /// The adopted method's D/C under the readings a verificatore questions
+  /// first (FC, d_SLV/d0*, xi): sensitivity.hpp, computed once here.
+  std::vector<SensitivityRow> sensitivity;
   /// Plausibility and compatibility warnings (field, value, unit, why).
   std::vector<std::string> warnings;
   /// Issue 36 (FacadeOptions::review): the modelling choices with their
@@ -263,10 +270,9 @@ std::vector<std::size_t> dynamic_candidates(const KinematicCaseResult& k);
 std::vector<DynamicRun> dynamic_runs(const FacadeAssessment& a, const MechanismDynamics& md, const KinematicResult& kin,
                                      bool histories);
 
-/// The capacity d_SLV (m) of the dynamic check: kin.d_SLV, or for a
-/// mechanism held by tie levels the larger of the tied one (up to the first
-/// level's strength) and the bare wall's, which a wall whose tie broke is left
-/// with (issue 29; docs/theory/ties.md §6).
+/// The capacity d_SLV (m) of the dynamic check: kin.d_SLV, the one capacity
+/// of the state (issue 37: with tie levels, the curve with each level breaking
+/// where it fails; docs/theory/ties.md §2, §6).
 double dynamic_d_SLV(const KinematicResult& kin);
 
 /// The analyses of each restitution value summarised against `kin`'s d_SLV

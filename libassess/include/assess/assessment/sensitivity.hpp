@@ -12,12 +12,12 @@
 // only with d_SLV (its demand is the analyses' displacement, unchanged).
 #pragma once
 
-#include "assess/assessment/facade_assessment.hpp"
-
 #include <string>
 #include <vector>
 
 namespace assess {
+
+struct FacadeAssessment;
 
 struct SensitivityRow {
   std::string parameter;  ///< "FC" | "dSLV_over_d0" | "dSLC_over_d0" | "xi_SLV_pct" | "xi_SLC_pct"
@@ -29,6 +29,8 @@ struct SensitivityRow {
 
 /// The adopted method's D/C (NTC 2018) under each value tried, in the order
 /// FC, d_SLV/d0*, xi; empty when the adopted method has no NTC 2018 checks.
+/// Computed once by the assessment (FacadeAssessment::sensitivity, issue 41:
+/// no report recomputes a check).
 std::vector<SensitivityRow> adopted_sensitivity(const FacadeAssessment& a);
 
 }  // namespace assess

@@ -1,12 +1,16 @@
-// tie_intervention.hpp: the tie rods of a case (issues 23, 29): the stato di
-// fatto (the wall with its existing ties, their checks) and the stato di
-// progetto (with the new ties, given or designed) side by side, with the
-// checks of every tie level (capacity design: ductile or elastic), the force
-// each check of the mechanism needs, zeta_E of each state and the dynamic
-// analyses of both, each tie's outcome per analysis (elastic, yielded,
-// broken and which component). With "design": {"ties": ...}, the smallest
-// commercial rod and plate (kinematic/tie_catalogue.hpp) that make every
-// check pass with a tie that is ductile or stays elastic in every analysis.
+// tie_intervention.hpp: the tie rods of a case (issues 23, 29, 37): the stato
+// di fatto (the wall with its existing ties, their checks) and the stato di
+// progetto (with the new ties, given or designed, and the changes to the
+// existing ties that fail) side by side, with the checks of every tie level
+// (capacity design: ductile or elastic), the force each check of the
+// mechanism needs, zeta_E of each state and the dynamic analyses of both, each
+// tie's outcome per analysis (elastic, yielded, broken and which component).
+// With "design": {"ties": ...}, the first commercial rod and anchor
+// (kinematic/tie_catalogue.hpp) of the documented order, ductile ones first,
+// that make every check pass, every existing tie's included, changing an
+// existing tie that fails by the least change (a new anchor, a new rod, its
+// removal). The same search runs over the mechanisms of a wall together
+// (issue 37: a wall's ties act on every mechanism they cross).
 // docs/theory/ties.md §5, §6.
 #pragma once
 
@@ -92,21 +96,35 @@ struct TieLevelResult {
   int dynamic_runs = 0, dynamic_yielded = 0, dynamic_broken = 0;  ///< its outcome over the analyses
 };
 
-/// One combination the design analysed (issue 29), in the order tried.
+/// A change the design makes to an existing tie level that fails (issue 37),
+/// in the order of the least change: "anchor" (a new anchor on its rod), "rod"
+/// (a new rod and anchor through the same holes), "removed".
+struct TieChange {
+  std::string level;    ///< the existing level's name
+  std::string kind;     ///< "anchor" | "rod" | "removed"
+  Tie before;           ///< the level as it is
+  std::optional<Tie> after;  ///< as changed (none when removed)
+};
+
+/// One combination the design analysed (issues 29, 37), in the order tried.
 struct TieTrial {
-  double diameter = 0.0;       ///< rod (m)
+  double diameter = 0.0;       ///< rod (m; 0: no level to design)
   std::string grade;
   double thread = 0.0;         ///< nominal diameter of the ends' thread (m)
-  double plate = 0.0, plate_t = 0.0;  ///< m
-  double T_Rd = 0.0;           ///< per tie (N)
+  AnchorType anchor = AnchorType::Plate;
+  double plate = 0.0, plate_t = 0.0;  ///< plate side and thickness, or bar length and diameter (m)
+  std::string plate_grade;
+  double T_Rd = 0.0;           ///< per tie, the weakest design level (N)
   std::string governing;       ///< its weakest component
   bool ductile = false;
-  /// "layout" (punching wedges overlapping or beyond the wall), "mechanism" (a
-  /// check of the mechanism), "tie" (a check of the tie), "broken" (a tie
-  /// broke in a dynamic analysis: `component`), "dynamic" (the dynamic check),
-  /// "accepted".
+  std::string changes;         ///< the changes to existing ties tried with it ("" none)
+  /// "mechanism" (a check of a mechanism), "tie" (a check of a tie),
+  /// "existing" (a check of an existing tie, the rest satisfied), "broken" (a
+  /// tie broke in a dynamic analysis: `component`), "dynamic" (the dynamic
+  /// check), "accepted".
   std::string outcome;
   std::string component;
+  std::string mechanism;       ///< in a wall: the mechanism that failed first ("" for a single case)
 };
 
 struct TieInterventionResult {
@@ -116,6 +134,14 @@ struct TieInterventionResult {
   std::string message;        ///< why no design was found
   int tried = 0;              ///< design: combinations analysed
   std::vector<TieTrial> trials;  ///< design: each combination and why it was rejected or accepted
+  /// Issue 37: the changes made to existing ties that fail (design only).
+  std::vector<TieChange> changes;
+  /// Issue 37: the existing ties that fail in the stato di progetto without a
+  /// design to change them (names), or with a design that found none.
+  std::vector<std::string> failing_existing;
+  /// Issue 37: the mechanisms designed together (a wall's: their ids or
+  /// names, as the caller gave them; empty for a single case).
+  std::vector<std::string> wall_members;
   /// The stato di fatto (the case as read: its existing ties) and the stato
   /// di progetto (with the new ties; the same case without an intervention).
   CaseFile case_before, case_after;
@@ -163,7 +189,19 @@ TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventi
 /// run_tie_intervention(a.kase, a).
 std::optional<TieInterventionResult> assess_ties(const FacadeAssessment& a);
 
+/// Issue 37: the ties of a wall, which act on every mechanism of the wall
+/// whose moving blocks they cross: one design for all of them (levels and
+/// existing ties matched by name across the mechanisms), accepted when every
+/// mechanism passes. `members` are the assessments of the wall's mechanisms
+/// with ties (their cases hold the wall's levels that cross them), `names`
+/// their labels; one result per member, in order.
+std::vector<TieInterventionResult> assess_wall_ties(const std::vector<const FacadeAssessment*>& members,
+                                                    const std::vector<std::string>& names);
+
 /// zeta_E of a kinematic result for the adopted `method` (see above).
 double zeta_E(const KinematicCaseResult& r, const std::string& method);
+
+/// Issue 37: the text of a change ("new plate 300 x 300 x 20 mm S275", ...).
+std::string describe_change(const TieChange& c);
 
 }  // namespace assess

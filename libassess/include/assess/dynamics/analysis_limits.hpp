@@ -32,6 +32,8 @@
 //                            assessment/plausibility.hpp, not an error.
 #pragma once
 
+#include "assess/support/number_rules.hpp"
+
 namespace assess::limits {
 
 constexpr double rel_tol_min = 1e-14;       ///< - (relative local error per step)
@@ -54,5 +56,18 @@ constexpr double unit_weight_max_N_m3 = 1e7;        ///< N/m^3 (= 1e4 kN/m^3)
 /// event_limit, a failure, with the count in its message.
 constexpr double events_per_second_max = 2000.0;    ///< 1/s
 constexpr double events_floor = 10000.0;            ///< events
+
+/// The same bounds as number rules in the units users write (kN), for the
+/// command line's options (issue 39: every option with its range and reason).
+namespace option {
+inline constexpr NumberRule rel_tol{"-", rel_tol_min, rel_tol_max, false, false,
+                                    "below: less than a double's rounding over a step; above: no digit left"};
+inline constexpr NumberRule abs_tol{"rad, rad/s", abs_tol_min, abs_tol_max, false, false,
+                                    "below: less than a double's rounding; above: no digit of theta_u ~ 0.1 rad"};
+inline constexpr NumberRule tail_s{"s", 0.0, tail_max_s, false, false, "free motion after the record; rocking decays in seconds"};
+inline constexpr NumberRule scale{"-", 0.0, scale_max, true, false, "a factor on the record: 100 x a 1 g record is 100 g"};
+inline constexpr NumberRule winkler_k_kN_m3{"kN/m^3", 0.0, winkler_k_max_N_m3 / 1e3, true, false,
+                                            "a stiffer base is the rigid model: use --model rigid"};
+}  // namespace option
 
 }  // namespace assess::limits

@@ -52,9 +52,6 @@ struct CheckRow {
   /// Its verdict in three states (outcome.hpp).
   Outcome outcome() const { return outcome_of(satisfied, no_verdict); }
   std::string note;             ///< remarks for the reader ("overturned in 1 of 2 analyses" ...)
-  /// Issue 29: a displacement check of a tied mechanism that the wall without
-  /// its tie levels satisfies better (the row is the bare wall's).
-  bool without_ties = false;
   /// Dynamic and energy rows (issue 28): the analyses behind the row, how
   /// many collapsed (the threshold d0 exceeded or the wall overturned,
   /// C8.7.1.2.1.9) and how many failed (integrator limits: not a result).

@@ -40,8 +40,10 @@ struct SupportedFloor {
   double friction = 0.0;                  ///< mu_s of the seat (-), >= 0
   /// true: the floor is held by the rest of the building (a diaphragm): its
   /// weight bears, its mass does not push, its seat's friction resists;
-  /// false: it moves with the façade (its mass pushes), no friction.
-  bool held = true;
+  /// false (issue 38, the default: every load moves with the block it rests
+  /// on unless the case holds it): it moves with the façade (its mass
+  /// pushes), no friction.
+  bool held = false;
   /// The seat's length (m): past that slip the friction is lost.
   double seat_length = std::numeric_limits<double>::infinity();
 };
@@ -60,9 +62,14 @@ struct FrictionOverturningParams {
   double friction = 0.0;        ///< f of the bed joints (-), > 0
   double activation = 1.0;      ///< kappa in [0, 1]
   /// q: vertical load per metre on top of each side wall over the crack's
-  /// reach (floors and roof bearing on it) (N/m), >= 0.
+  /// reach (floors and roof bearing on it) (N/m), >= 0. In the wedge
+  /// candidate it rests on the wedges and moves with them (issue 38: its
+  /// mass pushes, C8.7.1.1) unless `side_load_held`; in the frictional one
+  /// the side walls stay and it only presses their steps.
   double side_load = 0.0;
-  double top_weight = 0.0;      ///< roof or floor on the façade's top at mid-thickness (N), bearing and seismic
+  bool side_load_held = false;
+  double top_weight = 0.0;      ///< roof or floor on the façade's top at mid-thickness (N), bearing
+  bool top_weight_held = false; ///< issue 38: its mass held by the building (default: it pushes with the façade)
   double tie = 0.0;             ///< tie at the top (N)
   std::vector<SupportedFloor> floors;
 };

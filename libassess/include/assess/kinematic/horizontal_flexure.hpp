@@ -81,6 +81,15 @@ struct HorizontalFlexureParams {
 /// type "horizontal_flexure", Z = the strip's mid-height.
 MechanismSet horizontal_flexure(const HorizontalFlexureParams& p);
 
+/// alpha0 of a strip with its middle hinge at `um` (m from the first
+/// support, 0 < um < L), in closed form (docs/theory/mechanisms.md (1.3)):
+///   alpha0 = L/(L - u_m) (H z + M_Rd) / (sum_left W_i u_i + u_m/(L - u_m) sum_right W_i (L - u_i))
+/// over the segments between the supports, the openings' edges and u_m (W_i
+/// their weights with the carried weight, u_i their middles); the same
+/// number as the kinematic analysis of the strip's chain, by the virtual
+/// work of the same motion. The middle hinge's search uses it.
+double strip_alpha0(const HorizontalFlexureParams& p, const HorizontalStrip& s, double um);
+
 /// The thrust of the arch (N) and the depths of the stress blocks (m) at
 /// the supports and at the middle hinge for sections of net heights h_s
 /// (supports) and h_m (middle hinge).

@@ -154,23 +154,32 @@ struct KinematicResult {
   // NTC 2018 (Circ. 2019 §C8.7.1.2.1.6, .8).
   double d_SLV = 0.0, a_SLV = 0.0, T_SLV = 0.0;  ///< m, m/s^2, s [C8.7.1.10]
   double d_SLC = 0.0, a_SLC = 0.0, T_SLC = 0.0;  ///< m, m/s^2, s [C8.7.1.11]
-  // Tie levels (issue 29; docs/theory/ties.md §2): the capacity does not rely
-  // on a tie beyond its strength. d*_tie = d* at which the first level reaches
-  // its strength (the end of the elastic tied curve: a tie that is not ductile
-  // breaks there, a ductile one yields) caps du*, d_SLV and d_SLC as the
-  // failure of an element does (Circ. 2019 §C8.7.1.2.1.6); infinity without ties.
+  // Tie levels (issues 29, 37; docs/theory/ties.md §2): the capacity curve is
+  // that of the wall as it is: each level elastic, a ductile one yielding at
+  // its strength up to its ultimate elongation, and every level breaking where
+  // it fails (a ductile one at eps_ud L, one that is not ductile at its
+  // strength), the curve going on with the levels left. d0* is where that
+  // curve vanishes. Circ. 2019 §C8.7.1.2.1.6: d_SLV (and du*, d_SLC) are at
+  // most the displacement at which an element fails with a capacity drop
+  // above 50 %: a break whose alpha falls below half its value.
+  /// d* at which the first level reaches its strength (yields or breaks; m;
+  /// infinity without ties) and that level.
   double d_star_tie_limit = std::numeric_limits<double>::infinity();
-  std::string tie_limit_level;  ///< the level that reaches its strength first ("" if none)
-  /// The plastic reserve, reported apart: the same displacements capped where
-  /// the first level fails instead (a ductile level at its ultimate elongation
-  /// eps_ud L, a level that is not ductile at its strength), with the secant
-  /// periods at them (m, s); equal to the values above without ties.
-  double d_star_tie_failure = std::numeric_limits<double>::infinity();
-  double du_star_plastic = 0.0, d_SLV_plastic = 0.0, d_SLC_plastic = 0.0;
-  double Ts_plastic = 0.0, T_SLV_plastic = 0.0, T_SLC_plastic = 0.0;
-  /// The same chain without its tie levels (issue 29): once they fail the
-  /// wall is bare, so each displacement check takes the better of the two
-  /// (code_checks.cpp). Null without ties.
+  std::string tie_limit_level;
+  /// A level breaking along the curve.
+  struct TieBreak {
+    std::string level;
+    double d_star = 0.0;        ///< m
+    double alpha_before = 0.0;  ///< alpha with the level at its failure (-)
+    double alpha_after = 0.0;   ///< alpha without it, same configuration (-)
+    bool caps = false;          ///< alpha_after < 0.5 alpha_before: the capacity stops here
+  };
+  std::vector<TieBreak> tie_breaks;
+  /// The cap of the first break that drops the capacity by more than 50 % (m;
+  /// infinity: none).
+  double d_star_tie_cap = std::numeric_limits<double>::infinity();
+  /// The same chain without its tie levels (the wall once every level broke):
+  /// its d0 bounds a dynamic analysis in which a level broke. Null without ties.
   std::shared_ptr<const KinematicResult> without_ties;
 
   bool curve_complete() const { return termination == CurveTermination::Complete; }
@@ -194,10 +203,11 @@ std::vector<LoadWork> load_works(const Chain& chain, const Eigen::VectorXd& q);
 /// does not activate (termination NotActivated); throws InputError for bad
 /// options or a control point not on its block.
 KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& options = {});
-/// Same with tie levels (issue 23; docs/theory/ties.md §2): alpha0 (and a0*)
-/// with each level at its design strength (rigid-plastic, the practice of
+/// Same with tie levels (issues 23, 37; docs/theory/ties.md §2): alpha0 (and
+/// a0*) with each level at its design strength (rigid-plastic, the practice of
 /// C8A.4), the capacity curve with the elastic-perfectly-plastic law in the
-/// rod's elongation (its first point is then alpha(0) of that law, not alpha0).
+/// rod's elongation, each level broken from where it fails (its first point is
+/// then alpha(0) of that law, not alpha0).
 /// Throws InputError for a level on a missing block. With ties, `without_ties`
 /// is the analysis of the same chain and options without them (computed here
 /// when not given).

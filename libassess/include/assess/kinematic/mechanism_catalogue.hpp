@@ -47,7 +47,9 @@ struct MechanismCandidate {
   /// Issue 33: the quantities of this candidate's derivation (reports).
   std::vector<MechanismQuantity> quantities;
   /// Issue 33: a bound on the rotation of a one-body mechanism (rad;
-  /// KinematicOptions::rotation_cap), infinity = none, and why it holds (English).
+  /// KinematicOptions::rotation_cap), infinity = none, and why it holds
+  /// (English). Issues 33, 38: the corner and the composite wedges, whose
+  /// rigid chain gives no bound of its own: bearing_part_rotation().
   double rotation_bound = std::numeric_limits<double>::infinity();
   std::string rotation_bound_reason;
 };
@@ -69,6 +71,23 @@ struct MechanismSet {
 
 /// alpha0 of a chain in its undeformed configuration [C8A.4.1]/[C8.7.1.1].
 double activation_multiplier(const Chain& chain);
+
+/// Issue 38: the displacement bound of a one-body mechanism made of pieces
+/// held together by the masonry's interlocking only (the corner's arms on
+/// its pier, the side walls' wedges on the façade), which bears on its
+/// ground hinge through one part (docs/theory/mechanisms.md §5 [I]): the
+/// rotation at which that part's own weight and the weights bearing on it
+/// pass over the hinge,
+///   tan theta_b = sum W (x_O - x) / sum W (z - z_O)
+/// over the part's self weight and its bearing weight loads (Load::vertical;
+/// held or moving alike), O the chain's ground hinge. Beyond theta_b the
+/// part would have to be held up by its wedges through the interlocking
+/// (C8.7.1.2.1: the rigid-block model holds while the masonry does not
+/// disintegrate [V-T]). The one place where the bound is computed; the
+/// caller sets MechanismCandidate::rotation_bound and its reason.
+/// @throws InputError without exactly one ground hinge or with a part that
+///   is not a block of the chain
+double bearing_part_rotation(const Chain& chain, int part);
 /// Index of the candidate with the smallest alpha0 (ties: the first).
 std::size_t governing_candidate(const MechanismSet& set);
 
@@ -79,10 +98,14 @@ struct Storey {
   /// Floor (or roof) at the TOP of the storey: weight carried by the wall (N),
   /// its horizontal distance from the wall's inner face (m, 0..thickness),
   /// whether it bears on the wall (false: only its mass pushes, C8A.4.1 "m"),
-  /// outward horizontal thrust (N) and the force of a tie at that level (N).
+  /// whether its mass is held by the rest of the building (true: it bears
+  /// but does not push; issue 38, default false: it moves with the wall,
+  /// docs/theory/mechanisms.md §0), outward horizontal thrust (N) and the
+  /// force of a tie at that level (N).
   double floor_weight = 0.0;
   double floor_distance_from_inner_face = 0.0;
   bool floor_bears = true;
+  bool floor_held = false;
   double thrust = 0.0;
   double tie = 0.0;
 };
@@ -116,7 +139,11 @@ struct VerticalFlexureParams {
   double unit_weight = 0.0;   ///< N/m^3
   double length = 1.0;        ///< m
   double base_z = 0.0;        ///< height of the bottom restraint above the foundation (m)
-  double top_load = 0.0;      ///< vertical load on the top of the wall (N), e.g. upper storeys
+  /// Vertical load on the top of the wall (N), e.g. upper storeys: it bears
+  /// on the upper block at the top restraint, which takes its horizontal
+  /// force (its point does not move horizontally, dx = 0): its mass is the
+  /// building's, not the mechanism's (issue 38; docs/theory/mechanisms.md §0).
+  double top_load = 0.0;
   double top_load_distance_from_inner_face = 0.0;  ///< m, 0..thickness
   /// Hinge height above the base (m), 0 < h < height; none: searched.
   std::optional<double> hinge_height;
@@ -136,6 +163,9 @@ struct CompositeOverturningParams {
   double side_length = 0.0;     ///< available length of the side wall (m), bounds the wedge
   double base_z = 0.0;          ///< hinge height above the foundation (m)
   double top_weight = 0.0;      ///< roof/floor weight on the façade top (N) at mid-thickness
+  /// Issue 38: its mass held by the rest of the building (bears, does not
+  /// push); default false: it moves with the façade.
+  bool top_weight_held = false;
   double tie = 0.0;             ///< tie at the top (N)
   /// Wedge angle from the vertical (deg); else from the texture tan(beta) =
   /// (unit_length / 2) / course_height; else searched on a grid in
@@ -159,6 +189,9 @@ struct GableParams {
   double unit_weight = 0.0; ///< N/m^3
   double base_z = 0.0;      ///< height of the base above the foundation (m)
   double ridge_weight = 0.0;  ///< weight of the ridge beam on the apex (N)
+  /// Issue 38: its mass held by the rest of the building (bears, does not
+  /// push); default false: it moves with the gable.
+  bool ridge_weight_held = false;
   double ridge_thrust = 0.0;  ///< outward thrust of the ridge beam (N)
   double tie = 0.0;           ///< tie at the apex (N)
   int slices = 24;
@@ -187,23 +220,25 @@ struct CornerWall {
   std::vector<CornerOpening> openings;
 };
 
-/// Corner overturning (ribaltamento del cantonale) about any horizontal axis
-/// through the outer corner edge at the hinge level (issue 33; docs/theory/
-/// kinematic.md §5, docs/catalogue.md). Wall A runs along x (thickness t_A
-/// across it), wall B along y (thickness t_B); the corner pier is t_B x t_A in
-/// plan; each wall is cracked along a line at beta from the vertical that
-/// starts at the other wall's inner face at the hinge level and reaches
-/// min(h tan beta, length) at the top (openings cut out of the arms). The
-/// wedge rotates about the horizontal axis at `axis` degrees from wall A
+/// Corner overturning (ribaltamento del cantonale) about a horizontal axis
+/// through the outer corner edge at the hinge level (issues 33, 38;
+/// docs/theory/mechanisms.md §4, docs/catalogue.md). Wall A runs along x
+/// (thickness t_A across it), wall B along y (thickness t_B); the corner pier
+/// is t_B x t_A in plan; each wall is cracked along a line at beta from the
+/// vertical that starts at the other wall's inner face at the hinge level and
+/// reaches min(h tan beta, length) at the top (openings cut out of the arms).
+/// The wedge rotates about the horizontal axis at `axis` degrees from wall A
 /// (0: the axis along wall A's outer face, the action normal to wall A; 90:
 /// along wall B's; 45: the classical reduction, normal to the bisector)
 /// under a horizontal action normal to the axis; each candidate is the exact
 /// planar reduction on the plane normal to its axis (weights, centroids,
-/// height distribution and rotational inertia exact). The axis is scanned
-/// on [axis_min_deg, axis_max_deg] (axis_points, then a golden-section
-/// refinement of an interior minimum of alpha0) unless given. The
+/// height distribution and rotational inertia exact). Issue 38: the wedge
+/// stands on its pier's footprint and tips about one of its outer edges, the
+/// axes at 0 and 90 deg: alpha0 about an axis through the outer vertex at
+/// psi is (a sin psi + b cos psi)/D, never below both ends (§4.2), so those
+/// two axes are the candidates unless `axis_deg` fixes one. The
 /// displacement capacity is bounded by the corner pier's own overturning
-/// (MechanismCandidate::rotation_bound).
+/// (MechanismCandidate::rotation_bound, bearing_part_rotation).
 struct CornerOverturningParams {
   double height = 0.0;       ///< wedge height above the hinge (m)
   double thickness = 0.0;    ///< thickness of both walls (m), unless given per wall
@@ -212,8 +247,9 @@ struct CornerOverturningParams {
   double wall_length = 0.0;
   double base_z = 0.0;       ///< hinge height above the foundation (m)
   /// Weight carried on top of the corner (hip rafter, floor) at the pier's
-  /// centre (N), bearing and seismic.
+  /// centre (N), bearing; seismic unless `top_weight_held` (issue 38).
   double top_weight = 0.0;
+  bool top_weight_held = false;
   /// Horizontal thrust at the top along the bisector, outward (N) (hip rafter);
   /// its component normal to the axis, cos(axis - 45 deg) of it, acts.
   double thrust = 0.0;
@@ -227,10 +263,9 @@ struct CornerOverturningParams {
   double beta_min_deg = 10.0, beta_max_deg = 60.0;
   int search_points = 6;
   CornerWall wall_a, wall_b;   ///< issue 33: per-wall values and openings
-  /// Issue 33: the rotation axis (deg from wall A); none: scanned.
+  /// The rotation axis (deg from wall A, 0..90); none: the two axes along the
+  /// walls' outer faces, 0 and 90 deg (issue 38).
   std::optional<double> axis_deg;
-  double axis_min_deg = 0.0, axis_max_deg = 90.0;
-  int axis_points = 7;
 };
 MechanismSet corner_overturning(const CornerOverturningParams& p);
 

@@ -31,6 +31,11 @@ struct RoofSpec {
   /// Distance of the seat (the line of the rafters' reaction) from the wall's
   /// inner face (m), 0..thickness of the wall under it.
   double seat_from_inner_face = 0.0;
+  /// Issue 38: the roof's mass is held by the rest of the building (its
+  /// weight V bears on the wall, its mass does not push it); default false:
+  /// the roof's mass moves with the wall it rests on (C8.7.1.1's Q weights,
+  /// docs/theory/mechanisms.md §0).
+  bool held = false;
   /// Throws InputError naming the field (with `where` as prefix).
   void validate(const std::string& where) const;
 };

@@ -34,13 +34,19 @@ struct TieRod {
   std::string grade = "S275";
   double fyk = 275e6;      ///< characteristic yield strength (Pa)
   double ftk = 430e6;      ///< characteristic tensile strength (Pa)
-  double elongation = 0.23;  ///< minimum elongation of the product standard (fraction; tie_catalogue)
+  double eps_uk = 0.0196;  ///< characteristic uniform elongation of the grade (fraction; tie_catalogue, issue 37)
   double gamma_M0 = 1.05;  ///< partial factor (-), NTC 2018 §4.2.4.1.1
   double E = 210e9;        ///< elastic modulus (Pa)
   TieEnds ends = TieEnds::Threaded;
   double thread_diameter = 0.0;  ///< nominal diameter of the end's ISO metric thread (m; 0: only its area given)
   double thread_area = 0.0;      ///< stress area A_res of the end (m^2), > 0
   double nut_width = 0.0;        ///< width across flats of the end's nut (m), > 0 (tie_catalogue::Thread::s)
+  /// Corrosion allowance (issue 37): loss of thickness on every face (m), >= 0;
+  /// the rod and thread checks use the reduced sections (tie_catalogue::corrosion_loss).
+  double corrosion = 0.0;
+  /// Gross and thread stress areas after the corrosion allowance (m^2).
+  double corroded_area() const;
+  double corroded_thread_area() const;
 };
 
 enum class AnchorType {
@@ -51,11 +57,15 @@ enum class AnchorType {
 /// The anchor (capochiave).
 struct TieAnchor {
   AnchorType type = AnchorType::Plate;
-  double a = 0.0;      ///< Plate: side along the wall (m); Bar: length (m)
-  double b = 0.0;      ///< Plate: other side (m); Bar: diameter (m)
+  double a = 0.0;      ///< Plate: side along the wall (m); Bar: length, laid horizontally along the wall (m)
+  double b = 0.0;      ///< Plate: vertical side (m); Bar: diameter (m)
   double t = 0.0;      ///< Plate: thickness (m); unused for a bar
   std::string grade = "S275";
   double fyk = 275e6;  ///< Pa
+  /// Its footprint on the wall's outer face (m): width along the wall and
+  /// height (issue 37: the punched wedge spreads from its edges).
+  double width() const { return a; }
+  double height() const { return b; }
 };
 
 /// The masonry behind the anchor.
@@ -65,6 +75,19 @@ struct TieMasonry {
   double thickness = 0.0;  ///< depth of the punched wedge: the wall's thickness at the anchor (m), > 0
   double FC = 1.35;        ///< confidence factor (-), >= 1
   double gamma_M = 2.0;    ///< partial factor (-), >= 1 (tie_catalogue::masonry_gamma_M)
+  /// Issue 37: the sliding of the masonry above the anchor on the bed joint at
+  /// its lower edge: cohesion f_v0 (Pa; 0: tau), friction coefficient mu (-),
+  /// and the unit weight of the masonry (N/m^3) that makes its overburden.
+  double fv0 = 0.0;
+  double mu = 0.4;
+  double unit_weight = 18e3;
+};
+
+/// An opening of the wall (window, door, niche through the wall) in its
+/// elevation (issue 37): x along the wall from its first end, z as the
+/// mechanism's (m). The punched wedges are cut by it.
+struct WallOpening {
+  double x0 = 0.0, x1 = 0.0, z0 = 0.0, z1 = 0.0;
 };
 
 /// The layout of a tie level along its wall (issue 29): `count` ties on a
@@ -74,8 +97,18 @@ struct TieLayout {
   double wall_length = 0.0;    ///< m, > 0
   int count = 1;               ///< ties on the wall, >= 1
   double edge_distance = 0.0;  ///< m, > 0 (default wall_length / (2 count))
+  /// Issue 37: the wall around the anchors, in its elevation: the z of its
+  /// crown above them (m; infinity: none, the wall goes on up), its base (m),
+  /// the vertical load on the crown (N per metre of wall, >= 0: the overburden
+  /// of the sliding check with the masonry above the anchor), its openings.
+  double crown = std::numeric_limits<double>::infinity();
+  double base = 0.0;
+  double crown_load = 0.0;
+  std::vector<WallOpening> openings;
   /// Centre-to-centre distance of adjacent ties (m); wall_length for one tie.
   double centre_spacing() const;
+  /// Position of tie j (0 .. count - 1) along the wall (m).
+  double position(int j) const;
 };
 
 /// One tie level of the mechanism: identical ties laid along the wall.
@@ -92,7 +125,12 @@ struct Tie {
   TieLayout layout;                    ///< how many ties, where
   double spacing = 1.0;                ///< tributary length of each tie: wall_length / count (m), > 0
   double pretension = 0.0;             ///< pretension of each tie (N), >= 0, below the tie's strength
-  /// Throws InputError naming the field (its unit and the expected range).
+  /// Issue 37: the uniform temperature variation the rod, restrained by the
+  /// walls at its ends, undergoes (K, >= 0; tie_catalogue::delta_T).
+  double delta_T = 15.0;
+  /// Throws InputError naming the field (its unit and the expected range),
+  /// and for an anchor that does not lie within the wall (above its crown,
+  /// beyond its ends, over an opening, overlapping its neighbour).
   void validate() const;
 };
 

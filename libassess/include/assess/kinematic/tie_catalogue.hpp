@@ -1,5 +1,5 @@
 // tie_catalogue.hpp: every constant of the tie-rod model (issues 23, 29) in
-// ONE place: steel grades (strengths and the product standard's elongation),
+// ONE place: steel grades (strengths and the uniform elongation, issue 37),
 // partial factors, the capacity-design factors, the ISO metric thread table
 // (stress areas, nuts, washers), the bounds of every tie input, and the
 // commercial lists of rod diameters and anchor plates the design searches.
@@ -15,28 +15,40 @@
 namespace assess::tie_catalogue {
 
 /// A steel grade: characteristic yield and tensile strengths (Pa) and the
-/// minimum elongation of its product standard (fraction).
+/// characteristic uniform elongation eps_uk (the strain at the maximum force,
+/// before necking: what a rod yielding along its whole length delivers; issue
+/// 37), with its source.
 struct SteelGrade {
   const char* name;
-  double fyk;         ///< Pa
-  double ftk;         ///< Pa
-  double elongation;  ///< minimum elongation of the product standard (fraction)
-  const char* elongation_source;
+  double fyk;             ///< Pa
+  double ftk;             ///< Pa
+  double eps_uk;          ///< characteristic uniform elongation (fraction)
+  const char* eps_source; ///< where eps_uk comes from
 };
+
+/// Elastic modulus of steel E = 210 000 MPa: NTC 2018 §11.3.4.1 [R].
+inline constexpr double steel_E = 210e9;  // Pa
+/// The uniform elongation of a structural steel: eps_u >= 15 eps_y, eps_y =
+/// fy / E, the lower bound EN 1993-1-1 §3.2.2(1) requires of every steel it
+/// admits (recommended value) [R]: EN 10025-2, the product standard of the S
+/// grades, guarantees no uniform elongation; it gives only the elongation
+/// after fracture A (26 %, 23 %, 22 % for S235, S275, S355, on 5.65 sqrt(S0)),
+/// which includes the necking of a short gauge and overstates what a long rod
+/// delivers (issue 37): it is not used.
+inline constexpr double eps_u_over_eps_y = 15.0;
 
 /// Structural steels of rods and plates, nominal thickness t <= 40 mm: fyk,
 /// ftk of NTC 2018 Tab. 11.3.IX [R] (235/360, 275/430, 355/510 MPa; the
 /// EN 10025-2:2019 Tab. 7 values for 3 < t <= 100 mm are lower for ftk, 410
 /// and 470 MPa for S275 and S355 [V-S], ties.md §3: the NTC values are used).
-/// Elongation: EN 10025-2:2019 Tab. 7, minimum elongation after fracture A on
-/// the proportional gauge 5.65 sqrt(S0), longitudinal, 3 < t <= 40 mm:
-/// 26 %, 23 %, 22 % [R]. B450C (threaded rebar used as a rod): NTC 2018
-/// §11.3.2.1, fy,nom 450, ft,nom 540 MPa, (Agt)k >= 7.5 % [R].
+/// eps_uk: 15 fyk / E (above) for the S grades; B450C (threaded rebar used as a
+/// rod): NTC 2018 §11.3.2.1 Tab. 11.3.Ib, fy,nom 450, ft,nom 540 MPa,
+/// (Agt)k >= 7.5 % [R] (Agt is the uniform elongation by definition).
 inline constexpr std::array<SteelGrade, 4> steel_grades{{
-    {"S235", 235e6, 360e6, 0.26, "EN 10025-2 Tab. 7 (A)"},
-    {"S275", 275e6, 430e6, 0.23, "EN 10025-2 Tab. 7 (A)"},
-    {"S355", 355e6, 510e6, 0.22, "EN 10025-2 Tab. 7 (A)"},
-    {"B450C", 450e6, 540e6, 0.075, "NTC 2018 §11.3.2.1 (Agt)"},
+    {"S235", 235e6, 360e6, eps_u_over_eps_y * 235e6 / steel_E, "EN 1993-1-1 §3.2.2(1): eps_u >= 15 fy/E"},
+    {"S275", 275e6, 430e6, eps_u_over_eps_y * 275e6 / steel_E, "EN 1993-1-1 §3.2.2(1): eps_u >= 15 fy/E"},
+    {"S355", 355e6, 510e6, eps_u_over_eps_y * 355e6 / steel_E, "EN 1993-1-1 §3.2.2(1): eps_u >= 15 fy/E"},
+    {"B450C", 450e6, 540e6, 0.075, "NTC 2018 Tab. 11.3.Ib: (Agt)k >= 7.5 %"},
 }};
 
 /// The grade named `name` ("S235", ...); nullptr if unknown.
@@ -46,8 +58,6 @@ inline const SteelGrade* find_grade(const std::string& name) {
   return nullptr;
 }
 
-/// Elastic modulus of steel E = 210 000 MPa: NTC 2018 §11.3.4.1 [R].
-inline constexpr double steel_E = 210e9;  // Pa
 /// Partial factor of the resistance of cross sections gamma_M0 = 1.05:
 /// NTC 2018 §4.2.4.1.1 Tab. 4.2.VII [R]; N_pl,Rd = A fyk / gamma_M0 [4.2.6] [R].
 inline constexpr double gamma_M0 = 1.05;
@@ -67,12 +77,33 @@ inline constexpr double thread_k2 = 0.9;
 /// R_d >= 1.1 gamma_ov R_fy for the connections of dissipative members [R].
 inline constexpr double gamma_ov = 1.25;
 inline constexpr double gamma_Rd = 1.1;
-/// Design elongation of a yielding (ductile) rod: eps_ud = 0.9 A of its
-/// grade [I] (the 0.9 of NTC 2018 §4.1.2.1.2.3, eps_ud = 0.9 eps_uk, applied
-/// to the product standard's elongation; A includes the necking on a short
-/// gauge, so it is an upper bound of the uniform elongation of a long rod:
-/// the capacity after the intervention never relies on it, ties.md §2).
-inline constexpr double eps_ud_over_A = 0.9;
+/// Design elongation of a yielding (ductile) rod (issue 37): eps_ud = 0.9
+/// eps_uk, the 0.9 of NTC 2018 §4.1.2.1.2.3 (eps_ud = 0.9 eps_uk for
+/// reinforcing steel) applied to the uniform elongation of the rod's grade
+/// [R]/[I]; the rod yields over its free length L between the ends (upset or
+/// welded ends, stronger than the rod by the capacity design), so its ultimate
+/// elongation is eps_ud L. A rod threaded on its own diameter is never ductile
+/// (its thread is weaker than its body, ties.md §3): no elongation is credited.
+inline constexpr double eps_ud_over_eps_uk = 0.9;
+/// Corrosion allowance (issue 37): a loss of thickness delta on every face of
+/// the rod, its gross section and its thread's stress section reduced to
+/// pi/4 (d - 2 delta)^2 in the rod and thread checks. Default 0.5 mm: 50 years
+/// at the 0.01 mm/year of a normal atmosphere, EN 1993-5 §4.4 [R] (a rod
+/// inside the building, galvanized or painted, loses less) [I]; case key
+/// "corrosion_mm" per tie.
+inline constexpr double corrosion_loss = 0.5e-3;  // m
+/// Temperature action on a rod restrained at both ends (issue 37): the force
+/// E A alpha_T dT of a uniform variation dT (NTC 2018 §3.5.5 Tab. 3.5.II,
+/// steel structures protected from the weather: +/-15 degC [R]), alpha_T = 12e-6
+/// /K (NTC 2018 §3.5.7 Tab. 3.5.III, steel [R]). It is not combined with the
+/// earthquake (psi2 = 0 for temperature, NTC 2018 Tab. 2.5.I [R]): the rod and
+/// thread are checked in the fundamental combination gamma_P P0 + gamma_Q E A
+/// alpha_T dT (gamma_P = 1.0, gamma_Q = 1.5, NTC 2018 Tab. 2.6.I [R]), and the
+/// pretension of a new tie must take up the range (P0 >= E A alpha_T dT: the
+/// rod, warmed by dT, does not go slack). Case key "delta_T_K" per tie.
+inline constexpr double thermal_alpha = 12e-6;   // 1/K
+inline constexpr double delta_T = 15.0;          // K
+inline constexpr double gamma_P = 1.0, gamma_Q = 1.5;
 /// Partial factor of masonry in the checks of the anchor (local compression,
 /// punching): gamma_M = 2.0 [I] (the lower end of NTC 2018 Tab. 4.5.II for
 /// new masonry, 2.0-3.0 [R]; Circ. 2019 C8.7.1 uses the mean strengths / FC
@@ -80,8 +111,17 @@ inline constexpr double eps_ud_over_A = 0.9;
 inline constexpr double masonry_gamma_M = 2.0;
 /// Spread of the punched masonry wedge from the anchor's edge: 45 degrees
 /// through the wall's thickness [R] (the usual "cono di punzonamento" of
-/// Italian practice; no code formula).
+/// Italian practice; no code formula). Issue 37: the wedge is cut by the
+/// wall's crown, its ends, its openings and the wedges of the adjacent ties
+/// (ties.md §3.1); its capacity is the shear strength on the lateral surface
+/// that lies in masonry.
 inline constexpr double punching_angle_deg = 45.0;
+/// Sliding of the masonry above the anchor on the bed joint at the anchor's
+/// lower edge (issue 37, ties.md §3.2): cohesion f_v0 (default: the tau of the
+/// tie's masonry, the lower value of Circ. 2019 Tab. C8.5.I gives f_v0 only
+/// for regular masonry, where it exceeds tau0 [I]) and friction mu sigma_n,
+/// mu = 0.4 (NTC 2018 §4.5.6.1, f_vk = f_vk0 + 0.4 sigma_n [R]).
+inline constexpr double sliding_mu = 0.4;
 /// Local compression under the anchor: f_d beta A_b with beta = 1 [I] (no
 /// enhancement for a concentrated load; EN 1996-1-1 §6.1.3 allows beta >= 1,
 /// NTC 2018 §4.5.6.2 [R]).
@@ -160,6 +200,22 @@ inline constexpr std::array<Plate, 12> plates{{{0.15, 0.012},
                                               {0.60, 0.035},
                                               {0.70, 0.040}}};
 
+/// A commercial bar anchor (capochiave a paletto, issue 37): a round bar of
+/// length a and diameter b laid horizontally along the wall, the rod through
+/// its middle [I: common sizes, edit here], shortest first.
+struct Bar {
+  double a;  ///< length (m)
+  double b;  ///< diameter (m)
+};
+inline constexpr std::array<Bar, 8> bars{{{0.50, 0.040},
+                                          {0.60, 0.040},
+                                          {0.60, 0.050},
+                                          {0.80, 0.050},
+                                          {0.80, 0.060},
+                                          {1.00, 0.060},
+                                          {1.00, 0.070},
+                                          {1.20, 0.080}}};
+
 /// Bounds of every tie input (SI), enforced by the case-file reader (with the
 /// JSON path and unit) and by Tie::validate(). Chosen to hold every real tie
 /// with margin and to keep every capacity and count finite [I].
@@ -180,6 +236,11 @@ inline constexpr double spacing_min = 0.1, spacing_max = 500.0;              // 
 inline constexpr int count_max = 1000;                                       // ties per level
 inline constexpr int levels_max = 16;                                        // tie levels per case
 inline constexpr double pretension_max = 1e7;                                // N (1000 t)
+inline constexpr double delta_T_max = 80.0;                                  // K
+inline constexpr double corrosion_max = 0.01;                                // m (loss per face)
+inline constexpr double unit_weight_min = 5e3, unit_weight_max = 40e3;       // N/m^3
+inline constexpr double crown_load_max = 1e6;                                // N/m
+inline constexpr int openings_max = 100;                                     // per tie level
 }  // namespace bounds
 
 }  // namespace assess::tie_catalogue

@@ -48,14 +48,22 @@ namespace assess {
 
 /// What the design of ties searches (case file "design": {"ties": ...}):
 /// tie levels given without rod and anchor (point, direction, free length,
-/// masonry, layout, pretension), the steel grades allowed, how the rods' ends
-/// take the nut, the smallest rod, and the lists of kinematic/tie_catalogue.hpp.
-/// Every level gets the same rod and plate [I].
+/// masonry, layout, pretension), the steel grades allowed for the rods and
+/// for the anchors, the anchors (plates, bars), how the rods' ends take the
+/// nut, the smallest rod, and the lists of kinematic/tie_catalogue.hpp. Every
+/// level gets the same rod and anchor [I]. Issue 37: the order of the search
+/// and its rules are in docs/theory/ties.md §5.
 struct TieDesignSpec {
-  std::vector<Tie> levels;                  ///< rod and anchor are filled by the design
-  std::vector<std::string> grades{"S275"};  ///< rod and plate grades tried, in order
-  /// Threaded: each rod threaded at its ends (M d); Upset: the ends upset to
-  /// the smallest ISO thread that satisfies the capacity design (a ductile
+  std::vector<Tie> levels;                  ///< rod and anchor are filled by the design (may be empty)
+  std::vector<bool> pretension_given;       ///< per level: "pretension_kN" given (else E A alpha_T dT)
+  std::vector<std::string> grades{"S275"};  ///< rod grades tried, in order
+  /// Anchor grades tried, in order, for each anchor (issue 37: an input; default S275).
+  std::vector<std::string> plate_grades{"S275"};
+  /// Anchor types tried, in order: plates ("plate"), then bars ("bar", the
+  /// paletto) when listed (issue 37; default plates only).
+  std::vector<AnchorType> anchors{AnchorType::Plate};
+  /// Threaded: each rod threaded at its ends (M d); Upset or Welded: the ends
+  /// of the smallest ISO thread that satisfies the capacity design (a ductile
   /// rod), at most tie_catalogue::max_upset_ratio times the rod (issue 29).
   TieEnds ends = TieEnds::Threaded;
   double min_rod_diameter = 0.016;          ///< m (tie_catalogue::min_rod_diameter; "min_rod_diameter_mm")

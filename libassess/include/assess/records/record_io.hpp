@@ -8,8 +8,11 @@
 #pragma once
 
 #include "assess/records/record.hpp"
+#include "assess/support/number_rules.hpp"
 
+#include <cstddef>
 #include <string>
+#include <vector>
 
 namespace assess {
 
@@ -19,6 +22,9 @@ namespace assess {
 /// a record 1e-317 s long (issue 31).
 inline constexpr double record_dt_min_s = 1e-6;
 inline constexpr double record_dt_max_s = 10.0;
+/// The rule of a time step given by the user (--dt, assess.rocking's dt).
+inline constexpr NumberRule record_dt_rule{"s", record_dt_min_s, record_dt_max_s, false, false,
+                                           "strong-motion records are sampled at 0.001-0.04 s"};
 
 /// Unit of the acceleration values in a file.
 enum class AccelerationUnit {
@@ -54,6 +60,19 @@ Record read_plain_record(const std::string& path, AccelerationUnit unit);
 /// records held in memory, and for the fuzzers of fuzz/.
 Record parse_record_text(const std::string& text, const std::string& path);
 Record parse_plain_record_text(const std::string& text, const std::string& path, double dt_s, AccelerationUnit unit);
+
+/// A plain record from values held in memory (the Python module's numpy
+/// arrays): `values` in `unit` at time step dt_s (s), with the checks of a
+/// plain file: dt in [record_dt_min_s, record_dt_max_s], at least 2 values,
+/// every value finite once converted to m/s^2 (InputError naming `name` and
+/// the index of a bad value). Converted exactly as read_plain_record converts
+/// the same numbers read from a file (value times to_m_s2(unit)).
+Record make_plain_record(const double* values, std::size_t n, double dt_s, AccelerationUnit unit,
+                         const std::string& name);
+inline Record make_plain_record(const std::vector<double>& values, double dt_s, AccelerationUnit unit,
+                                const std::string& name) {
+  return make_plain_record(values.data(), values.size(), dt_s, unit, name);
+}
 
 /// Factor that scales `record` to a peak ground acceleration target_pga_m_s2 (m/s^2, > 0).
 double scale_factor_to_pga(const Record& record, double target_pga_m_s2);

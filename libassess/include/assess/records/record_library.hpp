@@ -19,6 +19,11 @@
 
 namespace assess {
 
+namespace detail {
+template <typename T>
+class OnceValue;
+}
+
 class RecordLibrary {
  public:
   /// The library of the catalogue.json at `catalogue_path`, shared by the
@@ -39,7 +44,8 @@ class RecordLibrary {
 
   /// The record of an entry (SI units, name = the entry's id), parsed once
   /// per library and shared; thread-safe. A file whose bytes differ from the
-  /// catalogue's content_hash is refused (changed since `assess records build`).
+  /// catalogue's content_hash is refused (changed since `assess records build`),
+  /// and every caller gets the same error.
   /// @throws InputError naming the file
   std::shared_ptr<const Record> record(const CatalogueEntry& e) const;
 
@@ -56,17 +62,11 @@ class RecordLibrary {
   RecordCatalogue cat_;
   std::optional<LibrarySpectra> spectra_;
   std::string spectra_problem_;
-  struct Slot {
-    std::once_flag once;
-    std::shared_ptr<const Record> record;
-  };
   mutable std::mutex mutex_;
-  mutable std::map<std::string, std::shared_ptr<Slot>> records_;
-  struct SpectrumSlot {
-    std::once_flag once;
-    std::shared_ptr<const std::vector<double>> psa;
-  };
-  mutable std::map<std::string, std::shared_ptr<SpectrumSlot>> spectra_memo_;
+  // Each record and each report spectrum is computed once, by the first
+  // thread that asks; its value or its error is shared (support/once_value.hpp).
+  mutable std::map<std::string, std::shared_ptr<detail::OnceValue<Record>>> records_;
+  mutable std::map<std::string, std::shared_ptr<detail::OnceValue<std::vector<double>>>> spectra_memo_;
 };
 
 }  // namespace assess

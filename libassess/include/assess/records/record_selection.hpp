@@ -7,6 +7,7 @@
 #include "assess/records/record.hpp"
 #include "assess/records/record_catalogue.hpp"
 #include "assess/hazard/spectrum.hpp"
+#include "assess/support/number_rules.hpp"
 
 #include <cstddef>
 #include <functional>
@@ -45,6 +46,26 @@ inline constexpr double rocking_range_floor_s = 0.1, rocking_range_cap_s = 4.0;
 /// @param T_first shortest mechanism period (s) > 0
 /// @param T_last longest mechanism period (s) >= T_first
 PeriodRange rocking_period_range(double T_first, double T_last);
+
+/// The ranges of a selection's settings, in their units: one place for the
+/// case file's /dynamic/select, `assess records select` and `assess
+/// fragility` (issue 39: the command line took a near-fault distance of -1 km,
+/// a PGA guard of 0 or 1e308).
+namespace selection_rules {
+inline constexpr int count_max = 50;  ///< records of a set (and --count, per_event, per_station)
+inline constexpr NumberRule max_scale{"-", 1.0, 100.0, false, false,
+                                      "largest scale factor of a record; NTC practice keeps it near 2-3"};
+inline constexpr NumberRule max_mean_scale{"-", 0.1, 100.0, false, false, "largest mean scale factor of a set"};
+inline constexpr NumberRule max_pga_ratio{"-", 0.5, 10.0, false, false,
+                                          "the guard on a scaled record's PGA, as a multiple of ag S"};
+inline constexpr NumberRule Mw{"-", 2.0, 10.0, false, false, "a moment magnitude"};
+inline constexpr NumberRule distance_km{"km", 0.0, 1000.0, false, false, "a source-to-site distance"};
+inline constexpr NumberRule near_fault_km{"km", 0.0, 100.0, false, false,
+                                          "the distance below which a record is near-fault (10 km by default)"};
+inline constexpr NumberRule max_misfit{"-", 0.01, 10.0, false, false, "RMS of f S/Se - 1 over the range"};
+inline constexpr NumberRule period_s{"s", 0.01, 10.0, false, false,
+                                     "a period of the check range, within the library's spectra (0.01-10 s)"};
+}  // namespace selection_rules
 
 /// Settings of the selection (docs/theory/record-selection.md §2). Defaults:
 /// 7 records, band -10 %/+30 %, each scale factor <= 3, mean scale factor

@@ -63,11 +63,19 @@ LibrarySpectra compute_library_spectra(const RecordCatalogue& cat,
 /// content hash of everything before it. @throws InputError if it cannot be written
 void write_library_spectra(const LibrarySpectra& s, const std::string& path);
 
-/// Reads a spectra file and checks it: its own content hash (a damaged
-/// file), and that it was computed for this catalogue (the catalogue's
-/// text hash; a catalogue rebuilt or edited since makes it stale).
+/// Reads a spectra file (the bounded reader) and checks it: its own content
+/// hash (a damaged file), that it was computed for this catalogue (the
+/// catalogue's text hash; a catalogue rebuilt or edited since makes it
+/// stale), its counts against its size in 64-bit arithmetic before any
+/// allocation, and then what it holds (issue 39): a period grid from 0 s,
+/// finite and strictly increasing; dampings in (0, 1); the catalogue's usable
+/// records in its order; at T = 0 each record's PGA; every ordinate positive
+/// and at most PGA/(xi sqrt(1 - xi^2)), the bound of any oscillator's response.
 /// @throws InputError naming the file and why it cannot be used
 LibrarySpectra read_library_spectra(const std::string& path, const RecordCatalogue& cat);
+/// The same checks of a spectra file's bytes (`path` names it in errors),
+/// for the fuzzers of fuzz/.
+LibrarySpectra parse_library_spectra(const std::string& bytes, const std::string& path, const RecordCatalogue& cat);
 
 inline const std::vector<double>& library_spectra_dampings() {
   static const std::vector<double> d{0.05};

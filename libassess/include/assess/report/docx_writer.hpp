@@ -15,8 +15,10 @@ namespace assess {
 /// panel an <img> of `figure_file(id, k)` in the same folder.
 std::string to_pandoc_html(const Document& d);
 
-/// Writes `d` to `path` as a Word document. @throws InputError if pandoc is
-/// missing (naming the package) or fails.
-void write_docx(const Document& d, const std::string& path);
+/// Writes `d` to `path` as a Word document. `shown` names the output in
+/// errors ("--docx relazione.docx"; default "--docx PATH"): the user's file,
+/// not a temporary one (issue 39). @throws InputError if pandoc is missing
+/// (naming the package) or fails.
+void write_docx(const Document& d, const std::string& path, const std::string& shown = "");
 
 }  // namespace assess

@@ -9,6 +9,8 @@
 #pragma once
 
 #include "assess/report/relazione.hpp"
+#include "assess/report/document.hpp"
+#include "assess/support/output_file.hpp"
 
 #include <string>
 #include <utility>
@@ -16,22 +18,33 @@
 
 namespace assess {
 
+/// The file of the tabulati beside a file of the body: "r.pdf" -> "r-tabulati.pdf",
+/// "dir/casa.html" -> "dir/casa-tabulati.html", "r" -> "r-tabulati".
+std::string tabulati_path(const std::string& path);
+
 /// The body's files ("" for none); the tabulati are written beside each (tabulati_path).
 struct ReportFiles {
   std::string html;
   std::string pdf;
   std::string docx;
   std::string txt;   ///< the relazione as plain text, 120 columns (text_writer.hpp)
+
+  /// Every file write_report_files writes, each with the option that names it
+  /// in errors, for check_output_files (support/output_file.hpp): a file added
+  /// here is checked against the run's other outputs and inputs (issue 39);
+  /// each body file with its tabulati beside it (issue 36: "r.html",
+  /// "r-tabulati.html", ...).
+  std::vector<OutputTarget> outputs() const {
+    std::vector<OutputTarget> out;
+    for (const auto& [path, what] : {std::pair<const std::string*, const char*>{&html, "--html"}, {&pdf, "--pdf"},
+                                     {&docx, "--docx"}, {&txt, "--txt"}})
+      if (!path->empty()) {
+        out.push_back({*path, what, ""});
+        out.push_back({tabulati_path(*path), what, ""});
+      }
+    return out;
+  }
 };
-
-/// The file of the tabulati beside a file of the body: "r.pdf" -> "r-tabulati.pdf",
-/// "dir/casa.html" -> "dir/casa-tabulati.html", "r" -> "r-tabulati".
-std::string tabulati_path(const std::string& path);
-
-/// Every file write_report_files writes for `files`, with the option that
-/// names it: ("--html", "r.html"), ("--html", "r-tabulati.html"), ... in
-/// that order (the run checks each before the analysis).
-std::vector<std::pair<std::string, std::string>> report_outputs(const ReportFiles& files);
 
 /// Writes the requested files of both documents. @throws InputError naming the
 /// option (--html, --pdf, --docx, --txt), the file and the cause (a missing

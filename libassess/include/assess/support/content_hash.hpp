@@ -4,6 +4,8 @@
 // not tampering: FNV-1a is not a cryptographic hash.
 #pragma once
 
+#include "assess/support/input_file.hpp"
+
 #include <cstdint>
 #include <string>
 
@@ -17,7 +19,8 @@ std::uint64_t content_hash(const void* data, std::size_t size,
 std::uint64_t content_hash(const std::string& bytes);
 /// 16 lower-case hexadecimal digits.
 std::string hash_hex(std::uint64_t h);
-/// The hash of a file's bytes. @throws InputError if it cannot be read
-std::uint64_t file_content_hash(const std::string& path);
+/// The hash of a file's bytes, read by the bounded reader as a `kind`
+/// (input_file.hpp). @throws InputError if it cannot be read
+std::uint64_t file_content_hash(const std::string& path, const InputKind& kind);
 
 }  // namespace assess

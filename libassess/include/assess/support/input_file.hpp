@@ -36,6 +36,10 @@ inline constexpr InputKind campaign_file{"campaign file", 64 * MiB};
 inline constexpr InputKind record_file{"record file", 256 * MiB};
 inline constexpr InputKind record_catalogue{"record catalogue", 64 * MiB};
 inline constexpr InputKind metadata_table{"record metadata table", 64 * MiB};
+// The shipped spectra.bin is 1.8 MB (372 records x 602 periods); 256 MB
+// holds 50 000 records at the same grid (issue 39: it was read as a result
+// file, up to 4 GB).
+inline constexpr InputKind record_spectra{"record spectra file", 256 * MiB};
 // The shipped grid is 2.4 MB (10 751 nodes), the islands table 4 kB, the list of comuni 380 kB.
 inline constexpr InputKind hazard_grid{"hazard grid file", 64 * MiB};
 inline constexpr InputKind islands_table{"islands table", 16 * MiB};

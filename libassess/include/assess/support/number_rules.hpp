@@ -38,6 +38,23 @@ bool is_subnormal(double v);
 /// "infinite", "minus infinite", "not a number".
 std::string number_for_message(double v);
 
+/// Reads `text` as one decimal number written in full ("6.5", "-1e-3",
+/// "+250"): the rule of every number a user writes as text (a cell of
+/// metadata.csv, a command-line option, a list of periods; issue 39). Returns
+/// "" and sets `v`, else what is wrong: "must be a decimal number, got
+/// '0x1p3' (a hexadecimal number)", "must be a finite number, got 'inf'",
+/// "expected a number, got '6.5 km'", "must be a number of normal size, got
+/// '1e-320' (a subnormal number, |x| < 2.2e-308)". Leading or trailing
+/// blanks are not part of a number.
+std::string decimal_number_violation(const std::string& text, double& v);
+
+/// "" when `text` holds no control character; else "the text holds a control
+/// character (U+001B) at character 5". Control characters are U+0000-U+001F,
+/// U+007F and U+0080-U+009F (UTF-8 C2 80-C2 9F): names, ids and notes are
+/// printed on terminals (an ESC sequence re-programs one), in text tables and
+/// in HTML (issues 31, 39). Every text of an input file obeys it.
+std::string control_character_violation(const std::string& text);
+
 /// The named rules (file units). One place: a range changes here for every
 /// reader that uses it. docs/reliability.md, "Bounds and limits".
 namespace rules {
@@ -81,6 +98,17 @@ inline constexpr NumberRule damping_or_zero_pct{"%", 0.0, 100.0, false, false, "
 inline constexpr NumberRule behaviour_factor{"-", 1.0, 100.0, false, false, "1 to 100"};
 /// A coefficient of use CU (NTC 2018 Tab. 2.4.II: 0.7 to 2).
 inline constexpr NumberRule use_coefficient{"-", 0.1, 10.0, false, false, "0.1 to 10; NTC 2018: 0.7 to 2"};
+/// A latitude and a longitude (decimal degrees).
+inline constexpr NumberRule latitude_deg{"deg", -90.0, 90.0, false, false, "a latitude in decimal degrees"};
+inline constexpr NumberRule longitude_deg{"deg", -180.0, 180.0, false, false, "a longitude in decimal degrees"};
+/// The hazard parameters of a site given directly (NTC 2018 §3.2, Allegato A):
+/// ag on rock, F0, TC*. The NTC grid spans ag 0.02-0.39 g, F0 2.2-3.0, TC*
+/// 0.14-0.6 s; the ranges refuse what is no site.
+inline constexpr NumberRule ag_g{"g", 0.0, 5.0, true, false, "ag on rock, above 0"};
+inline constexpr NumberRule F0{"-", 1.0, 10.0, false, false, "the spectrum's largest amplification F0"};
+inline constexpr NumberRule Tc_star_s{"s", 0.01, 10.0, false, false, "the period TC* of the spectrum's plateau end"};
+/// The relative height h/H of a site on a relief (NTC 2018 §3.2.3.2.1).
+inline constexpr NumberRule relative_height{"-", 0.0, 1.0, false, false, "h/H: 0 at the foot, 1 at the top"};
 /// A confidence factor FC or a partial factor gamma.
 inline constexpr NumberRule factor{"-", 1.0, 10.0, false, false, "1 to 10"};
 }  // namespace rules

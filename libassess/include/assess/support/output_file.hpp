@@ -11,12 +11,14 @@
 //  - to write through a symbolic link that leads out of the asked folder;
 //  - a target that is a directory.
 // A target that is a character device or a FIFO (/dev/null, /dev/stdout, a
-// pipe) is written in place. A failure of the machine (no space left, an I/O
+// pipe) is written in place. The temporary file is registered for removal
+// should a signal stop the process (termination.hpp). A failure of the machine (no space left, an I/O
 // error, e.g. writing to /dev/full) is a SystemError (exit status 1), never a
 // silent success. docs/reliability.md, "Outputs".
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace assess {
 
@@ -31,6 +33,23 @@ void write_output_file(const std::string& path, const std::string& content, cons
 /// a directory, an input of this run, a missing folder), for the command
 /// line to refuse an output before a long run rather than after it.
 void check_output_file(const std::string& path, const std::string& what, const std::string& folder = "");
+
+/// One output of a run: its file, the option or name that asks for it
+/// ("--pdf", "--expand out"), and the folder a link may not lead out of ("" =
+/// the file's folder).
+struct OutputTarget {
+  std::string path, what, folder;
+};
+
+/// check_output_file for each output, and no two of them one file (issue 39:
+/// `--pdf r.pdf --docx r.pdf` or `--expand D --txt D/M1.json` exited 0, one
+/// output replacing the other). Files are compared by identity, as outputs
+/// are against inputs: device and inode when the file exists, else its
+/// folder's and its name, after following a link; so another spelling of
+/// the path ("./r.pdf"), a hard link or a symbolic link is caught. Character
+/// devices and FIFOs (/dev/null) are written in place and may be shared.
+/// InputError "--pdf r.pdf and --docx ./r.pdf are the same file: ...".
+void check_output_files(const std::vector<OutputTarget>& outputs);
 
 /// Records `path` as an input of this run: no output may replace it.
 /// read_input_file calls it for every file it reads (but the tool's own
