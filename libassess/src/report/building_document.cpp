@@ -970,10 +970,10 @@ Relazione building_relazione(const BuildingAssessment& b, const ReportOptions& o
       }
     if (members.empty()) continue;
     mo.ties = members.front().second;
-    d.set_id_prefix("wall" + std::to_string(w + 1) + "-");
-    relazione::Ctx c{*first, mo, L, d, &readings};
-    relazione::add_wall_tie_section(c, wall, members);
-    d.set_id_prefix("");
+    for (DocumentBuilder* x : {&d, &t}) x->set_id_prefix("wall" + std::to_string(w + 1) + "-");
+    relazione::Ctx c{*first, mo, L, d, &readings, true, true};
+    relazione::add_wall_tie_section(c, wall, members, &t);
+    for (DocumentBuilder* x : {&d, &t}) x->set_id_prefix("");
   }
   mo.ties = nullptr;
   mo.shared_records.clear();

@@ -118,8 +118,11 @@ void add_interventions(Ctx& c);          // ties, or what a failing mechanism ne
 void add_tie_section(Ctx& c, const TieInterventionResult& t);
 /// Issue 37: the ties of a wall once (relazione_ties.cpp): each level with the mechanisms it restrains
 /// (`members`: a label and the mechanism's tie result), its wedge, its checks in every mechanism, the detailing.
+/// `tabulati`: the building relazione's tabulati builder (same id prefix), which
+/// then holds the wall's tie formulas and detailing (issue 36); none: all here.
 void add_wall_tie_section(Ctx& c, const std::string& wall,
-                          const std::vector<std::pair<std::string, const TieInterventionResult*>>& members);
+                          const std::vector<std::pair<std::string, const TieInterventionResult*>>& members,
+                          DocumentBuilder* tabulati = nullptr);
 void add_probabilistic(Ctx& c);
 void add_evaluation(Ctx& c);             // valutazione dei risultati: margin, methods, choices, judgement
 void add_conclusions(Ctx& c, bool signature = true);

@@ -470,7 +470,8 @@ void add_tie_section(Ctx& c, const TieInterventionResult& t) {
 // restrains, its wedge, its checks in every mechanism (the governing one per
 // row), the changes to existing ties, the formulas and the detailing.
 void add_wall_tie_section(Ctx& c, const std::string& wall,
-                          const std::vector<std::pair<std::string, const TieInterventionResult*>>& members) {
+                          const std::vector<std::pair<std::string, const TieInterventionResult*>>& members,
+                          DocumentBuilder* tabulati) {
   if (members.empty()) return;
   const TieText x{c};
   const TieInterventionResult& first = *members.front().second;
@@ -508,8 +509,20 @@ void add_wall_tie_section(Ctx& c, const std::string& wall,
   changes_block(x, first);
   c.d.add_heading(x.t("wedge_title"), 3, false);
   for (std::size_t i = 0; i < levels.size(); ++i) wedge_figure(x, levels[i], "wall-wedge-" + std::to_string(i + 1));
-  c.d.add_heading(x.t("formulas_title"), 3, false);
-  formulas(x);
+  // With the tabulati (a building's relazione, issue 36: length): the formulas
+  // and the detailing there, under the same prefix, referred to here.
+  if (tabulati) {
+    c.d.add_paragraph(Inline{reference(x.t("wall_in_tab"), c.here("ties"), tabulati_key)}, "note");
+    Ctx tc{c.a, c.o, c.L, *tabulati, c.readings, true, true};
+    const TieText tx{tc};
+    tabulati->add_heading(x.f("wall_title", wall), 2, false, true, "ties");
+    tabulati->add_heading(x.t("formulas_title"), 3, false);
+    formulas(tx);
+    detailing(tx, levels);
+  } else {
+    c.d.add_heading(x.t("formulas_title"), 3, false);
+    formulas(x);
+  }
   // Each level's checks in every mechanism it restrains: one table per level
   // and state, each row the mechanism whose D/C is the largest.
   c.d.add_heading(x.t("checks_title"), 3, false);
@@ -545,6 +558,7 @@ void add_wall_tie_section(Ctx& c, const std::string& wall,
           Cell dc = row.reachable && !count ? x.num(row.dc, 3) : numeric_cell(row.satisfied ? "0" : "∞");
           dc.tone = row.satisfied ? Tone::ok : Tone::fail;
           dc.strong = true;
+          if (count && row.satisfied) dc.note = x.t("no_break");  // a counted zero, said why (issue 36, item 5)
           rows.push_back({Cell(x.t("check." + row.check)), Cell(row.clause.empty() ? "" : x.t("clause." + row.check)),
                           Cell(who), demand, count ? numeric_cell("0") : x.num(row.capacity * sc, 2),
                           Cell(count ? x.t("unit_analyses") : row.unit), dc, x.ok(row.satisfied)});
@@ -555,7 +569,7 @@ void add_wall_tie_section(Ctx& c, const std::string& wall,
                              rows, x.t("checks_title") + " — " + l0.tie.name);
       }
   }
-  detailing(x, levels);
+  if (!tabulati) detailing(x, levels);
 }
 
 void add_tab_ties(Ctx& c) {
