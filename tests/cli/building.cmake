@@ -76,14 +76,17 @@ add_test(NAME cli.building_ties_exit2
 set_tests_properties(cli.building_ties_exit2 PROPERTIES LABELS cli)
 # The summary of a building with ties: each mechanism without and with its ties, the building index before/after,
 # each mechanism's tie section; --mechanism runs the single case with its ties.
-assess_cli_test(building_ties_text ARGS run mechanisms/building-house-ties.json
-  PASS "stato di fatto.*M1   exist\\. 3x diam\\. 16 S275, pl\\. 200x200x15 +\\| +0\\.611 \\| +NO.*M2   exist\\. 3x diam\\. 16 S275, pl\\. 200x200x15 +\\| +0\\.798 \\| +NO.*building index, stato di fatto \\(the smallest mechanism zetaE\\): 0\\.611 \\(M1\\).*stato di progetto.*M1   new 6x diam\\. 12 S235, pl\\. 300x300x20 \\+1 lev\\.; exist~ +\\| +2\\.034 \\| +ok.*M2   new 6x diam\\. 12 S235, pl\\. 300x300x20; exist\\. removed +\\| +2\\.663 \\| +ok.*building index, stato di progetto \\(the smallest mechanism zetaE\\): 1\\.108 \\(M7\\).*M1 Facciata su strada: .*Tie rods \\(catene\\).*the wall's ties act on every mechanism they cross: designed for M1, M2, M3, M4 together.*M2 Facciata su strada: .*Tie rods")
+assess_cli_test(building_ties_text ARGS run mechanisms/building-house-ties.json --lang en
+  PASS "Existing state: each mechanism with its existing ties.*M1 +Ribaltamento della facciata, +existing: 3 × Ø16 mm S275, plate 200 +0\\.531 +not satisfied.*Safety index of the building in the existing state \\(the smallest ζE of its mechanisms\\): 0\\.503 \\(M2\\).*M1 +Ribaltamento della facciata, +new: 6 × Ø12 mm S235, plate 300 × 300 +1\\.907 +satisfied +satisfied.*existing: removed.*Safety index of the building in the design state: 1\\.083 \\(M7\\)")
 # Issue 37: the wall's existing eaves tie (0.2 m under the crown, threaded, 200 mm plates) fails; no new anchor
 # keeps it from breaking, nor the designed rod through its holes: the least change is its removal.
-assess_cli_test(building_ties_existing_removed ARGS run mechanisms/building-house-ties.json --mechanism M1
-  PASS "tried diam\\. 12 S235 M18, plate 300 x 20 S275: T_Rd 21\\.3 kN \\(rod, ductile\\): existing \\(sliding\\).*new[ \n]+anchor: plate 150 x 150 x 12 mm S275: existing \\(sliding\\).*new rod[ \n]+diam\\. 12 mm S235, upset ends M18.*broken \\(sliding\\).*removed: accepted.*existing level \"catena al sottotetto \\(esistente\\)\" fails: changed in the stato di progetto \\(the least change\\): removed.*each analysis of the stato di progetto")
-assess_cli_test(building_ties_one_mechanism ARGS run mechanisms/building-house-ties.json --mechanism M2
-  PASS "Tie rods \\(catene\\).*stato di fatto: the existing ties.*level \"catena al sottotetto \\(esistente\\)\" \\(existing\\): rod diam\\. 16 mm S275.*T_Rd = 16\\.0 \\(sliding\\)" FAIL_REGEX "BUILDING ASSESSMENT")
+assess_cli_test(building_ties_existing_removed ARGS run mechanisms/building-house-ties.json --mechanism M1 --lang en
+  PASS "an existing tie that fails is changed by the least change.*Existing ties changed.*catena al sottotetto \\(esistente\\): removed.*Dynamic check in the existing and in the design state")
+# The trials of the least change, in the JSON: a new anchor first, then a new rod through the same holes, then the removal.
+assess_cli_test(building_ties_existing_trials ARGS run mechanisms/building-house-ties.json --mechanism M1 --json
+  PASS "\"changes\": \"catena al sottotetto \\(esistente\\): new anchor: plate 150 x 150 x 12 mm S275\".*\"changes\": \"catena al sottotetto \\(esistente\\): new rod[^\"]*\".*\"changes\": \"catena al sottotetto \\(esistente\\): removed\".*\"outcome\": \"accepted\"")
+assess_cli_test(building_ties_one_mechanism ARGS run mechanisms/building-house-ties.json --mechanism M2 --lang en
+  PASS "catena al sottotetto \\(esistente\\) \\(existing state\\).*broken in 13 analyses of 14 \\(sliding of the masonry above the anchor\\).*sliding of the masonry above the anchor +designer's assumption +44\\.39 +15\\.99 +kN +2\\.777 +not satisfied" FAIL_REGEX "Summary of the assessment of the building")
 
 assess_cli_error_test(building_expand_single "--mechanism and --expand apply to a building case"
   run mechanisms/gable.json --expand /tmp/never)
@@ -110,7 +113,7 @@ endforeach()
 # building-house, the four mechanisms' tie drawings and the wall's two wedges; issue 36: the others in the
 # tabulati).
 add_test(NAME cli.building_ties_report_browser
-  COMMAND sh -c "\"$1\" run mechanisms/building-house-ties.json --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 18 'id=\"M1-ties-drawing\"' 'id=\"M2-ties-drawing\"' 'id=\"wall1-wall-wedge-1\"' '<span class=\"secno\">[0-9.]*</span> Catene della parete Facciata su strada</h2>' '<span class=\"secno\">[0-9.]*</span> Catene esistenti modificate</h3>' 'catena al sottotetto \\(esistente\\) \\(stato di fatto\\)</h4>' 'Stato di fatto: ogni meccanismo con le sue catene esistenti' 'Indicatore di rischio dell.edificio nello stato di fatto[^<]*: 0,611 \\(M1\\)' 'Indicatore di rischio dell.edificio nello stato di progetto: 1,108 \\(M7\\)'"
+  COMMAND sh -c "\"$1\" run mechanisms/building-house-ties.json --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 18 'id=\"M1-ties-drawing\"' 'id=\"M2-ties-drawing\"' 'id=\"wall1-wall-wedge-1\"' '<span class=\"secno\">[0-9.]*</span> Catene della parete Facciata su strada</h2>' '<span class=\"secno\">[0-9.]*</span> Catene esistenti modificate</h3>' 'catena al sottotetto \\(esistente\\) \\(stato di fatto\\)</h4>' 'Stato di fatto: ogni meccanismo con le sue catene esistenti' 'Indicatore di rischio dell.edificio nello stato di fatto[^<]*: 0,503 \\(M2\\)' 'Indicatore di rischio dell.edificio nello stato di progetto: 1,083 \\(M7\\)'"
           sh $<TARGET_FILE:assess_cli> ${CMAKE_CURRENT_BINARY_DIR}/building-house-ties.it.html
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.building_ties_report_browser PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77 TIMEOUT 300

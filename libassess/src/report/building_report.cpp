@@ -51,8 +51,10 @@ nlohmann::json safety_indices_json(const std::vector<SafetyIndex>& indices) {
   return arr;
 }
 
-nlohmann::json building_json(const BuildingAssessment& b) {
-  nlohmann::json j;
+namespace {
+
+// The building: its file, site and the record sets its mechanisms share.
+nlohmann::json building_part_json(const BuildingAssessment& b) {
   const BuildingCase& bc = b.building;
   nlohmann::json bj;
   bj["project"] = bc.project;
@@ -75,57 +77,60 @@ nlohmann::json building_json(const BuildingAssessment& b) {
     sets.push_back(sj);
   }
   bj["record_sets"] = sets;
-  j["building"] = bj;
-  nlohmann::json ms = nlohmann::json::array();
-  for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
-    const BuildingMechanism& m = bc.mechanisms[i];
-    const BuildingMechanismResult& r = b.results[i];
-    const CandidateResult& gc = r.a.kinematic.candidates[r.a.kinematic.governing];
-    nlohmann::json mj;
-    mj["id"] = m.id;
-    mj["wall"] = m.wall;
-    mj["name"] = m.name;
-    mj["json_path"] = m.json_path;
-    mj["type"] = m.kase.mechanism.type;
-    mj["alpha0"] = num(gc.result.alpha0);
-    mj["a0_star_m_s2"] = num(gc.result.a0_star);
-    mj["candidate"] = gc.label;
-    nlohmann::json rs;
-    rs["kind"] = to_string(m.record_set);
-    if (!m.record_group.empty()) rs["set"] = m.record_group;
-    if (r.a.dynamic && r.a.dynamic_applies) {
-      rs["records"] = r.a.records.size();
-      rs["period_range_s"] = {r.a.selection_range.T_min, r.a.selection_range.T_max};
-      // The records it used (issue 41: a mechanism alone is its building line).
-      nlohmann::json used = nlohmann::json::array();
-      for (const RecordUsed& u : r.a.records) used.push_back({{"name", u.name}, {"file", u.file}, {"scale", u.scale}});
-      rs["used"] = used;
-    }
-    mj["record_set"] = rs;
-    mj["safety_indices"] = safety_indices_json(r.a.indices);
-    if (const MethodVerdict* c = r.a.verdict.conclusion()) {
-      nlohmann::json v;
-      v["adopted"] = r.a.verdict.adopted;
-      v["code"] = c->code;
-      add_outcome(v, c->outcome());
-      v["dc"] = num(c->max_dc);
-      mj["conclusion"] = v;
-    }
-    // Issue 23: the mechanism's ties (as `assess run` of its case prints them)
-    // and its zetaE / every-check verdict before and after them.
-    nlohmann::json iv;
-    iv["ties"] = !r.ties ? "none" : r.ties->designed ? "design" : r.ties->intervention ? "given" : "existing";
-    iv["zeta_E_before"] = num(r.zeta_before);
-    iv["zeta_E_after"] = num(r.zeta_after);
-    iv["passes_before"] = r.passes_before;
-    iv["passes_after"] = r.passes_after;
-    mj["intervention"] = iv;
-    if (r.ties) mj["ties"] = tie_json(*r.ties);
-    mj["case"] = m.expanded;
-    mj["assessment"] = facade_json(r.a);
-    ms.push_back(mj);
+  return bj;
+}
+
+// One mechanism: its identity, governing candidate, record set, indices, conclusion, ties and whole assessment.
+nlohmann::json mechanism_json(const BuildingMechanism& m, const BuildingMechanismResult& r) {
+  const CandidateResult& gc = r.a.kinematic.candidates[r.a.kinematic.governing];
+  nlohmann::json mj;
+  mj["id"] = m.id;
+  mj["wall"] = m.wall;
+  mj["name"] = m.name;
+  mj["json_path"] = m.json_path;
+  mj["type"] = m.kase.mechanism.type;
+  mj["alpha0"] = num(gc.result.alpha0);
+  mj["a0_star_m_s2"] = num(gc.result.a0_star);
+  mj["candidate"] = gc.label;
+  nlohmann::json rs;
+  rs["kind"] = to_string(m.record_set);
+  if (!m.record_group.empty()) rs["set"] = m.record_group;
+  if (r.a.dynamic && r.a.dynamic_applies) {
+    rs["records"] = r.a.records.size();
+    rs["period_range_s"] = {r.a.selection_range.T_min, r.a.selection_range.T_max};
+    // The records it used (issue 41: a mechanism alone is its building line).
+    nlohmann::json used = nlohmann::json::array();
+    for (const RecordUsed& u : r.a.records) used.push_back({{"name", u.name}, {"file", u.file}, {"scale", u.scale}});
+    rs["used"] = used;
   }
-  j["mechanisms"] = ms;
+  mj["record_set"] = rs;
+  mj["safety_indices"] = safety_indices_json(r.a.indices);
+  if (const MethodVerdict* c = r.a.verdict.conclusion()) {
+    nlohmann::json v;
+    v["adopted"] = r.a.verdict.adopted;
+    v["code"] = c->code;
+    add_outcome(v, c->outcome());
+    v["dc"] = num(c->max_dc);
+    mj["conclusion"] = v;
+  }
+  // Issue 23: the mechanism's ties (as `assess run` of its case prints them)
+  // and its zetaE / every-check verdict before and after them.
+  nlohmann::json iv;
+  iv["ties"] = !r.ties ? "none" : r.ties->designed ? "design" : r.ties->intervention ? "given" : "existing";
+  iv["zeta_E_before"] = num(r.zeta_before);
+  iv["zeta_E_after"] = num(r.zeta_after);
+  iv["passes_before"] = r.passes_before;
+  iv["passes_after"] = r.passes_after;
+  mj["intervention"] = iv;
+  if (r.ties) mj["ties"] = tie_json(*r.ties);
+  mj["case"] = m.expanded;
+  mj["assessment"] = facade_json(r.a);
+  return mj;
+}
+
+// The governing mechanism of each code and approach.
+nlohmann::json governing_json(const BuildingAssessment& b) {
+  const BuildingCase& bc = b.building;
   nlohmann::json gv = nlohmann::json::array();
   for (const BuildingGoverning& g : b.governing) {
     nlohmann::json x;
@@ -143,8 +148,17 @@ nlohmann::json building_json(const BuildingAssessment& b) {
     x["no_verdict"] = g.no_verdict;
     gv.push_back(x);
   }
-  j["governing"] = gv;
-  // The building's verdict (issue 28): every mechanism by its adopted method.
+  return gv;
+}
+
+// A mechanism's id by its index, null for none (-1).
+nlohmann::json mechanism_id(const BuildingCase& bc, int i) {
+  return i >= 0 ? nlohmann::json(bc.mechanisms[std::size_t(i)].id) : nlohmann::json(nullptr);
+}
+
+// The building's verdict (issue 28): every mechanism by its adopted method.
+nlohmann::json verdict_json(const BuildingAssessment& b) {
+  const BuildingCase& bc = b.building;
   const BuildingVerdict& bv = b.verdict;
   nlohmann::json vj;
   add_outcome(vj, bv.outcome());  // null without a verdict (issue 41): "undecided" says which
@@ -155,11 +169,15 @@ nlohmann::json building_json(const BuildingAssessment& b) {
   vj["failing"] = failing;
   vj["undecided"] = undecided;
   vj["zeta_E"] = num(bv.zeta);
-  vj["zeta_E_mechanism"] = bv.zeta_mechanism >= 0 ? nlohmann::json(bc.mechanisms[std::size_t(bv.zeta_mechanism)].id) : nlohmann::json(nullptr);
+  vj["zeta_E_mechanism"] = mechanism_id(bc, bv.zeta_mechanism);
   vj["max_dc"] = num(bv.max_dc);
-  vj["max_dc_mechanism"] = bv.dc_mechanism >= 0 ? nlohmann::json(bc.mechanisms[std::size_t(bv.dc_mechanism)].id) : nlohmann::json(nullptr);
-  j["verdict"] = vj;
-  // The building's index before and after the ties (docs/theory/building.md §8).
+  vj["max_dc_mechanism"] = mechanism_id(bc, bv.dc_mechanism);
+  return vj;
+}
+
+// The building's index before and after the ties (docs/theory/building.md §8).
+nlohmann::json tie_index_json(const BuildingAssessment& b) {
+  const BuildingCase& bc = b.building;
   const BuildingTieIndex& ti = b.tie_index;
   nlohmann::json tj;
   tj["definition"] = "the smallest mechanism zeta_E (NTC 2018, each mechanism's adopted method: strength rows for "
@@ -176,12 +194,25 @@ nlohmann::json building_json(const BuildingAssessment& b) {
   // The same, by state (issue 29): one index per state.
   for (const char* state : {"existing_state", "design_state"}) {
     const bool after = std::string(state) == "design_state";
-    const int m = after ? ti.mechanism_after : ti.mechanism_before;
     tj[state] = {{"zeta_E", num(after ? ti.zeta_after : ti.zeta_before)},
-                 {"mechanism", m >= 0 ? nlohmann::json(bc.mechanisms[std::size_t(m)].id) : nlohmann::json(nullptr)},
+                 {"mechanism", mechanism_id(bc, after ? ti.mechanism_after : ti.mechanism_before)},
                  {"passing", after ? ti.passing_after : ti.passing_before}};
   }
-  j["tie_index"] = tj;
+  return tj;
+}
+
+}  // namespace
+
+nlohmann::json building_json(const BuildingAssessment& b) {
+  nlohmann::json j;
+  j["building"] = building_part_json(b);
+  nlohmann::json ms = nlohmann::json::array();
+  for (std::size_t i = 0; i < b.building.mechanisms.size(); ++i)
+    ms.push_back(mechanism_json(b.building.mechanisms[i], b.results[i]));
+  j["mechanisms"] = ms;
+  j["governing"] = governing_json(b);
+  j["verdict"] = verdict_json(b);
+  j["tie_index"] = tie_index_json(b);
   j["warnings"] = b.warnings;
   return j;
 }

@@ -25,6 +25,205 @@ const CandidateResult& governing(const FacadeAssessment& a) {
 // JSON has no infinity: an unbounded or undefined figure is null (its meaning beside it).
 nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
+// The site, its limit states and their spectra's parameters.
+nlohmann::json site_json(const FacadeAssessment& a) {
+  const SiteSpec& sp = *a.kase.site;
+  nlohmann::json s{{"description", a.site_description}, {"soil", to_string(sp.conditions.soil)},
+                   {"topography", to_string(sp.conditions.topography)}, {"VN", sp.vn_years}, {"CU", sp.cu},
+                   {"VR", a.VR}};
+  nlohmann::json ls_arr = nlohmann::json::array();
+  for (const auto& [ls, act] : a.actions) {
+    const ElasticSpectrum& e = a.spectra.at(ls);
+    ls_arr.push_back({{"limit_state", to_string(ls)}, {"PVR", act.PVR}, {"TR", act.TR}, {"ag_g", e.ag_g()},
+                      {"F0", e.F0()}, {"Tc_star", e.Tc_star()}, {"SS", e.SS()}, {"CC", e.CC()}, {"ST", e.ST()},
+                      {"S", e.S()}, {"TB", e.TB()}, {"TC", e.TC()}, {"TD", e.TD()}});
+  }
+  s["limit_states"] = ls_arr;
+  return s;
+}
+
+// The dynamic model: a rocking body or a chain, ties, base motion and floor filter.
+nlohmann::json dynamic_model_json(const FacadeAssessment& a) {
+  const MechanismDynamics& md = *a.mechanism_dynamics;
+  nlohmann::json model;
+  if (a.model) {
+    const RockingBody& b = a.body->body;
+    const RockingModel& m = *a.model;
+    model = {{"type", a.dynamic->smooth ? "smooth" : "rigid"},
+             {"k_kN_m3", a.dynamic->smooth ? nlohmann::json(a.dynamic->k / units::kN) : nlohmann::json(nullptr)},
+             {"sidedness", m.sidedness() == Sidedness::one_sided ? "one-sided" : "two-sided"},
+             {"polarity", to_string(a.dynamic->polarity)},
+             {"W_kN_m", b.W / units::kN}, {"b", b.b}, {"R", b.R}, {"alpha", b.alpha}, {"I0", b.I0},
+             {"M_ext_kNm_m", b.M_ext / units::kN},
+             {"theta_cr", a.dynamic->smooth ? nlohmann::json(m.theta_cr()) : nlohmann::json(nullptr)},
+             {"theta_u", m.theta_u(+1)}, {"peak_moment_kNm_m", m.peak_moment(+1) / units::kN},
+             {"capacity_kJ_m", m.capacity() / units::kN}};
+  } else {
+    const ChainDynamics& c = *md.chain;
+    model = {{"type", a.dynamic->smooth ? "smooth" : "rigid"},
+             {"k_kN_m3", a.dynamic->smooth ? nlohmann::json(a.dynamic->k / units::kN) : nlohmann::json(nullptr)},
+             {"sidedness", md.sidedness == Sidedness::two_sided ? "two-sided" : "one-sided"},
+             {"polarity", to_string(a.dynamic->polarity)},
+             {"chain_blocks", c.chain().blocks().size()},
+             {"M0_kg_m2", c.mass(0.0)}, {"B0_kg_m", c.coupling(0.0)},
+             {"theta_cr", a.dynamic->smooth ? nlohmann::json(c.q_cr()) : nlohmann::json(nullptr)},
+             {"theta_u", c.q_u()}, {"capacity_kJ_m", c.capacity() / md.length / units::kN}};
+  }
+  if (md.tied_envelope)  // the ties at their strength (docs/theory/ties.md §6)
+    model["tied"] = {{"levels", md.ties.size()},
+                     {"theta_collapse", md.q_u()},
+                     {"capacity_kJ_m", md.capacity() / units::kN}};
+  model["kind"] = md.single_body() ? "rocking body" : "chain";
+  model["Z"] = md.Z;
+  model["input"] = md.floor_input ? "floor motions given" : md.filter ? "floor motions (first-mode filter)" : "ground motions";
+  if (md.filter)
+    model["floor_filter"] = {{"T1_s", md.filter->T1}, {"damping_pct", md.filter_damping_pct},
+                             {"gamma_psi", md.filter->gamma_psi}};
+  return model;
+}
+
+// The records used, with their metadata.
+nlohmann::json records_json(const FacadeAssessment& a) {
+  nlohmann::json recs = nlohmann::json::array();
+  for (const RecordUsed& r : a.records)
+    recs.push_back({{"name", r.name}, {"file", r.file}, {"event", r.event}, {"station", r.station},
+                    {"component", r.component}, {"positive_direction", r.positive_direction},
+                    {"scale", r.scale}, {"pga_g", r.pga / g},
+                    {"Mw", std::isfinite(r.Mw) ? nlohmann::json(r.Mw) : nlohmann::json(nullptr)},
+                    {"distance_km", std::isfinite(r.distance_km) ? nlohmann::json(r.distance_km) : nlohmann::json(nullptr)},
+                    {"distance_kind", r.distance_kind}, {"site_class", r.site_class},
+                    {"deviation", std::isfinite(r.deviation) ? nlohmann::json(r.deviation) : nlohmann::json(nullptr)},
+                    {"rank", r.rank}, {"duration_s", r.duration_s}, {"integrated_s", r.integrated_s},
+                    {"in_catalogue", r.in_catalogue}, {"date", r.date}, {"country", r.country},
+                    {"station_code", r.station_code},
+                    {"vs30_m_s", std::isfinite(r.vs30_m_s) ? nlohmann::json(r.vs30_m_s) : nlohmann::json(nullptr)},
+                    {"site_class_basis", r.site_class_basis}, {"vs30_class", r.vs30_class},
+                    {"usable_period_s", std::isfinite(r.usable_period_s) ? nlohmann::json(r.usable_period_s)
+                                                                         : nlohmann::json(nullptr)},
+                    {"pulse", r.pulse}, {"near_fault", r.near_fault}, {"misfit_flag", r.misfit_flag},
+                    {"flags", r.flags}});
+  return recs;
+}
+
+// The record selection: its status, rules, limits and spectra (a.selection given).
+nlohmann::json selection_json(const FacadeAssessment& a) {
+  return {{"status", to_string(a.selection->status)},
+                    {"T_min", a.selection_range.T_min},
+                    {"T_max", a.selection_range.T_max},
+                    {"min_ratio", a.selection->min_ratio},
+                    {"max_ratio", a.selection->max_ratio},
+                    {"band_satisfied", a.selection->band_satisfied},
+                    {"message", a.selection->message},
+                    {"limit_state", a.selection_limit_state},
+                    {"mechanism_periods_s", {a.selection_T_first, a.selection_T_last}},
+                    {"band", {1.0 - 0.10, 1.0 + 0.30}},
+                    {"candidates", a.selection_candidates},
+                    {"eligible", a.selection->eligible},
+                    {"combinations", a.selection->combinations},
+                    {"site_classes", a.selection_site_classes},
+                    {"site_class_steps", a.selection_steps},
+                    {"warnings", a.selection_warnings},
+                    {"range_note", a.selection_range_note},
+                    {"shared_note", a.selection_shared_note},
+                    {"spectra", a.selection_spectra},
+                    {"max_scale", a.selection_max_scale},
+                    {"max_mean_scale", a.selection_max_mean_scale},
+                    {"max_misfit", a.selection_max_misfit},
+                    {"include_near_fault", a.selection_include_near_fault},
+                    {"near_fault_km", a.selection_near_fault_km},
+                    {"near_fault_excluded", a.selection_near_fault_excluded},
+                    {"mean_scale", a.selection->mean_scale},
+                    {"max_scaled_pga_g", a.selection->max_scaled_pga / g},
+                    {"max_pga_ratio", a.selection_max_pga_ratio},
+                    {"target_pga_g", a.selection->target_pga / g},
+                    {"periods_s", a.selection->periods},
+                    {"target_m_s2", a.selection->target},
+                    {"mean_psa_m_s2", a.selection->mean_psa},
+                    {"record_psa_m_s2", [&] {
+                       nlohmann::json rp = nlohmann::json::array();
+                       for (const auto& sr : a.selection->records) rp.push_back(sr.psa);
+                       return rp;
+                     }()}};
+}
+
+// Each analysis: record, polarity, restitution, peak rotation, d*, end, and the ties' outcome.
+nlohmann::json analyses_json(const FacadeAssessment& a) {
+  nlohmann::json runs = nlohmann::json::array();
+  for (const DynamicRun& r : a.runs) {
+    runs.push_back({{"record", a.records[r.record].name},
+                    {"scale", a.records[r.record].scale},
+                    {"reversed", r.reversed},
+                    {"restitution", r.e},
+                    {"theta_max", r.result.theta_max},
+                    {"t_theta_max", r.result.t_theta_max},
+                    {"theta_u", r.result.theta_u},
+                    {"theta_ratio", r.theta_ratio},
+                    {"overturned", r.result.overturned},
+                    {"t_overturn", r.result.t_overturn ? nlohmann::json(*r.result.t_overturn) : nlohmann::json(nullptr)},
+                    {"impacts", r.result.impacts},
+                    {"dc", r.result.dc},
+                    {"energy_demand_kJ_m", r.result.energy_demand / units::kN},
+                    {"capacity_kJ_m", r.result.capacity / units::kN},
+                    {"d_control", r.d_control},
+                    {"d_star", r.d_star},
+                    {"collapse", r.collapse},
+                    {"termination", to_string(r.result.termination)},
+                    {"end", to_string(r.result.end)},
+                    {"t_end", r.result.t_end},
+                    {"motion_duration_s", r.result.motion_duration},
+                    {"failed", !succeeded(r.result)}});
+    if (r.result.ties.empty()) continue;
+    // A wall held by tie rods: each level's outcome (body: per metre of wall; chain: the whole level).
+    nlohmann::json lv = nlohmann::json::array();
+    for (const TiedLevelResult& x : r.result.ties)
+      lv.push_back({{"max_force_kN", x.max_force / units::kN},
+                    {"max_elongation_mm", x.max_elongation * 1e3},
+                    {"yielded", x.yielded},
+                    {"plastic_elongation_mm", x.plastic_elongation * 1e3},
+                    {"plastic_energy_kJ", x.plastic_energy / units::kN},
+                    {"broken", x.broken},  // issue 29: the level broke (its force lost from then on)
+                    {"broken_by_elongation", x.broken_by_elongation},
+                    {"t_broken_s", x.broken ? nlohmann::json(x.t_broken) : nlohmann::json(nullptr)}});
+    runs.back()["ties"] = lv;
+    runs.back()["ties_per"] = a.mechanism_dynamics && a.mechanism_dynamics->single_body() ? "m of wall" : "level";
+    runs.back()["rod_broken"] = r.ruptured;
+  }
+  return runs;
+}
+
+// The summary per restitution coefficient (Circ. 2019 C8.7.1.2.1.9).
+nlohmann::json summaries_json(const FacadeAssessment& a) {
+  nlohmann::json sums = nlohmann::json::array();
+  for (const RestitutionSummary& s : a.summaries)
+    sums.push_back({{"restitution", describe(a.dynamic->restitutions[s.restitution])},
+                    {"e", s.e},
+                    {"failed", s.failed},
+                    {"analyses", s.analyses},
+                    {"overturned", s.overturned},
+                    {"rod_broken", s.ruptured},
+                    {"mean_dc", s.mean_dc},
+                    {"min_dc", s.min_dc},
+                    {"max_dc", s.max_dc},
+                    {"mean_theta_ratio", s.mean_theta_ratio},
+                    {"mean_d_star", s.mean_d_star},
+                    {"d_SLV", governing(a).result.d_SLV},
+                    {"max_d_star", s.max_d_star},
+                    {"records", s.records},
+                    {"rule", s.rule},
+                    {"d_demand", finite_or_null(s.d_demand)},
+                    {"dc_slv", finite_or_null(s.dc_slv)},
+                    {"collapsed", s.collapsed},
+                    {"energy_dc", finite_or_null(s.energy_dc)},
+                    {"mean_dc_survivors", finite_or_null(s.mean_dc_survivors)},
+                    {"records_survived", s.records_survived},
+                    {"d_demand_survivors", finite_or_null(s.d_demand_survivors)},
+                    {"dc_survivors", finite_or_null(s.dc_survivors)},
+                    {"any_collapse", s.any_collapse},
+                    {"no_verdict", s.no_verdict},
+                    {"slv_satisfied", s.no_verdict ? nlohmann::json(nullptr) : nlohmann::json(s.slv_satisfied)}});
+  return sums;
+}
+
 }  // namespace
 
 // ------------------------------------------------------------------ JSON
@@ -44,21 +243,7 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
     sens.push_back({{"parameter", r.parameter}, {"value", r.value}, {"adopted", r.adopted},
                     {"dc", finite_or_null(r.dc)}, {"satisfied", r.satisfied}});
   j["sensitivity"] = sens;
-  if (a.kase.site) {
-    const SiteSpec& sp = *a.kase.site;
-    nlohmann::json s{{"description", a.site_description}, {"soil", to_string(sp.conditions.soil)},
-                     {"topography", to_string(sp.conditions.topography)}, {"VN", sp.vn_years}, {"CU", sp.cu},
-                     {"VR", a.VR}};
-    nlohmann::json ls_arr = nlohmann::json::array();
-    for (const auto& [ls, act] : a.actions) {
-      const ElasticSpectrum& e = a.spectra.at(ls);
-      ls_arr.push_back({{"limit_state", to_string(ls)}, {"PVR", act.PVR}, {"TR", act.TR}, {"ag_g", e.ag_g()},
-                        {"F0", e.F0()}, {"Tc_star", e.Tc_star()}, {"SS", e.SS()}, {"CC", e.CC()}, {"ST", e.ST()},
-                        {"S", e.S()}, {"TB", e.TB()}, {"TC", e.TC()}, {"TD", e.TD()}});
-    }
-    s["limit_states"] = ls_arr;
-    j["site"] = s;
-  }
+  if (a.kase.site) j["site"] = site_json(a);
   j["kinematic"] = kinematic_json(a.kase, a.kinematic);
   // The run's summary (with the dynamic rows) is the top-level "comparison"
   // and "overall"; the kinematic-only one would be a second, partial verdict.
@@ -72,62 +257,11 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
     d["applies"] = a.dynamic_applies;
     d["note"] = a.dynamic_note;
     if (a.dynamic_applies) {
-      const MechanismDynamics& md = *a.mechanism_dynamics;
-      if (a.model) {
-        const RockingBody& b = a.body->body;
-        const RockingModel& m = *a.model;
-        d["model"] = {{"type", a.dynamic->smooth ? "smooth" : "rigid"},
-                      {"k_kN_m3", a.dynamic->smooth ? nlohmann::json(a.dynamic->k / units::kN) : nlohmann::json(nullptr)},
-                      {"sidedness", m.sidedness() == Sidedness::one_sided ? "one-sided" : "two-sided"},
-                      {"polarity", to_string(a.dynamic->polarity)},
-                      {"W_kN_m", b.W / units::kN}, {"b", b.b}, {"R", b.R}, {"alpha", b.alpha}, {"I0", b.I0},
-                      {"M_ext_kNm_m", b.M_ext / units::kN},
-                      {"theta_cr", a.dynamic->smooth ? nlohmann::json(m.theta_cr()) : nlohmann::json(nullptr)},
-                      {"theta_u", m.theta_u(+1)}, {"peak_moment_kNm_m", m.peak_moment(+1) / units::kN},
-                      {"capacity_kJ_m", m.capacity() / units::kN}};
-      } else {
-        const ChainDynamics& c = *md.chain;
-        d["model"] = {{"type", a.dynamic->smooth ? "smooth" : "rigid"},
-                      {"k_kN_m3", a.dynamic->smooth ? nlohmann::json(a.dynamic->k / units::kN) : nlohmann::json(nullptr)},
-                      {"sidedness", md.sidedness == Sidedness::two_sided ? "two-sided" : "one-sided"},
-                      {"polarity", to_string(a.dynamic->polarity)},
-                      {"chain_blocks", c.chain().blocks().size()},
-                      {"M0_kg_m2", c.mass(0.0)}, {"B0_kg_m", c.coupling(0.0)},
-                      {"theta_cr", a.dynamic->smooth ? nlohmann::json(c.q_cr()) : nlohmann::json(nullptr)},
-                      {"theta_u", c.q_u()}, {"capacity_kJ_m", c.capacity() / md.length / units::kN}};
-      }
-      if (md.tied_envelope)  // the ties at their strength (docs/theory/ties.md §6)
-        d["model"]["tied"] = {{"levels", md.ties.size()},
-                              {"theta_collapse", md.q_u()},
-                              {"capacity_kJ_m", md.capacity() / units::kN}};
-      d["model"]["kind"] = md.single_body() ? "rocking body" : "chain";
-      d["model"]["Z"] = md.Z;
-      d["model"]["input"] = md.floor_input ? "floor motions given" : md.filter ? "floor motions (first-mode filter)" : "ground motions";
-      if (md.filter)
-        d["model"]["floor_filter"] = {{"T1_s", md.filter->T1}, {"damping_pct", md.filter_damping_pct},
-                                      {"gamma_psi", md.filter->gamma_psi}};
+      d["model"] = dynamic_model_json(a);
       if (!a.code_floor_Se.empty())
         d["floor_spectra"] = {{"periods_s", a.periods}, {"floor_mean_psa_m_s2", a.floor_mean_psa},
                               {"code_floor_Se_m_s2", a.code_floor_Se}};
-      nlohmann::json recs = nlohmann::json::array();
-      for (const RecordUsed& r : a.records)
-        recs.push_back({{"name", r.name}, {"file", r.file}, {"event", r.event}, {"station", r.station},
-                        {"component", r.component}, {"positive_direction", r.positive_direction},
-                        {"scale", r.scale}, {"pga_g", r.pga / g},
-                        {"Mw", std::isfinite(r.Mw) ? nlohmann::json(r.Mw) : nlohmann::json(nullptr)},
-                        {"distance_km", std::isfinite(r.distance_km) ? nlohmann::json(r.distance_km) : nlohmann::json(nullptr)},
-                        {"distance_kind", r.distance_kind}, {"site_class", r.site_class},
-                        {"deviation", std::isfinite(r.deviation) ? nlohmann::json(r.deviation) : nlohmann::json(nullptr)},
-                        {"rank", r.rank}, {"duration_s", r.duration_s}, {"integrated_s", r.integrated_s},
-                        {"in_catalogue", r.in_catalogue}, {"date", r.date}, {"country", r.country},
-                        {"station_code", r.station_code},
-                        {"vs30_m_s", std::isfinite(r.vs30_m_s) ? nlohmann::json(r.vs30_m_s) : nlohmann::json(nullptr)},
-                        {"site_class_basis", r.site_class_basis}, {"vs30_class", r.vs30_class},
-                        {"usable_period_s", std::isfinite(r.usable_period_s) ? nlohmann::json(r.usable_period_s)
-                                                                             : nlohmann::json(nullptr)},
-                        {"pulse", r.pulse}, {"near_fault", r.near_fault}, {"misfit_flag", r.misfit_flag},
-                        {"flags", r.flags}});
-      d["records"] = recs;
+      d["records"] = records_json(a);
       d["record_failures"] = a.record_failures;
       if (a.compatibility.computed)
         d["compatibility"] = {{"T_min", a.compatibility.range.T_min},
@@ -136,117 +270,12 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
                               {"max_ratio", a.compatibility.max_ratio},
                               {"band_satisfied", a.compatibility.band_satisfied},
                               {"message", a.compatibility.message}};
-      if (a.selection)
-        d["selection"] = {{"status", to_string(a.selection->status)},
-                          {"T_min", a.selection_range.T_min},
-                          {"T_max", a.selection_range.T_max},
-                          {"min_ratio", a.selection->min_ratio},
-                          {"max_ratio", a.selection->max_ratio},
-                          {"band_satisfied", a.selection->band_satisfied},
-                          {"message", a.selection->message},
-                          {"limit_state", a.selection_limit_state},
-                          {"mechanism_periods_s", {a.selection_T_first, a.selection_T_last}},
-                          {"band", {1.0 - 0.10, 1.0 + 0.30}},
-                          {"candidates", a.selection_candidates},
-                          {"eligible", a.selection->eligible},
-                          {"combinations", a.selection->combinations},
-                          {"site_classes", a.selection_site_classes},
-                          {"site_class_steps", a.selection_steps},
-                          {"warnings", a.selection_warnings},
-                          {"range_note", a.selection_range_note},
-                          {"shared_note", a.selection_shared_note},
-                          {"spectra", a.selection_spectra},
-                          {"max_scale", a.selection_max_scale},
-                          {"max_mean_scale", a.selection_max_mean_scale},
-                          {"max_misfit", a.selection_max_misfit},
-                          {"include_near_fault", a.selection_include_near_fault},
-                          {"near_fault_km", a.selection_near_fault_km},
-                          {"near_fault_excluded", a.selection_near_fault_excluded},
-                          {"mean_scale", a.selection->mean_scale},
-                          {"max_scaled_pga_g", a.selection->max_scaled_pga / g},
-                          {"max_pga_ratio", a.selection_max_pga_ratio},
-                          {"target_pga_g", a.selection->target_pga / g},
-                          {"periods_s", a.selection->periods},
-                          {"target_m_s2", a.selection->target},
-                          {"mean_psa_m_s2", a.selection->mean_psa},
-                          {"record_psa_m_s2", [&] {
-                             nlohmann::json rp = nlohmann::json::array();
-                             for (const auto& sr : a.selection->records) rp.push_back(sr.psa);
-                             return rp;
-                           }()}};
+      if (a.selection) d["selection"] = selection_json(a);
       d["duration"] = {{"whole_record", true},
                        {"free_motion_cap_s", a.free_tail_s},
                        {"free_energy_fraction", free_energy_fraction}};
-      nlohmann::json runs = nlohmann::json::array();
-      for (const DynamicRun& r : a.runs) {
-        runs.push_back({{"record", a.records[r.record].name},
-                        {"scale", a.records[r.record].scale},
-                        {"reversed", r.reversed},
-                        {"restitution", r.e},
-                        {"theta_max", r.result.theta_max},
-                        {"t_theta_max", r.result.t_theta_max},
-                        {"theta_u", r.result.theta_u},
-                        {"theta_ratio", r.theta_ratio},
-                        {"overturned", r.result.overturned},
-                        {"t_overturn", r.result.t_overturn ? nlohmann::json(*r.result.t_overturn) : nlohmann::json(nullptr)},
-                        {"impacts", r.result.impacts},
-                        {"dc", r.result.dc},
-                        {"energy_demand_kJ_m", r.result.energy_demand / units::kN},
-                        {"capacity_kJ_m", r.result.capacity / units::kN},
-                        {"d_control", r.d_control},
-                        {"d_star", r.d_star},
-                        {"collapse", r.collapse},
-                        {"termination", to_string(r.result.termination)},
-                        {"end", to_string(r.result.end)},
-                        {"t_end", r.result.t_end},
-                        {"motion_duration_s", r.result.motion_duration},
-                        {"failed", !succeeded(r.result)}});
-        if (r.result.ties.empty()) continue;
-        // A wall held by tie rods: each level's outcome (body: per metre of wall; chain: the whole level).
-        nlohmann::json lv = nlohmann::json::array();
-        for (const TiedLevelResult& x : r.result.ties)
-          lv.push_back({{"max_force_kN", x.max_force / units::kN},
-                        {"max_elongation_mm", x.max_elongation * 1e3},
-                        {"yielded", x.yielded},
-                        {"plastic_elongation_mm", x.plastic_elongation * 1e3},
-                        {"plastic_energy_kJ", x.plastic_energy / units::kN},
-                        {"broken", x.broken},  // issue 29: the level broke (its force lost from then on)
-                        {"broken_by_elongation", x.broken_by_elongation},
-                        {"t_broken_s", x.broken ? nlohmann::json(x.t_broken) : nlohmann::json(nullptr)}});
-        runs.back()["ties"] = lv;
-        runs.back()["ties_per"] = a.mechanism_dynamics && a.mechanism_dynamics->single_body() ? "m of wall" : "level";
-        runs.back()["rod_broken"] = r.ruptured;
-      }
-      d["analyses"] = runs;
-      nlohmann::json sums = nlohmann::json::array();
-      for (const RestitutionSummary& s : a.summaries)
-        sums.push_back({{"restitution", describe(a.dynamic->restitutions[s.restitution])},
-                        {"e", s.e},
-                        {"failed", s.failed},
-                        {"analyses", s.analyses},
-                        {"overturned", s.overturned},
-                        {"rod_broken", s.ruptured},
-                        {"mean_dc", s.mean_dc},
-                        {"min_dc", s.min_dc},
-                        {"max_dc", s.max_dc},
-                        {"mean_theta_ratio", s.mean_theta_ratio},
-                        {"mean_d_star", s.mean_d_star},
-                        {"d_SLV", governing(a).result.d_SLV},
-                        {"max_d_star", s.max_d_star},
-                        {"records", s.records},
-                        {"rule", s.rule},
-                        {"d_demand", finite_or_null(s.d_demand)},
-                        {"dc_slv", finite_or_null(s.dc_slv)},
-                        {"collapsed", s.collapsed},
-                        {"energy_dc", finite_or_null(s.energy_dc)},
-                        {"mean_dc_survivors", finite_or_null(s.mean_dc_survivors)},
-                        {"records_survived", s.records_survived},
-                        {"d_demand_survivors", finite_or_null(s.d_demand_survivors)},
-                        {"dc_survivors", finite_or_null(s.dc_survivors)},
-                        {"any_collapse", s.any_collapse},
-                        {"no_verdict", s.no_verdict},
-                        {"slv_satisfied", s.no_verdict ? nlohmann::json(nullptr) : nlohmann::json(s.slv_satisfied)}});
-      d["summary"] = sums;
+      d["analyses"] = analyses_json(a);
+      d["summary"] = summaries_json(a);
     }
     // The other candidates' dynamic analyses (issue 24): the "dynamic" object
     // of each one's own assessment (the case restricted to that candidate).

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "assess/hazard/site.hpp"
+#include "assess/hazard/spectrum_columns.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -14,25 +15,8 @@
 
 namespace assess {
 
-/// One evaluated column: a limit state, a given return period or a given hazard.
-struct SpectrumColumn {
-  std::string label;              ///< "SLV", "TR" or "given"
-  std::optional<LimitState> ls;
-  std::optional<double> PVR;      ///< probability of exceedance in VR (fraction)
-  std::optional<double> TR;       ///< return period as computed (years)
-  HazardParams hazard;            ///< ag (g), F0, TC* (s) at the (clamped) TR
-};
-
 /// The periods of `assess spectrum` without --periods (s): 0 to 4 s, 13 values.
 std::vector<double> default_spectrum_periods();
-
-/// The columns of `assess spectrum`: the return period `tr` when given (one
-/// column "TR"; not with a hazard given directly); for a site whose hazard is
-/// given directly one column "given" (of states[0], its limit state when
-/// `state_named`); else one column per limit state of `states`.
-/// @throws InputError "--tr ...: expected a return period in years > 0"
-std::vector<SpectrumColumn> spectrum_columns(const Site& site, const std::vector<LimitState>& states,
-                                             bool state_named, std::optional<double> tr);
 
 /// The JSON of `assess spectrum --json` (without the version stamp): one
 /// column's object (limit state, PVR, TR, ag, F0, TC*, SS, CC, ST, S, eta,
