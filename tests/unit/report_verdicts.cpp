@@ -128,6 +128,10 @@ TEST_CASE("message catalogue: every key in both languages, Italian code terms") 
       CAPTURE(*s);
       std::string rest = *s;
       for (std::size_t p = rest.find("{}"); p != std::string::npos; p = rest.find("{}")) rest.erase(p, 2);
+      // Issue 36: a reference's section number mark (document.hpp section_number_mark), "{{§}}"
+      // in a message formatted with arguments ({fmt} prints it "{§}"), "{§}" in one without.
+      for (const std::string mark : {n > 0 ? "{{§}}" : "{§}"})
+        for (std::size_t p = rest.find(mark); p != std::string::npos; p = rest.find(mark)) rest.erase(p, mark.size());
       CHECK(rest.find('{') == std::string::npos);
       CHECK(rest.find('}') == std::string::npos);
       for (const char* conv : {"%s", "%d", "%llu", "%g", "%f", "%.", "%%", "%-", "%*"}) CHECK(s->find(conv) == std::string::npos);

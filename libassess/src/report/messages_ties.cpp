@@ -11,6 +11,7 @@ const std::map<std::string, std::pair<std::string, std::string>>& tie_messages()
   static const std::map<std::string, std::pair<std::string, std::string>> m{
       {"tie.title", {"Intervento: catene (tiranti)", "Intervention: tie rods"}},
       {"tie.no_break", {"nessuna rottura in alcuna analisi", "no break in any analysis"}},
+      {"tie.no_force", {"la catena non è sollecitata in questo stato (forza nulla)", "the tie carries no force in this state"}},
       {"tie.wall_in_tab", {"Le formule delle resistenze con le loro fonti e i dettagli costruttivi delle catene della parete sono nei tabulati, §{§}.",
         "The strength formulas with their sources and the detailing of the wall's ties are in the tabulati, §{§}."}},
       {"tie.in_tab", {"Le formule delle resistenze con le loro fonti, la verifica dinamica dopo l'intervento e i dettagli costruttivi delle catene di questo meccanismo sono nei tabulati, §{§}.",

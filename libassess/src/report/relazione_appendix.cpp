@@ -21,7 +21,7 @@ std::string reading_key(const std::string& r) {
       {"C8A.4.11", "reading.c8a411"}, {"C8A.4.12", "reading.c8a412"}, {"C8A.4 SLD", "reading.sld08"},
       {"[4.2.6]", "reading.rod"},     {"eps_u", "reading.eps"},        {"nchor bending", "reading.anchor"},
       {"prassi", "reading.punching"}, {"lanar reduction", "reading.corner"}, {"I_S,SLV", "reading.heritage"},
-      {"gamma_M", "reading.masonry_anchor"}};
+      {"gamma_M", "reading.masonry_anchor"}, {"mechanisms.md §5", "reading.bound"}};
   for (const auto& [needle, key] : keys)
     if (r.find(needle) != std::string::npos) return key;
   return "";

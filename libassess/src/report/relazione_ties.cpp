@@ -166,6 +166,7 @@ void checks_table(const TieText& x, const TieLevelResult& L) {
     dc.tone = r.satisfied ? Tone::ok : Tone::fail;
     dc.strong = true;
     if (count && r.satisfied) dc.note = x.t("no_break");  // a counted zero, said why (issue 36, item 5)
+    else if (r.reachable && !count && r.dc == 0.0) dc.note = x.t("no_force");
     rows.push_back({Cell(x.t("check." + r.check)), Cell(clause), demand, count ? numeric_cell("0") : x.num(r.capacity * s, 2),
                     Cell(count ? x.t("unit_analyses") : r.unit), dc, x.ok(r.satisfied)});
   }
@@ -559,6 +560,7 @@ void add_wall_tie_section(Ctx& c, const std::string& wall,
           dc.tone = row.satisfied ? Tone::ok : Tone::fail;
           dc.strong = true;
           if (count && row.satisfied) dc.note = x.t("no_break");  // a counted zero, said why (issue 36, item 5)
+          else if (row.reachable && !count && row.dc == 0.0) dc.note = x.t("no_force");
           rows.push_back({Cell(x.t("check." + row.check)), Cell(row.clause.empty() ? "" : x.t("clause." + row.check)),
                           Cell(who), demand, count ? numeric_cell("0") : x.num(row.capacity * sc, 2),
                           Cell(count ? x.t("unit_analyses") : row.unit), dc, x.ok(row.satisfied)});
