@@ -1038,6 +1038,10 @@ Relazione building_relazione(const BuildingAssessment& b, const ReportOptions& o
   t.add_paragraph(detail::shown_file(bc.file));
   t.add_pre(options.case_text);
   Relazione r{d.document(), t.document()};
+  // The body flows from section to section (issue 36: the house's body at most
+  // 60 pages): no page is left short by a forced break.
+  for (DocBlock& x : r.body.blocks)
+    if (auto* h = std::get_if<Heading>(&x.value)) h->new_page = false;
   resolve_references({&r.body, &r.tabulati});
   return r;
 }
