@@ -119,7 +119,9 @@ std::vector<ModellingChoice> modelling_choices(const FacadeAssessment& a, bool r
 
   // The confidence factor and the readings of the limit state that governs
   // (sensitivity.hpp: each value a recomputation of the method's checks).
-  for (const SensitivityRow& s : adopted_sensitivity(a)) {
+  // The assessment's own sensitivity when it computed one (assess_facade), else computed here.
+  const std::vector<SensitivityRow> sensitivity = a.sensitivity.empty() ? adopted_sensitivity(a) : a.sensitivity;
+  for (const SensitivityRow& s : sensitivity) {
     if (s.adopted) continue;
     std::string case_key;
     if (s.parameter == "FC") case_key = a.kase.knowledge_level == "given" ? "/FC" : "/knowledge_level";
@@ -152,7 +154,7 @@ std::vector<ModellingChoice> modelling_choices(const FacadeAssessment& a, bool r
   {
     CaseFile k = a.kase;
     k.options.lumped_masses = true;
-    const KinematicCaseResult alt = run_kinematic_case(k);
+    const KinematicCaseResult alt = run_kinematic_case(k, false);
     const double e1 = alt.candidates[ci].result.e_star;
     if (std::abs(e1 - gk.e_star) > 1e-9 * gk.e_star) {
       ModellingChoice c = b.base("lumped_masses", "");
@@ -168,7 +170,7 @@ std::vector<ModellingChoice> modelling_choices(const FacadeAssessment& a, bool r
   if (std::isfinite(gk.d0_star_bound) && gk.d0_star_bound < gk.d0_star) {
     CaseFile k = a.kase;
     for (MechanismCandidate& mc : k.mechanism.candidates) mc.rotation_bound = inf;
-    const KinematicCaseResult alt = run_kinematic_case(k);
+    const KinematicCaseResult alt = run_kinematic_case(k, false);
     ModellingChoice c = b.base("displacement_bound", "");
     c.adopted = gk.d0_star_bound;
     c.alternative = alt.candidates[ci].result.d0_star;
@@ -180,7 +182,7 @@ std::vector<ModellingChoice> modelling_choices(const FacadeAssessment& a, bool r
   if (a.kinematic.candidates[ci].Z > 0.0 && a.kase.building) {
     CaseFile k = a.kase;
     k.Z = 0.0;
-    const KinematicCaseResult alt = run_kinematic_case(k);
+    const KinematicCaseResult alt = run_kinematic_case(k, false);
     ModellingChoice c = b.base("height_demand", "/building/Z_m");
     c.adopted = a.kinematic.candidates[ci].Z;
     c.alternative = 0.0;
@@ -199,7 +201,7 @@ std::vector<ModellingChoice> modelling_choices(const FacadeAssessment& a, bool r
       ModellingChoice c = b.base("friction_activation", "/mechanism/activation");
       c.adopted = kappa;
       c.alternative = k1;
-      if (b.reparse([&](nlohmann::json& d) { d["mechanism"]["activation"] = k1; }, k)) b.finish(c, run_kinematic_case(k));
+      if (b.reparse([&](nlohmann::json& d) { d["mechanism"]["activation"] = k1; }, k)) b.finish(c, run_kinematic_case(k, false));
       else c.not_computed = "invalid";
       out.push_back(c);
     }
@@ -215,7 +217,7 @@ std::vector<ModellingChoice> modelling_choices(const FacadeAssessment& a, bool r
         for (auto& f : d["mechanism"]["floors"])
           if (f.is_object() && f.contains("friction")) f["friction"] = 0.0;
       };
-      if (b.reparse(edit, k)) b.finish(c, run_kinematic_case(k));
+      if (b.reparse(edit, k)) b.finish(c, run_kinematic_case(k, false));
       else c.not_computed = "invalid";
       out.push_back(c);
     }
@@ -247,6 +249,7 @@ std::vector<ModellingChoice> modelling_choices(const FacadeAssessment& a, bool r
         FacadeOptions o;
         o.histories = false;
         o.review = false;
+        o.sensitivity = false;  // only the dynamic D/C of the alternative is read
         const FacadeAssessment alt = assess_facade(k, o);
         for (const MethodVerdict& x : alt.verdict.methods)
           if (x.code == "NTC2018" && x.method == "dynamic") {
