@@ -218,6 +218,20 @@ TEST_CASE("class 2: the record library reads through the bounded reader; spectra
     std::memcpy(&b[40], &nr, 4);
     CHECK(contains(input_error([&] { parse_library_spectra(rehash(b), "s.bin", cat); }), "do not fit the file"));
   }
+  // The first id's length takes the whole payload: the next length lay in the
+  // content hash, moved the reader past the file's end and the read after it
+  // came from a wild address (the spectra fuzzer, a SEGV under ASan). The
+  // reader now stops at the payload's end: "truncated file".
+  {
+    std::uint32_t np, nd;
+    std::memcpy(&np, bytes.data() + 32, 4);
+    std::memcpy(&nd, bytes.data() + 36, 4);
+    const std::size_t first_id = 44 + 8 * (std::size_t(np) + nd);
+    std::string b = bytes;
+    const std::uint32_t len = std::uint32_t(b.size() - 8 - (first_id + 4));
+    std::memcpy(&b[first_id], &len, 4);
+    CHECK(contains(input_error([&] { parse_library_spectra(rehash(b), "s.bin", cat); }), "truncated file"));
+  }
   fs::remove_all(dir);
 }
 
@@ -308,6 +322,20 @@ TEST_CASE("class 5: a child's time limit stops its whole process group; an unusa
   fs::remove_all(made);
   release_temporary(made);
   fs::remove_all(dir);
+}
+
+TEST_CASE("class 6: a text that is not UTF-8 is refused by the text rule, named by its byte") {
+  // The metadata fuzzer: a byte 0x88 in a station's name reached catalogue.json, whose writer threw
+  // (nlohmann::json's type_error 316) through the build. UTF-8 that is valid passes; C1 controls do not.
+  CHECK(control_character_violation("Bagnoli Irpino") == "");
+  CHECK(control_character_violation("L'Aquila – Parco del Castello, Ø 16 €, 𝛼") == "");
+  CHECK(control_character_violation("A\x88" "B") == "the text is not valid UTF-8 (byte 0x88 at character 2)");
+  CHECK(contains(control_character_violation("\xC0\xAF"), "not valid UTF-8 (byte 0xC0"));      // overlong '/'
+  CHECK(contains(control_character_violation("x\xED\xA0\x80"), "not valid UTF-8 (byte 0xED"));  // a surrogate
+  CHECK(contains(control_character_violation("\xE2\x82"), "not valid UTF-8 (byte 0xE2"));       // cut short
+  CHECK(contains(control_character_violation("\xF5\x80\x80\x80"), "not valid UTF-8"));       // beyond U+10FFFF
+  CHECK(control_character_violation("a\xC2\x85" "b") == "the text holds a control character (U+0085) at character 2");
+  CHECK(control_character_violation("\xC2\xB0" "C") == "");  // the degree sign
 }
 
 TEST_CASE("class 6: metadata.csv and catalogue.json under the number and text rules of case files") {

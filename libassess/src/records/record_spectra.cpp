@@ -39,13 +39,19 @@ void put(std::string& out, const T& v) {
   out.append(b, sizeof(T));
 }
 
+// Reads the payload, bytes [pos, end) with end = size - 8 (the content hash
+// after it is not data): pos never passes end, so no difference underflows
+// (issue 39's fuzzer: an id's length read from the hash's bytes moved pos
+// past the file, and the next read came from a wild address).
 struct Reader {
   const std::string& bytes;
   const std::string& path;
   std::size_t pos = 0;
+  std::size_t end() const { return bytes.size() >= 8 ? bytes.size() - 8 : 0; }
+  std::size_t left() const { return pos <= end() ? end() - pos : 0; }
   template <typename T>
   T get() {
-    if (bytes.size() - pos < sizeof(T)) throw InputError("record spectra '" + path + "': truncated file");
+    if (left() < sizeof(T)) throw InputError("record spectra '" + path + "': truncated file");
     T v;
     std::memcpy(&v, bytes.data() + pos, sizeof(T));
     pos += sizeof(T);
@@ -154,7 +160,7 @@ LibrarySpectra parse_library_spectra(const std::string& bytes, const std::string
   // before anything is allocated (issue 39: the product of three 32-bit
   // counts wrapped, and a 600 kB file asked for 64 GB).
   const std::uint64_t np = rd.get<std::uint32_t>(), nd = rd.get<std::uint32_t>(), nr = rd.get<std::uint32_t>();
-  const std::uint64_t left = bytes.size() - 8 - rd.pos;  // < 2^63: a string's size
+  const std::uint64_t left = rd.left();  // < 2^63: a string's size
   const auto sizes = [&] { return where + ": its counts (" + std::to_string(np) + " periods, " + std::to_string(nd) +
                                   " dampings, " + std::to_string(nr) + " records) do not fit the file"; };
   // Each quotient bounds the next product: np + nd <= left/8, nd np <= left/8.
@@ -169,12 +175,12 @@ LibrarySpectra parse_library_spectra(const std::string& bytes, const std::string
   s.ids.resize(nr);
   for (std::string& id : s.ids) {
     const std::uint32_t len = rd.get<std::uint32_t>();
-    if (len > bytes.size() - 8 - rd.pos) throw InputError(where + ": truncated file");
+    if (len > rd.left()) throw InputError(where + ": truncated file");
     id.assign(bytes, rd.pos, len);
     rd.pos += len;
   }
   const std::uint64_t n = nr * nd * np;
-  if (bytes.size() - 8 - rd.pos != n * 8) throw InputError(sizes());
+  if (rd.left() != n * 8) throw InputError(sizes());
   s.psa.resize(n);
   if (n) std::memcpy(s.psa.data(), bytes.data() + rd.pos, n * 8);
   // The content, checked after the hash (which only says the file is as it

@@ -49,8 +49,41 @@ std::string decimal_number_violation(const std::string& text, double& v) {
   return "";
 }
 
+namespace {
+
+// The length of the UTF-8 sequence starting at s[i] (RFC 3629: no overlong
+// forms, no surrogates, at most U+10FFFF), or 0 when it is not valid.
+std::size_t utf8_length(const std::string& s, std::size_t i) {
+  const auto at = [&](std::size_t k) { return i + k < s.size() ? static_cast<unsigned char>(s[i + k]) : 0u; };
+  const unsigned c = at(0);
+  const auto cont = [&](std::size_t k) { return (at(k) & 0xC0u) == 0x80u; };
+  if (c < 0x80) return 1;
+  if (c >= 0xC2 && c <= 0xDF) return cont(1) ? 2 : 0;
+  if (c >= 0xE0 && c <= 0xEF) {
+    const unsigned c1 = at(1);
+    if ((c == 0xE0 && c1 < 0xA0) || (c == 0xED && c1 > 0x9F)) return 0;
+    return cont(1) && cont(2) ? 3 : 0;
+  }
+  if (c >= 0xF0 && c <= 0xF4) {
+    const unsigned c1 = at(1);
+    if ((c == 0xF0 && c1 < 0x90) || (c == 0xF4 && c1 > 0x8F)) return 0;
+    return cont(1) && cont(2) && cont(3) ? 4 : 0;
+  }
+  return 0;
+}
+
+}  // namespace
+
 std::string control_character_violation(const std::string& s) {
   for (std::size_t i = 0; i < s.size(); ++i) {
+    // Not UTF-8 (issue 39's fuzzer: a catalogue written from such a text
+    // could not be written as JSON): named by its byte.
+    const std::size_t n = utf8_length(s, i);
+    if (n == 0) {
+      char code[8];
+      std::snprintf(code, sizeof code, "0x%02X", static_cast<unsigned char>(s[i]));
+      return std::string("the text is not valid UTF-8 (byte ") + code + " at character " + std::to_string(i + 1) + ")";
+    }
     const unsigned char c = static_cast<unsigned char>(s[i]);
     const bool c1 = c == 0xC2 && i + 1 < s.size() && static_cast<unsigned char>(s[i + 1]) >= 0x80 &&
                     static_cast<unsigned char>(s[i + 1]) <= 0x9F;
@@ -59,6 +92,7 @@ std::string control_character_violation(const std::string& s) {
       std::snprintf(code, sizeof code, "U+%04X", c1 ? static_cast<unsigned char>(s[i + 1]) : c);
       return std::string("the text holds a control character (") + code + ") at character " + std::to_string(i + 1);
     }
+    i += n - 1;  // the rest of the sequence
   }
   return "";
 }
