@@ -96,7 +96,6 @@ const NumberRule threads{"threads", 1.0, 4096.0, false, false, "worker threads; 
 const NumberRule seed{"-", 0.0, 18446744073709551615.0, false, false, "a 64-bit unsigned integer"};
 }  // namespace assess::cli::option_rules
 
-
 namespace {
 
 // The name among `names` nearest to `typed` (Levenshtein, json_input.hpp), if near enough to be a typo.
