@@ -152,24 +152,29 @@ void formulas(const TieText& x) {
   x.c.d.add_paragraph(x.t("f.note"));
 }
 
+// The cells of one check of a tie: check, clause, demand, capacity, unit,
+// D/C and outcome (the tie's table and the wall's table, which adds the
+// mechanism that governs each row after the clause).
+std::vector<Cell> check_row_cells(const TieText& x, const TieCheckRow& r) {
+  const double s = r.unit == "mm" ? 1e3 : r.unit == "kN" ? 1.0 / kN : 1.0;
+  const bool count = r.unit == "analyses";
+  Cell demand = !r.reachable ? Cell(x.t("unreachable")) : count ? x.num(r.demand, 0) : x.num(r.demand * s, 2);
+  demand.numeric = true;
+  // A D/C read from the check's own verdict (the one rule, issue 28): a break
+  // or a force no tie can give is a failure, printed as such.
+  Cell dc = r.reachable && !count ? x.num(r.dc, 3) : numeric_cell(r.satisfied ? "0" : "∞");
+  dc.tone = r.satisfied ? Tone::ok : Tone::fail;
+  dc.strong = true;
+  if (count && r.satisfied) dc.note = x.t("no_break");  // a counted zero, said why (issue 36, item 5)
+  else if (r.reachable && !count && r.dc == 0.0) dc.note = x.t("no_force");
+  return {Cell(x.t("check." + r.check)), Cell(r.clause.empty() ? "" : x.t("clause." + r.check)), demand,
+          count ? numeric_cell("0") : x.num(r.capacity * s, 2), Cell(count ? x.t("unit_analyses") : r.unit), dc,
+          x.ok(r.satisfied)};
+}
+
 void checks_table(const TieText& x, const TieLevelResult& L) {
   std::vector<std::vector<Cell>> rows;
-  for (const TieCheckRow& r : L.checks) {
-    const double s = r.unit == "mm" ? 1e3 : r.unit == "kN" ? 1.0 / kN : 1.0;
-    const bool count = r.unit == "analyses";
-    const std::string clause = r.clause.empty() ? "" : x.t("clause." + r.check);
-    Cell demand = !r.reachable ? Cell(x.t("unreachable")) : count ? x.num(r.demand, 0) : x.num(r.demand * s, 2);
-    demand.numeric = true;
-    // A D/C read from the check's own verdict (the one rule, issue 28): a break
-    // or a force no tie can give is a failure, printed as such.
-    Cell dc = r.reachable && !count ? x.num(r.dc, 3) : numeric_cell(r.satisfied ? "0" : "∞");
-    dc.tone = r.satisfied ? Tone::ok : Tone::fail;
-    dc.strong = true;
-    if (count && r.satisfied) dc.note = x.t("no_break");  // a counted zero, said why (issue 36, item 5)
-    else if (r.reachable && !count && r.dc == 0.0) dc.note = x.t("no_force");
-    rows.push_back({Cell(x.t("check." + r.check)), Cell(clause), demand, count ? numeric_cell("0") : x.num(r.capacity * s, 2),
-                    Cell(count ? x.t("unit_analyses") : r.unit), dc, x.ok(r.satisfied)});
-  }
+  for (const TieCheckRow& r : L.checks) rows.push_back(check_row_cells(x, r));
   x.c.d.add_cell_table({Cell(x.t("check")), Cell(x.t("clause")), numeric_cell(x.t("demand")), numeric_cell(x.t("capacity")),
                         Cell(x.t("unit")), numeric_cell("D/C"), Cell(x.t("outcome"))},
                        rows, x.t("checks_title") + " — " + L.tie.name);
@@ -552,18 +557,9 @@ void add_wall_tie_section(Ctx& c, const std::string& wall,
         x.c.d.add_heading(l0.tie.name + " (" + x.t(after ? "state_after" : "state_before") + ")", 4, false);
         std::vector<std::vector<Cell>> rows;
         for (const auto& [row, who] : env) {
-          const double sc = row.unit == "mm" ? 1e3 : row.unit == "kN" ? 1.0 / kN : 1.0;
-          const bool count = row.unit == "analyses";
-          Cell demand = !row.reachable ? Cell(x.t("unreachable")) : count ? x.num(row.demand, 0) : x.num(row.demand * sc, 2);
-          demand.numeric = true;
-          Cell dc = row.reachable && !count ? x.num(row.dc, 3) : numeric_cell(row.satisfied ? "0" : "∞");
-          dc.tone = row.satisfied ? Tone::ok : Tone::fail;
-          dc.strong = true;
-          if (count && row.satisfied) dc.note = x.t("no_break");  // a counted zero, said why (issue 36, item 5)
-          else if (row.reachable && !count && row.dc == 0.0) dc.note = x.t("no_force");
-          rows.push_back({Cell(x.t("check." + row.check)), Cell(row.clause.empty() ? "" : x.t("clause." + row.check)),
-                          Cell(who), demand, count ? numeric_cell("0") : x.num(row.capacity * sc, 2),
-                          Cell(count ? x.t("unit_analyses") : row.unit), dc, x.ok(row.satisfied)});
+          std::vector<Cell> cells = check_row_cells(x, row);
+          cells.insert(cells.begin() + 2, Cell(who));
+          rows.push_back(std::move(cells));
         }
         x.c.d.add_cell_table({Cell(x.t("check")), Cell(x.t("clause")), Cell(x.t("wall_governing")),
                               numeric_cell(x.t("demand")), numeric_cell(x.t("capacity")), Cell(x.t("unit")),
