@@ -108,13 +108,14 @@ endforeach()
 
 # The relazione of the building with ties (Italian): the stato di fatto's and the stato di progetto's
 # tables with one building index each, each tied mechanism's section with the mechanism in both states
-# (ids prefixed by its id), the wall's ties once (issue 37: their levels, the existing tie removed, each
-# level's wedge drawn against the crown, the checks in every mechanism), 18 figures in the body (the 12 of
-# building-house, the four mechanisms' tie drawings and the wall's two wedges; issue 36: the others in the
-# tabulati).
+# (ids prefixed by its id), the wall's ties once (issue 37: their levels drawn on the wall, the existing tie
+# removed, each level's governing check per state; issue 36: 13 figures in the body, the 12 of
+# building-house and the wall's drawing). Its tabulati: each mechanism's tie drawing, each level's wedge
+# drawn against the crown and the full checks of every level in every mechanism (47 figures).
 add_test(NAME cli.building_ties_report_browser
-  COMMAND sh -c "\"$1\" run mechanisms/building-house-ties.json --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 18 'id=\"M1-ties-drawing\"' 'id=\"M2-ties-drawing\"' 'id=\"wall1-wall-wedge-1\"' '<span class=\"secno\">[0-9.]*</span> Catene della parete Facciata su strada</h2>' '<span class=\"secno\">[0-9.]*</span> Catene esistenti modificate</h3>' 'catena al sottotetto \\(esistente\\) \\(stato di fatto\\)</h4>' 'Stato di fatto: ogni meccanismo con le sue catene esistenti' 'Indicatore di rischio dell.edificio nello stato di fatto[^<]*: 0,503 \\(M2\\)' 'Indicatore di rischio dell.edificio nello stato di progetto: 1,083 \\(M7\\)'"
+  COMMAND sh -c "\"$1\" run mechanisms/building-house-ties.json --html \"$2\" > /dev/null && sh tests/browser/check_html.sh \"$2\" 13 'id=\"wall1-ties-drawing\"' '<span class=\"secno\">[0-9.]*</span> Catene della parete Facciata su strada</h2>' '<span class=\"secno\">[0-9.]*</span> Catene esistenti modificate</h3>' 'Verifica più sfavorevole' 'catena al sottotetto \\(esistente\\)</span></td><td>stato di fatto</td><td>rottura nelle analisi dinamiche' 'Stato di fatto: ogni meccanismo con le sue catene esistenti' 'Indicatore di rischio dell.edificio nello stato di fatto[^<]*: 0,503 \\(M2\\)' 'Indicatore di rischio dell.edificio nello stato di progetto: 1,083 \\(M7\\)' && sh tests/browser/check_html.sh \"$3\" 47 'id=\"M1-ties-drawing\"' 'id=\"M2-ties-drawing\"' 'id=\"wall1-wall-wedge-1\"' 'catena al sottotetto \\(esistente\\) \\(stato di fatto\\)</h4>'"
           sh $<TARGET_FILE:assess_cli> ${CMAKE_CURRENT_BINARY_DIR}/building-house-ties.it.html
+          ${CMAKE_CURRENT_BINARY_DIR}/building-house-ties.it-tabulati.html
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.building_ties_report_browser PROPERTIES LABELS "cli;browser" SKIP_RETURN_CODE 77 TIMEOUT 300
   ENVIRONMENT "ASSESS_DATA_DIR=${PROJECT_SOURCE_DIR}")

@@ -151,7 +151,7 @@ if(NOT ASSESS_DEBIAN_PYTHON3)
   set(ASSESS_DEBIAN_PYTHON3 python3)
 endif()
 # Issue 36, item 1: the body at most 15 pages for the church, 60 for the house.
-foreach(case_pages church-facade:15 building-house:60)
+foreach(case_pages church-facade:15 building-house:60 building-house-ties:60)
   string(REPLACE ":" ";" case_pages "${case_pages}")
   list(GET case_pages 0 case)
   list(GET case_pages 1 pages)

@@ -662,11 +662,18 @@ void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d, const 
   }
   d.add_heading(bt(L, "sets"), 3, false);
   d.add_paragraph(bt(L, "sets_text"));
-  std::vector<std::vector<Cell>> srows;
-  for (std::size_t i = 0; i < bc.mechanisms.size(); ++i)
-    srows.push_back({Cell(bc.mechanisms[i].id), user_cell(bc.mechanisms[i].wall + ": " + bc.mechanisms[i].name),
-                     Cell(record_set_text(L, b, i))});
-  d.add_cell_table({Cell(bt(L, "id")), Cell(bt(L, "wall_mech")), Cell(bt(L, "records"))}, srows, "");
+  // One line per record set with the mechanisms that use it (issue 36: the
+  // body's length; the summary table names each mechanism's set too).
+  std::vector<std::pair<std::string, std::string>> sets;  // set text, mechanisms
+  for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
+    const std::string text = record_set_text(L, b, i);
+    auto it = std::find_if(sets.begin(), sets.end(), [&](const auto& x) { return x.first == text; });
+    if (it == sets.end()) it = sets.insert(sets.end(), {text, ""});
+    it->second += (it->second.empty() ? "" : ", ") + bc.mechanisms[i].id;
+  }
+  std::vector<Inline> items;
+  for (const auto& [text, ids] : sets) items.push_back({Span(text, true), Span{": " + ids}});
+  d.add_list(items);
   for (const SharedSelection& s : bc.selections)
     if (s.fell_back) d.add_paragraph(s.id + ": " + (L == Lang::it ? relazione::decimal_comma(localise(L, s.note)) : s.note));
   // Each shared set is described in the tabulati (add_record_sets; issue 36: the body's length).

@@ -12,8 +12,14 @@ const std::map<std::string, std::pair<std::string, std::string>>& tie_messages()
       {"tie.title", {"Intervento: catene (tiranti)", "Intervention: tie rods"}},
       {"tie.no_break", {"nessuna rottura in alcuna analisi", "no break in any analysis"}},
       {"tie.no_force", {"la catena non è sollecitata in questo stato (forza nulla)", "the tie carries no force in this state"}},
-      {"tie.wall_in_tab", {"Le formule delle resistenze con le loro fonti e i dettagli costruttivi delle catene della parete sono nei tabulati, §{§}.",
-        "The strength formulas with their sources and the detailing of the wall's ties are in the tabulati, §{§}."}},
+      {"tie.wall_in_tab", {"Le tabelle complete delle verifiche di ogni catena in ogni stato, i cunei di punzonamento, le formule delle resistenze con le loro fonti e i dettagli costruttivi delle catene della parete sono nei tabulati, §{§}.",
+        "The full tables of every tie's checks in each state, the punched wedges, the strength formulas with their sources and the detailing of the wall's ties are in the tabulati, §{§}."}},
+      {"tie.runs_in_tab", {"La forza massima e l'esito delle catene in ogni analisi dello stato di progetto sono nei tabulati, §{§}.",
+        "The largest force and the outcome of the ties in each analysis of the design state are in the tabulati, §{§}."}},
+      {"tie.summary_worst", {"Verifica più sfavorevole", "Most unfavourable check"}},
+      {"tie.summary_failing", {"Non verificate / verifiche", "Failing / checks"}},
+      {"tie.summary_cap", {"Verifiche delle catene della parete: per ogni catena e stato la verifica con il D/C più alto (una non verificata prima di ogni verificata), il meccanismo che la governa e quante delle sue verifiche non sono soddisfatte.",
+        "Checks of the wall's ties: for each tie and state the check with the highest D/C (a failing one before any satisfied one), the mechanism that governs it and how many of its checks fail."}},
       {"tie.in_tab", {"Le formule delle resistenze con le loro fonti, la verifica dinamica dopo l'intervento e i dettagli costruttivi delle catene di questo meccanismo sono nei tabulati, §{§}.",
         "The strength formulas with their sources, the dynamic check after the intervention and the detailing of this mechanism's ties are in the tabulati, §{§}."}},
       {"tie.intro_design",
@@ -42,6 +48,9 @@ const std::map<std::string, std::pair<std::string, std::string>>& tie_messages()
       {"tie.not_found",
        {"Nessuna combinazione degli elenchi, con il minimo intervento sulle catene esistenti non verificate, soddisfa tutte le verifiche; si riporta quella che vi si è avvicinata di più.",
         "No combination of the lists, with the least change to the existing ties that fail, satisfies every check; the one that came closest is shown."}},
+      {"tie.wall_drawing",
+       {"Le catene della parete sul meccanismo {} nello stato di progetto: per ogni livello la resistenza di progetto di una catena e quella dell'intero livello lungo la parete; ciascun meccanismo con le catene è disegnato nei tabulati.",
+        "The wall's ties on the mechanism {} in the design state: for each level the design strength of one tie and of the whole level along the wall; each mechanism with the ties is drawn in the tabulati."}},
       {"tie.drawing",
        {"Le catene sul meccanismo nello stato considerato: per ogni livello la resistenza di progetto di una catena "
         "e quella dell'intero livello lungo la parete.",
@@ -259,6 +268,20 @@ const std::map<std::string, std::pair<std::string, std::string>>& tie_messages()
         "the design state, each level a one-sided (tension-only) restraint: a ductile tie yields and breaks at its "
         "ultimate elongation, one that is not ductile breaks when its force reaches its strength, and from then on "
         "the wall goes on without it. A rupture is a failure of the intervention."}},
+      {"tie.dyn_intro_wall",
+       {"Le analisi dinamiche di ciascun meccanismo nella sua sezione sono quelle dello stato di fatto; sono ripetute "
+        "con tutte le catene dello stato di progetto, ciascun livello vincolo monolatero (solo trazione): una catena "
+        "duttile si snerva e si rompe all'allungamento ultimo, una non duttile si rompe quando la sua forza raggiunge "
+        "la resistenza, e da quel momento la parete prosegue senza di essa. Una rottura è una crisi dell'intervento.",
+        "Each mechanism's dynamic analyses in its section are those of the existing state; they are repeated with "
+        "every tie of the design state, each level a one-sided (tension-only) restraint: a ductile tie yields and "
+        "breaks at its ultimate elongation, one that is not ductile breaks when its force reaches its strength, and "
+        "from then on the wall goes on without it. A rupture is a failure of the intervention."}},
+      {"tie.dyn_intro_existing_wall",
+       {"Le analisi dinamiche di ciascun meccanismo nella sua sezione sono quelle della parete con le catene esistenti, "
+        "vincoli monolateri con la loro duttilità e le loro rotture.",
+        "Each mechanism's dynamic analyses in its section are those of the wall with its existing ties, one-sided "
+        "restraints with their ductility and ruptures."}},
       {"tie.dyn_intro_existing",
        {"Le analisi dinamiche della facciata (sopra) sono quelle della parete con le catene esistenti, vincoli "
         "monolateri con la loro duttilità e le loro rotture.",

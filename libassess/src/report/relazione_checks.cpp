@@ -74,15 +74,18 @@ void add_checks(Ctx& c) {
   // conclusion's code), then every dynamic check; the other candidates'
   // checks are in the tabulati, so that the verdict box's counts are the rows
   // of the two (issue 36).
+  const bool brief = c.building && c.tabulati;  // a building's mechanism: one note (issue 36: length)
+  // A building's mechanism: the checks of the conclusion's code (the other
+  // edition's are in the tabulati, under the candidate; issue 36: length).
+  const MethodVerdict* concl = a.verdict.conclusion();
   std::vector<CheckRow> rows;
   for (const char* code : {"NTC2018", "NTC2008"})
     for (const CheckRow& r : c.candidate(ci).checks)
-      if (r.code == code) rows.push_back(r);
+      if (r.code == code && (!brief || !concl || r.code == concl->code)) rows.push_back(r);
   for (const CheckRow& r : a.checks)
     if (r.kind == "dynamic") rows.push_back(r);
   const bool others = a.kinematic.candidates.size() > 1;
   const bool several_dynamic = !a.other_dynamics.empty();
-  const bool brief = c.building && c.tabulati;  // a building's mechanism: one note (issue 36: length)
   if (brief)
     c.d.add_paragraph(Inline{reference(c.t("checks.brief_note"), c.here("candidates"), tabulati_key)}, "note");
   else if (others && c.tabulati)
@@ -92,6 +95,37 @@ void add_checks(Ctx& c) {
     c.d.add_paragraph(c.t(others ? "checks.body_note_summary" : "checks.body_note_all"));
   c.d.add_cell_table(check_head(c, several_dynamic), check_rows(c, rows, several_dynamic), brief ? std::string() : c.t("checks.table_cap"), "checks");
   add_choice_notes(c, {"height_demand", "xi_SLV_pct", "xi_SLC_pct"});
+}
+
+// A building's mechanism (issue 36: length): one line per approach of the
+// conclusion's code, each quotient written out so that it can be redone;
+// the dynamic analysis has no index (said in the introduction).
+void brief_safety_indices(Ctx& c, const MethodVerdict& concl) {
+  std::vector<Inline> items;
+  for (const SafetyIndex& s : c.a.indices) {
+    if (s.code != concl.code || s.approach == "dynamic") continue;
+    const std::string method = c.t("method." + method_of_kind(s.approach));
+    if (!s.defined) {
+      items.push_back({Span{method + ": " + c.loc(s.note)}});
+      continue;
+    }
+    const CheckIndex& v = s.index;
+    const bool above = v.extrapolated && v.TR_capacity > tr_max_years;
+    const std::string yrs = " " + c.t("site.years");
+    const std::string trc = !v.extrapolated ? "= " + c.n(v.TR_capacity, 0) + yrs
+                                            : (above ? "> 2475" : "< 30") + yrs + " (" + c.t("zeta.extrapolated_short") + ")";
+    const std::string ratio = !v.extrapolated ? "= " + c.n(v.TR_ratio, 2)
+                                              : (above ? "> " : "< ") + c.n((above ? tr_max_years : tr_min_years) / v.TR_demand, 2);
+    Span zeta("ζE = " + c.n(v.zeta, 3), true, verdict_tone(s.outcome()));
+    std::string tail = "; TR_C " + trc + ", TR_D = " + c.n(v.TR_demand, 0) + yrs + ", TR_C/TR_D " + ratio;
+    if (v.bound != 0) tail += " (" + c.t(v.bound > 0 ? "zeta.bound_above" : "zeta.bound_below") + ")";
+    if (v.shape_held) tail += " (" + c.t("zeta.shape_held") + ")";
+    if (v.non_monotonic) tail += " (" + msgf(c.L, "zeta.non_monotonic", c.n(v.other_crossing_TR, 0)) + ")";
+    items.push_back({Span{method + " (" + s.limit_state + ", " + c.t("where." + s.location) + "): PGA_C/PGA_D = " +
+                          c.n(v.ag_capacity_g, 4) + "/" + c.n(v.ag_demand_g, 4) + " g, "},
+                     zeta, Span{tail + "."}});
+  }
+  if (!items.empty()) c.d.add_list(items);
 }
 
 // Safety indices (issue 28, item 3; docs/theory/building.md §4): per method
@@ -107,10 +141,17 @@ void add_safety_indices(Ctx& c) {
   const MethodVerdict* concl = c.a.verdict.conclusion();
   const bool brief = c.building && c.tabulati && concl;
   c.d.add_paragraph(c.t(brief ? "zeta.intro_brief" : "zeta.intro"));
+  if (brief) {
+    brief_safety_indices(c, *concl);
+    return;
+  }
   std::vector<std::vector<Cell>> rows;
   bool any_extrapolated = false;
   for (const SafetyIndex& s : idx) {
     if (brief && s.code != concl->code) continue;
+    // A building's mechanism: the dynamic analysis has no index, said in the
+    // introduction rather than by a row of dashes.
+    if (brief && !s.defined && s.approach == "dynamic") continue;
     const std::string method = c.t("method." + method_of_kind(s.approach));
     if (!s.defined) {
       Cell why(s.approach == "dynamic" ? c.t("zeta.no_dynamic") : c.loc(s.note));
@@ -129,7 +170,7 @@ void add_safety_indices(Ctx& c) {
       const bool above = s.index.TR_capacity > tr_max_years;
       trc.text = above ? "> 2475" : "< 30";
       ratio.text = (above ? "> " : "< ") + c.n((above ? tr_max_years : tr_min_years) / s.index.TR_demand, 2);
-      notes.push_back(c.t(above ? "zeta.tr_above" : "zeta.tr_below"));
+      notes.push_back(c.t(above ? "zeta.tr_above_short" : "zeta.tr_below_short"));
     }
     if (s.index.bound != 0) notes.push_back(c.t(s.index.bound > 0 ? "zeta.bound_above" : "zeta.bound_below"));
     if (s.index.shape_held) notes.push_back(c.t("zeta.shape_held"));

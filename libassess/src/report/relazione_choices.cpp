@@ -84,16 +84,43 @@ std::string choice_flip_text(const Ctx& c, const ModellingChoice& x) {
 }
 
 void add_choice_notes(Ctx& c, const std::vector<std::string>& keys) {
-  std::vector<Inline> items;
+  // One item per choice (issue 36: length): the adopted value and the
+  // method's D/C with it said once, then each alternative with its D/C.
+  std::vector<std::string> order;  // the choices' own order
+  for (const ModellingChoice& x : c.a.choices)
+    if (std::find(keys.begin(), keys.end(), x.key) != keys.end() &&
+        std::find(order.begin(), order.end(), x.key) == order.end())
+      order.push_back(x.key);
+  // The method and its D/C with the adopted values, said once when every
+  // computed alternative of the note refers to the same.
+  const ModellingChoice* base = nullptr;
+  bool shared = true;
   for (const ModellingChoice& x : c.a.choices) {
-    if (std::find(keys.begin(), keys.end(), x.key) == keys.end()) continue;
-    std::string s = choice_name(c.L, x.key) + ": " + choice_value(c, x, false) + "; " + c.t("choice.alternative") + " " +
-                    choice_value(c, x, true);
-    if (x.computed()) {
-      s += ": " + c.t("method." + x.method) + ", D/C " + c.n(x.dc, 3) + " → " + c.n(x.dc_alternative, 3);
-      if (x.flips()) s += " (" + verdict_word(c.L, x.outcome_alternative) + ")";
+    if (std::find(order.begin(), order.end(), x.key) == order.end() || !x.computed()) continue;
+    if (!base) base = &x;
+    else if (x.method != base->method || x.dc != base->dc) shared = false;
+  }
+  auto with_dc = [&](const ModellingChoice& x) {
+    return " (" + c.t("method." + x.method) + ", D/C " + c.n(x.dc, 3) + ")";
+  };
+  std::vector<Inline> items;
+  for (const std::string& key : order) {
+    std::string s;
+    const auto n = std::count_if(c.a.choices.begin(), c.a.choices.end(), [&](const ModellingChoice& x) { return x.key == key; });
+    for (const ModellingChoice& x : c.a.choices) {
+      if (x.key != key) continue;
+      if (s.empty())
+        s = choice_name(c.L, x.key) + ": " + choice_value(c, x, false) + (x.computed() && !shared ? with_dc(x) : "") +
+            "; " + c.t(n > 1 ? "choice.alternatives" : "choice.alternative") + " ";
+      else
+        s += ", ";
+      s += choice_value(c, x, true);
+      if (x.computed()) {
+        s += " → " + c.n(x.dc_alternative, 3);
+        if (x.flips()) s += " (" + verdict_word(c.L, x.outcome_alternative) + ")";
+      }
     }
-    items.push_back({Span{s}});
+    if (!s.empty()) items.push_back({Span{s}});
   }
   if (items.empty()) return;
   Inline head{Span{c.t("choice.acting")}};
@@ -102,6 +129,8 @@ void add_choice_notes(Ctx& c, const std::vector<std::string>& keys) {
     head.push_back(c.building ? reference(c.t("choice.see_tab"), c.here("choices"), tabulati_key)
                               : reference(c.t("choice.see_body"), c.here("choices")));
   }
+  if (base && shared)
+    head.push_back(Span{msgf(c.L, "choice.acting_dc", c.t("method." + base->method), c.n(base->dc, 3))});
   // One note paragraph (issue 36: the body's length), the alternatives separated by ";".
   head.push_back(Span{": "});
   for (std::size_t i = 0; i < items.size(); ++i) {

@@ -64,6 +64,15 @@ void add_tab_candidates(Ctx& c) {
       if (c.building) add_virtual_work(c, i);
       add_curve_table(c, i);
       if (c.building && cr.result.curve_complete()) add_adrs(c, i, "fig-adrs-" + suffix);
+      // A building's body gives the checks of the conclusion's code: the other edition's here.
+      const MethodVerdict* concl = a.verdict.conclusion();
+      if (c.building && concl) {
+        std::vector<CheckRow> other;
+        for (const CheckRow& r : cr.checks)
+          if (r.code != concl->code) other.push_back(r);
+        if (!other.empty())
+          c.d.add_cell_table(check_head(c, false), check_rows(c, other, false), c.t("tab.checks_other_code_cap"), "checks");
+      }
       continue;
     }
     const bool governs = std::find(dev.begin(), dev.end(), i) != dev.end();

@@ -19,6 +19,7 @@
 #include "report/text_format.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <map>
 
@@ -223,7 +224,7 @@ void level_block(const TieText& x, const TieLevelResult& L, const std::string& s
   required_table(x, L);
 }
 
-void states_table(const TieText& x, const TieInterventionResult& t) {
+void states_table(const TieText& x, const TieInterventionResult& t, bool explain = true) {
   const KinematicResult& b = t.before.candidates[t.before.governing].result;
   const KinematicResult& a = t.after.candidates[t.after.governing].result;
   auto dk = [&](const KinematicResult& k, double v) { return k.curve_complete() ? x.num(v, 4) : numeric_cell("—"); };
@@ -252,7 +253,7 @@ void states_table(const TieText& x, const TieInterventionResult& t) {
         dc(r2));
   }
   x.c.d.add_cell_table({Cell(""), numeric_cell(x.t("before")), numeric_cell(x.t("after"))}, rows, x.t("before_after"));
-  x.c.d.add_paragraph(x.t("capacity_note"));
+  if (explain) x.c.d.add_paragraph(x.t("capacity_note"));
 }
 
 Cell run_outcome(const TieText& x, const TieDynamicRun& r) {
@@ -271,14 +272,27 @@ Cell run_outcome(const TieText& x, const TieDynamicRun& r) {
   return Cell(x.t("run_elastic"));
 }
 
-void dynamics(const TieText& x, const TieInterventionResult& t) {
+// The runs of the design state, one row each (a building's wall member: in the tabulati).
+void dynamic_runs_table(const TieText& x, const TieDynamicResult& d) {
+  std::vector<std::vector<Cell>> rows;
+  for (const TieDynamicRun& r : d.runs)
+    rows.push_back({numeric_cell(std::to_string(r.record + 1)), x.num(r.e, 3), Cell(x.t(r.reversed ? "reversed" : "normal")),
+                    x.num(r.theta_max, 5), x.num(r.max_force / kN, 2), run_outcome(x, r)});
+  x.c.d.add_cell_table({numeric_cell(x.t("dyn_record")), numeric_cell(x.t("dyn_e")), Cell(x.t("dyn_polarity")),
+                        numeric_cell("θ_max (rad)"), numeric_cell(x.t("dyn_fmax")), Cell(x.t("dyn_outcome"))},
+                       rows, x.t("dyn_runs_intro"));
+}
+
+// `runs_here` false: the table of every run is in the tabulati (a building's
+// mechanism whose wall's ties are described once; issue 36: length).
+void dynamics(const TieText& x, const TieInterventionResult& t, bool runs_here = true, bool explain = true) {
   const TieDynamicResult& d = t.dynamics;
   x.c.d.add_heading(x.t("dyn_title"), 3, false);
   if (!d.applies) {
     x.c.d.add_paragraph(x.t("dyn_not"));
     return;
   }
-  x.c.d.add_paragraph(x.t(t.intervention ? "dyn_intro" : "dyn_intro_existing"));
+  if (explain) x.c.d.add_paragraph(x.t(t.intervention ? "dyn_intro" : "dyn_intro_existing"));
   // One row per restitution and state (the stato di progetto's only with an
   // intervention); d* of a state with a collapse is unbounded: "∞" (issue 28).
   std::vector<std::vector<Cell>> rows;
@@ -297,13 +311,11 @@ void dynamics(const TieText& x, const TieInterventionResult& t) {
                         numeric_cell(x.t("dyn_d")), numeric_cell("d_SLV (m)"), numeric_cell(x.t("dyn_yield")),
                         numeric_cell(x.t("dyn_broken")), Cell(x.t("dyn_verdict"))},
                        rows, x.t("dyn_title"));
-  rows.clear();
-  for (const TieDynamicRun& r : d.runs)
-    rows.push_back({numeric_cell(std::to_string(r.record + 1)), x.num(r.e, 3), Cell(x.t(r.reversed ? "reversed" : "normal")),
-                    x.num(r.theta_max, 5), x.num(r.max_force / kN, 2), run_outcome(x, r)});
-  x.c.d.add_cell_table({numeric_cell(x.t("dyn_record")), numeric_cell(x.t("dyn_e")), Cell(x.t("dyn_polarity")),
-                        numeric_cell("θ_max (rad)"), numeric_cell(x.t("dyn_fmax")), Cell(x.t("dyn_outcome"))},
-                       rows, x.t("dyn_runs_intro"));
+  if (runs_here) {
+    dynamic_runs_table(x, d);
+  } else if (!d.runs.empty()) {
+    x.c.d.add_paragraph(Inline{reference(x.t("runs_in_tab"), x.c.here("ties"), tabulati_key)}, "note");
+  }
 }
 
 void detailing(const TieText& x, const std::vector<TieLevelResult>& levels) {
@@ -424,26 +436,132 @@ void changes_block(const TieText& x, const TieInterventionResult& t) {
   }
 }
 
+// The ties on the mechanism, in the stato di progetto when there is one.
+void tie_drawing(const TieText& x, const TieInterventionResult& t, const std::string& id,
+                 const std::string& caption = {}) {
+  x.c.d.add_svg(drawing(x, t.intervention ? t.case_after : t.case_before, t.intervention ? t.after : t.before, t.levels),
+                caption.empty() ? x.t("drawing") : caption, id);
+}
+
+using WallMembers = std::vector<std::pair<std::string, const TieInterventionResult*>>;
+
+// One level's check rows over the mechanisms it restrains, in one state: each
+// row the mechanism whose D/C is the largest (a failing row first), with its name.
+std::vector<std::pair<TieCheckRow, std::string>> wall_envelope(const WallMembers& members, const std::string& level,
+                                                                bool after) {
+  std::vector<std::pair<TieCheckRow, std::string>> env;
+  for (const auto& [n, r] : members)
+    for (const TieLevelResult& l : after ? r->levels : r->levels_before) {
+      if (l.tie.name != level || !(l.count > 0.0)) continue;
+      for (const TieCheckRow& row : l.checks) {
+        auto it = std::find_if(env.begin(), env.end(), [&](const auto& e) { return e.first.check == row.check; });
+        const double key = row.unit == "analyses" ? row.demand : row.dc;
+        if (it == env.end()) env.push_back({row, n});
+        else if (!row.satisfied && it->first.satisfied) *it = {row, n};
+        else if (row.satisfied == it->first.satisfied &&
+                 key > (it->first.unit == "analyses" ? it->first.demand : it->first.dc))
+          *it = {row, n};
+      }
+    }
+  return env;
+}
+
+// The levels of the wall in each state (the stato di fatto's, then the stato
+// di progetto's with an intervention), each once, in the members' order.
+std::vector<std::pair<std::string, bool>> wall_states(const WallMembers& members) {
+  std::vector<std::pair<std::string, bool>> out;
+  for (bool after : {false, true})
+    for (const auto& [n0, r0] : members) {
+      if (after && !r0->intervention) continue;
+      for (const TieLevelResult& l0 : after ? r0->levels : r0->levels_before) {
+        if (!(l0.count > 0.0)) continue;
+        const std::pair<std::string, bool> k{l0.tie.name, after};
+        if (std::find(out.begin(), out.end(), k) == out.end()) out.push_back(k);
+      }
+    }
+  return out;
+}
+
+// Each level's checks in every mechanism it restrains: one table per level and state.
+void wall_check_tables(const TieText& x, const WallMembers& members) {
+  for (const auto& [level, after] : wall_states(members)) {
+    x.c.d.add_heading(level + " (" + x.t(after ? "state_after" : "state_before") + ")", 4, false);
+    std::vector<std::vector<Cell>> rows;
+    for (const auto& [row, who] : wall_envelope(members, level, after)) {
+      std::vector<Cell> cells = check_row_cells(x, row);
+      cells.insert(cells.begin() + 2, Cell(who));
+      rows.push_back(std::move(cells));
+    }
+    x.c.d.add_cell_table({Cell(x.t("check")), Cell(x.t("clause")), Cell(x.t("wall_governing")),
+                          numeric_cell(x.t("demand")), numeric_cell(x.t("capacity")), Cell(x.t("unit")),
+                          numeric_cell("D/C"), Cell(x.t("outcome"))},
+                         rows, x.t("checks_title") + " — " + level);
+  }
+}
+
+// The body's summary of those tables (a building's relazione): per level and
+// state the check with the largest D/C (a failing one first: the worst of the
+// table it summarises), the number of checks and how many fail.
+void wall_check_summary(const TieText& x, const WallMembers& members) {
+  std::vector<std::vector<Cell>> rows;
+  for (const auto& [level, after] : wall_states(members)) {
+    const auto env = wall_envelope(members, level, after);
+    if (env.empty()) continue;
+    // A failing count of broken analyses or an unreachable force is printed ∞ (check_row_cells).
+    auto dc_of = [](const TieCheckRow& r) {
+      return !r.satisfied && (r.unit == "analyses" || !r.reachable) ? std::numeric_limits<double>::infinity() : r.dc;
+    };
+    const std::pair<TieCheckRow, std::string>* worst = &env.front();
+    int failing = 0;
+    for (const auto& e : env) {
+      if (!e.first.satisfied) ++failing;
+      const bool worse = (!e.first.satisfied && worst->first.satisfied) ||
+                         (e.first.satisfied == worst->first.satisfied && dc_of(e.first) > dc_of(worst->first));
+      if (worse) worst = &e;
+    }
+    std::vector<Cell> cells = check_row_cells(x, worst->first);
+    Cell name(level);
+    name.user = true;
+    Cell count = numeric_cell(std::to_string(failing) + " / " + std::to_string(env.size()));
+    if (failing) count.tone = Tone::fail;
+    // level, state, governing check and its clause, mechanism, D/C, outcome, failing / checks
+    rows.push_back({name, Cell(x.t(after ? "state_after" : "state_before")), cells[0], Cell(worst->second),
+                    cells[cells.size() - 2], cells.back(), count});
+  }
+  x.c.d.add_cell_table({Cell(x.t("level")), Cell(x.t("dyn_state")), Cell(x.t("summary_worst")),
+                        Cell(x.t("wall_governing")), numeric_cell("D/C"), Cell(x.t("outcome")),
+                        numeric_cell(x.t("summary_failing"))},
+                       rows, x.t("summary_cap"));
+}
+
 }  // namespace
 
 void add_tie_section(Ctx& c, const TieInterventionResult& t) {
   const TieText x{c};
-  c.d.add_paragraph(x.t(t.designed ? "intro_design" : t.intervention ? "intro_given" : "intro_existing"));
-  if (t.designed && t.found) c.d.add_paragraph(x.t(t.regime == "ductile" ? "regime_ductile" : "regime_elastic"));
+  const bool wall_member = t.wall_members.size() > 1;
+  // A mechanism of a wall whose ties are described once in the wall's section
+  // (issue 37): the states and the design's regime are said there.
+  if (!wall_member) {
+    c.d.add_paragraph(x.t(t.designed ? "intro_design" : t.intervention ? "intro_given" : "intro_existing"));
+    if (t.designed && t.found) c.d.add_paragraph(x.t(t.regime == "ductile" ? "regime_ductile" : "regime_elastic"));
+  }
   if (t.designed && !t.found) c.d.add_paragraph(Inline{Span{x.t("not_found"), true}});
-  c.d.add_svg(drawing(x, t.intervention ? t.case_after : t.case_before, t.intervention ? t.after : t.before, t.levels),
-              x.t("drawing"), "ties-drawing");
-  if (t.wall_members.size() > 1) {
-    // A mechanism of a wall whose ties are described once in the wall's
-    // section (issue 37): here the mechanism with them.
+  // A building's wall member: its drawing in the tabulati (the wall's section
+  // draws the ties once; issue 36: length).
+  if (!(wall_member && c.building && c.tabulati)) tie_drawing(x, t, "ties-drawing");
+  if (wall_member) {
+    // Here the mechanism with them, in both states.
     c.d.add_paragraph(x.f("wall_member", [&] {
       std::string m;
       for (const std::string& n : t.wall_members) m += (m.empty() ? "" : ", ") + n;
       return m;
     }()));
+    // A building's wall member: how the states and the tied analyses are
+    // computed is said once in the wall's section (issue 36: length).
+    const bool brief = c.building && c.tabulati;
     c.d.add_heading(x.t("before_after"), 3, false);
-    states_table(x, t);
-    dynamics(x, t);
+    states_table(x, t, !brief);
+    dynamics(x, t, !brief, !brief);
     return;
   }
   c.d.add_heading(x.t("levels_title"), 3, false);
@@ -488,6 +606,11 @@ void add_wall_tie_section(Ctx& c, const std::string& wall,
   c.d.add_paragraph(x.t(first.designed ? "intro_design" : first.intervention ? "intro_given" : "intro_existing"));
   if (first.designed && first.found) c.d.add_paragraph(x.t(first.regime == "ductile" ? "regime_ductile" : "regime_elastic"));
   if (first.designed && !first.found) c.d.add_paragraph(Inline{Span{x.t("not_found"), true}});
+  if (tabulati) {
+    // Said here once for every mechanism of the wall (their sections in a building do not repeat it).
+    c.d.add_paragraph(x.t("capacity_note"));
+    if (first.dynamics.applies) c.d.add_paragraph(x.t(first.intervention ? "dyn_intro_wall" : "dyn_intro_existing_wall"));
+  }
   // Every level of the wall once (the stato di progetto's, else the stato di
   // fatto's), with the mechanisms it acts on.
   std::vector<TieLevelResult> levels;
@@ -512,68 +635,52 @@ void add_wall_tie_section(Ctx& c, const std::string& wall,
     }
     c.d.add_cell_table({Cell(x.t("level")), Cell(x.t("wall_restrains"))}, rows, x.t("wall_restrains"));
   }
+  // The wall's ties drawn once on its first mechanism (each mechanism's
+  // drawing: in the tabulati of a building).
+  if (tabulati) tie_drawing(x, first, "ties-drawing", x.f("wall_drawing", members.front().first));
   changes_block(x, first);
-  c.d.add_heading(x.t("wedge_title"), 3, false);
-  for (std::size_t i = 0; i < levels.size(); ++i) wedge_figure(x, levels[i], "wall-wedge-" + std::to_string(i + 1));
-  // With the tabulati (a building's relazione, issue 36: length): the formulas
-  // and the detailing there, under the same prefix, referred to here.
-  if (tabulati) {
-    c.d.add_paragraph(Inline{reference(x.t("wall_in_tab"), c.here("ties"), tabulati_key)}, "note");
-    Ctx tc{c.a, c.o, c.L, *tabulati, c.readings, true, true};
-    const TieText tx{tc};
-    tabulati->add_heading(x.f("wall_title", wall), 2, false, true, "ties");
-    tabulati->add_heading(x.t("formulas_title"), 3, false);
-    formulas(tx);
-    detailing(tx, levels);
-  } else {
+  if (!tabulati) {
+    c.d.add_heading(x.t("wedge_title"), 3, false);
+    for (std::size_t i = 0; i < levels.size(); ++i) wedge_figure(x, levels[i], "wall-wedge-" + std::to_string(i + 1));
     c.d.add_heading(x.t("formulas_title"), 3, false);
     formulas(x);
+    c.d.add_heading(x.t("checks_title"), 3, false);
+    wall_check_tables(x, members);
+    detailing(x, levels);
+    return;
   }
-  // Each level's checks in every mechanism it restrains: one table per level
-  // and state, each row the mechanism whose D/C is the largest.
+  // With the tabulati (a building's relazione, issue 36: length): in the body
+  // each level's governing check per state; the full tables, the punched
+  // wedges, the formulas and the detailing there, under the same prefix.
   c.d.add_heading(x.t("checks_title"), 3, false);
-  for (bool after : {false, true}) {
-    std::vector<std::string> done;
-    for (const auto& [n0, r0] : members)
-      for (const TieLevelResult& l0 : after ? r0->levels : r0->levels_before) {
-        if (after && !r0->intervention) continue;
-        if (std::find(done.begin(), done.end(), l0.tie.name) != done.end() || !(l0.count > 0.0)) continue;
-        done.push_back(l0.tie.name);
-        // The envelope over the members of each check row.
-        std::vector<std::pair<TieCheckRow, std::string>> env;
-        for (const auto& [n, r] : members)
-          for (const TieLevelResult& l : after ? r->levels : r->levels_before) {
-            if (l.tie.name != l0.tie.name || !(l.count > 0.0)) continue;
-            for (const TieCheckRow& row : l.checks) {
-              auto it = std::find_if(env.begin(), env.end(), [&](const auto& e) { return e.first.check == row.check; });
-              const double key = row.unit == "analyses" ? row.demand : row.dc;
-              if (it == env.end()) env.push_back({row, n});
-              else if (!row.satisfied && it->first.satisfied) *it = {row, n};
-              else if (row.satisfied == it->first.satisfied &&
-                       key > (it->first.unit == "analyses" ? it->first.demand : it->first.dc))
-                *it = {row, n};
-            }
-          }
-        x.c.d.add_heading(l0.tie.name + " (" + x.t(after ? "state_after" : "state_before") + ")", 4, false);
-        std::vector<std::vector<Cell>> rows;
-        for (const auto& [row, who] : env) {
-          std::vector<Cell> cells = check_row_cells(x, row);
-          cells.insert(cells.begin() + 2, Cell(who));
-          rows.push_back(std::move(cells));
-        }
-        x.c.d.add_cell_table({Cell(x.t("check")), Cell(x.t("clause")), Cell(x.t("wall_governing")),
-                              numeric_cell(x.t("demand")), numeric_cell(x.t("capacity")), Cell(x.t("unit")),
-                              numeric_cell("D/C"), Cell(x.t("outcome"))},
-                             rows, x.t("checks_title") + " — " + l0.tie.name);
-      }
-  }
-  if (!tabulati) detailing(x, levels);
+  wall_check_summary(x, members);
+  c.d.add_paragraph(Inline{reference(x.t("wall_in_tab"), c.here("ties"), tabulati_key)}, "note");
+  Ctx tc{c.a, c.o, c.L, *tabulati, c.readings, true, true};
+  const TieText tx{tc};
+  tabulati->add_heading(x.f("wall_title", wall), 2, false, true, "ties");
+  tabulati->add_heading(x.t("checks_title"), 3, false);
+  wall_check_tables(tx, members);
+  tabulati->add_heading(x.t("wedge_title"), 3, false);
+  for (std::size_t i = 0; i < levels.size(); ++i) wedge_figure(tx, levels[i], "wall-wedge-" + std::to_string(i + 1));
+  tabulati->add_heading(x.t("formulas_title"), 3, false);
+  formulas(tx);
+  detailing(tx, levels);
 }
 
 void add_tab_ties(Ctx& c) {
-  // A wall's ties shared by several mechanisms are described once in the wall's section (issue 37).
-  if (!c.o.ties || c.o.ties->wall_members.size() > 1) return;
+  if (!c.o.ties) return;
   const TieText x{c};
+  // A wall's ties shared by several mechanisms are described once in the
+  // wall's section (issue 37); here only this mechanism's tied analyses.
+  if (c.o.ties->wall_members.size() > 1) {
+    const TieDynamicResult& d = c.o.ties->dynamics;
+    c.d.add_heading(x.t("title"), 2, false, true, "ties");
+    tie_drawing(x, *c.o.ties, "ties-drawing");
+    if (!d.applies || d.runs.empty()) return;
+    c.d.add_heading(x.t("dyn_title"), 3, false);
+    dynamic_runs_table(x, d);
+    return;
+  }
   c.d.add_heading(x.t("title"), 2, false, true, "ties");
   c.d.add_heading(x.t("formulas_title"), 3, false);
   formulas(x);
