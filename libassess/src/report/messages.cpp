@@ -681,6 +681,8 @@ const std::map<std::string, Entry>& catalogue() {
         "Criteria for the choice of the mechanisms"}},
       {"criteria.engine", {"Meccanismo esaminato: {}; {} cinematismi candidati analizzati con la stessa procedura (posizioni della cerniera, angoli del cuneo); per ciascuna procedura governa il candidato con il D/C massimo, cioè il più sfavorevole (C8.7.1).",
         "Mechanism examined: {}; {} candidate mechanisms analysed by the same procedure (hinge positions, wedge angles); for each procedure the candidate with the largest D/C, the most unfavourable, governs (C8.7.1)."}},
+      {"criteria.engine_one", {"Meccanismo esaminato: {}; un solo cinematismo, definito dalla geometria dei blocchi del caso (C8.7.1).",
+        "Mechanism examined: {}; one candidate mechanism, defined by the case's block geometry (C8.7.1)."}},
       {"criteria.parameter", {"Parametro che distingue i candidati: {}.",
         "Parameter that distinguishes the candidates: {}."}},
       {"site.formulas", {"VR = VN · CU [2.4.1]; TR = −VR / ln(1 − P_VR) [3.2.0]; S = SS · ST [3.2.5]; TC = CC · TC*, TB = TC / 3, TD = 4 ag/g + 1,6 [3.2.6-3.2.8]; ag, F0 e TC* dalla griglia di pericolosità (Allegato A, interpolazione).",

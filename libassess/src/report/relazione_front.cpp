@@ -174,9 +174,14 @@ void add_building_description(Ctx& c) {
                      rows, c.t("masonry.caption"));
   c.d.add_heading(c.t("criteria.heading"), 2, false);
   if (!r.mechanism_criteria.empty()) c.d.add_paragraph(Inline{Span{r.mechanism_criteria, false, Tone::plain, "", true}});
+  // A building: its table of mechanisms follows (building_document.cpp), each
+  // mechanism's candidates in its own section; not the first mechanism's here.
+  if (c.building) return;
   const MechanismSet& ms = a.kase.mechanism;
-  std::string which = msgf(c.L, "criteria.engine", mechanism_name(c.L, ms.type), a.kinematic.candidates.size());
-  if (a.kinematic.candidates.size() > 1) which += " " + msgf(c.L, "criteria.parameter", c.loc(ms.parameter_name));
+  const std::size_t n = a.kinematic.candidates.size();
+  std::string which = n == 1 ? msgf(c.L, "criteria.engine_one", mechanism_name(c.L, ms.type))
+                             : msgf(c.L, "criteria.engine", mechanism_name(c.L, ms.type), n);
+  if (n > 1) which += " " + msgf(c.L, "criteria.parameter", c.loc(ms.parameter_name));
   c.d.add_paragraph(which);
 }
 
