@@ -146,3 +146,52 @@ TEST_CASE("message catalogue: every key in both languages, Italian code terms") 
   CHECK(parse_lang("en") == Lang::en);
   CHECK_THROWS_AS(parse_lang("fr"), InputError);
 }
+
+// Issue 41, item 6: the message tables are data (libassess/src/report/messages/*.json),
+// compiled in. Read here from the source tree, independently of the library's
+// reader: every entry of the catalogue and of the tie rods' part is what msg()
+// gives, in both languages, every key of msg() comes from one of the two files,
+// and the phrase list translates its own phrases.
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+
+namespace {
+nlohmann::json message_file(const std::string& name) {
+  std::ifstream in(std::string(ASSESS_TEST_DATA_DIR) + "/libassess/src/report/messages/" + name + ".json");
+  REQUIRE(in.good());
+  return nlohmann::json::parse(in);
+}
+}  // namespace
+
+TEST_CASE("message tables as data: msg() gives the entries of messages/*.json") {
+  std::set<std::string> in_files;
+  for (const char* name : {"catalogue", "ties"}) {
+    const nlohmann::json table = message_file(name);
+    for (auto e = table.begin(); e != table.end(); ++e) {
+      const std::string key = e.key();
+      const nlohmann::json& v = e.value();
+      CAPTURE(key);
+      CHECK(in_files.insert(key).second);  // a key in one file only
+      CHECK(msg(Lang::it, key) == v.at("it").get<std::string>());
+      CHECK(msg(Lang::en, key) == v.at("en").get<std::string>());
+    }
+  }
+  const auto keys = message_keys();
+  CHECK(std::set<std::string>(keys.begin(), keys.end()) == in_files);
+  const nlohmann::json names = message_file("mechanisms");
+  for (auto e = names.begin(); e != names.end(); ++e)
+    CHECK(mechanism_name(Lang::it, e.key()) == e.value().at("it").get<std::string>());
+  // Each phrase alone is translated into its Italian (the longest match first:
+  // a phrase that contains a longer one is not alone, none here).
+  int checked = 0;
+  const nlohmann::json phrases = message_file("phrases_it");
+  for (const auto& p : phrases) {
+    const std::string en = p.at("en"), it = p.at("it");
+    CAPTURE(en);
+    CHECK(localise(Lang::it, en) == it);
+    CHECK(localise(Lang::en, en) == en);
+    ++checked;
+  }
+  CHECK(checked > 10);
+}

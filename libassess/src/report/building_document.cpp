@@ -10,6 +10,7 @@
 // the case file). Every verdict read from BuildingAssessment.
 #include "assess/report/building_report.hpp"
 
+#include "report/message_tables.hpp"
 #include "report/relazione_context.hpp"
 #include "report/report_heading.hpp"
 #include "report/text_format.hpp"
@@ -21,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 #include <set>
 
 namespace assess {
@@ -30,221 +32,12 @@ namespace {
 using detail::code_name;
 using detail::xml_escape;
 
-// The building report's own phrases, Italian and English.
+// The building report's own phrases, Italian and English (messages/building.json).
 const std::string& bt(Lang L, const std::string& key) {
-  static const std::map<std::string, std::pair<std::string, std::string>> m = {
-      {"verdict_heading", {"Esito della verifica dell'edificio", "Outcome of the building's assessment"}},
-      {"sum_title", {"Sintesi della verifica dei meccanismi locali dell'edificio", "Summary of the assessment of the building's local mechanisms"}},
-      {"verdict_ok", {"L'edificio soddisfa la verifica dei meccanismi locali: tutti i {} meccanismi sono verificati con il metodo adottato",
-                      "The building satisfies the check of its local mechanisms: all {} mechanisms are satisfied by the adopted method"}},
-      {"verdict_fail", {"L'edificio non soddisfa la verifica dei meccanismi locali: {} meccanismi su {} non sono verificati con il metodo adottato ({})",
-                        "The building does not satisfy the check of its local mechanisms: {} of {} mechanisms are not satisfied by the adopted method ({})"}},
-      {"verdict_none", {"L'edificio è senza esito: nessun meccanismo fallisce, ma {} meccanismi su {} sono senza esito con il metodo adottato",
-                        "The building has no verdict: no mechanism fails, but {} of {} mechanisms have no verdict by the adopted method"}},
-      {"verdict_undecided", {"senza esito: {}", "without a verdict: {}"}},
-      {"verdict_fragile", {"esiti non solidi secondo la valutazione dei risultati: {} (si vedano gli interventi e le conclusioni)",
-                           "verdicts the evaluation calls not sound: {} (see the interventions and the conclusions)"}},
-      {"int_fragile", {"I meccanismi seguenti hanno un esito che la valutazione dei risultati giudica non solido: si raccomanda di approfondire il rilievo e le indagini che lo decidono o di considerare un intervento di presidio.",
-                       "The mechanisms below have a verdict the evaluation of the results calls not sound: a deeper survey of what decides it, or a preventive intervention, is recommended."}},
-      {"concl_all_robust", {"La valutazione dei risultati giudica solido l'esito di ogni meccanismo.",
-                            "The evaluation of the results calls every mechanism's verdict sound."}},
-      {"concl_fragile_ids", {"Secondo la valutazione dei risultati l'esito dei meccanismi seguenti non è solido:",
-                             "By the evaluation of the results the verdict of the mechanisms below is not sound:"}},
-      {"concl_fragile_tail", {"(i motivi di ciascuno agli interventi, §{§}); le conclusioni valgono con questa riserva.",
-                              "(the reasons of each in the interventions, §{§}); the conclusions hold with this qualification."}},
-      {"concl_fragile", {"L'esito dei meccanismi seguenti non è solido secondo la valutazione dei risultati; le conclusioni valgono con questa riserva:",
-                         "The verdict of the mechanisms below is not sound by the evaluation of the results; the conclusions hold with this qualification:"}},
-      {"verdict_zeta", {"indicatore di rischio dell'edificio ζE,edificio = {} ({}), il più piccolo ζE dei meccanismi nel loro approccio adottato",
-                        "the building's safety index ζE,building = {} ({}), the smallest ζE of the mechanisms in their adopted approach"}},
-      {"verdict_dc", {"D/C massimo del metodo adottato: {} ({})", "largest D/C of the adopted method: {} ({})"}},
-      {"wall_col", {"Parete", "Wall"}},
-      {"mech_col", {"Meccanismo", "Mechanism"}},
-      {"mechanisms_list", {"Meccanismi esaminati", "Mechanisms examined"}},
-      {"mechanisms_cap", {"Meccanismi locali esaminati, parete per parete, con il tipo di cinematismo e il metodo adottato per la conclusione.",
-                          "Local mechanisms examined, wall by wall, with the kind of mechanism and the method adopted for the conclusion."}},
-      {"method_col", {"Metodo adottato", "Adopted method"}},
-      {"interventions", {"Interventi", "Interventions"}},
-      {"int_none", {"Tutti i meccanismi sono verificati con il metodo adottato: non sono richiesti interventi per i meccanismi locali esaminati.",
-                    "Every mechanism is satisfied by the adopted method: no intervention is required for the local mechanisms examined."}},
-      {"int_failing", {"I meccanismi seguenti non soddisfano la verifica con il metodo adottato e richiedono un intervento di miglioramento o di riparazione locale (NTC 2018 §8.4): ",
-                       "The mechanisms below do not satisfy the check by the adopted method and need an improvement or a local repair (NTC 2018 §8.4): "}},
-      {"int_ties", {"{}: catene {} (si veda la sezione del meccanismo)", "{}: ties {} (see the mechanism's section)"}},
-      {"int_no_ties", {"{}: D/C = {}; nessun intervento è dimensionato in questa relazione: le catene si possono dimensionare con il progetto automatico delle catene del meccanismo",
-                       "{}: D/C = {}; no intervention is designed in this report: the ties are designed by the mechanism's tie design (key \"design\")"}},
-      {"appendix_candidates", {"Appendice — verifiche degli altri cinematismi di ciascun meccanismo", "Appendix — checks of the other candidates of each mechanism"}},
-      {"dc_candidate", {"candidato della D/C", "candidate of the D/C"}},
-      {"chart_cap_plain",
-       {"Indicatore di rischio ζE = PGA_C/PGA_D di ogni meccanismo, approccio lineare e non lineare, confrontato con 1 "
-        "(linea rossa): sotto 1 il meccanismo non sopporta l'azione richiesta allo SLV. Barre oltre il grafico: valore "
-        "scritto; ∞: capacità non raggiunta sotto 20 g.",
-        "Safety index ζE = PGA_C/PGA_D of every mechanism, linear and non-linear approach, against 1 (red line): "
-        "below 1 the mechanism does not withstand the action required at SLV. Bars beyond the chart: value written; "
-        "∞: capacity not reached below 20 g."}},
-      {"title", {"Relazione di calcolo — meccanismi locali dell'edificio", "Calculation report — local mechanisms of the building"}},
-      {"intro",
-       {"Verifica dei meccanismi locali di collasso fuori piano di tutte le pareti dell'edificio (Circ. 2019 C8.7.1; "
-        "Circ. 617/2009 C8A.4 a titolo di confronto): per ogni meccanismo l'analisi cinematica lineare e non lineare e, "
-        "dove richiesta, l'analisi dinamica non lineare; per ogni approccio l'accelerazione di picco che il meccanismo "
-        "sopporta (PGA_C), quella richiesta allo SLV (PGA_D) e l'indicatore di rischio ζE = PGA_C/PGA_D, con i periodi "
-        "di ritorno TR_C/TR_D (D.P.C.M. 9/2/2011).",
-        "Assessment of the out-of-plane local collapse mechanisms of every wall of the building (Circ. 2019 C8.7.1; "
-        "Circ. 617/2009 C8A.4 for comparison): for each mechanism the linear and non-linear kinematic analyses and, "
-        "where requested, the non-linear dynamic analysis; for each approach the peak ground acceleration the "
-        "mechanism withstands (PGA_C), the one required at SLV (PGA_D) and the safety index ζE = PGA_C/PGA_D, with "
-        "the return periods TR_C/TR_D (D.P.C.M. 9/2/2011)."}},
-      {"project", {"Progetto", "Project"}},
-      {"case_file", {"File del caso", "Case file"}},
-      {"generated", {"Generata con assess", "Generated by assess"}},
-      {"date", {"data", "date"}},
-      {"summary", {"Sintesi dei meccanismi dell'edificio", "Summary of the building's mechanisms"}},
-      {"site_line", {"Sito", "Site"}},
-      {"slv_line", {"SLV: periodo di ritorno", "SLV: return period"}},
-      {"years", {"anni", "years"}},
-      {"governing", {"Meccanismi che governano", "Governing mechanisms"}},
-      {"strength", {"lineare (resistenza)", "linear (strength)"}},
-      {"strength_short", {"lin.", "lin."}},
-      {"displacement_short", {"non lin.", "non-lin."}},
-      {"dynamic_short", {"din.", "dyn."}},
-      {"approach_abbrev",
-       {"lin.: analisi cinematica lineare (resistenza); non lin.: non lineare (spostamento); din.: dinamica non "
-        "lineare. Il valore di a0* di ciascun cinematismo è nella sezione del meccanismo.",
-        "lin.: linear kinematic analysis (strength); non-lin.: non-linear (displacement); dyn.: non-linear dynamic. "
-        "Each candidate's a0* is in the mechanism's section."}},
-      {"displacement", {"non lineare (spostamento)", "non-linear (displacement)"}},
-      {"dynamic", {"dinamica non lineare", "non-linear dynamic"}},
-      {"satisfied_of", {"soddisfatti", "satisfied"}},
-      {"of", {"su", "of"}},
-      {"failing", {"non soddisfatti", "not satisfied"}},
-      {"no_verdict", {"senza esito", "without verdict"}},
-      {"no_zeta", {"nessun ζE: l'analisi dinamica dà un D/C, non una PGA di capacità",
-                   "no ζE: the dynamic analysis gives a D/C, not a PGA capacity"}},
-      {"table_cap",
-       {"Tabella di sintesi (NTC 2018). Per ogni approccio: α0 del cinematismo la cui verifica dà il D/C "
-        "riportato accanto (il più grande dell'approccio), il D/C e ζE = PGA_C/PGA_D (ag su roccia, verifica SLV o SLC "
-        "che governa); ★ = meccanismo che governa l'approccio; in rosso i D/C e gli ζE non verificati; ∞: collasso in "
-        "un'analisi dinamica. Esito: la conclusione del metodo adottato (indicato sotto se non è il non lineare); Acc.: "
-        "insieme di accelerogrammi. Il codice del meccanismo porta alla sua sezione.",
-        "Summary table (NTC 2018). For each approach: α0 of the candidate whose check gives the D/C beside it "
-        "(the approach's largest), the D/C and ζE = PGA_C/PGA_D (ag on rock, the governing SLV or SLC check); ★ = the "
-        "approach's governing mechanism; red: D/C and ζE not satisfied; ∞: a collapse in a dynamic analysis. "
-        "Outcome: the adopted method's conclusion (named below it unless non-linear); Rec.: the record set. The "
-        "mechanism's code links to its section."}},
-      {"table08_cap",
-       {"NTC 2008 (Circ. 617/2009 C8A.4), a titolo di confronto. PGA_C = ag(TR_C), TR_C il periodo di ritorno a cui "
-        "la verifica NTC 2008 stessa raggiunge D/C = 1, come per le NTC 2018.",
-        "NTC 2008 (Circ. 617/2009 C8A.4), for comparison. PGA_C = ag(TR_C), TR_C the return period at which the NTC "
-        "2008 check itself reaches D/C = 1, as for NTC 2018."}},
-      {"id", {"Cod.", "Id"}},
-      {"wall_mech", {"Parete: meccanismo", "Wall: mechanism"}},
-      {"records", {"Accelerogrammi", "Records"}},
-      {"outcome", {"Esito", "Outcome"}},
-      {"records_short", {"Acc.", "Rec."}},
-      {"chart_title", {"ζE per meccanismo (NTC 2018)", "ζE per mechanism (NTC 2018)"}},
-      {"chart_designed", {"con le catene progettate", "with the designed ties"}},
-      {"chart_cap",
-       {"Indicatore di rischio ζE = PGA_C/PGA_D di ogni meccanismo, approccio lineare e non lineare, confrontato con 1 "
-        "(linea rossa): sotto 1 il meccanismo non sopporta l'azione richiesta allo SLV. Barre oltre il grafico: valore "
-        "scritto; ∞: capacità non raggiunta sotto 20 g. Rombo verde: ζE con le catene progettate (approccio adottato).",
-        "Safety index ζE = PGA_C/PGA_D of every mechanism, linear and non-linear approach, against 1 (red line): "
-        "below 1 the mechanism does not withstand the action required at SLV. Bars beyond the chart: value written; "
-        "∞: capacity not reached below 20 g. Green diamond: ζE with the designed ties (adopted approach)."}},
-      {"sets", {"Accelerogrammi usati", "Records used"}},
-      {"sets_text",
-       {"I meccanismi con la stessa selezione automatica condividono un solo insieme di accelerogrammi, scelto una volta "
-        "sull'intervallo di periodi che li comprende tutti (unione degli intervalli dei singoli meccanismi); lo stesso "
-        "intervallo è scritto nel caso espanso di ciascun meccanismo (assess run --expand), che eseguito da solo "
-        "ritrova gli stessi accelerogrammi e gli stessi risultati.",
-        "The mechanisms with the same automatic selection share one set of records, selected once over the period "
-        "range that spans them all (the union of the mechanisms' own ranges); the same range is written into each "
-        "mechanism's expanded case (assess run --expand), which run alone finds the same records and results."}},
-      {"set", {"Insieme", "Set"}},
-      {"sets_in_tab", {"Ogni insieme condiviso (accelerogrammi, fattori di scala, selezione, compatibilità spettrale) è descritto nei tabulati, §{§}.",
-        "Each shared set (records, scale factors, selection, spectral compatibility) is described in the tabulati, §{§}."}},
-      {"range", {"Intervallo di periodi (s)", "Period range (s)"}},
-      {"members", {"Meccanismi", "Mechanisms"}},
-      {"set_none", {"nessuna analisi dinamica", "no dynamic analysis"}},
-      {"set_listed", {"accelerogrammi elencati nel caso", "records listed in the case"}},
-      {"set_own", {"selezione propria", "own selection"}},
-      {"own_short", {"propria", "own"}},
-      {"listed_short", {"elencati", "listed"}},
-      {"set_shared", {"selezione condivisa", "shared selection"}},
-      {"premessa", {"Premessa", "Introduction"}},
-      {"premessa_text",
-       {"La presente relazione riporta la verifica dei meccanismi locali di collasso fuori piano dell'edificio, "
-        "parete per parete. Ogni meccanismo è analizzato come un caso a sé, con i dati comuni dell'edificio (sito, "
-        "altezza, numero di piani, periodo T1, livello di conoscenza, impostazioni dell'analisi dinamica) e i propri "
-        "dati; le sezioni che seguono la sintesi riportano per ciascuno il disegno, il lavoro virtuale, le verifiche, "
-        "lo spettro ADRS e i risultati dinamici.",
-        "This report gives the assessment of the building's out-of-plane local collapse mechanisms, wall by wall. "
-        "Each mechanism is analysed as a case of its own, with the building's shared data (site, height, storeys, "
-        "period T1, knowledge level, dynamic settings) and its own; the sections after the summary give for each "
-        "the drawing, the virtual work, the checks, the ADRS plot and the dynamic results."}},
-      {"building_data", {"Edificio", "Building"}},
-      {"height", {"altezza H", "height H"}},
-      {"storeys", {"piani", "storeys"}},
-      {"kl", {"livello di conoscenza", "knowledge level"}},
-      {"normativa", {"Normativa di riferimento", "Codes and references"}},
-      {"mech_type", {"Tipo", "Type"}},
-      {"mech_path", {"Posizione nel file dell'edificio", "Position in the building file"}},
-      {"mech_records", {"Accelerogrammi", "Records"}},
-      {"indices", {"Indicatori di rischio del meccanismo", "Safety indices of the mechanism"}},
-      {"code", {"Norma", "Code"}},
-      {"approach", {"Approccio", "Approach"}},
-      {"check", {"Verifica che governa", "Governing check"}},
-      {"back", {"↑ torna alla sintesi", "↑ back to the summary"}},
-      {"conclusioni", {"Conclusioni", "Conclusions"}},
-      {"concl_gov", {"Il meccanismo che governa l'edificio", "The building's governing mechanism"}},
-      {"concl_counts", {"meccanismi soddisfano la verifica con il metodo adottato", "mechanisms satisfy the check by the adopted method"}},
-      {"place_date", {"Luogo e data", "Place and date"}},
-      {"concl_failing", {"non soddisfano la verifica", "not satisfied"}},
-      {"site_records_note", {"Gli accelerogrammi nel grafico degli spettri sono quelli di M1; ogni meccanismo riporta i propri nella sua sezione.",
-                             "The records in the spectra plot are M1's; each mechanism shows its own in its section."}},
-      {"engineer", {"Il tecnico", "The engineer"}},
-      {"appendix", {"Appendice: file del caso dell'edificio", "Appendix: the building case file"}},
-      {"warnings", {"Avvertenze", "Warnings"}},
-      {"warnings_en", {"Le avvertenze sono le frasi del programma, in inglese come stampate nel terminale.",
-                       "The program's warnings, as printed in the terminal."}},
-      {"height_m", {"in quota", "at height"}},
-      {"ground", {"al piede", "at the ground"}},
-      {"extrapolated", {"estrapolato oltre 30–2475 anni", "extrapolated beyond 30–2475 years"}},
-      {"ties_title", {"Catene: i meccanismi prima e dopo l'intervento", "Tie rods: the mechanisms before and after the intervention"}},
-      {"ties_cap",
-       {"Per ogni meccanismo: le catene (assegnate nel file o progettate: la barra e la piastra commerciali più piccole "
-        "che soddisfano ogni verifica), ζE = PGA_C/PGA_D (NTC 2018, approccio del metodo adottato: resistenza per il "
-        "lineare, spostamento altrimenti) senza e con le catene, l'esito di tutte le verifiche cinematiche (entrambe le "
-        "norme; dopo, anche le verifiche delle catene) e la verifica dinamica delle analisi ripetute con le catene. "
-        "Per le catene assegnate le tabelle precedenti sono già con le catene; per un progetto sono senza.",
-        "For each mechanism: its ties (given in the file, or designed: the smallest commercial rod and plate that "
-        "satisfy every check), ζE = PGA_C/PGA_D (NTC 2018, the adopted method's approach: strength for linear, "
-        "displacement otherwise) without and with the ties, whether every kinematic check is satisfied (both codes; "
-        "after: the ties' checks too) and the dynamic check of the analyses repeated with the ties. With given ties "
-        "the tables above already include them; with a design they do not."}},
-      {"ties_kind", {"Catene", "Ties"}},
-      {"ties_design", {"progetto", "design"}},
-      {"ties_given", {"assegnate", "given"}},
-      {"ties_none", {"—", "—"}},
-      {"ties_rod", {"Barra e capochiave", "Rod and anchor"}},
-      {"ties_plate", {"piastra", "plate"}},
-      {"ties_bar", {"paletto", "bar anchor"}},
-      {"ties_levels", {"livelli", "levels"}},
-      {"ties_not_found", {"non trovata", "not found"}},
-      {"before", {"prima", "before"}},
-      {"after", {"dopo", "after"}},
-      {"checks_all", {"Verifiche cinematiche", "Kinematic checks"}},
-      {"dyn_check", {"Verifica dinamica", "Dynamic check"}},
-      {"ties_index",
-       {"Indicatore di rischio dell'edificio (il più piccolo ζE dei suoi meccanismi)",
-        "Safety index of the building (the smallest ζE of its mechanisms)"}},
-      {"without_ties", {"senza le catene", "without the ties"}},
-      {"with_ties", {"con le catene", "with the ties"}},
-      {"ties_passing", {"meccanismi con tutte le verifiche cinematiche soddisfatte", "mechanisms with every kinematic check satisfied"}},
-  };
+  static const std::map<std::string, detail::Message> m = detail::message_table("building");
   const auto it = m.find(key);
-  if (it == m.end()) {
-    static const std::string missing = "?";
-    return missing;
-  }
-  return L == Lang::it ? it->second.first : it->second.second;
+  if (it == m.end()) throw std::logic_error("building messages: no entry '" + key + "'");
+  return L == Lang::it ? it->second.it : it->second.en;
 }
 
 

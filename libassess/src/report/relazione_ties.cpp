@@ -6,7 +6,7 @@
 // the force each check needs, the two states side by side, the dynamic
 // analyses with each tie's outcome, the detailing. Numbers go through the
 // context (decimal comma in Italian, never inf or nan); every sentence is in
-// the message catalogue (messages_ties.cpp, keys "tie.*"); the readings the
+// the message catalogue (messages/ties.json, keys "tie.*"); the readings the
 // section rests on are listed in the appendix (tie_readings), the body
 // carries no certainty tag.
 #include "assess/report/tie_report.hpp"

@@ -5,7 +5,7 @@
 // with zeta_E, the dynamic analyses of both states with each tie's outcome
 // per analysis, the detailing; and the readings adopted (the certainty of
 // each formula and constant, for the appendix). The relazione's section is in
-// relazione_ties.cpp; its sentences are in the message catalogue (messages_ties.cpp).
+// relazione_ties.cpp; its sentences are in the message catalogue (messages/ties.json).
 #pragma once
 
 #include "assess/assessment/tie_intervention.hpp"
