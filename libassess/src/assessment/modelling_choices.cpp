@@ -170,7 +170,7 @@ std::vector<ModellingChoice> modelling_choices(const FacadeAssessment& a, bool r
   if (std::isfinite(gk.d0_star_bound) && gk.d0_star_bound < gk.d0_star) {
     CaseFile k = a.kase;
     for (MechanismCandidate& mc : k.mechanism.candidates) mc.rotation_bound = inf;
-    const KinematicCaseResult alt = run_kinematic_case(k, false);
+    const KinematicCaseResult alt = run_kinematic_case(k, false, &a.kinematic);  // the same paths
     ModellingChoice c = b.base("displacement_bound", "");
     c.adopted = gk.d0_star_bound;
     c.alternative = alt.candidates[ci].result.d0_star;
@@ -182,7 +182,7 @@ std::vector<ModellingChoice> modelling_choices(const FacadeAssessment& a, bool r
   if (a.kinematic.candidates[ci].Z > 0.0 && a.kase.building) {
     CaseFile k = a.kase;
     k.Z = 0.0;
-    const KinematicCaseResult alt = run_kinematic_case(k, false);
+    const KinematicCaseResult alt = run_kinematic_case(k, false, &a.kinematic);  // the same analyses
     ModellingChoice c = b.base("height_demand", "/building/Z_m");
     c.adopted = a.kinematic.candidates[ci].Z;
     c.alternative = 0.0;

@@ -556,7 +556,7 @@ TieInterventionResult finish(Member& m, const Proposal& p, bool designed) {
   }
   // The state adopted, with its checks' safety indices (issue 41; a trial's
   // analysis leaves them out: they cost 0.3 ms a check and only ζE reads them).
-  if (R.intervention) R.after = run_kinematic_case(R.case_after);
+  if (R.intervention) R.after = run_kinematic_case(R.case_after, true, &R.after);  // the same analyses, checks again
   R.zetaE_before = zeta_E(R.before, m.c->method);
   const std::size_t n_existing = m.c->ties.size();
   auto dyn_of = [](const std::vector<TieDynamicRun>& runs, bool applies) {
