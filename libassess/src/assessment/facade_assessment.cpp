@@ -520,7 +520,7 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
                      "analyses a mechanism without a site");
   FacadeAssessment a;
   a.kase = kase;
-  a.kinematic = run_kinematic_case(kase);
+  a.kinematic = opt.kinematic ? *opt.kinematic : run_kinematic_case(kase);
   a.checks = a.kinematic.checks;
   a.warnings = a.kinematic.warnings;
   const Site site(*kase.site);

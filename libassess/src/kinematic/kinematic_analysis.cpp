@@ -103,6 +103,10 @@ double failure_elongation_of(const TieRestraint& t) {
 struct MarchedPath {
   KinematicOptions options;
   std::shared_ptr<const PathSamples> samples;
+  /// (d_k (m), alpha (-)) at each point of the path where the code quantities
+  /// took alpha: a derivation for other options takes them from here (the
+  /// same d_k gives the same alpha) instead of solving the configuration again.
+  std::vector<std::pair<double, double>> alphas;
 };
 
 std::string to_string(CurveTermination t) {
@@ -438,14 +442,19 @@ KinematicOptions rotation_capped(const Chain& chain, const KinematicOptions& opt
   return capped;
 }
 
-// The code quantities on the marched path of R for the options `opt` (only
-// FC, the curve's model and points, the caps, the fractions of d0* and the
-// rotation bound enter): a0* [C8A.4.4]/[C8.7.1.3], the rotation bound, the
+// The code quantities on the marched path `S` of R for the options `opt`
+// (only FC, the curve's model and points, the caps, the fractions of d0* and
+// the rotation bound enter): a0* [C8A.4.4]/[C8.7.1.3], the rotation bound, the
 // reported capacity curve, du*, ds*, as*, Ts (C8A.4, §6 of
 // docs/theory/kinematic.md) and d_SLV, T_SLV, d_SLC, T_SLC (Circ. 2019
-// §C8.7.1.2.1.6, [C8.7.1.10], [C8.7.1.11]).
+// §C8.7.1.2.1.6, [C8.7.1.10], [C8.7.1.11]). `prior`: the path as an earlier
+// derivation left it (its alphas, R.curve its curve), or null. Sets R.marched.
 void derive_code_quantities(const Chain& chain, const KinematicOptions& opt, const std::vector<TieRestraint>& ties,
+                            const std::shared_ptr<const PathSamples>& S, const MarchedPath* prior,
                             KinematicResult& R) {
+  auto M = std::make_shared<MarchedPath>(MarchedPath{opt, S, {}});
+  R.marched = M;
+  const std::vector<CapacityPoint> prior_curve = std::move(R.curve);
   R.FC = opt.FC;
   R.curve_model = opt.curve_model;
   R.a0_star = R.alpha0 * units::g / (R.e_star * R.FC);  // [C8A.4.4] / [C8.7.1.3]
@@ -454,15 +463,29 @@ void derive_code_quantities(const Chain& chain, const KinematicOptions& opt, con
   R.du_star = R.ds_star = R.as_star = R.Ts = 0.0;
   R.d_SLV = R.a_SLV = R.T_SLV = R.d_SLC = R.a_SLC = R.T_SLC = 0.0;
   if (!R.curve_complete()) return;
-  const Path path{chain, ties, R.control_block, R.control_point, *R.marched->samples};
+  const Path path{chain, ties, R.control_block, R.control_point, *S};
   const KinematicOptions capped = rotation_capped(chain, opt, R);
 
+  // alpha(d_k) on the path, the earlier derivation's where it took it.
+  auto path_alpha = [&](double dk) {
+    double alpha = 0.0;
+    bool found = false;
+    if (prior)
+      for (const auto& [d, a] : prior->alphas)
+        if (d == dk) {
+          alpha = a, found = true;
+          break;
+        }
+    if (!found) alpha = path.alpha(dk);
+    M->alphas.emplace_back(dk, alpha);
+    return alpha;
+  };
   const double a_scale = units::g / (R.e_star * R.FC);
   // a*(d*) (m/s^2) from the chosen curve model.
   auto a_star_at = [&](double d_star) {
     const double dk = d_star / R.d_star_per_dk;
     const double alpha = opt.curve_model == CurveModel::Linearised ? R.alpha0 * (1.0 - dk / R.dk0)
-                                                                    : path.alpha(dk);
+                                                                    : path_alpha(dk);
     return alpha * a_scale;
   };
   for (int j = 0; j < opt.curve_points; ++j) {
@@ -471,7 +494,10 @@ void derive_code_quantities(const Chain& chain, const KinematicOptions& opt, con
     p.dk = p.d_star / R.d_star_per_dk;
     p.a_star = j == 0 && ties.empty() ? R.a0_star : j == opt.curve_points - 1 ? 0.0 : a_star_at(p.d_star);
     p.alpha = p.a_star / a_scale;
-    if (!ties.empty()) {
+    if (prior && std::size_t(j) < prior_curve.size() && prior_curve[std::size_t(j)].dk == p.dk) {
+      p.tie_elongation = prior_curve[std::size_t(j)].tie_elongation;  // the same point of the path
+      p.tie_force = prior_curve[std::size_t(j)].tie_force;
+    } else if (!ties.empty()) {
       Eigen::VectorXd qj;
       if (path.configuration(p.dk, qj))
         for (std::size_t l = 0; l < ties.size(); ++l) {
@@ -529,7 +555,7 @@ KinematicResult march_kinematic(const Chain& chain, const KinematicOptions& opt,
   S->q = {q0};
   S->broken_at.assign(ties.size(), inf);
   S->h = chain.size() / 1000.0;
-  R.marched = std::make_shared<const MarchedPath>(MarchedPath{opt, S});
+  R.marched = std::make_shared<const MarchedPath>(MarchedPath{opt, S, {}});
   if (!R.activates) {
     R.termination = CurveTermination::NotActivated;
     R.message = "alpha0 <= 0: the mechanism is not activated by any horizontal action";
@@ -564,7 +590,8 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
     without_ties = std::make_shared<const KinematicResult>(analyse_kinematic(chain, opt, {}));
   KinematicResult R = march_kinematic(chain, opt, ties);
   if (!ties.empty()) R.without_ties = std::move(without_ties);
-  derive_code_quantities(chain, opt, ties, R);
+  const std::shared_ptr<const PathSamples> samples = R.marched->samples;  // (R.marched is replaced)
+  derive_code_quantities(chain, opt, ties, samples, nullptr, R);
   return R;
 }
 
@@ -580,8 +607,7 @@ KinematicResult rederive_kinematic(const Chain& chain, const KinematicOptions& o
   KinematicResult R = marched;
   if (marched.without_ties)
     R.without_ties = std::make_shared<const KinematicResult>(rederive_kinematic(chain, opt, {}, *marched.without_ties));
-  R.marched = std::make_shared<const MarchedPath>(MarchedPath{opt, m->samples});
-  derive_code_quantities(chain, opt, ties, R);
+  derive_code_quantities(chain, opt, ties, m->samples, m, R);
   return R;
 }
 
