@@ -775,6 +775,7 @@ void add_dynamic_analysis(FacadeAssessment& a, const FacadeOptions& opt) {
     FacadeOptions sub_opt = opt;  // histories kept as asked: the relazione develops the candidate that governs
     sub_opt.sensitivity = false;
     sub_opt.review = false;       // the review is the whole façade's
+    sub_opt.kinematic = nullptr;  // the case restricted to the candidate analyses its own
     for (std::size_t i : others) {
       CaseFile one = kase;
       one.mechanism.candidates = {kase.mechanism.candidates[i]};
