@@ -155,7 +155,7 @@ void add_kinematic_model(Builder& b, std::size_t ci) {
   {
     CaseFile k = a.kase;
     k.options.lumped_masses = true;
-    const KinematicCaseResult alt = run_kinematic_case(k, false);
+    const KinematicCaseResult alt = run_kinematic_case(k, false, &a.kinematic);  // the same paths
     const double e1 = alt.candidates[ci].result.e_star;
     if (std::abs(e1 - gk.e_star) > 1e-9 * gk.e_star) {
       ModellingChoice c = b.base("lumped_masses", "");

@@ -36,6 +36,10 @@ struct PathSamples {
   std::vector<Eigen::VectorXd> q;    // their configurations
   std::vector<double> broken_at;     // per tie level: the d_k at which it failed (m; infinity while it holds)
   double h = 0.0;                    // the marching step (m)
+  // The control displacements (m) of the path's events, whose d* follow the
+  // masses' distribution (d*/d_k): each break of KinematicResult::tie_breaks,
+  // and per level where it reaches its strength (infinity: never).
+  std::vector<double> break_dk, strength_dk;
 };
 
 namespace {
@@ -322,7 +326,6 @@ bool break_failing_levels(const Path& path, PathSamples& S, double dk, const Eig
     if (who == ties.size()) return false;
     KinematicResult::TieBreak b;
     b.level = ties[who].name;
-    b.d_star = first * R.d_star_per_dk;
     Eigen::VectorXd qb;
     if (path.configuration(first, qb)) {
       b.alpha_before = load_multiplier(path.chain, qb, path.acting(first));
@@ -330,8 +333,8 @@ bool break_failing_levels(const Path& path, PathSamples& S, double dk, const Eig
     }
     b.caps = b.alpha_after < 0.5 * b.alpha_before;
     S.broken_at[who] = first;
+    S.break_dk.push_back(first);
     R.tie_breaks.push_back(b);
-    if (b.caps && !std::isfinite(R.d_star_tie_cap)) R.d_star_tie_cap = b.d_star;
     if (!(b.alpha_after > 0.0)) {
       R.dk0 = first;
       return true;
@@ -387,10 +390,9 @@ void march(const Path& path, PathSamples& S, KinematicResult& R) {
   }
 }
 
-// Tie levels: where the first level reaches its strength (its elongation
-// (T_Rd - P0)/k; reported), by the first crossing on the marching grid.
-void first_level_at_strength(const Path& path, KinematicResult& R) {
-  const PathSamples& S = path.s;
+// Tie levels: where each level reaches its strength (its elongation
+// (T_Rd - P0)/k), by the first crossing on the marching grid (S.strength_dk).
+void levels_at_strength(const Path& path, PathSamples& S, const KinematicResult& R) {
   for (std::size_t l = 0; l < path.ties.size(); ++l) {
     const TieRestraint& t = path.ties[l];
     if (!(t.stiffness > 0.0) || !(t.capacity > t.pretension)) continue;
@@ -398,12 +400,33 @@ void first_level_at_strength(const Path& path, KinematicResult& R) {
     for (std::size_t i = 1; i < S.dk.size(); ++i) {
       if (S.dk[i] > std::min(R.dk0, S.broken_at[l]) + S.h) break;
       if (tie_elongation(path.chain, t, S.q[i]) < lim) continue;
-      const double at = std::min(path.crossing(t, lim, S.dk[i - 1], S.dk[i]), R.dk0) * R.d_star_per_dk;
-      if (at < R.d_star_tie_limit) {
-        R.d_star_tie_limit = at;
-        R.tie_limit_level = t.name;
-      }
+      S.strength_dk[l] = std::min(path.crossing(t, lim, S.dk[i - 1], S.dk[i]), R.dk0);
       break;
+    }
+  }
+}
+
+// The d* (m) of the path's events from their control displacements with
+// d*/d_k [C8A.4.5]/[C8.7.1.4]: each break and the first that caps the
+// capacity (d_star_tie_cap), d0* and the first level at its strength (reported).
+void d_star_of_events(const PathSamples& S, const std::vector<TieRestraint>& ties, KinematicResult& R) {
+  R.d_star_tie_cap = inf;
+  for (std::size_t i = 0; i < R.tie_breaks.size(); ++i) {
+    KinematicResult::TieBreak& b = R.tie_breaks[i];
+    b.d_star = S.break_dk[i] * R.d_star_per_dk;
+    if (b.caps && !std::isfinite(R.d_star_tie_cap)) R.d_star_tie_cap = b.d_star;
+  }
+  R.d0_star = 0.0;
+  R.d_star_tie_limit = inf;
+  R.tie_limit_level.clear();
+  if (!R.curve_complete()) return;
+  R.d0_star = R.d_star_per_dk * R.dk0;
+  for (std::size_t l = 0; l < ties.size(); ++l) {
+    if (!std::isfinite(S.strength_dk[l])) continue;
+    const double at = S.strength_dk[l] * R.d_star_per_dk;
+    if (at < R.d_star_tie_limit) {
+      R.d_star_tie_limit = at;
+      R.tie_limit_level = ties[l].name;
     }
   }
 }
@@ -526,16 +549,15 @@ void derive_code_quantities(const Chain& chain, const KinematicOptions& opt, con
   R.T_SLC = code_rules::T_SLC_factor_of_pi * units::pi * std::sqrt(R.d_SLC / R.a_SLC);
 }
 
-// The options that shape the marched path: the control point and the lumping
-// of the masses (d*/d_k, hence the d* of the breaks and of the first level at
-// its strength). The others only enter derive_code_quantities.
+// The options that shape the marched path: the control point. The lumping
+// of the masses changes the linear analysis and d*/d_k alone
+// (redistribute_masses); the others only enter derive_code_quantities.
 bool same_path(const KinematicOptions& a, const KinematicOptions& b) {
-  return a.control_block == b.control_block && a.control_point == b.control_point &&
-         a.lumped_masses == b.lumped_masses;
+  return a.control_block == b.control_block && a.control_point == b.control_point;
 }
 
 bool same_options(const KinematicOptions& a, const KinematicOptions& b) {
-  return same_path(a, b) && a.FC == b.FC && a.curve_model == b.curve_model && a.curve_points == b.curve_points &&
+  return same_path(a, b) && a.lumped_masses == b.lumped_masses && a.FC == b.FC && a.curve_model == b.curve_model && a.curve_points == b.curve_points &&
          a.du_cap == b.du_cap && a.d_SLV_cap == b.d_SLV_cap && a.d_SLC_cap == b.d_SLC_cap &&
          a.dSLV_over_d0 == b.dSLV_over_d0 && a.dSLC_over_d0 == b.dSLC_over_d0 && a.rotation_cap == b.rotation_cap;
 }
@@ -554,6 +576,7 @@ KinematicResult march_kinematic(const Chain& chain, const KinematicOptions& opt,
   S->dk = {0.0};
   S->q = {q0};
   S->broken_at.assign(ties.size(), inf);
+  S->strength_dk.assign(ties.size(), inf);
   S->h = chain.size() / 1000.0;
   R.marched = std::make_shared<const MarchedPath>(MarchedPath{opt, S, {}});
   if (!R.activates) {
@@ -563,10 +586,26 @@ KinematicResult march_kinematic(const Chain& chain, const KinematicOptions& opt,
   }
   const Path path{chain, ties, R.control_block, R.control_point, *S};
   march(path, *S, R);
-  if (!R.curve_complete()) return R;
-  R.d0_star = R.d_star_per_dk * R.dk0;
-  first_level_at_strength(path, R);
+  if (R.curve_complete()) levels_at_strength(path, *S, R);
+  d_star_of_events(*S, ties, R);
   return R;
+}
+
+// Another lumping of the masses (KinematicOptions::lumped_masses, the
+// relazione's alternative): the linear analysis again (M*, e*, d*/d_k) and
+// the d* of the path's events. The path and the control point do not depend
+// on it: the march knows no mass, and the control point is chosen from W and
+// W dx (choose_control_point), which the lumping leaves as they are.
+void redistribute_masses(const Chain& chain, const KinematicOptions& opt, const std::vector<TieRestraint>& ties,
+                         const PathSamples& S, KinematicResult& R) {
+  const Eigen::VectorXd q0 = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(chain.n_coordinates()));
+  const Eigen::VectorXd v0 = chain.virtual_displacement(q0);
+  R.loads.clear();
+  R.ties.clear();
+  R.sum_W = R.sum_W_dx = R.sum_W_dx2 = R.work_other = 0.0;
+  linear_analysis(chain, opt, ties, q0, v0, R);
+  R.d_star_per_dk = R.sum_W_dx2 / (R.dx_k * R.sum_W_dx);  // [C8A.4.5] / [C8.7.1.4]
+  d_star_of_events(S, ties, R);
 }
 
 void check_tie_blocks(const Chain& chain, const std::vector<TieRestraint>& ties) {
@@ -605,6 +644,7 @@ KinematicResult rederive_kinematic(const Chain& chain, const KinematicOptions& o
     return analyse_kinematic(chain, opt, ties);
   if (same_options(m->options, opt)) return marched;
   KinematicResult R = marched;
+  if (opt.lumped_masses != m->options.lumped_masses) redistribute_masses(chain, opt, ties, *m->samples, R);
   if (marched.without_ties)
     R.without_ties = std::make_shared<const KinematicResult>(rederive_kinematic(chain, opt, {}, *marched.without_ties));
   derive_code_quantities(chain, opt, ties, m->samples, m, R);

@@ -235,8 +235,8 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
 /// again on its marched path, bit for bit what analyse_kinematic(chain,
 /// options, ties) gives, without marching again (the sensitivity to FC and
 /// d_SLV/d0*, the modelling choices, the safety indices of a trial's state).
-/// Options that shape the path (the control point, lumped_masses) or a
-/// result without its path fall back to analyse_kinematic.
+/// lumped_masses redoes the linear analysis alone; another control point or
+/// a result without its path falls back to analyse_kinematic.
 KinematicResult rederive_kinematic(const Chain& chain, const KinematicOptions& options,
                                    const std::vector<TieRestraint>& ties, const KinematicResult& marched);
 
