@@ -387,7 +387,7 @@ BuildingCase parse_building(const nlohmann::json& doc, const std::string& file) 
     }();
     KinematicCaseResult kr;
     try {
-      kr = run_kinematic_case(m.kase);
+      kr = run_kinematic_case(m.kase, false);  // the governing candidate's periods: no safety indices
     } catch (const InputError& err) {
       throw InputError(building_path_message(b, m, err.what()));
     }

@@ -1207,13 +1207,22 @@ std::vector<TieRestraint> case_tie_restraints(const CaseFile& c, const Chain& ch
 }
 
 KinematicCaseResult run_kinematic_case(const CaseFile& c, bool indices) {
+  return run_kinematic_case(c, indices, nullptr);
+}
+
+KinematicCaseResult run_kinematic_case(const CaseFile& c, bool indices, const KinematicCaseResult* marched) {
   KinematicCaseResult out;
   out.warnings = c.warnings;
-  for (const MechanismCandidate& m : c.mechanism.candidates) {
+  if (marched && marched->candidates.size() != c.mechanism.candidates.size()) marched = nullptr;
+  for (std::size_t i = 0; i < c.mechanism.candidates.size(); ++i) {
+    const MechanismCandidate& m = c.mechanism.candidates[i];
     KinematicOptions opt = c.options;
     opt.rotation_cap = m.rotation_bound;  // issue 33: the mechanism's own bound on its rotation
-    out.candidates.push_back(
-        {m.label, m.parameter, c.Z.value_or(m.Z), analyse_kinematic(m.chain, opt, case_tie_restraints(c, m.chain)), {}, {}, {}});
+    const std::vector<TieRestraint> ties = case_tie_restraints(c, m.chain);
+    out.candidates.push_back({m.label, m.parameter, c.Z.value_or(m.Z),
+                              marched ? rederive_kinematic(m.chain, opt, ties, marched->candidates[i].result)
+                                      : analyse_kinematic(m.chain, opt, ties),
+                              {}, {}, {}});
   }
   for (const CandidateResult& cr : out.candidates)
     if (!cr.result.activates) statically_unstable(c, cr);

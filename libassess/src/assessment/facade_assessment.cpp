@@ -520,7 +520,7 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
                      "analyses a mechanism without a site");
   FacadeAssessment a;
   a.kase = kase;
-  a.kinematic = run_kinematic_case(kase);
+  a.kinematic = opt.kinematic ? *opt.kinematic : run_kinematic_case(kase);
   a.checks = a.kinematic.checks;
   a.warnings = a.kinematic.warnings;
   const Site site(*kase.site);
@@ -775,6 +775,7 @@ void add_dynamic_analysis(FacadeAssessment& a, const FacadeOptions& opt) {
     FacadeOptions sub_opt = opt;  // histories kept as asked: the relazione develops the candidate that governs
     sub_opt.sensitivity = false;
     sub_opt.review = false;       // the review is the whole façade's
+    sub_opt.kinematic = nullptr;  // the case restricted to the candidate analyses its own
     for (std::size_t i : others) {
       CaseFile one = kase;
       one.mechanism.candidates = {kase.mechanism.candidates[i]};

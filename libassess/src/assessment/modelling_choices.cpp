@@ -106,20 +106,12 @@ struct Builder {
   }
 };
 
-}  // namespace
-
-std::vector<ModellingChoice> modelling_choices(const FacadeAssessment& a, bool records) {
-  std::vector<ModellingChoice> out;
-  const MethodVerdict* mp = a.verdict.conclusion();
-  if (!mp || mp->code != "NTC2018" || !a.kase.site) return out;
-  Builder b{a, *mp, {}};
-  const MethodVerdict& m = *mp;
-  const std::size_t ci = method_candidate(a, m);
-  const KinematicResult& gk = a.kinematic.candidates[ci].result;
-
-  // The confidence factor and the readings of the limit state that governs
-  // (sensitivity.hpp: each value a recomputation of the method's checks).
-  // The assessment's own sensitivity when it computed one (assess_facade), else computed here.
+// The confidence factor and the readings of the limit state that governs
+// (sensitivity.hpp: each value a recomputation of the method's checks): the
+// assessment's own sensitivity when it computed one (assess_facade), else
+// computed here.
+void add_sensitivity(Builder& b) {
+  const FacadeAssessment& a = b.a;
   const std::vector<SensitivityRow> sensitivity = a.sensitivity.empty() ? adopted_sensitivity(a) : a.sensitivity;
   for (const SensitivityRow& s : sensitivity) {
     if (s.adopted) continue;
@@ -147,125 +139,147 @@ std::vector<ModellingChoice> modelling_choices(const FacadeAssessment& a, bool r
     c.alternative = s.value;
     c.dc_alternative = s.dc;
     c.outcome_alternative = outcome_of_dc(s.dc);
-    out.push_back(c);
+    b.out.push_back(c);
   }
+}
 
-  // e*: the blocks' masses distributed over their areas (adopted) or lumped at their centroids.
+// The choices of the kinematic model of candidate ci: e* with the blocks'
+// masses distributed over their areas (adopted) or lumped at their centroids;
+// the displacement bound of a one-body mechanism (issue 33; the composite
+// wedge's, issue 38, when given): d0* with and without it; the demand at
+// height (C8.7.1.2.1.7-8 with the floor spectrum [C7.2.6]) against the
+// ground's alone.
+void add_kinematic_model(Builder& b, std::size_t ci) {
+  const FacadeAssessment& a = b.a;
+  const KinematicResult& gk = a.kinematic.candidates[ci].result;
   {
     CaseFile k = a.kase;
     k.options.lumped_masses = true;
-    const KinematicCaseResult alt = run_kinematic_case(k, false);
+    const KinematicCaseResult alt = run_kinematic_case(k, false, &a.kinematic);  // the same paths
     const double e1 = alt.candidates[ci].result.e_star;
     if (std::abs(e1 - gk.e_star) > 1e-9 * gk.e_star) {
       ModellingChoice c = b.base("lumped_masses", "");
       c.adopted = gk.e_star;
       c.alternative = e1;
       b.finish(c, alt);
-      out.push_back(c);
+      b.out.push_back(c);
     }
   }
-
-  // The displacement bound of a one-body mechanism (issue 33; the composite
-  // wedge's, issue 38, when given): d0* with and without it.
   if (std::isfinite(gk.d0_star_bound) && gk.d0_star_bound < gk.d0_star) {
     CaseFile k = a.kase;
     for (MechanismCandidate& mc : k.mechanism.candidates) mc.rotation_bound = inf;
-    const KinematicCaseResult alt = run_kinematic_case(k, false);
+    const KinematicCaseResult alt = run_kinematic_case(k, false, &a.kinematic);  // the same paths
     ModellingChoice c = b.base("displacement_bound", "");
     c.adopted = gk.d0_star_bound;
     c.alternative = alt.candidates[ci].result.d0_star;
     b.finish(c, alt);
-    out.push_back(c);
+    b.out.push_back(c);
   }
-
-  // The demand at height (C8.7.1.2.1.7-8 with the floor spectrum [C7.2.6]) against the ground's alone.
   if (a.kinematic.candidates[ci].Z > 0.0 && a.kase.building) {
     CaseFile k = a.kase;
     k.Z = 0.0;
-    const KinematicCaseResult alt = run_kinematic_case(k, false);
+    const KinematicCaseResult alt = run_kinematic_case(k, false, &a.kinematic);  // the same analyses
     ModellingChoice c = b.base("height_demand", "/building/Z_m");
     c.adopted = a.kinematic.candidates[ci].Z;
     c.alternative = 0.0;
     b.finish(c, alt);
-    out.push_back(c);
+    b.out.push_back(c);
   }
+}
 
-  // The activation of the side walls' friction (friction overturning: kappa,
-  // docs/theory/mechanisms.md §2) and the friction of the floors' seats.
-  if (a.kase.mechanism.type == "friction_overturning" && a.kase.source.contains("mechanism")) {
-    const nlohmann::json& mech = a.kase.source.at("mechanism");
-    const double kappa = mech.value("activation", 1.0);
-    for (double k1 : {0.5, 0.0}) {
-      if (k1 >= kappa) continue;
-      CaseFile k;
-      ModellingChoice c = b.base("friction_activation", "/mechanism/activation");
-      c.adopted = kappa;
-      c.alternative = k1;
-      if (b.reparse([&](nlohmann::json& d) { d["mechanism"]["activation"] = k1; }, k)) b.finish(c, run_kinematic_case(k, false));
-      else c.not_computed = "invalid";
-      out.push_back(c);
-    }
-    double mu = 0.0;
-    if (mech.contains("floors") && mech.at("floors").is_array())
-      for (const auto& f : mech.at("floors")) mu = std::max(mu, f.value("friction", 0.0));
-    if (mu > 0.0) {
-      CaseFile k;
-      ModellingChoice c = b.base("seat_friction", "/mechanism/floors/*/friction");
-      c.adopted = mu;
-      c.alternative = 0.0;
-      auto edit = [](nlohmann::json& d) {
-        for (auto& f : d["mechanism"]["floors"])
-          if (f.is_object() && f.contains("friction")) f["friction"] = 0.0;
-      };
-      if (b.reparse(edit, k)) b.finish(c, run_kinematic_case(k, false));
-      else c.not_computed = "invalid";
-      out.push_back(c);
-    }
-  }
-
-  // The windows of the record selection (NTC 2018 §3.2.3.6): Mw and distance,
-  // each widened (Mw by 0.5 each side, the largest distance doubled); the
-  // whole dynamic analysis run again with the records it selects.
-  if (a.dynamic && a.dynamic_applies && a.dynamic->selection && (records || m.method == "dynamic")) {
-    const RecordSelectionSpec& rs = *a.dynamic->selection;
-    const CatalogueFilters f = catalogue_filters(rs, to_string(a.kase.site->conditions.soil), rs.count);
-    ModellingChoice c = b.base("selection_window", "/dynamic/select/Mw, /dynamic/select/distance_km");
-    c.method = "dynamic";
-    for (const MethodVerdict& x : a.verdict.methods)
-      if (x.code == "NTC2018" && x.method == "dynamic") {
-        c.dc = x.max_dc;
-        c.outcome = x.outcome();
-      }
-    c.adopted_b = f.Mw_min, c.adopted = f.Mw_max, c.adopted_c = f.R_min_km, c.adopted_d = f.R_max_km;
-    c.alternative_b = std::max(2.0, f.Mw_min - 0.5), c.alternative = std::min(10.0, f.Mw_max + 0.5);
-    c.alternative_c = 0.0, c.alternative_d = std::min(1000.0, 2.0 * f.R_max_km);
+// The activation of the side walls' friction (friction overturning: kappa,
+// docs/theory/mechanisms.md §2) and the friction of the floors' seats, each
+// the case's document with the value changed.
+void add_friction(Builder& b) {
+  const FacadeAssessment& a = b.a;
+  if (a.kase.mechanism.type != "friction_overturning" || !a.kase.source.contains("mechanism")) return;
+  const nlohmann::json& mech = a.kase.source.at("mechanism");
+  const double kappa = mech.value("activation", 1.0);
+  for (double k1 : {0.5, 0.0}) {
+    if (k1 >= kappa) continue;
     CaseFile k;
-    auto edit = [&](nlohmann::json& d) {
-      d["dynamic"]["select"]["Mw"] = nlohmann::json::array({c.alternative_b, c.alternative});
-      d["dynamic"]["select"]["distance_km"] = nlohmann::json::array({c.alternative_c, c.alternative_d});
-    };
-    if (b.reparse(edit, k)) {
-      try {
-        FacadeOptions o;
-        o.histories = false;
-        o.review = false;
-        o.sensitivity = false;  // only the dynamic D/C of the alternative is read
-        const FacadeAssessment alt = assess_facade(k, o);
-        for (const MethodVerdict& x : alt.verdict.methods)
-          if (x.code == "NTC2018" && x.method == "dynamic") {
-            c.dc_alternative = x.max_dc;
-            c.outcome_alternative = x.outcome();
-          }
-        if (std::isnan(c.dc_alternative)) c.not_computed = "no_records";
-      } catch (const InputError&) {
-        c.not_computed = "no_records";
-      }
-    } else {
-      c.not_computed = "invalid";
-    }
-    out.push_back(c);
+    ModellingChoice c = b.base("friction_activation", "/mechanism/activation");
+    c.adopted = kappa;
+    c.alternative = k1;
+    if (b.reparse([&](nlohmann::json& d) { d["mechanism"]["activation"] = k1; }, k)) b.finish(c, run_kinematic_case(k, false));
+    else c.not_computed = "invalid";
+    b.out.push_back(c);
   }
-  return out;
+  double mu = 0.0;
+  if (mech.contains("floors") && mech.at("floors").is_array())
+    for (const auto& f : mech.at("floors")) mu = std::max(mu, f.value("friction", 0.0));
+  if (mu > 0.0) {
+    CaseFile k;
+    ModellingChoice c = b.base("seat_friction", "/mechanism/floors/*/friction");
+    c.adopted = mu;
+    c.alternative = 0.0;
+    auto edit = [](nlohmann::json& d) {
+      for (auto& f : d["mechanism"]["floors"])
+        if (f.is_object() && f.contains("friction")) f["friction"] = 0.0;
+    };
+    if (b.reparse(edit, k)) b.finish(c, run_kinematic_case(k, false));
+    else c.not_computed = "invalid";
+    b.out.push_back(c);
+  }
+}
+
+// The windows of the record selection (NTC 2018 §3.2.3.6): Mw and distance,
+// each widened (Mw by 0.5 each side, the largest distance doubled); the
+// whole dynamic analysis run again with the records it selects.
+void add_selection_window(Builder& b) {
+  const FacadeAssessment& a = b.a;
+  const RecordSelectionSpec& rs = *a.dynamic->selection;
+  const CatalogueFilters f = catalogue_filters(rs, to_string(a.kase.site->conditions.soil), rs.count);
+  ModellingChoice c = b.base("selection_window", "/dynamic/select/Mw, /dynamic/select/distance_km");
+  c.method = "dynamic";
+  for (const MethodVerdict& x : a.verdict.methods)
+    if (x.code == "NTC2018" && x.method == "dynamic") {
+      c.dc = x.max_dc;
+      c.outcome = x.outcome();
+    }
+  c.adopted_b = f.Mw_min, c.adopted = f.Mw_max, c.adopted_c = f.R_min_km, c.adopted_d = f.R_max_km;
+  c.alternative_b = std::max(2.0, f.Mw_min - 0.5), c.alternative = std::min(10.0, f.Mw_max + 0.5);
+  c.alternative_c = 0.0, c.alternative_d = std::min(1000.0, 2.0 * f.R_max_km);
+  CaseFile k;
+  auto edit = [&](nlohmann::json& d) {
+    d["dynamic"]["select"]["Mw"] = nlohmann::json::array({c.alternative_b, c.alternative});
+    d["dynamic"]["select"]["distance_km"] = nlohmann::json::array({c.alternative_c, c.alternative_d});
+  };
+  if (b.reparse(edit, k)) {
+    try {
+      FacadeOptions o;
+      o.histories = false;
+      o.review = false;
+      o.sensitivity = false;  // only the dynamic D/C of the alternative is read
+      o.kinematic = &a.kinematic;  // the edit is the dynamic block's alone: the same kinematic results
+      const FacadeAssessment alt = assess_facade(k, o);
+      for (const MethodVerdict& x : alt.verdict.methods)
+        if (x.code == "NTC2018" && x.method == "dynamic") {
+          c.dc_alternative = x.max_dc;
+          c.outcome_alternative = x.outcome();
+        }
+      if (std::isnan(c.dc_alternative)) c.not_computed = "no_records";
+    } catch (const InputError&) {
+      c.not_computed = "no_records";
+    }
+  } else {
+    c.not_computed = "invalid";
+  }
+  b.out.push_back(c);
+}
+
+}  // namespace
+
+std::vector<ModellingChoice> modelling_choices(const FacadeAssessment& a, bool records) {
+  const MethodVerdict* mp = a.verdict.conclusion();
+  if (!mp || mp->code != "NTC2018" || !a.kase.site) return {};
+  Builder b{a, *mp, {}};
+  add_sensitivity(b);
+  add_kinematic_model(b, method_candidate(a, *mp));
+  add_friction(b);
+  if (a.dynamic && a.dynamic_applies && a.dynamic->selection && (records || mp->method == "dynamic"))
+    add_selection_window(b);
+  return b.out;
 }
 
 }  // namespace assess

@@ -49,8 +49,10 @@ std::vector<SensitivityRow> adopted_sensitivity(const FacadeAssessment& a) {
     }
     return out;
   }
-  // The checks alone: their safety indices do not enter the D/C.
-  auto rerun = [&](const CaseFile& c) { return method_dc(run_kinematic_case(c, false), method); };
+  // The checks alone: their safety indices do not enter the D/C. Every
+  // reading varied leaves the chains as they are: the code quantities are
+  // re-derived on the assessment's marched paths (a damping only re-runs the checks).
+  auto rerun = [&](const CaseFile& c) { return method_dc(run_kinematic_case(c, false, &a.kinematic), method); };
   const double FC0 = a.kase.options.FC;
   std::vector<double> fcs{1.00, 1.20, 1.35};
   if (std::find(fcs.begin(), fcs.end(), FC0) == fcs.end()) fcs.push_back(FC0);

@@ -362,6 +362,66 @@ struct MemberEval {
   int cost = 0;                                // analyses run (not reused): kinematic 1, dynamic set 20
 };
 
+// The existing levels (by name) whose checks fail in E.T.levels, into
+// E.failing_existing; true when a level that is not existing fails.
+bool note_failing_levels(MemberEval& E) {
+  E.failing_existing.clear();
+  bool others = false;
+  for (const TieLevelResult& l : E.T.levels) {
+    if (l.satisfied) continue;
+    if (l.tie.existing) E.failing_existing.push_back(l.tie.name);
+    else others = true;
+  }
+  return others;
+}
+
+// The dynamic stage of a state whose kinematic and tie checks pass: the
+// dynamic analyses with the ties (cached by state), the levels checked
+// against their dynamic forces (the static demand when the tied dynamics do
+// not apply after all), the dynamic verdict. Sets E.stage 2 or 3 on a
+// failure; leaves it otherwise.
+void dynamic_stage(Member& m, Member::Cached& cache, bool dynamics_follow, MemberEval& E) {
+  TieInterventionResult& T = E.T;
+  if (!cache.dynamics) {
+    cache.dynamics = run_tie_dynamics(*m.a, T);
+    E.cost += 20;
+  }
+  T.dynamics = *cache.dynamics;
+  if (!T.dynamics.applies && dynamics_follow) {  // no tied dynamics after all: the static demand
+    T.levels = level_results(T.case_after, T.after, 0, T.case_after.ties.size(), nullptr, false);
+    const bool others = note_failing_levels(E);
+    if (others || !E.failing_existing.empty()) {
+      E.stage = 2;
+      E.only_existing = !others;
+      return;
+    }
+  }
+  if (!T.dynamics.applies) return;
+  const std::map<std::string, LevelDynamics> dyn = level_dynamics(T.dynamics.runs);
+  T.levels = level_results(T.case_after, T.after, 0, T.case_after.ties.size(), &dyn, false);
+  const bool others = note_failing_levels(E);
+  const DynamicVerdict v = dynamic_verdict(T.dynamics);
+  if (v.ok && !others && E.failing_existing.empty()) return;
+  E.stage = 3;
+  E.broke = v.broke;
+  E.component = v.component;
+  E.only_existing = !others && !E.failing_existing.empty();
+  // A broken new level or a failed dynamic check is not the existing ties' alone.
+  if (v.broke) {
+    bool new_broke = false;
+    for (const TieDynamicRun& r : T.dynamics.runs)
+      for (const TieLevelRun& l : r.levels)
+        for (const TieLevelResult& x : T.levels)
+          if (l.broken && x.tie.name == l.name && !x.tie.existing) new_broke = true;
+    if (new_broke) E.only_existing = false;
+  }
+  for (const TieDynamicSummary& sm : T.dynamics.summaries)
+    if (!sm.satisfied_after && E.failing_existing.empty()) E.only_existing = false;
+}
+
+// What proposal p gives on member m, stage by stage to the first that fails:
+// the mechanism's checks, its levels' checks, the dynamics (dynamic_stage).
+// The analyses of a state are cached by its restraints (Member::memo).
 MemberEval evaluate(Member& m, const Proposal& p) {
   MemberEval E;
   TieInterventionResult& T = E.T;
@@ -385,19 +445,9 @@ MemberEval evaluate(Member& m, const Proposal& p) {
     for (const CheckRow& row : cr.checks)
       if (counts(*m.c, row.code)) E.worst = std::max(E.worst, std::isfinite(row.dc) ? row.dc : 1e300);
   const bool kin_ok = every_kinematic_check_satisfied(T.after);
-  auto failing = [&](const std::vector<TieLevelResult>& lv) {
-    E.failing_existing.clear();
-    bool others = false;
-    for (const TieLevelResult& l : lv) {
-      if (l.satisfied) continue;
-      if (l.tie.existing) E.failing_existing.push_back(l.tie.name);
-      else others = true;
-    }
-    return others;
-  };
   const bool dynamics_follow = m.a && m.a->mechanism_dynamics && !m.a->runs.empty();
   T.levels = level_results(T.case_after, T.after, 0, T.case_after.ties.size(), nullptr, false, dynamics_follow);
-  const bool new_fail = failing(T.levels);
+  const bool new_fail = note_failing_levels(E);
   if (!kin_ok) {
     E.stage = 1;
     return E;
@@ -407,47 +457,8 @@ MemberEval evaluate(Member& m, const Proposal& p) {
     E.only_existing = !new_fail;
     return E;
   }
-  if (m.a) {
-    if (!cache->dynamics) {
-      cache->dynamics = run_tie_dynamics(*m.a, T);
-      E.cost += 20;
-    }
-    T.dynamics = *cache->dynamics;
-    if (!T.dynamics.applies && dynamics_follow) {  // no tied dynamics after all: the static demand
-      T.levels = level_results(T.case_after, T.after, 0, T.case_after.ties.size(), nullptr, false);
-      const bool others = failing(T.levels);
-      if (others || !E.failing_existing.empty()) {
-        E.stage = 2;
-        E.only_existing = !others;
-        return E;
-      }
-    }
-    if (T.dynamics.applies) {
-      const std::map<std::string, LevelDynamics> dyn = level_dynamics(T.dynamics.runs);
-      T.levels = level_results(T.case_after, T.after, 0, T.case_after.ties.size(), &dyn, false);
-      const bool others = failing(T.levels);
-      const DynamicVerdict v = dynamic_verdict(T.dynamics);
-      if (!v.ok || others || !E.failing_existing.empty()) {
-        E.stage = 3;
-        E.broke = v.broke;
-        E.component = v.component;
-        E.only_existing = !others && !E.failing_existing.empty();
-        // A broken new level or a failed dynamic check is not the existing ties' alone.
-        if (v.broke) {
-          bool new_broke = false;
-          for (const TieDynamicRun& r : T.dynamics.runs)
-            for (const TieLevelRun& l : r.levels)
-              for (const TieLevelResult& x : T.levels)
-                if (l.broken && x.tie.name == l.name && !x.tie.existing) new_broke = true;
-          if (new_broke) E.only_existing = false;
-        }
-        for (const TieDynamicSummary& sm : T.dynamics.summaries)
-          if (!sm.satisfied_after && E.failing_existing.empty()) E.only_existing = false;
-        return E;
-      }
-    }
-  }
   E.stage = 4;
+  if (m.a) dynamic_stage(m, *cache, dynamics_follow, E);
   return E;
 }
 
@@ -556,7 +567,7 @@ TieInterventionResult finish(Member& m, const Proposal& p, bool designed) {
   }
   // The state adopted, with its checks' safety indices (issue 41; a trial's
   // analysis leaves them out: they cost 0.3 ms a check and only ζE reads them).
-  if (R.intervention) R.after = run_kinematic_case(R.case_after);
+  if (R.intervention) R.after = run_kinematic_case(R.case_after, true, &R.after);  // the same analyses, checks again
   R.zetaE_before = zeta_E(R.before, m.c->method);
   const std::size_t n_existing = m.c->ties.size();
   auto dyn_of = [](const std::vector<TieDynamicRun>& runs, bool applies) {
@@ -586,48 +597,53 @@ TieInterventionResult finish(Member& m, const Proposal& p, bool designed) {
   return R;
 }
 
-// The search over the members together (docs/theory/ties.md §5).
-std::vector<TieInterventionResult> search(std::vector<Member>& members) {
-  // The design: the union of the members' design levels (by name) and their spec.
-  const TieDesignSpec* spec = nullptr;
-  TieDesignSpec wall;
+// The design of a wall: the union of its members' design levels (by name)
+// and the first member's spec; none when no member designs a level.
+std::optional<TieDesignSpec> wall_design(const std::vector<Member>& members) {
+  std::optional<TieDesignSpec> wall;
   for (const Member& m : members)
     if (m.c->tie_design) {
-      if (!spec) {
+      if (!wall) {
         wall = *m.c->tie_design;
-        wall.levels.clear();
-        wall.pretension_given.clear();
-        spec = &wall;
+        wall->levels.clear();
+        wall->pretension_given.clear();
       }
       const TieDesignSpec& d = *m.c->tie_design;
       for (std::size_t i = 0; i < d.levels.size(); ++i) {
         bool seen = false;
-        for (const Tie& t : wall.levels) seen = seen || t.name == d.levels[i].name;
+        for (const Tie& t : wall->levels) seen = seen || t.name == d.levels[i].name;
         if (seen) continue;
-        wall.levels.push_back(d.levels[i]);
-        wall.pretension_given.push_back(i < d.pretension_given.size() && d.pretension_given[i]);
+        wall->levels.push_back(d.levels[i]);
+        wall->pretension_given.push_back(i < d.pretension_given.size() && d.pretension_given[i]);
       }
     }
-  std::vector<TieInterventionResult> out;
-  if (!spec) {  // no design: each mechanism as it is given
-    for (Member& m : members) out.push_back(finish(m, Proposal{}, false));
-    return out;
+  return wall;
+}
+
+// The search over the members together (docs/theory/ties.md §5): the design's
+// rods and anchors in order, ductile ones first (two passes), each with the
+// least change to the existing levels that fail, to the first state that
+// every member passes and its final results confirm; within a budget of
+// analyses (max_cost). It keeps the log of the states tried and the closest.
+class WallSearch {
+ public:
+  WallSearch(std::vector<Member>& members, const TieDesignSpec& wall) : members_(members), wall_(wall) {
+    order_.resize(members.size());
+    for (std::size_t i = 0; i < order_.size(); ++i) order_[i] = i;
   }
-  int tried = 0, evaluations = 0, cost = 0;
-  std::vector<TieTrial> trials;
-  std::map<std::string, int> why;   // outcome -> count
-  std::map<std::string, int> broken_by;
-  std::optional<Proposal> accepted, closest;
-  std::pair<int, double> closest_score{-1, 0.0};
-  bool truncated = false;
-  // Every existing level of the wall, by name (its first member's).
-  auto existing_level = [&](const std::string& name) -> const Tie* {
-    for (const Member& m : members)
-      for (const Tie& t : m.c->ties)
-        if (t.name == name) return &t;
-    return nullptr;
-  };
-  // Evaluates a proposal on every member, in order, to the first that fails.
+
+  std::vector<TieInterventionResult> run() {
+    const std::vector<std::optional<Choice>> xs = design_choices();
+    for (int pass = 0; pass < 2 && !accepted_ && !truncated_; ++pass)
+      for (const std::optional<Choice>& x : xs) {
+        if (accepted_ || truncated_) break;
+        try_choice(x, pass);
+      }
+    return results();
+  }
+
+ private:
+  // What a proposal gives on the wall: the first member that fails, its stage.
   struct WallEval {
     int stage = 4;
     std::vector<std::string> failing_existing;
@@ -636,17 +652,46 @@ std::vector<TieInterventionResult> search(std::vector<Member>& members) {
     bool broke = false;
     double worst = 0.0;
   };
+
+  std::vector<Member>& members_;
+  const TieDesignSpec& wall_;
+  int tried_ = 0, evaluations_ = 0, cost_ = 0;
+  std::vector<TieTrial> trials_;
+  std::map<std::string, int> why_;  // outcome -> count
+  std::map<std::string, int> broken_by_;
+  std::optional<Proposal> accepted_, closest_;
+  std::pair<int, double> closest_score_{-1, 0.0};
+  bool truncated_ = false;
   // The members in the order they are evaluated: the one that failed last
   // first (the same results, sooner: a state fails at its first failing member).
-  std::vector<std::size_t> order(members.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  auto evaluate_all = [&](const Proposal& p) {
+  std::vector<std::size_t> order_;
+  std::vector<TieInterventionResult> confirmed_;  // the final results of the last state confirmed
+
+  // The designed levels' choices (one without a level to design).
+  std::vector<std::optional<Choice>> design_choices() const {
+    std::vector<std::optional<Choice>> xs;
+    if (wall_.levels.empty()) xs.push_back(std::nullopt);
+    else
+      for (const Choice& c : choices(wall_, wall_.min_rod_diameter)) xs.push_back(c);
+    return xs;
+  }
+
+  // Every existing level of the wall, by name (its first member's).
+  const Tie* existing_level(const std::string& name) const {
+    for (const Member& m : members_)
+      for (const Tie& t : m.c->ties)
+        if (t.name == name) return &t;
+    return nullptr;
+  }
+
+  // Evaluates a proposal on every member, in order, to the first that fails.
+  WallEval evaluate_all(const Proposal& p) {
     WallEval W;
-    ++evaluations;
-    for (std::size_t k = 0; k < order.size(); ++k) {
-      Member& m = members[order[k]];
+    ++evaluations_;
+    for (std::size_t k = 0; k < order_.size(); ++k) {
+      Member& m = members_[order_[k]];
       const MemberEval E = evaluate(m, p);
-      cost += E.cost;
+      cost_ += E.cost;
       W.worst = std::max(W.worst, E.worst);
       for (const std::string& n : E.failing_existing)
         if (std::find(W.failing_existing.begin(), W.failing_existing.end(), n) == W.failing_existing.end())
@@ -657,13 +702,15 @@ std::vector<TieInterventionResult> search(std::vector<Member>& members) {
         W.component = E.component;
         W.broke = E.broke;
         W.mechanism = m.name;
-        std::rotate(order.begin(), order.begin() + long(k), order.begin() + long(k) + 1);
+        std::rotate(order_.begin(), order_.begin() + long(k), order_.begin() + long(k) + 1);
         return W;
       }
     }
     return W;
-  };
-  auto log = [&](const Proposal& p, const WallEval& W) {
+  }
+
+  // The trial's line of the log: the rod and anchor, the changes, the outcome.
+  void log(const Proposal& p, const WallEval& W) {
     TieTrial t;
     if (p.choice) {
       const Choice& c = *p.choice;
@@ -683,127 +730,141 @@ std::vector<TieInterventionResult> search(std::vector<Member>& members) {
       }
     }
     t.changes = changes_text(p.changes);
-    t.mechanism = members.size() > 1 ? W.mechanism : "";
+    t.mechanism = members_.size() > 1 ? W.mechanism : "";
     t.component = W.component;
     t.outcome = W.stage == 4 ? "accepted"
                 : W.stage == 1 ? "mechanism"
                 : W.only_existing ? "existing"
                 : W.stage == 2 ? "tie"
                 : W.broke ? "broken" : "dynamic";
-    ++why[t.outcome];
-    if (t.outcome == "broken") ++broken_by[W.component];
-    trials.push_back(t);
-  };
-  auto consider = [&](const Proposal& p, const WallEval& W) {
+    ++why_[t.outcome];
+    if (t.outcome == "broken") ++broken_by_[W.component];
+    trials_.push_back(t);
+  }
+
+  // Evaluates a state, logs it and keeps it when it is the closest yet (the
+  // furthest stage, then the smallest D/C).
+  WallEval try_state(const Proposal& p) {
+    const WallEval W = evaluate_all(p);
+    log(p, W);
     const std::pair<int, double> score{W.stage, -W.worst};
-    if (score > closest_score) {
-      closest_score = score;
-      closest = p;
+    if (score > closest_score_) {
+      closest_score_ = score;
+      closest_ = p;
     }
-  };
+    return W;
+  }
+
   // A proposal passes when every member passes and the final results (with
   // the force each check needs) confirm it.
-  std::vector<TieInterventionResult> confirmed;
-  auto confirm = [&](const Proposal& p) {
-    confirmed.clear();
-    for (Member& m : members) {
-      confirmed.push_back(finish(m, p, true));
-      if (!confirmed.back().passes_after) return false;
+  bool confirm(const Proposal& p) {
+    confirmed_.clear();
+    for (Member& m : members_) {
+      confirmed_.push_back(finish(m, p, true));
+      if (!confirmed_.back().passes_after) return false;
     }
     return true;
-  };
-  // The designed levels' choices, ductile ones first (two passes over the order).
-  std::vector<std::optional<Choice>> xs;
-  if (wall.levels.empty()) xs.push_back(std::nullopt);
-  else
-    for (const Choice& c : choices(wall, wall.min_rod_diameter)) xs.push_back(c);
-  for (int pass = 0; pass < 2 && !accepted && !truncated; ++pass) {
-    for (const std::optional<Choice>& x : xs) {
-      if (accepted || truncated) break;
-      Proposal p;
-      p.choice = x;
-      if (x) {
-        const std::optional<std::vector<Tie>> lv = designed_levels(wall, *x);
-        if (!lv) continue;
-        p.design = *lv;
-        bool ductile = true;
-        for (const Tie& t : p.design) ductile = ductile && tie_resistance(t).ductile;
-        if ((pass == 0) != ductile) continue;
-      } else if (pass == 1) {
-        continue;
-      }
-      ++tried;
-      if (cost >= max_cost) {
-        truncated = true;
-        break;
-      }
-      const WallEval W = evaluate_all(p);
-      log(p, W);
-      consider(p, W);
-      if (W.stage == 4) {
-        if (confirm(p)) accepted = p;
-        continue;
-      }
-      // An existing level that fails: the least change that makes the state pass.
-      if (W.failing_existing.empty()) continue;
-      std::vector<const Tie*> failing;
-      for (const std::string& n : W.failing_existing)
-        if (const Tie* t = existing_level(n)) failing.push_back(t);
-      for (const std::vector<TieChange>& ch : change_options(wall, failing, x, 4096)) {
-        if (cost >= max_cost) {
-          truncated = true;
-          break;
-        }
-        Proposal q = p;
-        q.changes = ch;
-        const WallEval V = evaluate_all(q);
-        log(q, V);
-        consider(q, V);
-        if (V.stage == 4 && confirm(q)) {
-          accepted = q;
-          break;
-        }
+  }
+
+  // The budget of analyses: once spent, the search stops.
+  bool out_of_budget() {
+    if (cost_ >= max_cost) truncated_ = true;
+    return truncated_;
+  }
+
+  // The rod and anchor x (its pass: ductile levels in the first), then, when
+  // existing levels fail with it, the changes to them in the order of the
+  // least change.
+  void try_choice(const std::optional<Choice>& x, int pass) {
+    Proposal p;
+    p.choice = x;
+    if (x) {
+      const std::optional<std::vector<Tie>> lv = designed_levels(wall_, *x);
+      if (!lv) return;
+      p.design = *lv;
+      bool ductile = true;
+      for (const Tie& t : p.design) ductile = ductile && tie_resistance(t).ductile;
+      if ((pass == 0) != ductile) return;
+    } else if (pass == 1) {
+      return;
+    }
+    ++tried_;
+    if (out_of_budget()) return;
+    const WallEval W = try_state(p);
+    if (W.stage == 4) {
+      if (confirm(p)) accepted_ = p;
+      return;
+    }
+    if (W.failing_existing.empty()) return;
+    std::vector<const Tie*> failing;
+    for (const std::string& n : W.failing_existing)
+      if (const Tie* t = existing_level(n)) failing.push_back(t);
+    for (const std::vector<TieChange>& ch : change_options(wall_, failing, x, 4096)) {
+      if (out_of_budget()) return;
+      Proposal q = p;
+      q.changes = ch;
+      if (try_state(q).stage == 4 && confirm(q)) {
+        accepted_ = q;
+        return;
       }
     }
   }
-  const Proposal& final_p = accepted ? *accepted : closest ? *closest : Proposal{};
-  std::string message;
-  if (!accepted) {
+
+  // Why no state passed: the count of the states by their first failure.
+  std::string failure_message() const {
     std::string reasons;
     auto add = [&](const char* key, const std::string& what) {
-      const auto it = why.find(key);
-      if (it != why.end() && it->second > 0)
+      const auto it = why_.find(key);
+      if (it != why_.end() && it->second > 0)
         reasons += (reasons.empty() ? "" : "; ") + std::to_string(it->second) + " " + what;
     };
     add("mechanism", "with a check of a mechanism not satisfied");
     add("tie", "with a check of a new tie not satisfied");
     add("existing", "with a check of an existing tie not satisfied");
     std::string comps;
-    for (const auto& [k, n] : broken_by) comps += (comps.empty() ? "" : ", ") + k + " " + std::to_string(n);
+    for (const auto& [k, n] : broken_by_) comps += (comps.empty() ? "" : ", ") + k + " " + std::to_string(n);
     add("broken", "with a tie broken in a dynamic analysis (" + comps + ")");
     add("dynamic", "with the dynamic check not satisfied");
-    message = "no rod and anchor of the lists" +
-              std::string(wall.levels.empty() ? "" : " (rods from " +
-                                                        std::to_string(static_cast<int>(std::lround(wall.min_rod_diameter * 1e3))) +
-                                                        " mm)") +
-              ", with the least change to the existing ties that fail, makes every check pass (" +
-              std::to_string(evaluations) + " states analysed: " + (reasons.empty() ? "none buildable" : reasons) + ")" +
-              (truncated ? "; the search stopped at its budget of analyses (" + std::to_string(max_cost) +
-                               " units: a kinematic analysis 1, a state's dynamic analyses 20; docs/theory/ties.md "
-                               "§5): the later combinations were not tried"
-                         : "") +
-              "; add ties along the wall or tie levels, use upset ends or bar anchors, or consider another intervention";
+    return "no rod and anchor of the lists" +
+           std::string(wall_.levels.empty() ? "" : " (rods from " +
+                                                      std::to_string(static_cast<int>(std::lround(wall_.min_rod_diameter * 1e3))) +
+                                                      " mm)") +
+           ", with the least change to the existing ties that fail, makes every check pass (" +
+           std::to_string(evaluations_) + " states analysed: " + (reasons.empty() ? "none buildable" : reasons) + ")" +
+           (truncated_ ? "; the search stopped at its budget of analyses (" + std::to_string(max_cost) +
+                             " units: a kinematic analysis 1, a state's dynamic analyses 20; docs/theory/ties.md "
+                             "§5): the later combinations were not tried"
+                       : "") +
+           "; add ties along the wall or tie levels, use upset ends or bar anchors, or consider another intervention";
   }
-  for (std::size_t i = 0; i < members.size(); ++i) {
-    TieInterventionResult R = accepted && i < confirmed.size() ? std::move(confirmed[i]) : finish(members[i], final_p, true);
-    R.found = accepted.has_value();
-    R.message = message;
-    R.tried = tried;
-    R.trials = trials;
-    if (members.size() > 1)
-      for (const Member& m : members) R.wall_members.push_back(m.name);
-    out.push_back(std::move(R));
+
+  // Each member's results in the state accepted, else the closest (else none).
+  std::vector<TieInterventionResult> results() {
+    const Proposal final_p = accepted_ ? *accepted_ : closest_ ? *closest_ : Proposal{};
+    const std::string message = accepted_ ? "" : failure_message();
+    std::vector<TieInterventionResult> out;
+    for (std::size_t i = 0; i < members_.size(); ++i) {
+      TieInterventionResult R =
+          accepted_ && i < confirmed_.size() ? std::move(confirmed_[i]) : finish(members_[i], final_p, true);
+      R.found = accepted_.has_value();
+      R.message = message;
+      R.tried = tried_;
+      R.trials = trials_;
+      if (members_.size() > 1)
+        for (const Member& m : members_) R.wall_members.push_back(m.name);
+      out.push_back(std::move(R));
+    }
+    return out;
   }
+};
+
+// The search over the members together (docs/theory/ties.md §5); without a
+// design, each mechanism as it is given.
+std::vector<TieInterventionResult> search(std::vector<Member>& members) {
+  const std::optional<TieDesignSpec> wall = wall_design(members);
+  if (wall) return WallSearch(members, *wall).run();
+  std::vector<TieInterventionResult> out;
+  for (Member& m : members) out.push_back(finish(m, Proposal{}, false));
   return out;
 }
 

@@ -13,6 +13,7 @@
 
 #include "assess/kinematic/code_checks.hpp"
 #include "assess/support/error.hpp"
+#include "kinematic/checks_of_limit_state.hpp"
 #include "support/root_find.hpp"
 
 #include <algorithm>
@@ -50,7 +51,7 @@ struct DcAlongAxis {
   }
   double operator()(double x) {
     one.hazard[ls] = hazard(x);
-    for (const CheckRow& c : run_code_checks(r, one))
+    for (const CheckRow& c : detail::code_checks_of_limit_state(r, one, ls))
       if (same_check(c, row)) return c.dc;
     return nan;
   }

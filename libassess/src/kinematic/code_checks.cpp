@@ -11,6 +11,7 @@
 
 #include "assess/kinematic/code_rules.hpp"
 #include "assess/support/error.hpp"
+#include "kinematic/checks_of_limit_state.hpp"
 #include "assess/support/units.hpp"
 
 #include <algorithm>
@@ -115,19 +116,27 @@ double displacement_demand(const CheckInput& in, CodeEdition code, LimitState ls
 }
 
 namespace {
-std::vector<CheckRow> checks_of(const KinematicResult& r, const CheckInput& in);
+// `only`: the rows of that limit state alone (null: every row).
+std::vector<CheckRow> checks_of(const KinematicResult& r, const CheckInput& in, const LimitState* only);
 }  // namespace
 
 // Issue 37: a mechanism held by tie levels is checked as it is: its capacity
 // curve has each level breaking where it fails (kinematic_analysis.hpp), and
 // no check takes the wall without them instead (docs/theory/ties.md §2).
-std::vector<CheckRow> run_code_checks(const KinematicResult& r, const CheckInput& in) { return checks_of(r, in); }
+std::vector<CheckRow> run_code_checks(const KinematicResult& r, const CheckInput& in) {
+  return checks_of(r, in, nullptr);
+}
+
+std::vector<CheckRow> detail::code_checks_of_limit_state(const KinematicResult& r, const CheckInput& in, LimitState ls) {
+  return checks_of(r, in, &ls);
+}
 
 namespace {
-std::vector<CheckRow> checks_of(const KinematicResult& r, const CheckInput& in) {
+std::vector<CheckRow> checks_of(const KinematicResult& r, const CheckInput& in, const LimitState* only) {
   in.validate();
   std::vector<CheckRow> rows;
   if (!r.activates) return rows;
+  auto wants = [&](LimitState ls) { return !only || *only == ls; };
   const bool at_height = in.Z > 0.0;
   const bool nonlinear = r.curve_complete();
 
@@ -136,17 +145,18 @@ std::vector<CheckRow> checks_of(const KinematicResult& r, const CheckInput& in) 
     const HazardParams& hSLV = in.hazard.at(LimitState::SLV);
     if (code == CodeEdition::NTC2008) {
       const ElasticSpectrum sSLD(hSLD, in.site), sSLV(hSLV, in.site);
-      if (!at_height) {
+      if (wants(LimitState::SLD) && !at_height) {
         rows.push_back(row(code, LimitState::SLD, "strength", "ground", "C8A.4 SLD [R]", "ag S",
                            sSLD.PGA(), r.a0_star, "m/s2"));
         rows.back().inputs = {{"ag (g)", hSLD.ag_g}, {"S (-)", sSLD.S()}};
-      } else {
+      } else if (wants(LimitState::SLD)) {
         const BuildingModel& b = *in.building;
         const double psi = code_rules::psi_first_mode(in.Z, b.H), gam = code_rules::gamma_first_mode(b.storeys);
         rows.push_back(row(code, LimitState::SLD, "strength", "height", "C8A.4 SLD at height [R]",
                            "Se(T1) psi gamma", sSLD.Se(b.T1) * psi * gam, r.a0_star, "m/s2"));
         rows.back().inputs = height_inputs(b, in.Z, psi, gam, sSLD.Se(b.T1));
       }
+      if (!wants(LimitState::SLV)) continue;
       if (!at_height || code_rules::height_also_checks_ground_2008)
       {
         rows.push_back(row(code, LimitState::SLV, "strength", "ground", "C8A.4.9 [V-S]", "ag S / q",
@@ -212,22 +222,27 @@ std::vector<CheckRow> checks_of(const KinematicResult& r, const CheckInput& in) 
       return v;
     };
 
-    CheckRow sld = row(code, LimitState::SLD, "strength", loc, "C8.7.1.2.1.5 [C8.7.1.8] [V-T]", peak_name,
-                       peak(hSLD), r.a0_star, "m/s2");
-    sld.inputs = peak_inputs(hSLD);
-    rows.push_back(sld);
+    if (wants(LimitState::SLD)) {
+      CheckRow sld = row(code, LimitState::SLD, "strength", loc, "C8.7.1.2.1.5 [C8.7.1.8] [V-T]", peak_name,
+                         peak(hSLD), r.a0_star, "m/s2");
+      sld.inputs = peak_inputs(hSLD);
+      rows.push_back(sld);
+    }
 
-    CheckRow slv = row(code, LimitState::SLV, "strength", loc, "C8.7.1.2.1.7 [V-T]", peak_name + " / q",
-                       peak(hSLV) / in.q, r.a0_star, "m/s2");
-    slv.inputs = peak_inputs(hSLV);
-    slv.inputs.push_back({"q (-)", in.q});
-    rows.push_back(slv);
+    if (wants(LimitState::SLV)) {
+      CheckRow slv = row(code, LimitState::SLV, "strength", loc, "C8.7.1.2.1.7 [V-T]", peak_name + " / q",
+                         peak(hSLV) / in.q, r.a0_star, "m/s2");
+      slv.inputs = peak_inputs(hSLV);
+      slv.inputs.push_back({"q (-)", in.q});
+      rows.push_back(slv);
+    }
 
     if (nonlinear) {
       const std::string dname = at_height ? "S_eZ(T) T^2/4pi^2 [C8.7.1.12]" : "SDe(T) [3.2.10]";
       struct Ls { LimitState ls; const HazardParams* h; double d, T, xi; const char* clause; };
       for (const Ls& x : {Ls{LimitState::SLV, &hSLV, r.d_SLV, r.T_SLV, in.damping_SLV_pct, "C8.7.1.2.1.8 [C8.7.1.10] [V-T]"},
                           Ls{LimitState::SLC, &hSLC, r.d_SLC, r.T_SLC, in.damping_SLC_pct, "C8.7.1.2.1.8 [C8.7.1.11] [V-T]"}}) {
+        if (!wants(x.ls)) continue;
         CheckRow c = row(code, x.ls, "displacement", loc, x.clause, dname + ", xi " + std::to_string(int(x.xi)) + " %",
                          disp(*x.h, x.T, x.xi), x.d, "m");
         set_secant(c, x.T, x.d, x.ls == LimitState::SLV ? r.a_SLV : r.a_SLC, x.xi);

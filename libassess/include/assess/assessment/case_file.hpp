@@ -151,5 +151,12 @@ std::vector<TieRestraint> case_tie_restraints(const CaseFile& c, const Chain& ch
 /// `indices` false leaves the checks' safety indices undefined (a
 /// recomputation that only needs their D/C: sensitivity.hpp).
 KinematicCaseResult run_kinematic_case(const CaseFile& c, bool indices = true);
+/// The same case with other readings that leave every candidate's chain and
+/// tie levels as they are (FC, d_SLV/d0*, d_SLC/d0*, the damping, Z, the
+/// rotation bounds): each candidate's analysis re-derived on the marched path
+/// of `marched` (rederive_kinematic), bit for bit the result of
+/// run_kinematic_case(c, indices) without marching again. `marched` must be a
+/// result of this case's chains and levels; null: run_kinematic_case(c, indices).
+KinematicCaseResult run_kinematic_case(const CaseFile& c, bool indices, const KinematicCaseResult* marched);
 
 }  // namespace assess

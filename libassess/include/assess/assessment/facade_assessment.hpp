@@ -43,6 +43,11 @@ struct FacadeOptions {
   /// Compute the sensitivity of the adopted verdict (sensitivity.hpp); the
   /// other candidates' dynamic assessments do without.
   bool sensitivity = true;
+  /// The kinematic results of a case whose kinematic inputs (mechanism, ties,
+  /// readings, site, building) are this case's, already computed by
+  /// run_kinematic_case: reused as they are (the modelling choices'
+  /// alternative of the record selection, which changes /dynamic alone).
+  const KinematicCaseResult* kinematic = nullptr;
 };
 
 /// A record used by the dynamic analysis.

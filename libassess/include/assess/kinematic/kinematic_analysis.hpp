@@ -114,7 +114,19 @@ enum class CurveTermination {
 };
 std::string to_string(CurveTermination t);
 
-/// Every intermediate quantity of the analysis.
+/// The equilibrium path marched by finite displacements (its samples and the
+/// tie levels' breaks) and the options a result's code quantities were
+/// derived with: private to kinematic_analysis.cpp, kept by each result so
+/// that rederive_kinematic derives the code quantities for other options
+/// without marching again.
+struct MarchedPath;
+
+/// Every intermediate quantity of the analysis. Two stages (issue 41, speed):
+/// the marched path (the linear analysis, the control point, the curve's zero
+/// d_k0 and d0*, the tie levels' breaks), which depends only on the chain,
+/// its tie levels, the control point and the lumping of the masses; and the
+/// code quantities derived from it for the options (a0* with FC, the reported
+/// curve, du*, Ts, d_SLV, T_SLV, d_SLC, T_SLC with their caps and fractions of d0*).
 struct KinematicResult {
   // Linear kinematic analysis.
   std::vector<LoadWork> loads;
@@ -181,6 +193,8 @@ struct KinematicResult {
   /// The same chain without its tie levels (the wall once every level broke):
   /// its d0 bounds a dynamic analysis in which a level broke. Null without ties.
   std::shared_ptr<const KinematicResult> without_ties;
+  /// The marched path and the options derived with (rederive_kinematic).
+  std::shared_ptr<const MarchedPath> marched;
 
   bool curve_complete() const { return termination == CurveTermination::Complete; }
 };
@@ -214,5 +228,16 @@ KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& op
 KinematicResult analyse_kinematic(const Chain& chain, const KinematicOptions& options,
                                   const std::vector<TieRestraint>& ties,
                                   std::shared_ptr<const KinematicResult> without_ties = nullptr);
+
+/// The analysis of the same chain and tie levels as `marched` (an
+/// analyse_kinematic or rederive_kinematic result: the caller guarantees the
+/// chain and levels are those) with other options: the code quantities derived
+/// again on its marched path, bit for bit what analyse_kinematic(chain,
+/// options, ties) gives, without marching again (the sensitivity to FC and
+/// d_SLV/d0*, the modelling choices, the safety indices of a trial's state).
+/// lumped_masses redoes the linear analysis alone; another control point or
+/// a result without its path falls back to analyse_kinematic.
+KinematicResult rederive_kinematic(const Chain& chain, const KinematicOptions& options,
+                                   const std::vector<TieRestraint>& ties, const KinematicResult& marched);
 
 }  // namespace assess
