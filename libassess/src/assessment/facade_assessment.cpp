@@ -177,7 +177,7 @@ void load_records(FacadeAssessment& a, const DynamicSpec& d, const FacadeOptions
           for (const CatalogueEntry& e : lib->catalogue().entries)
             if (!ec && p == lib_dir + "/" + e.file) describe_from_catalogue(u, e, near_fault_distance_km);
         }
-        a.records.push_back(u);
+        a.dynamics.records.push_back(u);
         recs.push_back(std::move(r));
         entries.emplace_back();
       } catch (const InputError& e) {
@@ -186,7 +186,7 @@ void load_records(FacadeAssessment& a, const DynamicSpec& d, const FacadeOptions
           msg += " (in a case file: {\"file\": ..., \"dt\": s, \"unit\": \"g\" | \"m/s^2\" | \"cm/s^2\"} for one "
                  "column; \"unit\" alone for two columns, time and acceleration)";
         if (!opt.keep_going) throw InputError(a.kase.file + ": " + lr.json_path + "/file: " + msg);
-        a.record_failures.push_back(lr.json_path + "/file: " + msg);
+        a.selection.record_failures.push_back(lr.json_path + "/file: " + msg);
       }
     }
     if (recs.empty()) throw InputError(a.kase.file + ": /dynamic/records: no record could be read");
@@ -198,30 +198,30 @@ void load_records(FacadeAssessment& a, const DynamicSpec& d, const FacadeOptions
   // (docs/theory/record-selection.md §2.3); or the range shared by the
   // candidates of the mechanism (record-selection.md §2.7).
   const double T1 = std::min(kin.Ts, kin.T_SLV), T2 = std::max(kin.Ts, kin.T_SLV);
-  a.selection_T_first = T1;
-  a.selection_T_last = T2;
+  a.selection.T_first = T1;
+  a.selection.T_last = T2;
   const PeriodRange range = shared ? *shared
                             : (rs.T_min && rs.T_max) ? PeriodRange{*rs.T_min, *rs.T_max}
                                                      : rocking_period_range(T1, T2);
-  a.selection_range = range;
-  a.selection_range_note = range_note(rs, kin, range, T1, T2, shared.has_value());
+  a.selection.range = range;
+  a.selection.range_note = range_note(rs, kin, range, T1, T2, shared.has_value());
   const SelectionRequest req = selection_request(a.kase, rs, range);
   const std::shared_ptr<const RecordLibrary>& lib = req.lib;
-  a.selection_max_pga_ratio = rs.max_pga_ratio;
-  a.selection_max_scale = rs.max_scale;
-  a.selection_max_mean_scale = rs.max_mean_scale;
-  a.selection_max_misfit = rs.max_misfit;
-  a.selection_include_near_fault = rs.include_near_fault;
-  a.selection_near_fault_km = rs.near_fault_km;
+  a.selection.max_pga_ratio = rs.max_pga_ratio;
+  a.selection.max_scale = rs.max_scale;
+  a.selection.max_mean_scale = rs.max_mean_scale;
+  a.selection.max_misfit = rs.max_misfit;
+  a.selection.include_near_fault = rs.include_near_fault;
+  a.selection.near_fault_km = rs.near_fault_km;
   const std::shared_ptr<const LibrarySelection> ls =
       select_from_library(*lib, req.rules, [&target](double T) { return target.Se(T); }, req.so);
-  a.selection_warnings = ls->warnings;
-  a.selection_site_classes = ls->site_classes;
-  a.selection_candidates = ls->candidates.size();
-  a.selection_near_fault_excluded = ls->near_fault_excluded;
-  a.selection_spectra = ls->spectra_source;
+  a.selection.warnings = ls->warnings;
+  a.selection.site_classes = ls->site_classes;
+  a.selection.candidates = ls->candidates.size();
+  a.selection.near_fault_excluded = ls->near_fault_excluded;
+  a.selection.spectra = ls->spectra_source;
   for (const SelectionStep& st : ls->steps)
-    a.selection_steps.push_back(classes_text(st.site_classes) + ": " + std::to_string(st.candidates) + " candidates, " +
+    a.selection.steps.push_back(classes_text(st.site_classes) + ": " + std::to_string(st.candidates) + " candidates, " +
                                 (st.message.empty() ? std::string("no selection") : st.message));
   for (const SelectedRecord& s : ls->result.records) {
     const CatalogueEntry& e = ls->candidates[s.index];
@@ -230,7 +230,7 @@ void load_records(FacadeAssessment& a, const DynamicSpec& d, const FacadeOptions
       r = *lib->record(e);
     } catch (const InputError& err) {
       if (!opt.keep_going) throw InputError(a.kase.file + ": /dynamic/select: catalogue record " + e.file + ": " + err.what());
-      a.record_failures.push_back(e.file + ": " + err.what());
+      a.selection.record_failures.push_back(e.file + ": " + err.what());
       continue;
     }
     RecordUsed u = record_used(r, lib->catalogue().directory + "/" + e.file, s.scale);
@@ -238,14 +238,14 @@ void load_records(FacadeAssessment& a, const DynamicSpec& d, const FacadeOptions
     u.deviation = s.deviation;
     u.rank = s.rank;
     u.misfit_flag = s.misfit_flag;
-    a.records.push_back(u);
+    a.dynamics.records.push_back(u);
     recs.push_back(std::move(r));
     entries.push_back(e);
   }
   lib_used = lib;
-  a.selection = ls->result;
+  a.selection.result = ls->result;
   if (recs.empty())
-    throw InputError(a.kase.file + ": /dynamic/select: no compatible set in the catalogue: " + a.selection->message);
+    throw InputError(a.kase.file + ": /dynamic/select: no compatible set in the catalogue: " + a.selection.result->message);
 }
 
 // The caveats of each record used (record-selection.md §2.8), computed from
@@ -254,18 +254,18 @@ void flag_records(FacadeAssessment& a) {
   const std::string soil = a.kase.site ? to_string(a.kase.site->conditions.soil) : "";
   // The classes the selection was asked for: the case's, else the site's soil.
   std::vector<std::string> asked{soil};
-  if (a.dynamic && a.dynamic->selection && !a.dynamic->selection->site_classes.empty())
-    asked = a.dynamic->selection->site_classes;
+  if (a.dynamics.spec && a.dynamics.spec->selection && !a.dynamics.spec->selection->site_classes.empty())
+    asked = a.dynamics.spec->selection->site_classes;
   std::string asked_text;
   for (const std::string& c : asked) asked_text += (asked_text.empty() ? "" : ", ") + c;
   const double default_cap = SelectionOptions{}.max_scale;
-  for (RecordUsed& r : a.records) {
+  for (RecordUsed& r : a.dynamics.records) {
     r.flags.clear();
     if (!r.in_catalogue) {
       r.flags.push_back("not in the record library: Mw, distance, site class and near-fault status unknown");
     } else {
       if (!r.near_fault.empty()) r.flags.push_back(r.near_fault);
-      if (a.selection && !soil.empty() && !r.site_class.empty() &&
+      if (a.selection.result && !soil.empty() && !r.site_class.empty() &&
           std::find(asked.begin(), asked.end(), r.site_class) == asked.end())
         r.flags.push_back("site class " + r.site_class + ", not the " +
                           (asked.size() == 1 && asked[0] == soil ? "site's " + soil : "classes asked, " + asked_text) +
@@ -275,11 +275,11 @@ void flag_records(FacadeAssessment& a) {
                           " m/s would give " + r.vs30_class);
     }
     if (r.misfit_flag)
-      r.flags.push_back("misfit " + fixed3(r.deviation) + " > " + fixed3(a.selection_max_misfit) + " (rank " +
+      r.flags.push_back("misfit " + fixed3(r.deviation) + " > " + fixed3(a.selection.max_misfit) + " (rank " +
                         std::to_string(r.rank) + ")");
     if (r.scale > default_cap * (1.0 + 1e-12))
       r.flags.push_back("scale " + fixed3(r.scale) + " above " + fixed3(default_cap) + ", the default cap" +
-                        (a.selection ? " (raised in the case: max_scale " + fixed3(a.selection_max_scale) + ")"
+                        (a.selection.result ? " (raised in the case: max_scale " + fixed3(a.selection.max_scale) + ")"
                                      : std::string(" (a listed scale)")));
   }
 }
@@ -290,25 +290,25 @@ void flag_records(FacadeAssessment& a) {
 // the same default range as a selection.
 void compatibility(FacadeAssessment& a, const std::vector<Record>& recs, const ElasticSpectrum& target,
                    const KinematicResult& kin) {
-  SpectrumCompatibility& c = a.compatibility;
+  SpectrumCompatibility& c = a.dynamics.compatibility;
   const double lo = 1.0 - code_rules::compatibility_lower_tol, hi = 1.0 + code_rules::compatibility_upper_tol;
-  if (a.selection) {
+  if (a.selection.result) {
     c.computed = true;
-    c.range = a.selection_range;
-    c.min_ratio = a.selection->min_ratio;
-    c.max_ratio = a.selection->max_ratio;
-    c.band_satisfied = a.selection->band_satisfied;
+    c.range = a.selection.range;
+    c.min_ratio = a.selection.result->min_ratio;
+    c.max_ratio = a.selection.result->max_ratio;
+    c.band_satisfied = a.selection.result->band_satisfied;
   } else {
     c.computed = true;
     const double T1 = std::min(kin.Ts, kin.T_SLV), T2 = std::max(kin.Ts, kin.T_SLV);
     c.range = rocking_period_range(T1, T2);
-    a.selection_range = c.range;
+    a.selection.range = c.range;
     const std::vector<double> T = log_spaced_periods(c.range.T_min, c.range.T_max, 40);
     std::vector<double> mean(T.size(), 0.0);
     std::vector<std::vector<double>> psa(recs.size());
     detail::parallel_for(recs.size(), [&](std::size_t i) { psa[i] = response_spectrum(recs[i], T).psa(); });
     for (std::size_t i = 0; i < recs.size(); ++i)
-      for (std::size_t j = 0; j < T.size(); ++j) mean[j] += psa[i][j] * a.records[i].scale / double(recs.size());
+      for (std::size_t j = 0; j < T.size(); ++j) mean[j] += psa[i][j] * a.dynamics.records[i].scale / double(recs.size());
     c.min_ratio = 1e300;
     c.max_ratio = 0.0;
     for (std::size_t j = 0; j < T.size(); ++j) {
@@ -326,7 +326,7 @@ void compatibility(FacadeAssessment& a, const std::vector<Record>& recs, const E
                 c.band_satisfied ? "within" : "OUTSIDE", lo, hi);
   c.message = buf;
   if (!c.band_satisfied)
-    a.warnings.push_back(a.kase.file + ": " + (a.selection ? "/dynamic/select" : "/dynamic/records") + ": the " +
+    a.warnings.push_back(a.kase.file + ": " + (a.selection.result ? "/dynamic/select" : "/dynamic/records") + ": the " +
                          c.message + ": the records are not compatible with the site's SLV action and the dynamic "
                          "verdict rests on them");
 }
@@ -337,7 +337,7 @@ void finish(FacadeAssessment& a) {
   for (const CandidateResult& cr : a.kinematic.candidates) all.insert(all.end(), cr.checks.begin(), cr.checks.end());
   for (const CheckRow& r : a.checks)
     if (r.kind == "dynamic") all.push_back(r);
-  all.insert(all.end(), a.energy_rows.begin(), a.energy_rows.end());
+  all.insert(all.end(), a.dynamics.energy_rows.begin(), a.dynamics.energy_rows.end());
   a.verdict = build_verdict(all, a.kase.method);
   a.indices = safety_indices(a.kinematic, a.verdict);
 }
@@ -359,14 +359,14 @@ std::vector<std::size_t> dynamic_candidates(const KinematicCaseResult& k) {
 
 std::vector<DynamicRun> dynamic_runs(const FacadeAssessment& a, const MechanismDynamics& md, const KinematicResult& kin,
                                      bool histories) {
-  const DynamicSpec& d = *a.dynamic;
+  const DynamicSpec& d = *a.dynamics.spec;
   std::vector<bool> polarities;
   if (d.polarity != Polarity::reversed) polarities.push_back(false);
   if (d.polarity != Polarity::normal) polarities.push_back(true);
   // Every (restitution, record, polarity) analysis, in this order, on all cores.
   std::vector<DynamicRun> runs;
   for (std::size_t ie = 0; ie < md.e.size(); ++ie)
-    for (std::size_t ir = 0; ir < a.base_motions.size(); ++ir)
+    for (std::size_t ir = 0; ir < a.dynamics.base_motions.size(); ++ir)
       for (bool rev : polarities) {
         DynamicRun run;
         run.record = ir;
@@ -379,9 +379,9 @@ std::vector<DynamicRun> dynamic_runs(const FacadeAssessment& a, const MechanismD
     DynamicRun& run = runs[i];
     RockingOptions ro = d.options;
     ro.record_history = histories;
-    ro.scale = a.records[run.record].scale;
+    ro.scale = a.dynamics.records[run.record].scale;
     ro.reverse = run.reversed;
-    run.result = md.analyse(run.restitution, a.base_motions[run.record], ro);
+    run.result = md.analyse(run.restitution, a.dynamics.base_motions[run.record], ro);
     run.theta_ratio = run.result.theta_u > 0 ? run.result.theta_max / run.result.theta_u : 0.0;
     // Peak outward rotation moves the control point outward (one-sided:
     // theta >= 0); for two-sided, |theta| on either side (symmetric body).
@@ -495,7 +495,7 @@ void add_dynamic_analysis(FacadeAssessment& a, const FacadeOptions& opt);
 
 std::vector<CaseDefault> assessment_defaults(const FacadeAssessment& a) {
   std::vector<CaseDefault> out = a.kase.defaults;
-  if (a.dynamic) out.insert(out.end(), a.dynamic->defaults.begin(), a.dynamic->defaults.end());
+  if (a.dynamics.spec) out.insert(out.end(), a.dynamics.spec->defaults.begin(), a.dynamics.spec->defaults.end());
   return out;
 }
 
@@ -524,23 +524,23 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
   a.checks = a.kinematic.checks;
   a.warnings = a.kinematic.warnings;
   const Site site(*kase.site);
-  a.site_description = site.describe();
-  a.VR = site.VR();
+  a.site.description = site.describe();
+  a.site.VR = site.VR();
   for (LimitState ls : all_limit_states) {
     if (!kase.site->given.empty() && !kase.site->given.count(ls)) continue;
-    a.actions[ls] = site.action(ls);
-    a.spectra.emplace(ls, ElasticSpectrum(a.actions[ls].hazard, kase.site->conditions, 5.0));
+    a.site.actions[ls] = site.action(ls);
+    a.site.spectra.emplace(ls, ElasticSpectrum(a.site.actions[ls].hazard, kase.site->conditions, 5.0));
   }
-  a.periods = log_spaced_periods(0.02, 4.0, 48);
-  a.periods.insert(a.periods.begin(), 0.0);
-  for (const auto& [ls, s] : a.spectra)
-    for (double T : a.periods) a.site_Se[ls].push_back(s.Se(T));
+  a.curves.periods = log_spaced_periods(0.02, 4.0, 48);
+  a.curves.periods.insert(a.curves.periods.begin(), 0.0);
+  for (const auto& [ls, s] : a.site.spectra)
+    for (double T : a.curves.periods) a.curves.site_Se[ls].push_back(s.Se(T));
   // ADRS demand curves of every candidate's displacement checks, each at its
   // damping and location (the functions its checks use): the relazione
   // develops each candidate that governs a method (issue 28).
   if (a.kinematic.check_input) {
     CheckInput in = *a.kinematic.check_input;
-    a.adrs_periods = log_spaced_periods(0.02, 6.0, 120);
+    a.curves.adrs_periods = log_spaced_periods(0.02, 6.0, 120);
     for (const CandidateResult& cr : a.kinematic.candidates) {
       std::vector<AdrsDemand> curves;
       for (const CheckRow& r : cr.checks) {
@@ -548,16 +548,16 @@ FacadeAssessment assess_facade(const CaseFile& kase, const FacadeOptions& opt) {
         in.Z = r.location == "height" ? cr.Z : 0.0;
         AdrsDemand d{r.code, r.limit_state, r.location, r.xi_pct, {}, {}};
         const double w = 2.0 * units::pi;
-        for (double T : a.adrs_periods) {
+        for (double T : a.curves.adrs_periods) {
           const double sd = displacement_demand(in, parse_code_edition(r.code), parse_limit_state(r.limit_state), T);
           d.Sd.push_back(sd);
           d.Sa.push_back(sd * (w / T) * (w / T));
         }
         curves.push_back(std::move(d));
       }
-      a.candidate_adrs.push_back(std::move(curves));
+      a.curves.candidate_adrs.push_back(std::move(curves));
     }
-    a.adrs = a.candidate_adrs[a.kinematic.governing];
+    a.curves.adrs = a.curves.candidate_adrs[a.kinematic.governing];
   }
   if (!kase.dynamic.is_null()) add_dynamic_analysis(a, opt);
   finish(a);
@@ -577,16 +577,16 @@ namespace {
 // the dynamic and energy rows, and the other candidates' dynamics (issue 24).
 void add_dynamic_analysis(FacadeAssessment& a, const FacadeOptions& opt) {
   const CaseFile& kase = a.kase;
-  a.dynamic = parse_dynamic(kase.dynamic, kase.file, directory_of(kase.file));
-  const DynamicSpec& d = *a.dynamic;
+  a.dynamics.spec = parse_dynamic(kase.dynamic, kase.file, directory_of(kase.file));
+  const DynamicSpec& d = *a.dynamics.spec;
   const CandidateResult& gov = a.kinematic.candidates[a.kinematic.governing];
   const Chain& chain = kase.mechanism.candidates[a.kinematic.governing].chain;
-  if (!a.actions.count(LimitState::SLV))
+  if (!a.site.actions.count(LimitState::SLV))
     throw InputError(kase.file + ": /site/hazard: the dynamic analysis needs the SLV hazard (records are "
                      "compared with the SLV spectrum)");
   MechanismDynamics md = build_mechanism_dynamics(kase, gov, chain, d);
   if (!md.applies) {
-    a.dynamic_note = md.note;
+    a.dynamics.note = md.note;
     return;
   }
   if (d.smooth && !(d.k / units::kN >= plausibility::k_min_kN_m3 && d.k / units::kN <= plausibility::k_max_kN_m3))
@@ -596,14 +596,14 @@ void add_dynamic_analysis(FacadeAssessment& a, const FacadeOptions& opt) {
                          " kN/m^3: the seed paper (Fig. 2) uses 5e4-1e7 kN/m^3; below 1e4 a wall has hardly any "
                          "restoring branch, above 1e8 the smooth block is the rigid one (\"model\": \"rigid\"); "
                          "was it typed in N/m^3?");
-  a.dynamic_applies = true;
+  a.dynamics.applies = true;
   if (md.single_body()) {
-    a.body = md.body;
-    a.model = md.rocking.front();
+    a.dynamics.body = md.body;
+    a.dynamics.model = md.rocking.front();
   }
-  a.dynamic_note = md.describe();
-  a.mechanism_dynamics = md;
-  const ElasticSpectrum& target = a.spectra.at(LimitState::SLV);
+  a.dynamics.note = md.describe();
+  a.dynamics.mechanism = md;
+  const ElasticSpectrum& target = a.site.spectra.at(LimitState::SLV);
   std::vector<Record> recs;
   // The candidates analysed dynamically besides the governing one (issue 24)
   // share one selection over the union of their ranges when it gives a
@@ -628,11 +628,11 @@ void add_dynamic_analysis(FacadeAssessment& a, const FacadeOptions& opt) {
     const std::string range_text = fixed3(u.T_min) + "-" + fixed3(u.T_max) + " s";
     if (ls->result.status == SelectionResult::Status::Compatible) {
       shared = u;
-      a.selection_shared_note = "one selection for the " + std::to_string(others.size() + 1) +
+      a.selection.shared_note = "one selection for the " + std::to_string(others.size() + 1) +
                                 " candidates analysed dynamically (" + who + ") over the union of their ranges, " +
                                 range_text;
     } else {
-      a.selection_shared_note = "the union of the ranges of the " + std::to_string(others.size() + 1) +
+      a.selection.shared_note = "the union of the ranges of the " + std::to_string(others.size() + 1) +
                                 " candidates analysed dynamically (" + range_text + ") gives no compatible set (" +
                                 ls->result.message + "): each candidate selected over its own range";
     }
@@ -641,7 +641,7 @@ void add_dynamic_analysis(FacadeAssessment& a, const FacadeOptions& opt) {
   std::vector<std::optional<CatalogueEntry>> lib_entries;  // the library's entry of each selected record
   load_records(a, d, opt, target, gov.result, recs, lib, lib_entries, shared);
   flag_records(a);
-  for (const RecordUsed& r : a.records)
+  for (const RecordUsed& r : a.dynamics.records)
     if (r.pga / units::g > plausibility::record_pga_max_g)
       a.warnings.push_back(kase.file + ": " + (r.json_path.empty() ? std::string("/dynamic/select") : r.json_path + "/scale") +
                            ": the scaled record " + r.name + " has PGA = " + plausibility::number(r.pga / units::g) +
@@ -651,60 +651,60 @@ void add_dynamic_analysis(FacadeAssessment& a, const FacadeOptions& opt) {
   compatibility(a, recs, target, gov.result);
 
   // Curves for the report: record spectra and the moment-rotation curve.
-  a.mean_psa.assign(a.periods.size(), 0.0);
-  a.record_psa.resize(recs.size());
+  a.curves.mean_psa.assign(a.curves.periods.size(), 0.0);
+  a.curves.record_psa.resize(recs.size());
   // A selected record's spectrum at these periods is the library's, integrated
   // once per process for every mechanism and candidate that uses the record.
   detail::parallel_for(recs.size(), [&](std::size_t ir) {
-    a.record_psa[ir] = lib && lib_entries[ir] ? *lib->psa(*lib_entries[ir], a.periods, 0.05)
-                                              : response_spectrum(recs[ir], a.periods).psa();
-    for (double& v : a.record_psa[ir]) v *= a.records[ir].scale;
+    a.curves.record_psa[ir] = lib && lib_entries[ir] ? *lib->psa(*lib_entries[ir], a.curves.periods, 0.05)
+                                              : response_spectrum(recs[ir], a.curves.periods).psa();
+    for (double& v : a.curves.record_psa[ir]) v *= a.dynamics.records[ir].scale;
   });
-  for (const auto& psa : a.record_psa)
-    for (std::size_t j = 0; j < psa.size(); ++j) a.mean_psa[j] += psa[j] / double(recs.size());
+  for (const auto& psa : a.curves.record_psa)
+    for (std::size_t j = 0; j < psa.size(); ++j) a.curves.mean_psa[j] += psa[j] / double(recs.size());
   const double th_u = md.q_u();
   constexpr int n_mr = 200;
   for (int i = 0; i <= n_mr; ++i) {
     const double th = th_u * i / n_mr;
-    a.mr_theta.push_back(th);
-    a.mr_moment.push_back(md.restoring(th));
+    a.curves.mr_theta.push_back(th);
+    a.curves.mr_moment.push_back(md.restoring(th));
   }
   // The motion at the mechanism's base: floor motions at height (first-mode filter).
   std::vector<Record> inputs;
   for (const Record& r : recs) inputs.push_back(md.input(r));
   if (md.filter && kase.building) {
-    a.floor_mean_psa.assign(a.periods.size(), 0.0);
+    a.curves.floor_mean_psa.assign(a.curves.periods.size(), 0.0);
     std::vector<std::vector<double>> psa(inputs.size());
     detail::parallel_for(inputs.size(), [&](std::size_t ir) {
-      psa[ir] = lib && lib_entries[ir] ? *lib->psa(*lib_entries[ir], a.periods, 0.05, &*md.filter)
-                                       : response_spectrum(inputs[ir], a.periods).psa();
+      psa[ir] = lib && lib_entries[ir] ? *lib->psa(*lib_entries[ir], a.curves.periods, 0.05, &*md.filter)
+                                       : response_spectrum(inputs[ir], a.curves.periods).psa();
     });
     for (std::size_t ir = 0; ir < inputs.size(); ++ir)
-      for (std::size_t j = 0; j < a.periods.size(); ++j)
-        a.floor_mean_psa[j] += psa[ir][j] * a.records[ir].scale / double(inputs.size());
+      for (std::size_t j = 0; j < a.curves.periods.size(); ++j)
+        a.curves.floor_mean_psa[j] += psa[ir][j] * a.dynamics.records[ir].scale / double(inputs.size());
     BuildingModel bm = *kase.building;
     bm.T1 = md.filter->T1;
     bm.damping_pct = md.filter_damping_pct;
-    const FloorSpectrum fs(a.actions.at(LimitState::SLV).hazard, kase.site->conditions, bm, std::min(md.Z, bm.H), 5.0);
-    for (double T : a.periods) a.code_floor_Se.push_back(fs.Se(T));
+    const FloorSpectrum fs(a.site.actions.at(LimitState::SLV).hazard, kase.site->conditions, bm, std::min(md.Z, bm.H), 5.0);
+    for (double T : a.curves.periods) a.curves.code_floor_Se.push_back(fs.Se(T));
   }
 
   // Every record is integrated to its last sample (at height: the floor
   // motion at the mechanism's base), then the free motion up to tail_s; the
   // end rule is the one of every dynamic command (dynamics/analysis_end.hpp).
-  a.free_tail_s = d.options.tail_s;
+  a.dynamics.free_tail_s = d.options.tail_s;
   for (std::size_t ir = 0; ir < recs.size(); ++ir) {
-    a.records[ir].duration_s = recs[ir].duration();
-    a.records[ir].integrated_s = inputs[ir].duration();
+    a.dynamics.records[ir].duration_s = recs[ir].duration();
+    a.dynamics.records[ir].integrated_s = inputs[ir].duration();
   }
-  a.base_motions = std::move(inputs);
+  a.dynamics.base_motions = std::move(inputs);
 
   // Control point of the kinematic analysis, for the C8.7.1.2.1.9 displacements.
   const KinematicResult& kin = gov.result;
-  a.runs = dynamic_runs(a, md, kin, opt.histories);
-  a.summaries = summarise_runs(a.runs, md.e, kin);
+  a.dynamics.runs = dynamic_runs(a, md, kin, opt.histories);
+  a.dynamics.summaries = summarise_runs(a.dynamics.runs, md.e, kin);
   for (std::size_t ie = 0; ie < md.e.size(); ++ie) {
-    const RestitutionSummary& s = a.summaries[ie];
+    const RestitutionSummary& s = a.dynamics.summaries[ie];
     const std::string e_text = describe(d.restitutions[ie]);
     const std::string nrec = std::to_string(s.records) + (s.records == 1 ? " record" : " records");
     CheckRow row;
@@ -718,7 +718,7 @@ void add_dynamic_analysis(FacadeAssessment& a, const FacadeOptions& opt) {
                  (md.filter ? ", floor motions (first-mode filter)" : md.floor_input ? ", floor motions given" : "");
     row.formula = (s.rule == "mean" ? "mean of peak d* over " : "largest peak d* of ") + nrec;
     int collapses = 0;
-    for (const DynamicRun& r : a.runs) collapses += r.restitution == ie && r.collapse ? 1 : 0;
+    for (const DynamicRun& r : a.dynamics.runs) collapses += r.restitution == ie && r.collapse ? 1 : 0;
     row.note = std::string(s.any_collapse ? "d0 exceeded in " + std::to_string(collapses) + " of " +
                                                 std::to_string(s.analyses) + " analyses (overturned in " +
                                                 std::to_string(s.overturned) +
@@ -730,7 +730,7 @@ void add_dynamic_analysis(FacadeAssessment& a, const FacadeOptions& opt) {
                 : s.any_collapse ? "the most unfavourable result; fewer than 3 records (NTC 2018 §7.3.5) cannot show "
                                    "the wall safe, but a collapse fails the check whatever their number"
                                  : "no verdict: NTC 2018 §7.3.5 needs at least 3 records (results shown, not judged)");
-    if (a.compatibility.computed && !a.compatibility.band_satisfied) row.note += "; records not compatible with the SLV spectrum";
+    if (a.dynamics.compatibility.computed && !a.dynamics.compatibility.band_satisfied) row.note += "; records not compatible with the SLV spectrum";
     if (s.failed)
       row.note += "; " + std::to_string(s.failed) + " of " + std::to_string(s.analyses) +
                   " analyses FAILED (not verified; left out of the statistics)";
@@ -767,7 +767,7 @@ void add_dynamic_analysis(FacadeAssessment& a, const FacadeOptions& opt) {
     en.dc_survivors = s.mean_dc_survivors;
     decide(en);
     en.note = "overturned in " + std::to_string(s.overturned) + " of " + std::to_string(s.analyses) + " analyses";
-    a.energy_rows.push_back(en);
+    a.dynamics.energy_rows.push_back(en);
   }
   // The other candidates that govern a code or fail a kinematic check (issue
   // 24): each analysed as the case restricted to it, as if run alone.
@@ -780,15 +780,15 @@ void add_dynamic_analysis(FacadeAssessment& a, const FacadeOptions& opt) {
       one.mechanism.candidates = {kase.mechanism.candidates[i]};
       if (shared) one.dynamic["select"]["period_range_s"] = nlohmann::json::array({shared->T_min, shared->T_max});
       FacadeAssessment sub = assess_facade(one, sub_opt);
-      if (shared && sub.selection) {
+      if (shared && sub.selection.result) {
         const KinematicResult& k = a.kinematic.candidates[i].result;
-        sub.selection_range_note = range_note(*d.selection, k, *shared, std::min(k.Ts, k.T_SLV),
+        sub.selection.range_note = range_note(*d.selection, k, *shared, std::min(k.Ts, k.T_SLV),
                                               std::max(k.Ts, k.T_SLV), true);
       }
-      sub.selection_shared_note = a.selection_shared_note;
+      sub.selection.shared_note = a.selection.shared_note;
       for (const CheckRow& r : sub.checks)
         if (r.kind == "dynamic") a.checks.push_back(r);
-      a.energy_rows.insert(a.energy_rows.end(), sub.energy_rows.begin(), sub.energy_rows.end());
+      a.dynamics.energy_rows.insert(a.dynamics.energy_rows.end(), sub.dynamics.energy_rows.begin(), sub.dynamics.energy_rows.end());
       for (const std::string& w : sub.warnings)
         if (std::find(a.warnings.begin(), a.warnings.end(), w) == a.warnings.end()) a.warnings.push_back(w);
       a.other_dynamics.push_back(std::move(sub));

@@ -53,9 +53,9 @@ double dynamic_dc(const FacadeAssessment& a, const KinematicCaseResult& alt) {
       dc = std::max(dc, d_slv > 0.0 ? demand / d_slv : inf);
     }
   };
-  if (a.dynamic_applies) add(a.summaries, a.kinematic.governing);
+  if (a.dynamics.applies) add(a.dynamics.summaries, a.kinematic.governing);
   for (std::size_t k = 0; k < a.other_dynamics.size(); ++k)
-    if (a.other_dynamics[k].dynamic_applies) add(a.other_dynamics[k].summaries, a.other_dynamics_candidate[k]);
+    if (a.other_dynamics[k].dynamics.applies) add(a.other_dynamics[k].dynamics.summaries, a.other_dynamics_candidate[k]);
   return dc == -inf ? nan : dc;
 }
 
@@ -226,8 +226,8 @@ std::vector<ModellingChoice> modelling_choices(const FacadeAssessment& a, bool r
   // The windows of the record selection (NTC 2018 §3.2.3.6): Mw and distance,
   // each widened (Mw by 0.5 each side, the largest distance doubled); the
   // whole dynamic analysis run again with the records it selects.
-  if (a.dynamic && a.dynamic_applies && a.dynamic->selection && (records || m.method == "dynamic")) {
-    const RecordSelectionSpec& rs = *a.dynamic->selection;
+  if (a.dynamics.spec && a.dynamics.applies && a.dynamics.spec->selection && (records || m.method == "dynamic")) {
+    const RecordSelectionSpec& rs = *a.dynamics.spec->selection;
     const CatalogueFilters f = catalogue_filters(rs, to_string(a.kase.site->conditions.soil), rs.count);
     ModellingChoice c = b.base("selection_window", "/dynamic/select/Mw, /dynamic/select/distance_km");
     c.method = "dynamic";
