@@ -85,41 +85,32 @@ void describe_from_catalogue(RecordUsed& u, const CatalogueEntry& e, double near
   if (std::isfinite(e.lowest_usable_hz) && e.lowest_usable_hz > 0.0) u.usable_period_s = 1.0 / e.lowest_usable_hz;
 }
 
-std::string fixed3(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3f", v);
-  return buf;
-}
-
 // Why the period range of the selection is what it is (record-selection.md
-// §2.3), with the limit-state periods it does not reach.
-std::string range_note(const RecordSelectionSpec& rs, const KinematicResult& kin, const PeriodRange& r, double T1,
-                       double T2, bool shared_union) {
-  std::string n;
+// §2.3), with the limit-state periods it does not reach: a note as data
+// (note.hpp), its words in the message catalogue.
+NoteText range_note(const RecordSelectionSpec& rs, const KinematicResult& kin, const PeriodRange& r, double T1,
+                    double T2, bool shared_union) {
+  const auto x = [](double v) { return number_arg(v, 3); };
+  const auto s = [](double v) { return number_arg(v, 3, "s"); };
+  const double lo = rocking_range_lower_factor * T1, hi = rocking_range_upper_factor * T2;
+  NoteText n;
   if (shared_union) {
-    n = "the union of the ranges of the candidates analysed dynamically, " + fixed3(r.T_min) + "-" + fixed3(r.T_max) +
-        " s (record-selection.md §2.7); this candidate's own: ";
-    const double lo = rocking_range_lower_factor * T1, hi = rocking_range_upper_factor * T2;
-    n += fixed3(lo) + "-" + fixed3(hi) + " s (Ts = " + fixed3(kin.Ts) + " s, T_SLV = " + fixed3(kin.T_SLV) + " s)";
+    n.push_back({"range.union", {x(r.T_min), s(r.T_max), x(lo), s(hi), s(kin.Ts), s(kin.T_SLV)}});
   } else if (rs.T_min && rs.T_max) {
-    n = "given in the case (/dynamic/select/period_range_s: " + fixed3(r.T_min) + "-" + fixed3(r.T_max) + " s)";
+    n.push_back({"range.given", {x(r.T_min), s(r.T_max)}});
   } else {
-    const double lo = rocking_range_lower_factor * T1, hi = rocking_range_upper_factor * T2;
-    n = fixed3(rocking_range_lower_factor) + " x min(Ts, T_SLV) = " + fixed3(lo) + " s to " +
-        fixed3(rocking_range_upper_factor) + " x max(Ts, T_SLV) = " + fixed3(hi) + " s (Ts = " + fixed3(kin.Ts) +
-        " s, T_SLV = " + fixed3(kin.T_SLV) + " s)";
-    if (lo < rocking_range_floor_s) n += ", raised to " + fixed3(rocking_range_floor_s) + " s";
-    if (hi > rocking_range_cap_s)
-      n += ", cut at " + fixed3(rocking_range_cap_s) +
-           " s: beyond it the records' usable period is not known for most of the library (the high-pass "
-           "filter of analog-era records leaves little reliable content at longer periods)";
+    n.push_back({"range.default", {x(rocking_range_lower_factor), s(lo), x(rocking_range_upper_factor), s(hi),
+                                   s(kin.Ts), s(kin.T_SLV)}});
+    if (lo < rocking_range_floor_s) n.push_back({"range.raised", {s(rocking_range_floor_s)}});
+    if (hi > rocking_range_cap_s) n.push_back({"range.cut", {s(rocking_range_cap_s)}});
   }
-  std::vector<std::string> beyond;
-  if (kin.T_SLV > r.T_max) beyond.push_back("T_SLV = " + fixed3(kin.T_SLV) + " s");
-  if (kin.T_SLC > r.T_max) beyond.push_back("T_SLC = " + fixed3(kin.T_SLC) + " s");
-  if (!beyond.empty())
-    n += "; " + beyond[0] + (beyond.size() > 1 ? " and " + beyond[1] + " lie" : " lies") + " beyond its end " +
-         fixed3(r.T_max) + " s: the set's mean spectrum is not checked against the target there";
+  std::vector<NoteArg> beyond;
+  if (kin.T_SLV > r.T_max) beyond.insert(beyond.end(), {text_arg("T_SLV"), s(kin.T_SLV)});
+  if (kin.T_SLC > r.T_max) beyond.insert(beyond.end(), {text_arg("T_SLC"), s(kin.T_SLC)});
+  if (!beyond.empty()) {
+    beyond.push_back(s(r.T_max));
+    n.push_back({beyond.size() == 3 ? "range.beyond_one" : "range.beyond_two", beyond});
+  }
   return n;
 }
 
@@ -281,28 +272,30 @@ void flag_records(FacadeAssessment& a) {
   std::string asked_text;
   for (const std::string& c : asked) asked_text += (asked_text.empty() ? "" : ", ") + c;
   const double default_cap = SelectionOptions{}.max_scale;
+  const auto x = [](double v) { return number_arg(v, 3); };
   for (RecordUsed& r : a.dynamics.records) {
     r.flags.clear();
     if (!r.in_catalogue) {
-      r.flags.push_back("not in the record library: Mw, distance, site class and near-fault status unknown");
+      r.flags.push_back({"flag.not_in_library", {}});
     } else {
-      if (!r.near_fault.empty()) r.flags.push_back(r.near_fault);
+      if (!r.near_fault.empty()) r.flags.push_back({"flag.near_fault", {generated_arg(r.near_fault)}});
       if (a.selection.result && !soil.empty() && !r.site_class.empty() &&
           std::find(asked.begin(), asked.end(), r.site_class) == asked.end())
-        r.flags.push_back("site class " + r.site_class + ", not the " +
-                          (asked.size() == 1 && asked[0] == soil ? "site's " + soil : "classes asked, " + asked_text) +
-                          " (class relaxed)");
+        r.flags.push_back(asked.size() == 1 && asked[0] == soil
+                              ? Note{"flag.class_not_site", {text_arg(r.site_class), text_arg(soil)}}
+                              : Note{"flag.class_not_asked", {text_arg(r.site_class), text_arg(asked_text)}});
+      // Vs30 in whole m/s, truncated as the catalogue gives it.
       if (r.site_class_basis == "stated" && !r.vs30_class.empty() && r.vs30_class != r.site_class)
-        r.flags.push_back("class " + r.site_class + " as stated by the source; its Vs30 " + fixed3(r.vs30_m_s).substr(0, fixed3(r.vs30_m_s).find('.')) +
-                          " m/s would give " + r.vs30_class);
+        r.flags.push_back({"flag.class_vs30", {text_arg(r.site_class),
+                                               number_arg(std::floor(std::round(r.vs30_m_s * 1e3) / 1e3), 0, "m/s"),
+                                               text_arg(r.vs30_class)}});
     }
     if (r.misfit_flag)
-      r.flags.push_back("misfit " + fixed3(r.deviation) + " > " + fixed3(a.selection.max_misfit) + " (rank " +
-                        std::to_string(r.rank) + ")");
+      r.flags.push_back({"flag.misfit", {x(r.deviation), x(a.selection.max_misfit), count_arg(std::size_t(r.rank))}});
     if (r.scale > default_cap * (1.0 + 1e-12))
-      r.flags.push_back("scale " + fixed3(r.scale) + " above " + fixed3(default_cap) + ", the default cap" +
-                        (a.selection.result ? " (raised in the case: max_scale " + fixed3(a.selection.max_scale) + ")"
-                                     : std::string(" (a listed scale)")));
+      r.flags.push_back(a.selection.result
+                            ? Note{"flag.scale_raised", {x(r.scale), x(default_cap), x(a.selection.max_scale)}}
+                            : Note{"flag.scale_listed", {x(r.scale), x(default_cap)}});
   }
 }
 
@@ -678,16 +671,14 @@ std::optional<PeriodRange> shared_range(FacadeAssessment& a, const CandidateResu
   const SelectionRequest req = selection_request(a.kase, *d.selection, u);
   const std::shared_ptr<const LibrarySelection> ls =
       select_from_library(*req.lib, req.rules, [&target](double T) { return target.Se(T); }, req.so);
-  const std::string range_text = fixed3(u.T_min) + "-" + fixed3(u.T_max) + " s";
+  const NoteArg tmin = number_arg(u.T_min, 3), tmax = number_arg(u.T_max, 3, "s");
   if (ls->result.status == SelectionResult::Status::Compatible) {
-    a.selection.shared_note = "one selection for the " + std::to_string(others.size() + 1) +
-                              " candidates analysed dynamically (" + who + ") over the union of their ranges, " +
-                              range_text;
+    a.selection.shared_note = {{"shared.one_selection",
+                                {count_arg(others.size() + 1), generated_arg(who), tmin, tmax}}};
     return u;
   }
-  a.selection.shared_note = "the union of the ranges of the " + std::to_string(others.size() + 1) +
-                            " candidates analysed dynamically (" + range_text + ") gives no compatible set (" +
-                            ls->result.message + "): each candidate selected over its own range";
+  a.selection.shared_note = {{"shared.each_own",
+                              {count_arg(others.size() + 1), tmin, tmax, generated_arg(ls->result.message)}}};
   return std::nullopt;
 }
 

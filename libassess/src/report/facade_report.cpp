@@ -6,6 +6,7 @@
 
 #include "assess/hazard/comuni.hpp"
 #include "assess/report/kinematic_report.hpp"
+#include "assess/report/note_text.hpp"
 #include "assess/support/units.hpp"
 
 #include <algorithm>
@@ -82,6 +83,13 @@ nlohmann::json dynamic_model_json(const FacadeAssessment& a) {
   return model;
 }
 
+// Notes in English, as the JSON gives them (issue 41: the notes are data, note.hpp).
+std::vector<std::string> english(const std::vector<Note>& notes) {
+  std::vector<std::string> out;
+  for (const Note& n : notes) out.push_back(note_text(Lang::en, n));
+  return out;
+}
+
 // The records used, with their metadata.
 nlohmann::json records_json(const FacadeAssessment& a) {
   nlohmann::json recs = nlohmann::json::array();
@@ -101,7 +109,7 @@ nlohmann::json records_json(const FacadeAssessment& a) {
                     {"usable_period_s", std::isfinite(r.usable_period_s) ? nlohmann::json(r.usable_period_s)
                                                                          : nlohmann::json(nullptr)},
                     {"pulse", r.pulse}, {"near_fault", r.near_fault}, {"misfit_flag", r.misfit_flag},
-                    {"flags", r.flags}});
+                    {"flags", english(r.flags)}});
   return recs;
 }
 
@@ -123,8 +131,8 @@ nlohmann::json selection_json(const FacadeAssessment& a) {
                     {"site_classes", a.selection.site_classes},
                     {"site_class_steps", a.selection.steps},
                     {"warnings", a.selection.warnings},
-                    {"range_note", a.selection.range_note},
-                    {"shared_note", a.selection.shared_note},
+                    {"range_note", note_text(Lang::en, a.selection.range_note)},
+                    {"shared_note", note_text(Lang::en, a.selection.shared_note)},
                     {"spectra", a.selection.spectra},
                     {"max_scale", a.selection.max_scale},
                     {"max_mean_scale", a.selection.max_mean_scale},

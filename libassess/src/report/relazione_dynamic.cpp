@@ -111,7 +111,7 @@ void add_records(Ctx& c, const FacadeAssessment& x) {
     for (const RecordUsed& r : x.dynamics.records) names += (names.empty() ? "" : ", ") + r.name + " (" + c.n(r.scale, 3) + ")";
     c.d.add_paragraph(msgf(c.L, "dyn.shared_set", c.o.shared_records, names));
     if (!x.selection.range_note.empty())
-      c.d.add_list({{Span{c.t("dyn.range_why") + ": ", true}, Span{c.loc(x.selection.range_note)}}});
+      c.d.add_list({{Span{c.t("dyn.range_why") + ": ", true}, Span{c.note(x.selection.range_note)}}});
     return;
   }
   std::vector<std::vector<Cell>> rows;
@@ -129,7 +129,7 @@ void add_records(Ctx& c, const FacadeAssessment& x) {
         : r.event.empty() && r.station.empty() ? std::string("—")
                                                : or_dash(r.event) + " / " + or_dash(r.station) + ", " + or_dash(r.component);
     std::string flags;
-    for (const std::string& f : r.flags) flags += (flags.empty() ? "" : "; ") + c.loc(f);
+    for (const Note& f : r.flags) flags += (flags.empty() ? "" : "; ") + c.note(f);
     Cell name(r.name, flags);
     if (!r.flags.empty()) name.tone = Tone::fail;
     rows.push_back({name, Cell(what), c.num(r.Mw, 2), dist, Cell(cls), c.num(r.usable_period_s, 2), c.num(r.scale, 3),
@@ -146,9 +146,9 @@ void add_records(Ctx& c, const FacadeAssessment& x) {
     c.d.add_paragraph(msgf(c.L, "dyn.selection", c.n(x.selection.range.T_min, 2), c.n(x.selection.range.T_max, 2)) +
                       c.loc(x.selection.result->message));
     std::vector<Inline> why;
-    if (!x.selection.range_note.empty()) why.push_back({Span{c.t("dyn.range_why") + ": ", true}, Span{c.loc(x.selection.range_note)}});
+    if (!x.selection.range_note.empty()) why.push_back({Span{c.t("dyn.range_why") + ": ", true}, Span{c.note(x.selection.range_note)}});
     if (!x.selection.shared_note.empty())
-      why.push_back({Span{c.t("dyn.shared_why") + ": ", true}, Span{c.loc(x.selection.shared_note)}});
+      why.push_back({Span{c.t("dyn.shared_why") + ": ", true}, Span{c.note(x.selection.shared_note)}});
     for (const std::string& st : x.selection.steps) why.push_back({Span{c.t("dyn.classes_tried") + ": ", true}, Span{c.loc(st)}});
     // The limits the set obeys and the rules it was chosen by (what the terminal printed before issue 41).
     const SelectionResult& s = *x.selection.result;

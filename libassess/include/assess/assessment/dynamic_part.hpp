@@ -7,6 +7,7 @@
 
 #include "assess/assessment/dynamic_case.hpp"
 #include "assess/assessment/mechanism_dynamics.hpp"
+#include "assess/assessment/note.hpp"
 #include "assess/dynamics/rocking_from_chain.hpp"
 #include "assess/kinematic/code_checks.hpp"
 #include "assess/kinematic/outcome.hpp"
@@ -48,8 +49,9 @@ struct RecordUsed {
   bool misfit_flag = false;      ///< deviation above the selection's max_misfit
   /// The caveats of this record, computed (record-selection.md §2.8): near-fault
   /// or pulse-like, misfit above the limit, class other than the site's, a
-  /// stated class its Vs30 contradicts, scale above the default cap, no metadata.
-  std::vector<std::string> flags;
+  /// stated class its Vs30 contradicts, scale above the default cap, no metadata:
+  /// notes as data (note.hpp).
+  std::vector<Note> flags;
   double duration_s = 0.0;       ///< length of the record file (s)
   double integrated_s = 0.0;     ///< excitation integrated (s): the whole motion at the mechanism's base
 };

@@ -4,6 +4,7 @@
 // records that could not be read.
 #pragma once
 
+#include "assess/assessment/note.hpp"
 #include "assess/records/record_selection.hpp"
 
 #include <cstddef>
@@ -33,11 +34,11 @@ struct SelectionSummary {
   std::vector<std::string> steps;
   std::string spectra;  ///< "precomputed" (interpolated) or "integrated" candidates' spectra
   /// Why the period range is what it is (computed: the mechanism periods, the
-  /// factors, the cap, and the limit-state periods it does not reach).
-  std::string range_note;
+  /// factors, the cap, and the limit-state periods it does not reach): a note as data.
+  NoteText range_note;
   /// Several candidates analysed dynamically (issue 24): how their selection
-  /// was shared (one set over the union of their ranges, or each its own).
-  std::string shared_note;
+  /// was shared (one set over the union of their ranges, or each its own): a note as data.
+  NoteText shared_note;
   std::vector<std::string> record_failures;  ///< "<path>: <message>" of records skipped (--keep-going)
 };
 
