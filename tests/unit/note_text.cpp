@@ -55,7 +55,8 @@ TEST_CASE("a note renders its numbers with the language's decimal separator and 
                                          number_arg(4.0, 3, "s")}};
   CHECK(note_text(Lang::en, beyond) == "; T_SLV = 4.500 s and T_SLC = ∞ s lie beyond its end 4.000 s: the set's "
                                        "mean spectrum is not checked against the target there");
-  CHECK(note_text(Lang::it, beyond).rfind("; T_SLV = 4,500 s e T_SLC = ∞ s sono oltre il suo estremo 4,000 s", 0) == 0);
+  CHECK(note_text(Lang::it, beyond).rfind("; T_SLV = 4,500 s e T_SLC = ∞ s sono oltre il suo estremo 4,000 s", 0) ==
+        0);
 }
 
 TEST_CASE("a text of another layer is localised; a note whose arguments do not fit is an error") {
@@ -67,6 +68,10 @@ TEST_CASE("a text of another layer is localised; a note whose arguments do not f
   CHECK(note_text(Lang::it, shared) == "l'unione degli intervalli dei 3 cinematismi analizzati dinamicamente "
                                        "(0,200-2,000 s) non dà un insieme compatibile (nessun candidato di categoria A): "
                                        "ogni cinematismo ha la propria selezione");
+  // A step of the site-class ladder: its parts in order.
+  const NoteText step{{"step.classes", {text_arg("C, D")}}, {"step.no_selection", {count_arg(12)}}};
+  CHECK(note_text(Lang::en, step) == "class C, D: 12 candidates, no selection");
+  CHECK(note_text(Lang::it, step) == "categoria C, D: 12 candidati, nessuna selezione");
   CHECK_THROWS_AS(note_text(Lang::en, Note{"flag.misfit", {number_arg(1.0, 3)}}), std::logic_error);
   CHECK_THROWS_AS(note_text(Lang::en, Note{"flag.not_in_library", {count_arg(1)}}), std::logic_error);
   CHECK_THROWS_AS(note_text(Lang::en, Note{"no.such.note", {}}), std::logic_error);

@@ -56,13 +56,6 @@ RecordUsed record_used(const Record& r, const std::string& file, double scale) {
   return u;
 }
 
-std::string classes_text(const std::vector<std::string>& c) {
-  if (c.empty()) return "any class";
-  std::string s = "class ";
-  for (std::size_t i = 0; i < c.size(); ++i) s += (i ? ", " : "") + c[i];
-  return s;
-}
-
 // The catalogue's metadata of a record (selected, or listed from the library).
 void describe_from_catalogue(RecordUsed& u, const CatalogueEntry& e, double near_fault_km) {
   u.in_catalogue = true;
@@ -221,9 +214,14 @@ void selected_records(FacadeAssessment& a, const RecordSelectionSpec& rs, const 
   sel.candidates = ls->candidates.size();
   sel.near_fault_excluded = ls->near_fault_excluded;
   sel.spectra = ls->spectra_source;
-  for (const SelectionStep& st : ls->steps)
-    sel.steps.push_back(classes_text(st.site_classes) + ": " + std::to_string(st.candidates) + " candidates, " +
-                        (st.message.empty() ? std::string("no selection") : st.message));
+  for (const SelectionStep& st : ls->steps) {
+    std::string classes;
+    for (const std::string& c : st.site_classes) classes += (classes.empty() ? "" : ", ") + c;
+    NoteText step{classes.empty() ? Note{"step.any_class", {}} : Note{"step.classes", {text_arg(classes)}}};
+    step.push_back(st.message.empty() ? Note{"step.no_selection", {count_arg(st.candidates)}}
+                                      : Note{"step.outcome", {count_arg(st.candidates), generated_arg(st.message)}});
+    sel.steps.push_back(std::move(step));
+  }
   for (const SelectedRecord& s : ls->result.records) {
     const CatalogueEntry& e = ls->candidates[s.index];
     Record r;

@@ -17,6 +17,11 @@ const std::vector<std::pair<std::string, std::size_t>>& note_ids() {
       // How the candidates analysed dynamically share their selection (shared_range).
       {"shared.one_selection", 4},
       {"shared.each_own", 4},
+      // One step of the selection's site-class ladder (selected_records).
+      {"step.any_class", 0},
+      {"step.classes", 1},
+      {"step.outcome", 2},
+      {"step.no_selection", 1},
       // The caveats of a record used (flag_records, record-selection.md §2.8).
       {"flag.not_in_library", 0},
       {"flag.near_fault", 1},

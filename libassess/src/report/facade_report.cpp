@@ -84,9 +84,10 @@ nlohmann::json dynamic_model_json(const FacadeAssessment& a) {
 }
 
 // Notes in English, as the JSON gives them (issue 41: the notes are data, note.hpp).
-std::vector<std::string> english(const std::vector<Note>& notes) {
+template <class N>
+std::vector<std::string> english(const std::vector<N>& notes) {
   std::vector<std::string> out;
-  for (const Note& n : notes) out.push_back(note_text(Lang::en, n));
+  for (const N& n : notes) out.push_back(note_text(Lang::en, n));
   return out;
 }
 
@@ -129,7 +130,7 @@ nlohmann::json selection_json(const FacadeAssessment& a) {
                     {"eligible", a.selection.result->eligible},
                     {"combinations", a.selection.result->combinations},
                     {"site_classes", a.selection.site_classes},
-                    {"site_class_steps", a.selection.steps},
+                    {"site_class_steps", english(a.selection.steps)},
                     {"warnings", a.selection.warnings},
                     {"range_note", note_text(Lang::en, a.selection.range_note)},
                     {"shared_note", note_text(Lang::en, a.selection.shared_note)},

@@ -149,7 +149,7 @@ void add_records(Ctx& c, const FacadeAssessment& x) {
     if (!x.selection.range_note.empty()) why.push_back({Span{c.t("dyn.range_why") + ": ", true}, Span{c.note(x.selection.range_note)}});
     if (!x.selection.shared_note.empty())
       why.push_back({Span{c.t("dyn.shared_why") + ": ", true}, Span{c.note(x.selection.shared_note)}});
-    for (const std::string& st : x.selection.steps) why.push_back({Span{c.t("dyn.classes_tried") + ": ", true}, Span{c.loc(st)}});
+    for (const NoteText& st : x.selection.steps) why.push_back({Span{c.t("dyn.classes_tried") + ": ", true}, Span{c.note(st)}});
     // The limits the set obeys and the rules it was chosen by (what the terminal printed before issue 41).
     const SelectionResult& s = *x.selection.result;
     why.push_back({Span{c.t("dyn.limits") + ": ", true},

@@ -30,8 +30,9 @@ struct SelectionSummary {
   bool include_near_fault = false;        ///< near-fault / pulse-like records admitted
   double near_fault_km = 0.0;             ///< distance threshold of the near-fault flag (km)
   std::size_t near_fault_excluded = 0;    ///< near-fault / pulse-like records left out
-  /// The site-class ladder tried: classes, candidates, outcome (the last is used).
-  std::vector<std::string> steps;
+  /// The site-class ladder tried: classes, candidates, outcome (the last is
+  /// used): one note each, as data.
+  std::vector<NoteText> steps;
   std::string spectra;  ///< "precomputed" (interpolated) or "integrated" candidates' spectra
   /// Why the period range is what it is (computed: the mechanism periods, the
   /// factors, the cap, and the limit-state periods it does not reach): a note as data.
