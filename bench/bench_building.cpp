@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
       o.histories = false;
       const BuildingAssessment a = assess_building(parse_building(doc, file), o);
       std::size_t analyses = 0, dynamic = 0;
-      for (const BuildingMechanismResult& r : a.results) analyses += r.a.runs.size(), dynamic += !r.a.runs.empty();
+      for (const BuildingMechanismResult& r : a.results) analyses += r.a.dynamics.runs.size(), dynamic += !r.a.dynamics.runs.empty();
       if (i == 0)
         std::printf("%s: %zu mechanisms (%zu with dynamic analyses), %zu dynamic analyses\n", file.c_str(),
                     a.results.size(), dynamic, analyses);

@@ -27,12 +27,12 @@ int main(int argc, char** argv) {
       FacadeOptions o;
       o.histories = false;
       const FacadeAssessment a = assess_facade(read_case_file(file), o);
-      std::size_t runs = a.runs.size();
+      std::size_t runs = a.dynamics.runs.size();
       double integrated = 0.0;
-      for (const DynamicRun& r : a.runs) integrated += r.result.t_end;
+      for (const DynamicRun& r : a.dynamics.runs) integrated += r.result.t_end;
       for (const FacadeAssessment& s : a.other_dynamics) {
-        runs += s.runs.size();
-        for (const DynamicRun& r : s.runs) integrated += r.result.t_end;
+        runs += s.dynamics.runs.size();
+        for (const DynamicRun& r : s.dynamics.runs) integrated += r.result.t_end;
       }
       if (i == 0)
         std::printf("%s: %zu analyses (%zu other candidates), %.1f s integrated in total\n", file.c_str(), runs,

@@ -147,18 +147,18 @@ TEST_CASE("a dynamic run that overturns under one of two records is never summar
   json doc{{"site", site()}, {"mechanism", wall(4.0, 0.3)}};
   doc["dynamic"] = dynamic_with(json::array({elcentro(3.0), elcentro(0.05)}));
   const FacadeAssessment a = run(doc);
-  REQUIRE(a.dynamic_applies);
-  REQUIRE(a.runs.size() == 2);
-  CHECK(a.runs[0].result.overturned);
-  CHECK_FALSE(a.runs[1].result.overturned);
-  REQUIRE(a.summaries.size() == 1);
-  const RestitutionSummary& s = a.summaries[0];
+  REQUIRE(a.dynamics.applies);
+  REQUIRE(a.dynamics.runs.size() == 2);
+  CHECK(a.dynamics.runs[0].result.overturned);
+  CHECK_FALSE(a.dynamics.runs[1].result.overturned);
+  REQUIRE(a.dynamics.summaries.size() == 1);
+  const RestitutionSummary& s = a.dynamics.summaries[0];
   CHECK(s.overturned == 1);
   CHECK_FALSE(s.slv_satisfied);
   CHECK_FALSE(s.no_verdict);  // a collapse fails whatever the number of records
-  REQUIRE(a.energy_rows.size() == 1);
-  CHECK_FALSE(a.energy_rows[0].satisfied);
-  CHECK(a.energy_rows[0].note.find("overturned in 1 of 2") != std::string::npos);
+  REQUIRE(a.dynamics.energy_rows.size() == 1);
+  CHECK_FALSE(a.dynamics.energy_rows[0].satisfied);
+  CHECK(a.dynamics.energy_rows[0].note.find("overturned in 1 of 2") != std::string::npos);
   const VerdictRow* dyn = summary_row(a.verdict, "NTC2018", "dynamic");
   const VerdictRow* en = summary_row(a.verdict, "seed", "dynamic energy");
   REQUIRE(dyn);
@@ -179,16 +179,16 @@ TEST_CASE("NTC 2018 §7.3.5 record count: 2 records no verdict, 5 the most unfav
     json doc{{"site", site()}, {"mechanism", wall(4.0, 0.5)}};
     doc["dynamic"] = dynamic_with(recs);
     const FacadeAssessment a = run(doc);
-    REQUIRE(a.runs.size() == std::size_t(n));
+    REQUIRE(a.dynamics.runs.size() == std::size_t(n));
     double mean = 0.0, mx = 0.0;
     bool collapse = false;
-    for (const DynamicRun& r : a.runs) {
+    for (const DynamicRun& r : a.dynamics.runs) {
       mean += r.d_star / n;
       mx = std::max(mx, r.d_star);
       collapse = collapse || r.collapse;
     }
     REQUIRE_FALSE(collapse);  // small scales: the rule alone decides
-    const RestitutionSummary& s = a.summaries.at(0);
+    const RestitutionSummary& s = a.dynamics.summaries.at(0);
     CHECK(s.records == n);
     const double d_SLV = a.kinematic.candidates[a.kinematic.governing].result.d_SLV;
     const CheckRow& row = a.checks.back();
@@ -214,9 +214,9 @@ TEST_CASE("NTC 2018 §7.3.5 record count: 2 records no verdict, 5 the most unfav
     }
     CHECK_CLOSE(row.demand, s.d_demand, abs_tol(tol_d));
     // Listed records are compared with the SLV spectrum over the default range.
-    CHECK(a.compatibility.computed);
-    CHECK(a.compatibility.message.find("3.2.3.6") != std::string::npos);
-    if (!a.compatibility.band_satisfied) {
+    CHECK(a.dynamics.compatibility.computed);
+    CHECK(a.dynamics.compatibility.message.find("3.2.3.6") != std::string::npos);
+    if (!a.dynamics.compatibility.band_satisfied) {
       bool warned = false;
       for (const std::string& w : a.warnings) warned = warned || w.find("/dynamic/records") != std::string::npos;
       CHECK(warned);
@@ -229,8 +229,8 @@ TEST_CASE("plain records in a case file: the same analysis as the AT2 file and a
     json doc{{"site", site()}, {"mechanism", wall(4.0, 0.4)}};
     doc["dynamic"] = dynamic_with(json::array({rec}));
     const FacadeAssessment a = run(doc);
-    REQUIRE(a.runs.size() == 1);
-    return a.runs[0].result.theta_max;
+    REQUIRE(a.dynamics.runs.size() == 1);
+    return a.dynamics.runs[0].result.theta_max;
   };
   const double at2 = theta(elcentro(1.0));
   const double one = theta(json{{"file", root + "/tests/data/elcentro_plain_1col.txt"}, {"dt", 0.02}, {"unit", "g"}});

@@ -48,20 +48,20 @@ TEST_CASE("church façade: the four published values and both kinematic verdicts
   CHECK_FALSE(displacement.satisfied);
 
   SUBCASE("the dynamic section runs 7 records x 3 restitution values") {
-    REQUIRE(a.dynamic_applies);
-    CHECK(a.records.size() == 7);
-    REQUIRE(a.selection);
-    CHECK(a.selection->band_satisfied);
-    CHECK(a.runs.size() == 21);
-    REQUIRE(a.summaries.size() == 3);
-    CHECK(a.summaries[0].e == -0.48);
-    CHECK(a.summaries[1].e == -0.65);
-    CHECK(a.summaries[2].e == -0.85);
+    REQUIRE(a.dynamics.applies);
+    CHECK(a.dynamics.records.size() == 7);
+    REQUIRE(a.selection.result);
+    CHECK(a.selection.result->band_satisfied);
+    CHECK(a.dynamics.runs.size() == 21);
+    REQUIRE(a.dynamics.summaries.size() == 3);
+    CHECK(a.dynamics.summaries[0].e == -0.48);
+    CHECK(a.dynamics.summaries[1].e == -0.65);
+    CHECK(a.dynamics.summaries[2].e == -0.85);
     int dynamic_rows = 0;
     for (const CheckRow& r : a.checks) dynamic_rows += r.kind == "dynamic";
     CHECK(dynamic_rows == 3);
-    for (const DynamicRun& r : a.runs) {
-      CAPTURE(a.records[r.record].name);
+    for (const DynamicRun& r : a.dynamics.runs) {
+      CAPTURE(a.dynamics.records[r.record].name);
       CAPTURE(r.e);
       CHECK((r.result.termination == RockingTermination::completed ||
              r.result.termination == RockingTermination::overturned));

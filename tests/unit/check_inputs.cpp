@@ -110,21 +110,21 @@ void check_case(const std::string& file) {
   std::size_t i = 0;
   for (const CheckRow& r : gc.checks) {
     if (r.kind != "displacement") continue;
-    REQUIRE(i < a.adrs.size());
-    CHECK(a.adrs[i].code == r.code);
-    CHECK(a.adrs[i].limit_state == r.limit_state);
-    CHECK(a.adrs[i].xi_pct == r.xi_pct);
+    REQUIRE(i < a.curves.adrs.size());
+    CHECK(a.curves.adrs[i].code == r.code);
+    CHECK(a.curves.adrs[i].limit_state == r.limit_state);
+    CHECK(a.curves.adrs[i].xi_pct == r.xi_pct);
     CheckInput in = *a.kinematic.check_input;
     in.Z = r.location == "height" ? gc.Z : 0.0;
     CHECK(displacement_demand(in, parse_code_edition(r.code), parse_limit_state(r.limit_state), r.secant_T) ==
           doctest::Approx(r.demand).epsilon(1e-12));
-    for (std::size_t j = 0; j < a.adrs_periods.size(); ++j) {
-      const double T = a.adrs_periods[j];
-      CHECK(a.adrs[i].Sa[j] == doctest::Approx(a.adrs[i].Sd[j] * std::pow(2 * pi / T, 2)).epsilon(1e-12));
+    for (std::size_t j = 0; j < a.curves.adrs_periods.size(); ++j) {
+      const double T = a.curves.adrs_periods[j];
+      CHECK(a.curves.adrs[i].Sa[j] == doctest::Approx(a.curves.adrs[i].Sd[j] * std::pow(2 * pi / T, 2)).epsilon(1e-12));
     }
     ++i;
   }
-  CHECK(i == a.adrs.size());
+  CHECK(i == a.curves.adrs.size());
 }
 
 }  // namespace

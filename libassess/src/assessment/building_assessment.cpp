@@ -140,11 +140,11 @@ BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& o
     for (const std::string& w : r.a.warnings) out.warnings.push_back(building_path_message(b, b.mechanisms[i], w));
   }
   const FacadeAssessment& a0 = out.results.front().a;
-  out.site_description = a0.site_description;
-  out.VR = a0.VR;
-  if (a0.actions.count(LimitState::SLV)) {
-    out.TR_SLV = a0.actions.at(LimitState::SLV).TR;
-    out.ag_SLV_g = a0.actions.at(LimitState::SLV).hazard.ag_g;
+  out.site_description = a0.site.description;
+  out.VR = a0.site.VR;
+  if (a0.site.actions.count(LimitState::SLV)) {
+    out.TR_SLV = a0.site.actions.at(LimitState::SLV).TR;
+    out.ag_SLV_g = a0.site.actions.at(LimitState::SLV).hazard.ag_g;
   }
   for (const char* code : {"NTC2018", "NTC2008"}) {
     bool present = false;

@@ -53,9 +53,9 @@ double dynamic_dc(const FacadeAssessment& a, const KinematicCaseResult& alt) {
       dc = std::max(dc, d_slv > 0.0 ? demand / d_slv : inf);
     }
   };
-  if (a.dynamic_applies) add(a.summaries, a.kinematic.governing);
+  if (a.dynamics.applies) add(a.dynamics.summaries, a.kinematic.governing);
   for (std::size_t k = 0; k < a.other_dynamics.size(); ++k)
-    if (a.other_dynamics[k].dynamic_applies) add(a.other_dynamics[k].summaries, a.other_dynamics_candidate[k]);
+    if (a.other_dynamics[k].dynamics.applies) add(a.other_dynamics[k].dynamics.summaries, a.other_dynamics_candidate[k]);
   return dc == -inf ? nan : dc;
 }
 
@@ -228,7 +228,7 @@ void add_friction(Builder& b) {
 // whole dynamic analysis run again with the records it selects.
 void add_selection_window(Builder& b) {
   const FacadeAssessment& a = b.a;
-  const RecordSelectionSpec& rs = *a.dynamic->selection;
+  const RecordSelectionSpec& rs = *a.dynamics.spec->selection;
   const CatalogueFilters f = catalogue_filters(rs, to_string(a.kase.site->conditions.soil), rs.count);
   ModellingChoice c = b.base("selection_window", "/dynamic/select/Mw, /dynamic/select/distance_km");
   c.method = "dynamic";
@@ -277,7 +277,7 @@ std::vector<ModellingChoice> modelling_choices(const FacadeAssessment& a, bool r
   add_sensitivity(b);
   add_kinematic_model(b, method_candidate(a, *mp));
   add_friction(b);
-  if (a.dynamic && a.dynamic_applies && a.dynamic->selection && (records || mp->method == "dynamic"))
+  if (a.dynamics.spec && a.dynamics.applies && a.dynamics.spec->selection && (records || mp->method == "dynamic"))
     add_selection_window(b);
   return b.out;
 }

@@ -445,7 +445,7 @@ MemberEval evaluate(Member& m, const Proposal& p) {
     for (const CheckRow& row : cr.checks)
       if (counts(*m.c, row.code)) E.worst = std::max(E.worst, std::isfinite(row.dc) ? row.dc : 1e300);
   const bool kin_ok = every_kinematic_check_satisfied(T.after);
-  const bool dynamics_follow = m.a && m.a->mechanism_dynamics && !m.a->runs.empty();
+  const bool dynamics_follow = m.a && m.a->dynamics.mechanism && !m.a->dynamics.runs.empty();
   T.levels = level_results(T.case_after, T.after, 0, T.case_after.ties.size(), nullptr, false, dynamics_follow);
   const bool new_fail = note_failing_levels(E);
   if (!kin_ok) {
@@ -959,8 +959,8 @@ TieInterventionResult run_tie_intervention(const CaseFile& c, const FacadeAssess
 
 TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventionResult& t) {
   TieDynamicResult R;
-  if (!a.dynamic || !a.mechanism_dynamics || a.runs.empty()) {
-    R.note = a.dynamic && !a.dynamic_note.empty() && !a.dynamic_applies ? a.dynamic_note
+  if (!a.dynamics.spec || !a.dynamics.mechanism || a.dynamics.runs.empty()) {
+    R.note = a.dynamics.spec && !a.dynamics.note.empty() && !a.dynamics.applies ? a.dynamics.note
                                                                         : "no dynamic analysis in the case";
     return R;
   }
@@ -968,7 +968,7 @@ TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventi
   // wall); the stato di progetto is the same model, records and polarities,
   // on the same candidate, with every tie of the intervention.
   const std::size_t g = a.kinematic.governing;
-  const MechanismDynamics& md = *a.mechanism_dynamics;
+  const MechanismDynamics& md = *a.dynamics.mechanism;
   const CandidateResult& before = t.before.candidates.at(g);
   const CandidateResult& after = t.after.candidates.at(g);
   std::optional<MechanismDynamics> other;
@@ -985,12 +985,12 @@ TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventi
     }
     other_runs = dynamic_runs(a, *other, after.result, false);
   }
-  const std::vector<DynamicRun>& runs_after = t.intervention ? other_runs : a.runs;
+  const std::vector<DynamicRun>& runs_after = t.intervention ? other_runs : a.dynamics.runs;
   const MechanismDynamics& md_after = t.intervention ? *other : md;
   if (md.tied())
-    for (std::size_t i = 0; i < a.runs.size(); ++i) R.runs_before.push_back(tie_run(md, a.runs[i], i));
+    for (std::size_t i = 0; i < a.dynamics.runs.size(); ++i) R.runs_before.push_back(tie_run(md, a.dynamics.runs[i], i));
   for (std::size_t i = 0; i < runs_after.size(); ++i) R.runs.push_back(tie_run(md_after, runs_after[i], i));
-  const std::vector<RestitutionSummary> sb = summarise_runs(a.runs, md.e, before.result);
+  const std::vector<RestitutionSummary> sb = summarise_runs(a.dynamics.runs, md.e, before.result);
   const std::vector<RestitutionSummary> sa = summarise_runs(runs_after, md.e, after.result);
   for (std::size_t ie = 0; ie < sa.size(); ++ie) {
     TieDynamicSummary s;
@@ -1008,7 +1008,7 @@ TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventi
     s.satisfied_before = sb[ie].slv_satisfied;
     s.satisfied_after = sa[ie].slv_satisfied;
     for (const TieDynamicRun& d : R.runs_before) {
-      if (a.runs[d.run].restitution != ie) continue;
+      if (a.dynamics.runs[d.run].restitution != ie) continue;
       s.yielded_before += d.yielded ? 1 : 0;
       s.broken_before += d.broken ? 1 : 0;
     }
@@ -1048,7 +1048,7 @@ std::vector<TieInterventionResult> assess_wall_ties(const std::vector<const Faca
                                                     const std::vector<std::string>& names) {
   std::vector<const CaseFile*> cases;
   for (const FacadeAssessment* a : members) {
-    if (a->dynamic && a->dynamic->options.overturn != OverturnCriterion::theta_u)
+    if (a->dynamics.spec && a->dynamics.spec->options.overturn != OverturnCriterion::theta_u)
       throw InputError(a->kase.file + ": /dynamic/overturn_at: a wall held by tie rods (\"ties\" or \"design\") "
                        "collapses where its net restoring moment with the ties at their strength vanishes; \"half_pi\" "
                        "is not available with ties");
@@ -1059,7 +1059,7 @@ std::vector<TieInterventionResult> assess_wall_ties(const std::vector<const Faca
 
 std::optional<TieInterventionResult> assess_ties(const FacadeAssessment& a) {
   if (!has_ties(a.kase)) return std::nullopt;
-  if (a.dynamic && a.dynamic->options.overturn != OverturnCriterion::theta_u)
+  if (a.dynamics.spec && a.dynamics.spec->options.overturn != OverturnCriterion::theta_u)
     throw InputError(a.kase.file + ": /dynamic/overturn_at: a wall held by tie rods (\"ties\" or \"design\") "
                      "collapses where its net restoring moment with the ties at their strength vanishes; \"half_pi\" is "
                      "not available with ties");

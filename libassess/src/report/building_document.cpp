@@ -94,10 +94,10 @@ std::string record_set_text(Lang L, const BuildingAssessment& b, std::size_t i) 
     case RecordSetKind::own: s = bt(L, "set_own"); break;
     case RecordSetKind::shared: s = bt(L, "set_shared") + " " + m.record_group; break;
   }
-  if (a.dynamic && a.dynamic_applies)
-    s += " (" + std::to_string(a.records.size()) + ", " + fx(L, a.selection_range.T_min, 2) + "–" +
-         fx(L, a.selection_range.T_max, 2) + " s)";
-  else if (!a.dynamic_applies && a.dynamic)
+  if (a.dynamics.spec && a.dynamics.applies)
+    s += " (" + std::to_string(a.dynamics.records.size()) + ", " + fx(L, a.selection.range.T_min, 2) + "–" +
+         fx(L, a.selection.range.T_max, 2) + " s)";
+  else if (!a.dynamics.applies && a.dynamics.spec)
     s = bt(L, "set_none");
   return s;
 }
@@ -105,7 +105,7 @@ std::string record_set_text(Lang L, const BuildingAssessment& b, std::size_t i) 
 std::string record_set_short(Lang L, const BuildingAssessment& b, std::size_t i) {
   const BuildingMechanism& m = b.building.mechanisms[i];
   const FacadeAssessment& a = b.results[i].a;
-  if (!a.dynamic || !a.dynamic_applies) return "—";
+  if (!a.dynamics.spec || !a.dynamics.applies) return "—";
   switch (m.record_set) {
     case RecordSetKind::none: return "—";
     case RecordSetKind::listed: return bt(L, "listed_short");
@@ -363,7 +363,7 @@ void add_mechanism_list(Lang L, const BuildingAssessment& b, DocumentBuilder& d)
 bool has_shared_set(const BuildingAssessment& b) {
   for (std::size_t i = 0; i < b.building.mechanisms.size(); ++i) {
     const FacadeAssessment& a = b.results[i].a;
-    if (b.building.mechanisms[i].record_set == RecordSetKind::shared && a.dynamic && a.dynamic_applies) return true;
+    if (b.building.mechanisms[i].record_set == RecordSetKind::shared && a.dynamics.spec && a.dynamics.applies) return true;
   }
   return false;
 }
@@ -487,7 +487,7 @@ void add_record_sets(Lang L, const BuildingAssessment& b, DocumentBuilder& t, co
   for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
     const BuildingMechanism& m = bc.mechanisms[i];
     const FacadeAssessment& a = b.results[i].a;
-    if (m.record_set != RecordSetKind::shared || !a.dynamic || !a.dynamic_applies || !shown.insert(m.record_group).second)
+    if (m.record_set != RecordSetKind::shared || !a.dynamics.spec || !a.dynamics.applies || !shown.insert(m.record_group).second)
       continue;
     t.add_heading(bt(L, "set") + " " + m.record_group, level + 1, false, true, "set-" + m.record_group);
     ReportOptions ro = options;
@@ -711,11 +711,11 @@ Relazione building_relazione(const BuildingAssessment& b, const ReportOptions& o
   bool one_set = true;
   for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
     const FacadeAssessment& a = b.results[i].a;
-    if (!a.dynamic || !a.dynamic_applies) continue;
+    if (!a.dynamics.spec || !a.dynamics.applies) continue;
     const BuildingMechanism& m = bc.mechanisms[i];
     if (!(m.record_set == RecordSetKind::shared && m.record_group == bc.mechanisms.front().record_group)) one_set = false;
   }
-  if (!one_set && !a0.record_psa.empty()) d.add_paragraph(bt(L, "site_records_note"));
+  if (!one_set && !a0.curves.record_psa.empty()) d.add_paragraph(bt(L, "site_records_note"));
   add_building_choices(L, b, d, mo);
   {
     relazione::Ctx c{a0, mo, L, d, &readings, true, true};

@@ -95,12 +95,12 @@ nlohmann::json mechanism_json(const BuildingMechanism& m, const BuildingMechanis
   nlohmann::json rs;
   rs["kind"] = to_string(m.record_set);
   if (!m.record_group.empty()) rs["set"] = m.record_group;
-  if (r.a.dynamic && r.a.dynamic_applies) {
-    rs["records"] = r.a.records.size();
-    rs["period_range_s"] = {r.a.selection_range.T_min, r.a.selection_range.T_max};
+  if (r.a.dynamics.spec && r.a.dynamics.applies) {
+    rs["records"] = r.a.dynamics.records.size();
+    rs["period_range_s"] = {r.a.selection.range.T_min, r.a.selection.range.T_max};
     // The records it used (issue 41: a mechanism alone is its building line).
     nlohmann::json used = nlohmann::json::array();
-    for (const RecordUsed& u : r.a.records) used.push_back({{"name", u.name}, {"file", u.file}, {"scale", u.scale}});
+    for (const RecordUsed& u : r.a.dynamics.records) used.push_back({{"name", u.name}, {"file", u.file}, {"scale", u.scale}});
     rs["used"] = used;
   }
   mj["record_set"] = rs;

@@ -6,6 +6,7 @@
 
 #include "assess/hazard/comuni.hpp"
 #include "assess/report/kinematic_report.hpp"
+#include "assess/report/note_text.hpp"
 #include "assess/support/units.hpp"
 
 #include <algorithm>
@@ -28,12 +29,12 @@ nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::js
 // The site, its limit states and their spectra's parameters.
 nlohmann::json site_json(const FacadeAssessment& a) {
   const SiteSpec& sp = *a.kase.site;
-  nlohmann::json s{{"description", a.site_description}, {"soil", to_string(sp.conditions.soil)},
+  nlohmann::json s{{"description", a.site.description}, {"soil", to_string(sp.conditions.soil)},
                    {"topography", to_string(sp.conditions.topography)}, {"VN", sp.vn_years}, {"CU", sp.cu},
-                   {"VR", a.VR}};
+                   {"VR", a.site.VR}};
   nlohmann::json ls_arr = nlohmann::json::array();
-  for (const auto& [ls, act] : a.actions) {
-    const ElasticSpectrum& e = a.spectra.at(ls);
+  for (const auto& [ls, act] : a.site.actions) {
+    const ElasticSpectrum& e = a.site.spectra.at(ls);
     ls_arr.push_back({{"limit_state", to_string(ls)}, {"PVR", act.PVR}, {"TR", act.TR}, {"ag_g", e.ag_g()},
                       {"F0", e.F0()}, {"Tc_star", e.Tc_star()}, {"SS", e.SS()}, {"CC", e.CC()}, {"ST", e.ST()},
                       {"S", e.S()}, {"TB", e.TB()}, {"TC", e.TC()}, {"TD", e.TD()}});
@@ -44,29 +45,29 @@ nlohmann::json site_json(const FacadeAssessment& a) {
 
 // The dynamic model: a rocking body or a chain, ties, base motion and floor filter.
 nlohmann::json dynamic_model_json(const FacadeAssessment& a) {
-  const MechanismDynamics& md = *a.mechanism_dynamics;
+  const MechanismDynamics& md = *a.dynamics.mechanism;
   nlohmann::json model;
-  if (a.model) {
-    const RockingBody& b = a.body->body;
-    const RockingModel& m = *a.model;
-    model = {{"type", a.dynamic->smooth ? "smooth" : "rigid"},
-             {"k_kN_m3", a.dynamic->smooth ? nlohmann::json(a.dynamic->k / units::kN) : nlohmann::json(nullptr)},
+  if (a.dynamics.model) {
+    const RockingBody& b = a.dynamics.body->body;
+    const RockingModel& m = *a.dynamics.model;
+    model = {{"type", a.dynamics.spec->smooth ? "smooth" : "rigid"},
+             {"k_kN_m3", a.dynamics.spec->smooth ? nlohmann::json(a.dynamics.spec->k / units::kN) : nlohmann::json(nullptr)},
              {"sidedness", m.sidedness() == Sidedness::one_sided ? "one-sided" : "two-sided"},
-             {"polarity", to_string(a.dynamic->polarity)},
+             {"polarity", to_string(a.dynamics.spec->polarity)},
              {"W_kN_m", b.W / units::kN}, {"b", b.b}, {"R", b.R}, {"alpha", b.alpha}, {"I0", b.I0},
              {"M_ext_kNm_m", b.M_ext / units::kN},
-             {"theta_cr", a.dynamic->smooth ? nlohmann::json(m.theta_cr()) : nlohmann::json(nullptr)},
+             {"theta_cr", a.dynamics.spec->smooth ? nlohmann::json(m.theta_cr()) : nlohmann::json(nullptr)},
              {"theta_u", m.theta_u(+1)}, {"peak_moment_kNm_m", m.peak_moment(+1) / units::kN},
              {"capacity_kJ_m", m.capacity() / units::kN}};
   } else {
     const ChainDynamics& c = *md.chain;
-    model = {{"type", a.dynamic->smooth ? "smooth" : "rigid"},
-             {"k_kN_m3", a.dynamic->smooth ? nlohmann::json(a.dynamic->k / units::kN) : nlohmann::json(nullptr)},
+    model = {{"type", a.dynamics.spec->smooth ? "smooth" : "rigid"},
+             {"k_kN_m3", a.dynamics.spec->smooth ? nlohmann::json(a.dynamics.spec->k / units::kN) : nlohmann::json(nullptr)},
              {"sidedness", md.sidedness == Sidedness::two_sided ? "two-sided" : "one-sided"},
-             {"polarity", to_string(a.dynamic->polarity)},
+             {"polarity", to_string(a.dynamics.spec->polarity)},
              {"chain_blocks", c.chain().blocks().size()},
              {"M0_kg_m2", c.mass(0.0)}, {"B0_kg_m", c.coupling(0.0)},
-             {"theta_cr", a.dynamic->smooth ? nlohmann::json(c.q_cr()) : nlohmann::json(nullptr)},
+             {"theta_cr", a.dynamics.spec->smooth ? nlohmann::json(c.q_cr()) : nlohmann::json(nullptr)},
              {"theta_u", c.q_u()}, {"capacity_kJ_m", c.capacity() / md.length / units::kN}};
   }
   if (md.tied_envelope)  // the ties at their strength (docs/theory/ties.md §6)
@@ -82,10 +83,18 @@ nlohmann::json dynamic_model_json(const FacadeAssessment& a) {
   return model;
 }
 
+// Notes in English, as the JSON gives them (issue 41: the notes are data, note.hpp).
+template <class N>
+std::vector<std::string> english(const std::vector<N>& notes) {
+  std::vector<std::string> out;
+  for (const N& n : notes) out.push_back(note_text(Lang::en, n));
+  return out;
+}
+
 // The records used, with their metadata.
 nlohmann::json records_json(const FacadeAssessment& a) {
   nlohmann::json recs = nlohmann::json::array();
-  for (const RecordUsed& r : a.records)
+  for (const RecordUsed& r : a.dynamics.records)
     recs.push_back({{"name", r.name}, {"file", r.file}, {"event", r.event}, {"station", r.station},
                     {"component", r.component}, {"positive_direction", r.positive_direction},
                     {"scale", r.scale}, {"pga_g", r.pga / g},
@@ -101,47 +110,47 @@ nlohmann::json records_json(const FacadeAssessment& a) {
                     {"usable_period_s", std::isfinite(r.usable_period_s) ? nlohmann::json(r.usable_period_s)
                                                                          : nlohmann::json(nullptr)},
                     {"pulse", r.pulse}, {"near_fault", r.near_fault}, {"misfit_flag", r.misfit_flag},
-                    {"flags", r.flags}});
+                    {"flags", english(r.flags)}});
   return recs;
 }
 
-// The record selection: its status, rules, limits and spectra (a.selection given).
+// The record selection: its status, rules, limits and spectra (a.selection.result given).
 nlohmann::json selection_json(const FacadeAssessment& a) {
-  return {{"status", to_string(a.selection->status)},
-                    {"T_min", a.selection_range.T_min},
-                    {"T_max", a.selection_range.T_max},
-                    {"min_ratio", a.selection->min_ratio},
-                    {"max_ratio", a.selection->max_ratio},
-                    {"band_satisfied", a.selection->band_satisfied},
-                    {"message", a.selection->message},
-                    {"limit_state", a.selection_limit_state},
-                    {"mechanism_periods_s", {a.selection_T_first, a.selection_T_last}},
+  return {{"status", to_string(a.selection.result->status)},
+                    {"T_min", a.selection.range.T_min},
+                    {"T_max", a.selection.range.T_max},
+                    {"min_ratio", a.selection.result->min_ratio},
+                    {"max_ratio", a.selection.result->max_ratio},
+                    {"band_satisfied", a.selection.result->band_satisfied},
+                    {"message", a.selection.result->message},
+                    {"limit_state", a.selection.limit_state},
+                    {"mechanism_periods_s", {a.selection.T_first, a.selection.T_last}},
                     {"band", {1.0 - 0.10, 1.0 + 0.30}},
-                    {"candidates", a.selection_candidates},
-                    {"eligible", a.selection->eligible},
-                    {"combinations", a.selection->combinations},
-                    {"site_classes", a.selection_site_classes},
-                    {"site_class_steps", a.selection_steps},
-                    {"warnings", a.selection_warnings},
-                    {"range_note", a.selection_range_note},
-                    {"shared_note", a.selection_shared_note},
-                    {"spectra", a.selection_spectra},
-                    {"max_scale", a.selection_max_scale},
-                    {"max_mean_scale", a.selection_max_mean_scale},
-                    {"max_misfit", a.selection_max_misfit},
-                    {"include_near_fault", a.selection_include_near_fault},
-                    {"near_fault_km", a.selection_near_fault_km},
-                    {"near_fault_excluded", a.selection_near_fault_excluded},
-                    {"mean_scale", a.selection->mean_scale},
-                    {"max_scaled_pga_g", a.selection->max_scaled_pga / g},
-                    {"max_pga_ratio", a.selection_max_pga_ratio},
-                    {"target_pga_g", a.selection->target_pga / g},
-                    {"periods_s", a.selection->periods},
-                    {"target_m_s2", a.selection->target},
-                    {"mean_psa_m_s2", a.selection->mean_psa},
+                    {"candidates", a.selection.candidates},
+                    {"eligible", a.selection.result->eligible},
+                    {"combinations", a.selection.result->combinations},
+                    {"site_classes", a.selection.site_classes},
+                    {"site_class_steps", english(a.selection.steps)},
+                    {"warnings", a.selection.warnings},
+                    {"range_note", note_text(Lang::en, a.selection.range_note)},
+                    {"shared_note", note_text(Lang::en, a.selection.shared_note)},
+                    {"spectra", a.selection.spectra},
+                    {"max_scale", a.selection.max_scale},
+                    {"max_mean_scale", a.selection.max_mean_scale},
+                    {"max_misfit", a.selection.max_misfit},
+                    {"include_near_fault", a.selection.include_near_fault},
+                    {"near_fault_km", a.selection.near_fault_km},
+                    {"near_fault_excluded", a.selection.near_fault_excluded},
+                    {"mean_scale", a.selection.result->mean_scale},
+                    {"max_scaled_pga_g", a.selection.result->max_scaled_pga / g},
+                    {"max_pga_ratio", a.selection.max_pga_ratio},
+                    {"target_pga_g", a.selection.result->target_pga / g},
+                    {"periods_s", a.selection.result->periods},
+                    {"target_m_s2", a.selection.result->target},
+                    {"mean_psa_m_s2", a.selection.result->mean_psa},
                     {"record_psa_m_s2", [&] {
                        nlohmann::json rp = nlohmann::json::array();
-                       for (const auto& sr : a.selection->records) rp.push_back(sr.psa);
+                       for (const auto& sr : a.selection.result->records) rp.push_back(sr.psa);
                        return rp;
                      }()}};
 }
@@ -149,9 +158,9 @@ nlohmann::json selection_json(const FacadeAssessment& a) {
 // Each analysis: record, polarity, restitution, peak rotation, d*, end, and the ties' outcome.
 nlohmann::json analyses_json(const FacadeAssessment& a) {
   nlohmann::json runs = nlohmann::json::array();
-  for (const DynamicRun& r : a.runs) {
-    runs.push_back({{"record", a.records[r.record].name},
-                    {"scale", a.records[r.record].scale},
+  for (const DynamicRun& r : a.dynamics.runs) {
+    runs.push_back({{"record", a.dynamics.records[r.record].name},
+                    {"scale", a.dynamics.records[r.record].scale},
                     {"reversed", r.reversed},
                     {"restitution", r.e},
                     {"theta_max", r.result.theta_max},
@@ -185,7 +194,7 @@ nlohmann::json analyses_json(const FacadeAssessment& a) {
                     {"broken_by_elongation", x.broken_by_elongation},
                     {"t_broken_s", x.broken ? nlohmann::json(x.t_broken) : nlohmann::json(nullptr)}});
     runs.back()["ties"] = lv;
-    runs.back()["ties_per"] = a.mechanism_dynamics && a.mechanism_dynamics->single_body() ? "m of wall" : "level";
+    runs.back()["ties_per"] = a.dynamics.mechanism && a.dynamics.mechanism->single_body() ? "m of wall" : "level";
     runs.back()["rod_broken"] = r.ruptured;
   }
   return runs;
@@ -194,8 +203,8 @@ nlohmann::json analyses_json(const FacadeAssessment& a) {
 // The summary per restitution coefficient (Circ. 2019 C8.7.1.2.1.9).
 nlohmann::json summaries_json(const FacadeAssessment& a) {
   nlohmann::json sums = nlohmann::json::array();
-  for (const RestitutionSummary& s : a.summaries)
-    sums.push_back({{"restitution", describe(a.dynamic->restitutions[s.restitution])},
+  for (const RestitutionSummary& s : a.dynamics.summaries)
+    sums.push_back({{"restitution", describe(a.dynamics.spec->restitutions[s.restitution])},
                     {"e", s.e},
                     {"failed", s.failed},
                     {"analyses", s.analyses},
@@ -252,27 +261,27 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
   nlohmann::json checks = nlohmann::json::array();
   for (const CheckRow& c : a.checks) checks.push_back(to_json(c));
   j["checks"] = checks;
-  if (a.dynamic) {
+  if (a.dynamics.spec) {
     nlohmann::json d;
-    d["applies"] = a.dynamic_applies;
-    d["note"] = a.dynamic_note;
-    if (a.dynamic_applies) {
+    d["applies"] = a.dynamics.applies;
+    d["note"] = a.dynamics.note;
+    if (a.dynamics.applies) {
       d["model"] = dynamic_model_json(a);
-      if (!a.code_floor_Se.empty())
-        d["floor_spectra"] = {{"periods_s", a.periods}, {"floor_mean_psa_m_s2", a.floor_mean_psa},
-                              {"code_floor_Se_m_s2", a.code_floor_Se}};
+      if (!a.curves.code_floor_Se.empty())
+        d["floor_spectra"] = {{"periods_s", a.curves.periods}, {"floor_mean_psa_m_s2", a.curves.floor_mean_psa},
+                              {"code_floor_Se_m_s2", a.curves.code_floor_Se}};
       d["records"] = records_json(a);
-      d["record_failures"] = a.record_failures;
-      if (a.compatibility.computed)
-        d["compatibility"] = {{"T_min", a.compatibility.range.T_min},
-                              {"T_max", a.compatibility.range.T_max},
-                              {"min_ratio", a.compatibility.min_ratio},
-                              {"max_ratio", a.compatibility.max_ratio},
-                              {"band_satisfied", a.compatibility.band_satisfied},
-                              {"message", a.compatibility.message}};
-      if (a.selection) d["selection"] = selection_json(a);
+      d["record_failures"] = a.selection.record_failures;
+      if (a.dynamics.compatibility.computed)
+        d["compatibility"] = {{"T_min", a.dynamics.compatibility.range.T_min},
+                              {"T_max", a.dynamics.compatibility.range.T_max},
+                              {"min_ratio", a.dynamics.compatibility.min_ratio},
+                              {"max_ratio", a.dynamics.compatibility.max_ratio},
+                              {"band_satisfied", a.dynamics.compatibility.band_satisfied},
+                              {"message", a.dynamics.compatibility.message}};
+      if (a.selection.result) d["selection"] = selection_json(a);
       d["duration"] = {{"whole_record", true},
-                       {"free_motion_cap_s", a.free_tail_s},
+                       {"free_motion_cap_s", a.dynamics.free_tail_s},
                        {"free_energy_fraction", free_energy_fraction}};
       d["analyses"] = analyses_json(a);
       d["summary"] = summaries_json(a);
@@ -293,7 +302,7 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
   j["comparison"] = v["by_approach"];
   j["overall"] = v["overall"];
   nlohmann::json energy = nlohmann::json::array();
-  for (const CheckRow& r : a.energy_rows) energy.push_back(to_json(r));
+  for (const CheckRow& r : a.dynamics.energy_rows) energy.push_back(to_json(r));
   j["energy"] = energy;
   j["warnings"] = a.warnings;
   return j;

@@ -44,15 +44,15 @@ void add_readings_appendix(Ctx& c) {
   bool height = false;
   for (const CandidateResult& cr : a.kinematic.candidates) height = height || cr.Z > 0.0;
   if (height) add("reading.floor");
-  if (a.dynamic && a.dynamic_applies) {
+  if (a.dynamics.spec && a.dynamics.applies) {
     add("reading.collapse");
     add("reading.count");
     add("reading.energy");
-    if (a.mechanism_dynamics && a.mechanism_dynamics->filter) add("reading.floor_filter");
-    for (const Restitution& r : a.dynamic->restitutions)
+    if (a.dynamics.mechanism && a.dynamics.mechanism->filter) add("reading.floor_filter");
+    for (const Restitution& r : a.dynamics.spec->restitutions)
       if (r.kind == Restitution::Kind::one_sided_theory) add("reading.one_sided");
-    if (a.mechanism_dynamics && !a.mechanism_dynamics->single_body()) add("reading.chain");
-    if (a.selection) add("reading.selection");
+    if (a.dynamics.mechanism && !a.dynamics.mechanism->single_body()) add("reading.chain");
+    if (a.selection.result) add("reading.selection");
   }
   if (a.kase.site) add("reading.tr");
   std::vector<std::string> unknown;

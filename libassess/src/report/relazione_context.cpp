@@ -4,6 +4,7 @@
 
 #include "report/number_text.hpp"
 #include "report/text_format.hpp"
+#include "assess/report/note_text.hpp"
 
 #include <cctype>
 #include <cmath>
@@ -96,6 +97,16 @@ int dc_decimals(double dc, bool satisfied) {
 std::string Ctx::loc(const std::string& text) const {
   if (L == Lang::en) return typeset(text);
   return decimal_comma(typeset(localise(L, text)));
+}
+
+std::string Ctx::note(const Note& n) const {
+  const std::string s = typeset(note_text(L, n));
+  return L == Lang::en ? s : decimal_comma(s);
+}
+
+std::string Ctx::note(const NoteText& n) const {
+  const std::string s = typeset(note_text(L, n));
+  return L == Lang::en ? s : decimal_comma(s);
 }
 
 std::string Ctx::n(double v, int prec) const {

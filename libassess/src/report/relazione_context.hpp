@@ -6,6 +6,7 @@
 #pragma once
 
 #include "assess/assessment/facade_assessment.hpp"
+#include "assess/assessment/note.hpp"
 #include "assess/report/relazione.hpp"
 #include "assess/assessment/tie_intervention.hpp"
 #include "assess/report/document.hpp"
@@ -40,6 +41,9 @@ struct Ctx {
   const std::string& t(const std::string& key) const { return msg(L, key); }
   /// A text generated in English by the analysis, in the report's language (decimal comma in Italian).
   std::string loc(const std::string& text) const;
+  /// A note of the assessment (assessment/note.hpp) in the report's language, typeset as loc() does.
+  std::string note(const Note& n) const;
+  std::string note(const NoteText& n) const;
   /// A number with `prec` decimals in the report's convention ("0,991" in Italian; "∞", "—").
   std::string n(double v, int prec) const;
   /// A number in scientific notation with `prec` decimals ("1,234e-04" in Italian).

@@ -34,23 +34,23 @@ const FacadeAssessment& governing_dynamics(const FacadeAssessment& a) {
     if (m.method != "dynamic" || m.code != a.verdict.conclusion_code || m.governing < 0) continue;
     const std::size_t ci = candidate_of(a, a.verdict.rows[std::size_t(m.governing)].candidate);
     for (std::size_t k = 0; k < a.other_dynamics.size(); ++k)
-      if (a.other_dynamics_candidate[k] == ci && a.other_dynamics[k].dynamic_applies) return a.other_dynamics[k];
+      if (a.other_dynamics_candidate[k] == ci && a.other_dynamics[k].dynamics.applies) return a.other_dynamics[k];
   }
   return a;
 }
 
 std::string restitution_text(const Ctx& c, const FacadeAssessment& x, const RestitutionSummary& s) {
-  const Restitution& r = x.dynamic->restitutions[s.restitution];
+  const Restitution& r = x.dynamics.spec->restitutions[s.restitution];
   if (r.kind == Restitution::Kind::value) return "e = " + c.n(s.e, 3);
   return "e = " + c.n(s.e, 3) + " (" + c.t(r.kind == Restitution::Kind::housner ? "dyn.e_housner" : "dyn.e_one_sided") + ")";
 }
 
 // The model: equation of motion with its reference, and the body's parameters.
 void add_model(Ctx& c, const FacadeAssessment& x) {
-  const MechanismDynamics& md = *x.mechanism_dynamics;
-  const DynamicSpec& d = *x.dynamic;
+  const MechanismDynamics& md = *x.dynamics.mechanism;
+  const DynamicSpec& d = *x.dynamics.spec;
   std::string what = c.t(d.smooth ? "dyn.smooth" : "dyn.rigid") + ", ";
-  if (x.model) what += c.t(x.model->sidedness() == Sidedness::one_sided ? "dyn.one_sided" : "dyn.two_sided") + ". ";
+  if (x.dynamics.model) what += c.t(x.dynamics.model->sidedness() == Sidedness::one_sided ? "dyn.one_sided" : "dyn.two_sided") + ". ";
   c.d.add_paragraph(what + c.t("dyn.model") + ": " + c.loc(md.describe()) + ".");
   c.d.add_paragraph(c.t(md.single_body() ? "dyn.eq_body" : "dyn.eq_chain"), "note");
   if (d.smooth) c.d.add_paragraph(c.t("dyn.eq_winkler"), "note");
@@ -59,8 +59,8 @@ void add_model(Ctx& c, const FacadeAssessment& x) {
   auto row = [&](const std::string& what, double v, int prec, const std::string& unit, const std::string& how) {
     rows.push_back({Cell(what), c.num(v, prec), Cell(unit), Cell(how)});
   };
-  if (x.model) {
-    const RockingBody& b = x.model->body();
+  if (x.dynamics.model) {
+    const RockingBody& b = x.dynamics.model->body();
     row(c.t("dyn.p_W"), b.W / units::kN, 3, "kN/m", c.t("dyn.h_W"));
     row(c.t("dyn.p_b"), b.b, 4, "m", c.t("dyn.h_b"));
     row(c.t("dyn.p_xG"), b.x_G(), 4, "m", c.t("dyn.h_xG"));
@@ -72,26 +72,26 @@ void add_model(Ctx& c, const FacadeAssessment& x) {
     if (b.M_ext != 0.0) row(c.t("dyn.p_Mext"), b.M_ext / units::kN, 3, "kN m/m", c.t("dyn.h_Mext"));
     if (d.smooth) {
       row("k", d.k / units::kN, 0, "kN/m³", c.t("data.case"));
-      row("θ_cr", x.model->theta_cr(), 6, "rad", "W / (2 b² k)");
+      row("θ_cr", x.dynamics.model->theta_cr(), 6, "rad", "W / (2 b² k)");
     }
-    row("θu", x.model->theta_u(+1), 5, "rad", c.t(d.smooth ? "dyn.h_thu_smooth" : "dyn.h_thu_rigid"));
+    row("θu", x.dynamics.model->theta_u(+1), 5, "rad", c.t(d.smooth ? "dyn.h_thu_smooth" : "dyn.h_thu_rigid"));
   } else {
     row("q_u", md.q_u(), 5, "rad", c.t("dyn.h_qu_chain"));
   }
   row(c.t("dyn.capacity"), md.capacity() / units::kN, 4, "kJ/m", c.t("dyn.h_capacity"));
-  for (const RestitutionSummary& s : x.summaries) rows.push_back({Cell(c.t("dyn.p_e")), c.num(s.e, 4), Cell("–"), Cell(restitution_text(c, x, s))});
+  for (const RestitutionSummary& s : x.dynamics.summaries) rows.push_back({Cell(c.t("dyn.p_e")), c.num(s.e, 4), Cell("–"), Cell(restitution_text(c, x, s))});
   Cell hv(c.t("kin.value"));
   hv.numeric = true;
   c.d.add_cell_table({Cell(c.t("kin.quantity")), hv, Cell(c.t("kin.unit")), Cell(c.t("kin.how"))}, rows,
                      c.t("dyn.params_cap"));
   // The moment-rotation curve.
-  if (!x.mr_theta.empty()) {
+  if (!x.curves.mr_theta.empty()) {
     Plot mr = c.plot();
     mr.title = c.t("dyn.mr_title");
     mr.x_label = "θ (rad)";
     mr.y_label = "M (kN m/m)";
-    PlotSeries s = plot_series(c.t("dyn.mr_series"), PlotSeries::Style::Line, x.mr_theta);
-    for (double v : x.mr_moment) s.y.push_back(v / units::kN);
+    PlotSeries s = plot_series(c.t("dyn.mr_series"), PlotSeries::Style::Line, x.curves.mr_theta);
+    for (double v : x.curves.mr_moment) s.y.push_back(v / units::kN);
     s.highlight = true;
     mr.series.push_back(s);
     mr.height = 320;
@@ -108,15 +108,15 @@ void add_records(Ctx& c, const FacadeAssessment& x) {
   if (!c.o.shared_records.empty()) {
     // A building's set shared by several mechanisms: described once in its summary (issue 28, item 11).
     std::string names;
-    for (const RecordUsed& r : x.records) names += (names.empty() ? "" : ", ") + r.name + " (" + c.n(r.scale, 3) + ")";
+    for (const RecordUsed& r : x.dynamics.records) names += (names.empty() ? "" : ", ") + r.name + " (" + c.n(r.scale, 3) + ")";
     c.d.add_paragraph(msgf(c.L, "dyn.shared_set", c.o.shared_records, names));
-    if (!x.selection_range_note.empty())
-      c.d.add_list({{Span{c.t("dyn.range_why") + ": ", true}, Span{c.loc(x.selection_range_note)}}});
+    if (!x.selection.range_note.empty())
+      c.d.add_list({{Span{c.t("dyn.range_why") + ": ", true}, Span{c.note(x.selection.range_note)}}});
     return;
   }
   std::vector<std::vector<Cell>> rows;
   auto or_dash = [](const std::string& t) { return t.empty() ? std::string("—") : t; };
-  for (const RecordUsed& r : x.records) {
+  for (const RecordUsed& r : x.dynamics.records) {
     Cell dist = c.num(r.distance_km, 1);
     if (std::isfinite(r.distance_km)) dist.text += " " + r.distance_kind;
     std::string cls = or_dash(r.site_class);
@@ -129,7 +129,7 @@ void add_records(Ctx& c, const FacadeAssessment& x) {
         : r.event.empty() && r.station.empty() ? std::string("—")
                                                : or_dash(r.event) + " / " + or_dash(r.station) + ", " + or_dash(r.component);
     std::string flags;
-    for (const std::string& f : r.flags) flags += (flags.empty() ? "" : "; ") + c.loc(f);
+    for (const Note& f : r.flags) flags += (flags.empty() ? "" : "; ") + c.note(f);
     Cell name(r.name, flags);
     if (!r.flags.empty()) name.tone = Tone::fail;
     rows.push_back({name, Cell(what), c.num(r.Mw, 2), dist, Cell(cls), c.num(r.usable_period_s, 2), c.num(r.scale, 3),
@@ -140,51 +140,51 @@ void add_records(Ctx& c, const FacadeAssessment& x) {
                       Cell(c.t("dyn.site_class")), numeric_cell(c.t("dyn.usable")), numeric_cell(c.t("dyn.scale")), numeric_cell("PGA (g)"),
                       numeric_cell(c.t("dyn.deviation")), numeric_cell(c.t("dyn.rank")), numeric_cell(c.t("dyn.integrated"))},
                      rows, c.t("dyn.records_cap") + " " + c.t("dyn.flags_cap"));
-  for (const std::string& w : x.selection_warnings) c.d.add_paragraph(c.t("dyn.selection_warning") + ": " + c.loc(w));
-  for (const std::string& f : x.record_failures) c.d.add_paragraph(c.t("dyn.skipped") + ": " + f);
-  if (x.selection) {
-    c.d.add_paragraph(msgf(c.L, "dyn.selection", c.n(x.selection_range.T_min, 2), c.n(x.selection_range.T_max, 2)) +
-                      c.loc(x.selection->message));
+  for (const std::string& w : x.selection.warnings) c.d.add_paragraph(c.t("dyn.selection_warning") + ": " + c.loc(w));
+  for (const std::string& f : x.selection.record_failures) c.d.add_paragraph(c.t("dyn.skipped") + ": " + f);
+  if (x.selection.result) {
+    c.d.add_paragraph(msgf(c.L, "dyn.selection", c.n(x.selection.range.T_min, 2), c.n(x.selection.range.T_max, 2)) +
+                      c.loc(x.selection.result->message));
     std::vector<Inline> why;
-    if (!x.selection_range_note.empty()) why.push_back({Span{c.t("dyn.range_why") + ": ", true}, Span{c.loc(x.selection_range_note)}});
-    if (!x.selection_shared_note.empty())
-      why.push_back({Span{c.t("dyn.shared_why") + ": ", true}, Span{c.loc(x.selection_shared_note)}});
-    for (const std::string& st : x.selection_steps) why.push_back({Span{c.t("dyn.classes_tried") + ": ", true}, Span{c.loc(st)}});
+    if (!x.selection.range_note.empty()) why.push_back({Span{c.t("dyn.range_why") + ": ", true}, Span{c.note(x.selection.range_note)}});
+    if (!x.selection.shared_note.empty())
+      why.push_back({Span{c.t("dyn.shared_why") + ": ", true}, Span{c.note(x.selection.shared_note)}});
+    for (const NoteText& st : x.selection.steps) why.push_back({Span{c.t("dyn.classes_tried") + ": ", true}, Span{c.note(st)}});
     // The limits the set obeys and the rules it was chosen by (what the terminal printed before issue 41).
-    const SelectionResult& s = *x.selection;
+    const SelectionResult& s = *x.selection.result;
     why.push_back({Span{c.t("dyn.limits") + ": ", true},
-                   Span{msgf(c.L, "dyn.limits_text", c.n(x.selection_max_scale, 2), c.n(s.mean_scale, 3),
-                             c.n(x.selection_max_mean_scale, 2), c.n(s.max_scaled_pga / g, 3),
-                             c.n(x.selection_max_pga_ratio, 2), c.n(x.selection_max_pga_ratio * s.target_pga / g, 3))}});
+                   Span{msgf(c.L, "dyn.limits_text", c.n(x.selection.max_scale, 2), c.n(s.mean_scale, 3),
+                             c.n(x.selection.max_mean_scale, 2), c.n(s.max_scaled_pga / g, 3),
+                             c.n(x.selection.max_pga_ratio, 2), c.n(x.selection.max_pga_ratio * s.target_pga / g, 3))}});
     why.push_back({Span{c.t("dyn.rules") + ": ", true},
-                   Span{msgf(c.L, x.selection_include_near_fault ? "dyn.rules_nf_in" : "dyn.rules_nf_out",
-                             x.selection_near_fault_excluded, c.n(x.selection_near_fault_km, 0),
-                             c.n(x.selection_max_misfit, 2)) +
-                        c.t(x.selection_spectra == "precomputed" ? "dyn.spectra_pre" : "dyn.spectra_int")}});
+                   Span{msgf(c.L, x.selection.include_near_fault ? "dyn.rules_nf_in" : "dyn.rules_nf_out",
+                             x.selection.near_fault_excluded, c.n(x.selection.near_fault_km, 0),
+                             c.n(x.selection.max_misfit, 2)) +
+                        c.t(x.selection.spectra == "precomputed" ? "dyn.spectra_pre" : "dyn.spectra_int")}});
     if (!why.empty()) c.d.add_list(why);
   }
-  if (x.compatibility.computed) c.d.add_paragraph(c.t("dyn.compat_msg") + ": " + c.loc(x.compatibility.message) + ".");
+  if (x.dynamics.compatibility.computed) c.d.add_paragraph(c.t("dyn.compat_msg") + ": " + c.loc(x.dynamics.compatibility.message) + ".");
   std::map<std::string, int> ends;
-  for (const DynamicRun& r : x.runs) ++ends[to_string(r.result.end)];
+  for (const DynamicRun& r : x.dynamics.runs) ++ends[to_string(r.result.end)];
   std::string list;
   for (const auto& [k, n] : ends) list += (list.empty() ? "" : "; ") + c.t("end." + k) + ": " + std::to_string(n);
-  c.d.add_paragraph(c.t("dyn.duration") + " " + c.n(x.free_tail_s, 0) + " s. " + c.t("dyn.ends") + " — " + list + ".");
+  c.d.add_paragraph(c.t("dyn.duration") + " " + c.n(x.dynamics.free_tail_s, 0) + " s. " + c.t("dyn.ends") + " — " + list + ".");
 }
 
 void add_floor_spectra(Ctx& c, const FacadeAssessment& x);
 
 void add_compatibility(Ctx& c, const FacadeAssessment& x, const std::string& id = "fig-compatibility") {
-  const auto se = x.site_Se.find(LimitState::SLV);
-  if (se == x.site_Se.end() || x.record_psa.empty()) return;
+  const auto se = x.curves.site_Se.find(LimitState::SLV);
+  if (se == x.curves.site_Se.end() || x.curves.record_psa.empty()) return;
   Plot p = c.plot();
   p.title = c.t("dyn.compat_title");
   p.x_label = "T (s)";
   p.y_label = "Se, PSA (g)";
-  const PeriodRange& rg = x.compatibility.computed ? x.compatibility.range : x.selection_range;
+  const PeriodRange& rg = x.dynamics.compatibility.computed ? x.dynamics.compatibility.range : x.selection.range;
   if (rg.T_max > rg.T_min) {
     PlotSeries band = plot_series(c.t("dyn.band"), PlotSeries::Style::Band);
-    for (std::size_t i = 0; i < x.periods.size(); ++i) {
-      const double T = x.periods[i];
+    for (std::size_t i = 0; i < x.curves.periods.size(); ++i) {
+      const double T = x.curves.periods[i];
       if (T < rg.T_min || T > rg.T_max) continue;
       band.x.push_back(T);
       band.y.push_back(1.3 * se->second[i] / g);
@@ -193,27 +193,27 @@ void add_compatibility(Ctx& c, const FacadeAssessment& x, const std::string& id 
     band.color = "#1f5fbf";
     if (!band.x.empty()) p.series.push_back(band);
   }
-  PlotSeries target = plot_series("Se SLV", PlotSeries::Style::Line, x.periods);
+  PlotSeries target = plot_series("Se SLV", PlotSeries::Style::Line, x.curves.periods);
   for (double v : se->second) target.y.push_back(v / g);
   target.color = "#1f5fbf";
   target.highlight = true;
   p.series.push_back(target);
-  for (std::size_t i = 0; i < x.record_psa.size(); ++i) {
-    PlotSeries s = plot_series(i == 0 ? c.t("site.records_scaled") : "", PlotSeries::Style::Line, x.periods);
-    for (double v : x.record_psa[i]) s.y.push_back(v / g);
+  for (std::size_t i = 0; i < x.curves.record_psa.size(); ++i) {
+    PlotSeries s = plot_series(i == 0 ? c.t("site.records_scaled") : "", PlotSeries::Style::Line, x.curves.periods);
+    for (double v : x.curves.record_psa[i]) s.y.push_back(v / g);
     s.color = "#aaaaaa";
     p.series.push_back(s);
   }
-  if (!x.mean_psa.empty()) {
-    PlotSeries s = plot_series(c.t("site.records_mean"), PlotSeries::Style::Line, x.periods);
-    for (double v : x.mean_psa) s.y.push_back(v / g);
+  if (!x.curves.mean_psa.empty()) {
+    PlotSeries s = plot_series(c.t("site.records_mean"), PlotSeries::Style::Line, x.curves.periods);
+    for (double v : x.curves.mean_psa) s.y.push_back(v / g);
     s.color = "#000000";
     s.highlight = true;
     p.series.push_back(s);
   }
   double top = 0.0;
   for (double v : se->second) top = std::max(top, 1.3 * v / g);
-  for (double v : x.mean_psa) top = std::max(top, v / g);
+  for (double v : x.curves.mean_psa) top = std::max(top, v / g);
   if (rg.T_max > rg.T_min) {
     PlotSeries l1 = plot_series(c.t("dyn.range"), PlotSeries::Style::Dashed, {rg.T_min, rg.T_min}, {0.0, 1.2 * top});
     PlotSeries l2 = plot_series("", PlotSeries::Style::Dashed, {rg.T_max, rg.T_max}, {0.0, 1.2 * top});
@@ -224,22 +224,22 @@ void add_compatibility(Ctx& c, const FacadeAssessment& x, const std::string& id 
   p.y_min = 0.0;
   p.y_max = 1.25 * top;
   p.x_min = 0.0;
-  p.x_max = x.periods.empty() ? 4.0 : x.periods.back();
+  p.x_max = x.curves.periods.empty() ? 4.0 : x.curves.periods.back();
   c.d.add_svg(render_svg(p), c.t("dyn.compat_fig"), id);
 }
 
 // At height: the mean spectrum of the floor motions against the code's floor spectrum.
 void add_floor_spectra(Ctx& c, const FacadeAssessment& x) {
-  if (x.code_floor_Se.empty()) return;
+  if (x.curves.code_floor_Se.empty()) return;
   Plot fp = c.plot();
   fp.title = c.t("dyn.floor_title");
   fp.x_label = "T (s)";
   fp.y_label = "Sa (g)";
-  PlotSeries fm = plot_series(c.t("dyn.floor_series"), PlotSeries::Style::Line, x.periods);
-  for (double v : x.floor_mean_psa) fm.y.push_back(v / g);
+  PlotSeries fm = plot_series(c.t("dyn.floor_series"), PlotSeries::Style::Line, x.curves.periods);
+  for (double v : x.curves.floor_mean_psa) fm.y.push_back(v / g);
   fm.highlight = true;
-  PlotSeries cf = plot_series("S_eZ [C7.2.6]", PlotSeries::Style::Dashed, x.periods);
-  for (double v : x.code_floor_Se) cf.y.push_back(v / g);
+  PlotSeries cf = plot_series("S_eZ [C7.2.6]", PlotSeries::Style::Dashed, x.curves.periods);
+  for (double v : x.curves.code_floor_Se) cf.y.push_back(v / g);
   fp.series.push_back(fm);
   fp.series.push_back(cf);
   c.d.add_svg(render_svg(fp), c.t("dyn.floor_fig"), "fig-floor-spectra");
@@ -248,7 +248,7 @@ void add_floor_spectra(Ctx& c, const FacadeAssessment& x) {
 void add_histories(Ctx& c, const FacadeAssessment& x) {
   std::vector<std::pair<std::string, std::string>> panels;
   static const char* colours[] = {"#1f5fbf", "#d9730d", "#2b7a2b", "#8a3ea8"};
-  for (std::size_t ir = 0; ir < x.records.size(); ++ir) {
+  for (std::size_t ir = 0; ir < x.dynamics.records.size(); ++ir) {
     Plot p = c.plot();
     p.x_label = "t (s)";
     p.y_label = "θ/θu";
@@ -257,13 +257,13 @@ void add_histories(Ctx& c, const FacadeAssessment& x) {
     p.font_size = 11;  // legible at a third of the page width
     p.key = "off";
     double t_show = 0.0, t_last = 0.0;
-    for (const DynamicRun& r : x.runs)
+    for (const DynamicRun& r : x.dynamics.runs)
       if (r.record == ir) t_show = std::max(t_show, r.result.t_theta_max), t_last = std::max(t_last, r.result.t_end);
     p.x_min = 0.0;
     p.x_max = std::min(t_last, t_show + 10.0);
     if (!(p.x_max > 0.0)) p.x_max = 1.0;
     bool overturned = false;
-    for (const DynamicRun& r : x.runs) {
+    for (const DynamicRun& r : x.dynamics.runs) {
       if (r.record != ir || r.result.history.t.empty()) continue;
       PlotSeries s = plot_series("", r.reversed ? PlotSeries::Style::Dashed : PlotSeries::Style::Line);
       const std::vector<double>& t = r.result.history.t;
@@ -291,7 +291,7 @@ void add_histories(Ctx& c, const FacadeAssessment& x) {
     p.series.push_back(one);
     p.y_min = -1.1;
     p.y_max = 1.1;
-    panels.push_back({render_svg(p), x.records[ir].name + (overturned ? " — " + c.t("dyn.overturning") : "")});
+    panels.push_back({render_svg(p), x.dynamics.records[ir].name + (overturned ? " — " + c.t("dyn.overturning") : "")});
   }
   if (panels.empty()) return;
   c.d.add_heading(c.t("dyn.histories"), 3, false);
@@ -305,9 +305,9 @@ void add_summary(Ctx& c, const FacadeAssessment& x) {
   const bool brief = c.building && c.tabulati;  // a building's mechanism: the caption in short (issue 36: length)
   if (!brief) c.d.add_heading(c.t("dyn.summary"), 3, false);
   std::vector<std::vector<Cell>> rows;
-  for (const RestitutionSummary& s : x.summaries) {
+  for (const RestitutionSummary& s : x.dynamics.summaries) {
     bool uplift = false;
-    for (const DynamicRun& r : x.runs) uplift = uplift || (r.restitution == s.restitution && r.result.theta_max > 0.0);
+    for (const DynamicRun& r : x.dynamics.runs) uplift = uplift || (r.restitution == s.restitution && r.result.theta_max > 0.0);
     Cell coll(std::to_string(s.collapsed) + " / " + std::to_string(s.analyses));
     coll.numeric = true;
     if (s.failed > 0) coll.note = msgf(c.L, "dc.failed", s.failed, s.analyses);
@@ -343,14 +343,14 @@ void add_others(Ctx& c, const FacadeAssessment& shown) {
   std::vector<std::vector<Cell>> rows;
   for (const auto& [o, ci] : list) {
     const std::string label = c.loc(c.candidate(ci).label);
-    if (!o->dynamic_applies) {
+    if (!o->dynamics.applies) {
       rows.push_back({Cell(label), Cell("—"), Cell("—"), c.num(std::nan(""), 0), c.num(std::nan(""), 4),
-                      c.num(std::nan(""), 4), c.num(std::nan(""), 3), Cell(c.t("dyn.na") + ": " + c.loc(o->dynamic_note))});
+                      c.num(std::nan(""), 4), c.num(std::nan(""), 3), Cell(c.t("dyn.na") + ": " + c.loc(o->dynamics.note))});
       continue;
     }
     std::string recs;
-    for (const RecordUsed& r : o->records) recs += (recs.empty() ? "" : ", ") + r.name + " (" + c.n(r.scale, 2) + ")";
-    for (const RestitutionSummary& s : o->summaries) {
+    for (const RecordUsed& r : o->dynamics.records) recs += (recs.empty() ? "" : ", ") + r.name + " (" + c.n(r.scale, 2) + ")";
+    for (const RestitutionSummary& s : o->dynamics.summaries) {
       Cell coll(std::to_string(s.collapsed) + " / " + std::to_string(s.analyses));
       coll.numeric = true;
       Cell dc = c.dc_cell(s.dc_slv, s.outcome());
@@ -377,14 +377,14 @@ void add_record_set(Ctx& c, const FacadeAssessment& x, const std::string& id) {
 
 void add_dynamic_summary(Ctx& c) {
   const FacadeAssessment& a = c.a;
-  if (!a.dynamic) return;
+  if (!a.dynamics.spec) return;
   c.d.add_heading(c.t("dyn.heading"));
-  if (!a.dynamic_applies) {
-    c.d.add_paragraph(c.t("dyn.na") + ": " + c.loc(a.dynamic_note));
+  if (!a.dynamics.applies) {
+    c.d.add_paragraph(c.t("dyn.na") + ": " + c.loc(a.dynamics.note));
     return;
   }
   const FacadeAssessment& x = governing_dynamics(a);
-  c.d.add_paragraph(c.t("dyn.model_heading") + ": " + c.loc(x.dynamic_note) + ".");
+  c.d.add_paragraph(c.t("dyn.model_heading") + ": " + c.loc(x.dynamics.note) + ".");
   c.d.add_heading(c.t("dyn.input_heading"), 3, false);
   add_records(c, x);
   if (c.o.shared_records.empty()) add_compatibility(c, x);
@@ -400,19 +400,19 @@ void add_dynamic_summary(Ctx& c) {
 // candidate are in the tabulati.
 void add_dynamic(Ctx& c) {
   const FacadeAssessment& a = c.a;
-  if (!a.dynamic) return;
+  if (!a.dynamics.spec) return;
   c.d.add_heading(c.t("dyn.heading"), 2, false, true, "dynamic");
-  if (!a.dynamic_applies) {
-    c.d.add_paragraph(c.t("dyn.na") + ": " + c.loc(a.dynamic_note));
+  if (!a.dynamics.applies) {
+    c.d.add_paragraph(c.t("dyn.na") + ": " + c.loc(a.dynamics.note));
     return;
   }
   const FacadeAssessment& x = governing_dynamics(a);
   const std::string label = c.loc(x.kinematic.candidates.front().label);
   c.d.add_paragraph(msgf(c.L, &x == &a ? "dyn.developed_gov" : "dyn.developed_other", label));
-  const DynamicSpec& d = *x.dynamic;
+  const DynamicSpec& d = *x.dynamics.spec;
   std::string what = c.t(d.smooth ? "dyn.smooth" : "dyn.rigid") + ", ";
-  if (x.model) what += c.t(x.model->sidedness() == Sidedness::one_sided ? "dyn.one_sided" : "dyn.two_sided") + ". ";
-  Inline model{Span{what + c.t("dyn.model") + ": " + c.loc(x.mechanism_dynamics->describe()) + "."}};
+  if (x.dynamics.model) what += c.t(x.dynamics.model->sidedness() == Sidedness::one_sided ? "dyn.one_sided" : "dyn.two_sided") + ". ";
+  Inline model{Span{what + c.t("dyn.model") + ": " + c.loc(x.dynamics.mechanism->describe()) + "."}};
   if (c.tabulati) {
     model.push_back(Span{" "});
     model.push_back(reference(c.t("dyn.params_in_tab"), c.here("dynamic"), tabulati_key));
@@ -420,20 +420,20 @@ void add_dynamic(Ctx& c) {
   c.d.add_paragraph(model);
   // The records: by name and scale (the full table in the tabulati, or the building's set).
   std::string names;
-  for (const RecordUsed& r : x.records) names += (names.empty() ? "" : ", ") + r.name + " (" + c.n(r.scale, 3) + ")";
+  for (const RecordUsed& r : x.dynamics.records) names += (names.empty() ? "" : ", ") + r.name + " (" + c.n(r.scale, 3) + ")";
   if (!c.o.shared_records.empty()) {
     c.d.add_paragraph(msgf(c.L, "dyn.shared_set", c.o.shared_records, names));
   } else {
-    Inline recs{Span{msgf(c.L, "dyn.records_body", x.records.size(), names)}};
+    Inline recs{Span{msgf(c.L, "dyn.records_body", x.dynamics.records.size(), names)}};
     if (c.tabulati) {
       recs.push_back(Span{" "});
       recs.push_back(reference(c.t("dyn.records_in_tab"), c.here("records"), tabulati_key));
     }
     c.d.add_paragraph(recs);
-    if (x.selection)
-      c.d.add_paragraph(msgf(c.L, "dyn.selection", c.n(x.selection_range.T_min, 2), c.n(x.selection_range.T_max, 2)) +
-                        c.loc(x.selection->message));
-    if (x.compatibility.computed) c.d.add_paragraph(c.t("dyn.compat_msg") + ": " + c.loc(x.compatibility.message) + ".");
+    if (x.selection.result)
+      c.d.add_paragraph(msgf(c.L, "dyn.selection", c.n(x.selection.range.T_min, 2), c.n(x.selection.range.T_max, 2)) +
+                        c.loc(x.selection.result->message));
+    if (x.dynamics.compatibility.computed) c.d.add_paragraph(c.t("dyn.compat_msg") + ": " + c.loc(x.dynamics.compatibility.message) + ".");
   }
   add_choice_notes(c, {"selection_window"});
   add_summary(c, x);
@@ -458,7 +458,7 @@ void add_dynamic(Ctx& c) {
 // of every analysis, and every other candidate analysed.
 void add_tab_dynamic(Ctx& c) {
   const FacadeAssessment& a = c.a;
-  if (!a.dynamic || !a.dynamic_applies) return;
+  if (!a.dynamics.spec || !a.dynamics.applies) return;
   c.d.add_heading(c.t("dyn.heading"), 2, false, true, "dynamic");
   const FacadeAssessment& x = governing_dynamics(a);
   if (c.tabulati)

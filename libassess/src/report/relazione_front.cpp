@@ -42,7 +42,7 @@ void add_front_matter(Ctx& c) {
   row("front.client", r.client);
   row("front.work", r.work.empty() ? a.kase.project : r.work);
   row("front.location", r.location);
-  if (a.kase.site) row("front.site", c.loc(a.site_description), false);
+  if (a.kase.site) row("front.site", c.loc(a.site.description), false);
   row("front.engineer", r.engineer);
   row("front.registration", r.registration);
   row("front.date", c.o.date.empty() ? detail::today_utc() : c.o.date, false);

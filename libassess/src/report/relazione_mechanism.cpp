@@ -293,7 +293,7 @@ void adrs_figure(Ctx& c, std::size_t ci, const std::string& id) {
   std::vector<const CheckRow*> disp;
   for (const CheckRow& r : cr.checks)
     if (r.kind == "displacement") disp.push_back(&r);
-  const std::vector<AdrsDemand>* curves = ci < c.a.candidate_adrs.size() ? &c.a.candidate_adrs[ci] : nullptr;
+  const std::vector<AdrsDemand>* curves = ci < c.a.curves.candidate_adrs.size() ? &c.a.curves.candidate_adrs[ci] : nullptr;
   // One colour per code edition and limit state across every report (issue 28, item 9).
   auto colour = [](const CheckRow& r) {
     if (r.code == "NTC2008") return "#d9730d";
