@@ -35,7 +35,9 @@ ENGLISH = ["the", "of", "and", "hinge", "records", "record", "analyses", "mean",
            "without", "bare", "supports", "crushing", "restraint", "lever", "seat", "deg",
            # issue 36: a record's class, developers' words, the engine's certainty tags and notes
            "class", "classes", "issue", "TODO", "[R]", "[I]", "[V-T]", "[V-S]", "[D]", "scelta nostra",
-           "richiamato, non verificato", "sliders", "hinge", "Wedge", "wall"]
+           "richiamato, non verificato", "sliders", "hinge", "Wedge", "wall",
+           # issue 36: the catalogue's block names, quoted ("blocco 'lower'")
+           "'lower'", "'upper'"]
 # A decimal point: a number "0.991" that is not a clause or section number ("C8.7.1", "§3.2", "[3.2.10]").
 DECIMAL_POINT = re.compile(r"(?<![\w§.\[/-])\d+\.\d+(?![.\d\w])")
 
