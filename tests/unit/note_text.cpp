@@ -24,7 +24,9 @@ std::size_t placeholders(const std::string& t) {
 
 TEST_CASE("every note id has its text in both languages, one placeholder per argument") {
   CHECK(note_ids().size() >= 17);
-  for (const auto& [id, args] : note_ids()) {
+  for (const auto& entry : note_ids()) {
+    const std::string id = entry.first;  // not a structured binding: CAPTURE is a lambda (clang 14, C++17)
+    const auto args = entry.second;
     CAPTURE(id);
     CHECK(placeholders(msg(Lang::it, "note." + id)) == args);
     CHECK(placeholders(msg(Lang::en, "note." + id)) == args);

@@ -210,7 +210,9 @@ std::vector<AcceptabilityCheck> acceptability_checks(const FacadeAssessment& a) 
   const KinematicResult& k = cr.result;
   const Chain& chain = a.kase.mechanism.candidates[ci].chain;
 
-  AcceptabilityCheck alpha{"alpha0_closed_form", cr.label};
+  AcceptabilityCheck alpha;
+  alpha.key = "alpha0_closed_form";
+  alpha.candidate = cr.label;
   alpha.value = k.alpha0;
   alpha.tolerance = 1e-6;
   if (!k.ties.empty()) {
@@ -224,7 +226,9 @@ std::vector<AcceptabilityCheck> acceptability_checks(const FacadeAssessment& a) 
   }
   out.push_back(alpha);
 
-  AcceptabilityCheck disp{"displacement_vs_thickness", cr.label};
+  AcceptabilityCheck disp;
+  disp.key = "displacement_vs_thickness";
+  disp.candidate = cr.label;
   if (!k.curve_complete()) {
     disp.applicable = false;
     disp.why_not = "curve";
@@ -237,7 +241,9 @@ std::vector<AcceptabilityCheck> acceptability_checks(const FacadeAssessment& a) 
   }
   out.push_back(disp);
 
-  AcceptabilityCheck methods{"methods_agree", cr.label};
+  AcceptabilityCheck methods;
+  methods.key = "methods_agree";
+  methods.candidate = cr.label;
   for (const MethodVerdict& x : a.verdict.methods)
     if (x.code == m->code) {
       methods.methods.push_back({x.method, x.max_dc});
