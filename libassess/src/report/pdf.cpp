@@ -54,7 +54,7 @@ void html_to_pdf(const std::string& html, const std::string& pdf_path) {
 std::vector<std::pair<int, std::string>> pdf_outline(const std::string& pdf_path) {
   detail::TempDir dir("assess_outline_");
   const std::filesystem::path xml = dir.path() / "outline.xml", log = dir.path() / "log";
-  const int code = detail::run_program({"pdftohtml", "-xml", "-i", "-q", "-nodrm", pdf_path, (dir.path() / "outline").string()}, log);
+  const int code = detail::run_program({"pdftohtml", "-xml", "-i", "-q", "-nodrm", "-f", "1", "-l", "1", pdf_path, (dir.path() / "outline").string()}, log);
   std::vector<std::pair<int, std::string>> out;
   if (code != 0) return out;
   const std::string s = detail::read_file(xml);
