@@ -19,8 +19,8 @@
 #include "report/text_format.hpp"
 
 #include <algorithm>
-#include <limits>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace assess {
