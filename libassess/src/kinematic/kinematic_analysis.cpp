@@ -18,6 +18,7 @@
 
 #include "assess/kinematic/code_rules.hpp"
 #include "assess/support/error.hpp"
+#include "kinematic/ground_hinge.hpp"
 #include "assess/support/units.hpp"
 #include "support/root_find.hpp"
 
@@ -438,13 +439,7 @@ void d_star_of_events(const PathSamples& S, const std::vector<TieRestraint>& tie
 KinematicOptions rotation_capped(const Chain& chain, const KinematicOptions& opt, KinematicResult& R) {
   KinematicOptions capped = opt;
   if (!std::isfinite(opt.rotation_cap)) return capped;
-  const Constraint* hinge = nullptr;
-  for (const Constraint& c : chain.constraints())
-    if (c.type == ConstraintType::GroundHinge) {
-      if (hinge) throw InputError("rotation cap: the mechanism has more than one ground hinge");
-      hinge = &c;
-    }
-  if (!hinge) throw InputError("rotation cap: the mechanism has no ground hinge");
+  const Constraint* hinge = &detail::single_ground_hinge(chain, "rotation cap");
   const Eigen::VectorXd v0 =
       chain.virtual_displacement(Eigen::VectorXd::Zero(static_cast<Eigen::Index>(chain.n_coordinates())));
   const double phi = v0(3 * hinge->block + 2);

@@ -11,6 +11,7 @@
 #include "kinematic/catalogue_helpers.hpp"
 
 #include "assess/support/error.hpp"
+#include "kinematic/ground_hinge.hpp"
 #include "assess/kinematic/kinematic_analysis.hpp"
 #include "assess/support/units.hpp"
 #include "assess/kinematic/roof_thrust.hpp"
@@ -32,13 +33,7 @@ double activation_multiplier(const Chain& chain) {
 double bearing_part_rotation(const Chain& chain, int part) {
   if (part < 0 || part >= static_cast<int>(chain.blocks().size()))
     throw InputError("bearing part: block " + std::to_string(part) + " is not in the mechanism");
-  const Constraint* hinge = nullptr;
-  for (const Constraint& c : chain.constraints())
-    if (c.type == ConstraintType::GroundHinge) {
-      if (hinge) throw InputError("bearing part: the mechanism has more than one ground hinge");
-      hinge = &c;
-    }
-  if (!hinge) throw InputError("bearing part: the mechanism has no ground hinge");
+  const Constraint* hinge = &detail::single_ground_hinge(chain, "bearing part");
   // x outward: the part's weights lie inward of the hinge (x < x_O) and above it.
   double Ws = 0.0, Wz = 0.0;
   for (const Load& l : chain.loads())
