@@ -1,10 +1,13 @@
-// pdf.cpp: HTML -> PDF through headless Chromium. The page is written to a
-// private temporary directory, printed with --print-to-pdf (no header and
-// footer lines; PDF bookmarks from the headings), and the PDF is checked to
-// exist and start with "%PDF". The outline is read back with pdftohtml
-// (poppler-utils) for the contents' page numbers.
+// pdf.cpp: HTML -> PDF through headless Chromium. Each page is written to a
+// private temporary directory and printed by the run's one browser through
+// its DevTools pipe (report/devtools_browser.hpp), or, when the browser does
+// not speak it, by `chromium --print-to-pdf` (no header and footer lines;
+// PDF bookmarks from the headings); the PDF is checked to start with "%PDF".
+// The outline is read back with pdftohtml (poppler-utils) for the contents'
+// page numbers.
 #include "assess/report/pdf.hpp"
 
+#include "report/devtools_browser.hpp"
 #include "report/external_tool.hpp"
 
 #include "assess/support/error.hpp"
@@ -13,6 +16,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <mutex>
 
 namespace assess {
 
@@ -26,18 +30,18 @@ std::string xml_unescape(std::string s) {
   return s;
 }
 
-}  // namespace
-
-void html_to_pdf(const std::string& html, const std::string& pdf_path) {
-  namespace fs = std::filesystem;
+std::string browser_program() {
   const char* env = std::getenv("CHROMIUM");
-  const std::string browser = env && *env ? env : "chromium";
-  detail::TempDir dir("assess_pdf_");
-  const fs::path page = dir.path() / "report.html", out = dir.path() / "report.pdf", log = dir.path() / "chromium.log";
-  detail::write_file(page, html, "--pdf");
+  return env && *env ? env : "chromium";
+}
+
+// One print by its own browser process (`--print-to-pdf`): the PDF's bytes.
+std::string print_alone(const std::string& browser, const std::filesystem::path& page, const std::filesystem::path& dir) {
+  namespace fs = std::filesystem;
+  const fs::path out = dir / "report.pdf", log = dir / "chromium.log";
   const int code = detail::run_program(
       {browser, "--headless", "--no-sandbox", "--disable-gpu", "--no-first-run", "--disable-background-networking",
-       "--disable-component-update", "--disable-sync", "--user-data-dir=" + (dir.path() / "profile").string(),
+       "--disable-component-update", "--disable-sync", "--user-data-dir=" + (dir / "profile").string(),
        "--no-pdf-header-footer", "--print-to-pdf-no-header", "--generate-pdf-document-outline",
        "--print-to-pdf=" + out.string(), "file://" + page.string()},
       log);
@@ -45,11 +49,50 @@ void html_to_pdf(const std::string& html, const std::string& pdf_path) {
     throw InputError("--pdf: " + browser + " was not found on PATH: install it (Debian: apt-get install chromium)");
   if (code == detail::program_timed_out)
     throw InputError("--pdf: " + browser + " did not finish printing within its time limit (180 s)");
-  if (code != 0 || !fs::exists(out) || detail::read_file(out).compare(0, 4, "%PDF") != 0)
+  if (code != 0 || !fs::exists(out))
     throw InputError("--pdf: " + browser + " could not print the report (exit " + std::to_string(code) + ")");
-  // Whole or not at all, never over an input of the run (output_file.hpp).
-  write_output_file(pdf_path, read_input_file(out.string(), input_kinds::own_output), "--pdf");
+  return read_input_file(out.string(), input_kinds::own_output);
 }
+
+}  // namespace
+
+struct PdfPrinter::Impl {
+  std::string browser = browser_program();
+  std::mutex mutex;  // guards the start
+  std::unique_ptr<detail::TempDir> dir;
+  std::unique_ptr<detail::DevtoolsBrowser> session;
+  bool alone = false;  // the browser does not speak DevTools: one process per print
+
+  // The run's browser, started at the first print; nullptr: print alone.
+  detail::DevtoolsBrowser* started() {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (session || alone) return session.get();
+    dir = std::make_unique<detail::TempDir>("assess_browser_");
+    try {
+      session = std::make_unique<detail::DevtoolsBrowser>(browser, dir->path());
+    } catch (const detail::DevtoolsUnavailable&) {
+      alone = true;
+    }
+    return session.get();
+  }
+};
+
+PdfPrinter::PdfPrinter() : impl_(std::make_unique<Impl>()) {}
+PdfPrinter::~PdfPrinter() = default;
+
+void PdfPrinter::print(const std::string& html, const std::string& pdf_path) {
+  detail::TempDir dir("assess_pdf_");
+  const std::filesystem::path page = dir.path() / "report.html";
+  detail::write_file(page, html, "--pdf");
+  detail::DevtoolsBrowser* session = impl_->started();
+  const std::string pdf = session ? session->print(page) : print_alone(impl_->browser, page, dir.path());
+  if (pdf.compare(0, 4, "%PDF") != 0)
+    throw InputError("--pdf: " + impl_->browser + " could not print the report (what it wrote is not a PDF)");
+  // Whole or not at all, never over an input of the run (output_file.hpp).
+  write_output_file(pdf_path, pdf, "--pdf");
+}
+
+void html_to_pdf(const std::string& html, const std::string& pdf_path) { PdfPrinter().print(html, pdf_path); }
 
 std::vector<std::pair<int, std::string>> pdf_outline(const std::string& pdf_path) {
   detail::TempDir dir("assess_outline_");

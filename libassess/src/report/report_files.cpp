@@ -5,7 +5,8 @@
 // contents' page numbers are then printed alone (the document up to its
 // contents, every other mark invisible) and laid over those first pages with
 // qpdf (issue 32: one print of the whole document, not two). Without qpdf, a
-// second print of the whole document. The two PDFs print side by side and
+// second print of the whole document. One browser prints everything (it
+// starts once, pdf.hpp), the two PDFs side by side, and
 // the Word documents are written by pandoc meanwhile (issue 36, item 7);
 // every file through the guarded writer (support/output_file.hpp).
 #include "assess/report/report_files.hpp"
@@ -95,17 +96,17 @@ bool overlay_first_pages(const fs::path& base, const fs::path& overlay, const fs
 // empty, its bookmarks giving each heading's page, the page numbers printed
 // alone and laid over the first pages (without qpdf: a second print). Returns
 // the heading pages (for the HTML edition) and writes `final`.
-std::map<std::string, int> print_pdf(const Document& d, const fs::path& dir, const fs::path& final) {
+std::map<std::string, int> print_pdf(PdfPrinter& printer, const Document& d, const fs::path& dir, const fs::path& final) {
   fs::create_directories(dir);
   HtmlOptions o;
   o.page_column = true;
   const fs::path first = dir / "first.pdf", toc = dir / "contents.pdf";
-  html_to_pdf(to_html(d, o), first.string());
+  printer.print(to_html(d, o), first.string());
   o.pages = heading_pages(d, pdf_outline(first.string()));
   HtmlOptions numbers = o;
   numbers.contents_overlay = true;
-  html_to_pdf(to_html(d, numbers), toc.string());
-  if (!overlay_first_pages(first, toc, final, dir)) html_to_pdf(to_html(d, o), final.string());
+  printer.print(to_html(d, numbers), toc.string());
+  if (!overlay_first_pages(first, toc, final, dir)) printer.print(to_html(d, o), final.string());
   return o.pages;
 }
 
@@ -126,6 +127,7 @@ void write_report_files(const Relazione& r, const ReportFiles& files) {
   const Document* docs[2] = {&r.body, &r.tabulati};
   auto path_of = [](const std::string& body_path, int k) { return k == 0 ? body_path : tabulati_path(body_path); };
   detail::TempDir dir("assess_report_");
+  PdfPrinter printer;  // one browser for both documents' prints
   // Side by side (issue 36, item 7): the Word documents (pandoc) and the
   // tabulati's PDF while the body's PDF prints.
   std::vector<std::future<void>> jobs;
@@ -135,17 +137,17 @@ void write_report_files(const Relazione& r, const ReportFiles& files) {
       if (j.valid()) j.wait();
   };
   try {
+    // The tabulati's PDF first: the longest print, the run's critical path.
+    if (!files.pdf.empty())
+      jobs.push_back(std::async(std::launch::async, [&] {
+        pages[1] = print_pdf(printer, *docs[1], dir.path() / "pdf-1", dir.path() / "final-1.pdf");
+      }));
     for (int k = 0; k < 2 && !files.docx.empty(); ++k)
       jobs.push_back(std::async(std::launch::async, [&, k] {
         write_docx(*docs[k], (dir.path() / ("report-" + std::to_string(k) + ".docx")).string(),
                    "--docx " + path_of(files.docx, k));
       }));
-    if (!files.pdf.empty()) {
-      jobs.push_back(std::async(std::launch::async, [&] {
-        pages[1] = print_pdf(*docs[1], dir.path() / "pdf-1", dir.path() / "final-1.pdf");
-      }));
-      pages[0] = print_pdf(*docs[0], dir.path() / "pdf-0", dir.path() / "final-0.pdf");
-    }
+    if (!files.pdf.empty()) pages[0] = print_pdf(printer, *docs[0], dir.path() / "pdf-0", dir.path() / "final-0.pdf");
     for (auto& j : jobs) j.get();  // rethrows the first failure
   } catch (...) {
     wait_all();

@@ -152,10 +152,11 @@ void release_temporary(const std::string& path) {
   r.temporaries.erase(path);
 }
 
-ProgramResult run_program(const std::vector<std::string>& argv, const std::string& log_path, int timeout_s,
-                          const std::string& tmpdir) {
-  ProgramResult res;
-  if (argv.empty()) return res;
+StartedProgram start_program(const std::vector<std::string>& argv, const std::string& log_path,
+                             const std::string& tmpdir, const std::vector<std::pair<int, int>>& fds) {
+  StartedProgram started;
+  ProgramResult& res = started.result;
+  if (argv.empty()) return started;
   posix_spawn_file_actions_t fa;
   posix_spawnattr_t at;
   ::posix_spawn_file_actions_init(&fa);
@@ -163,6 +164,9 @@ ProgramResult run_program(const std::vector<std::string>& argv, const std::strin
   ::posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
   ::posix_spawn_file_actions_addopen(&fa, 1, log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
   ::posix_spawn_file_actions_adddup2(&fa, 1, 2);
+  // Descriptors the program inherits at the numbers it expects (Chromium's
+  // --remote-debugging-pipe: 3 and 4); ours are close-on-exec and above 4.
+  for (const auto& [child, ours] : fds) ::posix_spawn_file_actions_adddup2(&fa, ours, child);
   // Its own process group (stopped as a whole), no signal blocked, the
   // default action for the signals this process handles or ignores.
   ::posix_spawnattr_setflags(&at, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
@@ -194,8 +198,18 @@ ProgramResult run_program(const std::vector<std::string>& argv, const std::strin
   }
   ::posix_spawn_file_actions_destroy(&fa);
   ::posix_spawnattr_destroy(&at);
-  if (res.start_error) return res;
+  if (res.start_error) return started;
   res.started = true;
+  started.pid = pid;
+  return started;
+}
+
+ProgramResult wait_program(StartedProgram& started, int timeout_s) {
+  ProgramResult res = started.result;
+  if (!res.started || started.pid <= 0) return res;
+  const pid_t pid = started.pid;
+  started.pid = -1;
+  Registry& r = registry();
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(timeout_s);
   int status = 0;
   for (auto pause = std::chrono::milliseconds(1);; pause = std::min(pause * 2, std::chrono::milliseconds(20))) {
@@ -220,6 +234,12 @@ ProgramResult run_program(const std::vector<std::string>& argv, const std::strin
     else if (WIFSIGNALED(status)) res.signal = WTERMSIG(status);
   }
   return res;
+}
+
+ProgramResult run_program(const std::vector<std::string>& argv, const std::string& log_path, int timeout_s,
+                          const std::string& tmpdir) {
+  StartedProgram p = start_program(argv, log_path, tmpdir);
+  return wait_program(p, timeout_s);
 }
 
 }  // namespace assess

@@ -1,18 +1,40 @@
-// pdf.hpp: print an HTML report to PDF with Debian's headless Chromium
-// (`chromium --headless --print-to-pdf`), A4 as the page's @page rule says
-// (report layer; runs an external program, computes nothing).
+// pdf.hpp: print an HTML report to PDF with Debian's headless Chromium, A4
+// as the page's @page rule says (report layer; runs an external program,
+// computes nothing). A PdfPrinter starts the browser once for all the PDFs
+// of a run and prints them side by side through its DevTools pipe; a
+// browser that does not speak it prints with `--print-to-pdf`, one process
+// per print.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace assess {
 
-/// Prints the HTML document `html` (the text of the page) to the PDF file
-/// `pdf_path`. The browser is `chromium` on PATH, or the program named by the
-/// environment variable CHROMIUM. @throws InputError if the browser is missing
-/// (naming the Debian package chromium), fails, or writes no PDF.
+/// The PDFs of one run, printed by one headless browser (started at the
+/// first print, closed with the printer). The browser is `chromium` on
+/// PATH, or the program named by the environment variable CHROMIUM.
+class PdfPrinter {
+ public:
+  PdfPrinter();
+  ~PdfPrinter();
+  PdfPrinter(const PdfPrinter&) = delete;
+  PdfPrinter& operator=(const PdfPrinter&) = delete;
+
+  /// Prints the HTML document `html` (the text of the page) to the PDF file
+  /// `pdf_path`; several threads may print at once. @throws InputError if
+  /// the browser is missing (naming the Debian package chromium), fails,
+  /// takes more than 180 s or writes no PDF.
+  void print(const std::string& html, const std::string& pdf_path);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// One print with a printer of its own (PdfPrinter::print).
 void html_to_pdf(const std::string& html, const std::string& pdf_path);
 
 /// The bookmarks of a PDF printed by html_to_pdf, in document order: (page,

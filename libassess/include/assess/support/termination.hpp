@@ -15,6 +15,7 @@
 
 #include <atomic>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace assess {
@@ -64,5 +65,20 @@ struct ProgramResult {
 /// holds them).
 ProgramResult run_program(const std::vector<std::string>& argv, const std::string& log_path, int timeout_s,
                           const std::string& tmpdir = "");
+
+/// A program started by start_program and not yet waited for.
+struct StartedProgram {
+  int pid = -1;          ///< its pid and process group (registered: stopped with this process)
+  ProgramResult result;  ///< `started` and `start_error` so far
+};
+
+/// run_program in two halves, for a program one talks to while it runs
+/// (Chromium's DevTools pipe): starts it as run_program does, with the
+/// descriptors `fds` (pairs: the number in the program, ours) inherited at
+/// the numbers it expects; wait_program waits at most `timeout_s` seconds
+/// (then kills its group), stops what it left in its group and forgets it.
+StartedProgram start_program(const std::vector<std::string>& argv, const std::string& log_path,
+                             const std::string& tmpdir = "", const std::vector<std::pair<int, int>>& fds = {});
+ProgramResult wait_program(StartedProgram& program, int timeout_s);
 
 }  // namespace assess
