@@ -584,11 +584,17 @@ void add_building_choices(Lang L, const BuildingAssessment& b, DocumentBuilder& 
       g->members.push_back(id);
       if (x.flips()) g->flips.push_back(id);
       if (x.computed()) {
-        const double change = std::isfinite(x.dc) && std::isfinite(x.dc_alternative) ? std::abs(x.dc_alternative - x.dc)
-                                                                                      : std::numeric_limits<double>::infinity();
+        // ∞ → ∞ (an overturning with both) is no change.
+        const double change = x.dc == x.dc_alternative ? 0.0
+                              : std::isfinite(x.dc) && std::isfinite(x.dc_alternative)
+                                  ? std::abs(x.dc_alternative - x.dc)
+                                  : std::numeric_limits<double>::infinity();
+        auto dc_text = [&](double v) {
+          return fx(L, v, 3) + (x.method == "dynamic" && std::isinf(v) ? " " + msg(L, "dyn.overturning") : "");
+        };
         if (change > g->worst) {
           g->worst = change;
-          g->worst_text = id + ": " + fx(L, x.dc, 3) + " → " + fx(L, x.dc_alternative, 3) + " (" + msg(L, "method." + x.method) + ")";
+          g->worst_text = id + ": " + dc_text(x.dc) + " → " + dc_text(x.dc_alternative) + " (" + msg(L, "method." + x.method) + ")";
         }
       }
     }

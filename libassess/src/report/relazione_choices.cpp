@@ -70,6 +70,9 @@ std::vector<std::vector<Cell>> choice_rows(const Ctx& c, const std::vector<Model
     // A dynamic D/C of zero is computed: the wall never lifted (issue 36, item 5: said why).
     if (x.method == "dynamic" && x.dc == 0.0) dc.note = c.t("dyn.no_uplift");
     if (x.computed() && x.method == "dynamic" && x.dc_alternative == 0.0) dc_alt.note = c.t("dyn.no_uplift");
+    // An infinite dynamic D/C is an overturning: said in words beside "∞".
+    if (x.method == "dynamic" && std::isinf(x.dc)) dc.note = c.t("dyn.overturning");
+    if (x.computed() && x.method == "dynamic" && std::isinf(x.dc_alternative)) dc_alt.note = c.t("dyn.overturning");
     Cell out = x.computed() ? c.outcome_cell(x.outcome_alternative) : Cell(c.t("choice.not_computed." + x.not_computed));
     if (x.computed()) out.note = c.t(x.flips() ? "choice.changes" : "choice.same");
     rows.push_back({name, Cell(choice_where(c.L, x.key)), Cell(choice_value(c, x, false)), Cell(choice_value(c, x, true)), dc,
@@ -101,7 +104,8 @@ void add_choice_notes(Ctx& c, const std::vector<std::string>& keys) {
     else if (x.method != base->method || x.dc != base->dc) shared = false;
   }
   auto with_dc = [&](const ModellingChoice& x) {
-    return " (" + c.t("method." + x.method) + ", D/C " + c.n(x.dc, 3) + ")";
+    const bool fell = x.method == "dynamic" && std::isinf(x.dc);
+    return " (" + c.t("method." + x.method) + ", D/C " + c.n(x.dc, 3) + (fell ? ", " + c.t("dyn.overturning") : "") + ")";
   };
   std::vector<Inline> items;
   for (const std::string& key : order) {
@@ -117,6 +121,7 @@ void add_choice_notes(Ctx& c, const std::vector<std::string>& keys) {
       s += choice_value(c, x, true);
       if (x.computed()) {
         s += " → " + c.n(x.dc_alternative, 3);
+        if (x.method == "dynamic" && std::isinf(x.dc_alternative)) s += " (" + c.t("dyn.overturning") + ")";
         if (x.flips()) s += " (" + verdict_word(c.L, x.outcome_alternative) + ")";
       }
     }
