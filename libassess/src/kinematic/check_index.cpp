@@ -25,7 +25,6 @@ namespace assess {
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-constexpr double inf = std::numeric_limits<double>::infinity();
 constexpr int scan_per_decade = 6;
 constexpr double ln_tol = 1e-12;  // Brent's tolerance on ln x (relative 1e-12 on TR or ag)
 
