@@ -212,7 +212,7 @@ DevtoolsBrowser::~DevtoolsBrowser() {
   if (s_ && s_->fd >= 0) s_->stop(true);
 }
 
-std::string DevtoolsBrowser::print(const std::filesystem::path& page, int timeout_s) {
+std::string DevtoolsBrowser::print(const std::filesystem::path& page, bool bookmarks, int timeout_s) {
   const auto deadline = Clock::now() + std::chrono::seconds(timeout_s);
   using nlohmann::json;
   try {
@@ -228,8 +228,8 @@ std::string DevtoolsBrowser::print(const std::filesystem::path& page, int timeou
                               {{"printBackground", true},
                                {"preferCSSPageSize", true},
                                {"displayHeaderFooter", false},
-                               {"generateTaggedPDF", true},
-                               {"generateDocumentOutline", true}},
+                               {"generateTaggedPDF", bookmarks},
+                               {"generateDocumentOutline", bookmarks}},
                               session, deadline);
     s_->call("Target.closeTarget", {{"targetId", target}}, "", deadline);
     return base64_decode(pdf.value("data", ""));

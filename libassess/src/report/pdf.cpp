@@ -80,12 +80,12 @@ struct PdfPrinter::Impl {
 PdfPrinter::PdfPrinter() : impl_(std::make_unique<Impl>()) {}
 PdfPrinter::~PdfPrinter() = default;
 
-void PdfPrinter::print(const std::string& html, const std::string& pdf_path) {
+void PdfPrinter::print(const std::string& html, const std::string& pdf_path, bool bookmarks) {
   detail::TempDir dir("assess_pdf_");
   const std::filesystem::path page = dir.path() / "report.html";
   detail::write_file(page, html, "--pdf");
   detail::DevtoolsBrowser* session = impl_->started();
-  const std::string pdf = session ? session->print(page) : print_alone(impl_->browser, page, dir.path());
+  const std::string pdf = session ? session->print(page, bookmarks) : print_alone(impl_->browser, page, dir.path());
   if (pdf.compare(0, 4, "%PDF") != 0)
     throw InputError("--pdf: " + impl_->browser + " could not print the report (what it wrote is not a PDF)");
   // Whole or not at all, never over an input of the run (output_file.hpp).

@@ -105,7 +105,7 @@ std::map<std::string, int> print_pdf(PdfPrinter& printer, const Document& d, con
   o.pages = heading_pages(d, pdf_outline(first.string()));
   HtmlOptions numbers = o;
   numbers.contents_overlay = true;
-  printer.print(to_html(d, numbers), toc.string());
+  printer.print(to_html(d, numbers), toc.string(), false);  // laid over the first: no bookmarks of its own
   if (!overlay_first_pages(first, toc, final, dir)) printer.print(to_html(d, o), final.string());
   return o.pages;
 }

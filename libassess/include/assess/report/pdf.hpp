@@ -24,10 +24,11 @@ class PdfPrinter {
   PdfPrinter& operator=(const PdfPrinter&) = delete;
 
   /// Prints the HTML document `html` (the text of the page) to the PDF file
-  /// `pdf_path`; several threads may print at once. @throws InputError if
-  /// the browser is missing (naming the Debian package chromium), fails,
-  /// takes more than 180 s or writes no PDF.
-  void print(const std::string& html, const std::string& pdf_path);
+  /// `pdf_path`; several threads may print at once. With `bookmarks` false,
+  /// no outline and no tags (a print laid over another one). @throws
+  /// InputError if the browser is missing (naming the Debian package
+  /// chromium), fails, takes more than 180 s or writes no PDF.
+  void print(const std::string& html, const std::string& pdf_path, bool bookmarks = true);
 
  private:
   struct Impl;
