@@ -243,7 +243,10 @@ TEST_CASE("the Word writer's parts: every block type of the document model") {
     CHECK(doc.find("<w:tbl>", caption) != std::string::npos);
     CHECK(count(doc, "<w:tbl>") == 1);
     CHECK(count(doc, "<w:tblHeader/>") == 1);
-    CHECK(count(doc, "<w:gridCol ") == 2);
+    // Column widths as a browser's automatic layout: each column's longest line (10 and 16 characters at
+    // 94 twips, plus 216 twips of margins: 1156 and 1720) widened in proportion to the text width, 10206 twips.
+    CHECK(count(doc, "<w:tblGrid><w:gridCol w:w=\"4102\"/><w:gridCol w:w=\"6104\"/></w:tblGrid>") == 1);
+    CHECK(count(doc, "<w:tcW w:w=\"6104\" w:type=\"dxa\"/>") == 3);
     CHECK(count(doc, "<w:jc w:val=\"right\"/>") == 3);  // "D/C", "0,85", "1,10"
     CHECK(count(doc, "<w:br/></w:r><w:r><w:rPr><w:rStyle w:val=\"Nota\"/></w:rPr><w:t xml:space=\"preserve\">Circ. C8.7.1.2.1") == 1);
     CHECK(count(doc, "w:fill=\"FFF6D6\"") == 1);

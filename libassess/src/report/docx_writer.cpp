@@ -168,6 +168,57 @@ std::string insert_before(std::string text, const std::string& before, const std
   return text;
 }
 
+// Characters of UTF-8 text (its code points).
+std::size_t characters(const std::string& s) {
+  return std::size_t(std::count_if(s.begin(), s.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
+}
+
+// The columns' widths in twips, summing to `total`, as a browser's automatic
+// layout gives them (the PDF's tables): each column at least its longest word
+// and, room allowing, its longest line (capped), the rest shared in proportion.
+// The 8.5 pt table text is about 94 twips a character (DejaVu Sans, 0.55 em);
+// a cell's margins (the reference's table style) 2 x 108 twips.
+std::vector<long> column_widths(const Table& t, long total) {
+  constexpr double per_char = 94.0, margins = 216.0;
+  constexpr std::size_t widest_line = 45, widest_word = 25;
+  const std::size_t n = std::max<std::size_t>(1, t.header.size());
+  std::vector<double> least(n, margins), want(n, margins);
+  auto measure = [&](const Cell& c, std::size_t k) {
+    for (const std::string* text : {&c.text, &c.note}) {
+      std::size_t word = 0, longest = 0;
+      for (std::size_t at = 0; at <= text->size(); ++at) {
+        if (at == text->size() || (*text)[at] == ' ') {
+          longest = std::max(longest, characters(text->substr(at - word, word)));
+          word = 0;
+        } else {
+          ++word;
+        }
+      }
+      least[k] = std::max(least[k], margins + per_char * double(std::min(longest, widest_word)));
+      want[k] = std::max(want[k], margins + per_char * double(std::min(characters(*text), widest_line)));
+    }
+  };
+  for (std::size_t k = 0; k < n && k < t.header.size(); ++k) measure(t.header[k], k);
+  for (const auto& row : t.rows)
+    for (std::size_t k = 0; k < n && k < row.size(); ++k) measure(row[k], k);
+  double sum_least = 0, sum_want = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    sum_least += least[k];
+    sum_want += want[k];
+  }
+  std::vector<double> w(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    if (sum_want <= double(total)) w[k] = want[k] * double(total) / sum_want;              // all fits: widen in proportion
+    else if (sum_least >= double(total)) w[k] = least[k] * double(total) / sum_least;     // even the words do not
+    else w[k] = least[k] + (want[k] - least[k]) * (double(total) - sum_least) / (sum_want - sum_least);
+  }
+  std::vector<long> out(n);
+  long used = 0;
+  for (std::size_t k = 0; k < n; ++k) used += out[k] = std::lround(w[k]);
+  out.back() += total - used;
+  return out;
+}
+
 struct Picture {
   std::string svg, png;
   long cx = 0, cy = 0;  // EMU
@@ -234,22 +285,21 @@ struct Writer {
     return "<w:tc><w:tcPr>" + props + "</w:tcPr>" +
            paragraph(runs, "Compact", c.numeric ? "<w:jc w:val=\"right\"/>" : "") + "</w:tc>";
   }
-  std::string row(const std::vector<Cell>& cells, long width, bool header) {
+  std::string row(const std::vector<Cell>& cells, const std::vector<long>& widths, bool header) {
     std::string s = std::string("<w:tr><w:trPr><w:cantSplit/>") + (header ? "<w:tblHeader/>" : "") + "</w:trPr>";
-    for (const Cell& c : cells) s += cell(c, width, header);
+    for (std::size_t k = 0; k < cells.size(); ++k) s += cell(cells[k], widths[std::min(k, widths.size() - 1)], header);
     return s + "</w:tr>";
   }
   std::string block(const Table& t) {
     std::string s;
     if (!t.caption.empty()) s += paragraph(run(t.caption, ""), "TableCaption");
-    const std::size_t columns = std::max<std::size_t>(1, t.header.size());
-    const long width = std::lround(text_width_mm * twips_per_mm / double(columns));
+    const std::vector<long> widths = column_widths(t, std::lround(text_width_mm * twips_per_mm));
     s += "<w:tbl><w:tblPr><w:tblStyle w:val=\"Table\"/><w:tblW w:w=\"5000\" w:type=\"pct\"/>"
          "<w:tblLook w:firstRow=\"1\" w:lastRow=\"0\" w:firstColumn=\"0\" w:lastColumn=\"0\" w:noHBand=\"0\" "
          "w:noVBand=\"0\" w:val=\"0020\"/></w:tblPr><w:tblGrid>";
-    for (std::size_t k = 0; k < columns; ++k) s += "<w:gridCol w:w=\"" + std::to_string(width) + "\"/>";
-    s += "</w:tblGrid>" + row(t.header, width, true);
-    for (const auto& r : t.rows) s += row(r, width, false);
+    for (long width : widths) s += "<w:gridCol w:w=\"" + std::to_string(width) + "\"/>";
+    s += "</w:tblGrid>" + row(t.header, widths, true);
+    for (const auto& r : t.rows) s += row(r, widths, false);
     // Word needs a paragraph between two tables, or it joins them.
     return s + "</w:tbl>" + paragraph("", "", "<w:spacing w:before=\"0\" w:after=\"0\"/>");
   }
