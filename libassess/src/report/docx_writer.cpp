@@ -175,16 +175,26 @@ std::size_t characters(const std::string& s) {
 
 // The columns' widths in twips, summing to `total`, as a browser's automatic
 // layout gives them (the PDF's tables): each column at least its longest word
-// and, room allowing, its longest line (capped), the rest shared in proportion.
-// The 8.5 pt table text is about 94 twips a character (DejaVu Sans, 0.55 em);
-// a cell's margins (the reference's table style) 2 x 108 twips.
+// (a number whole: it does not wrap, the PDF's td.num) and, room allowing, its
+// longest line (capped), the rest shared in proportion. When even the words do
+// not fit, what must not break (a number, a verdict, a short code) keeps its
+// width, a column of words at least 8 characters, and the longer words share
+// the rest.
+// Widths in DejaVu Sans at the tables' 8.5 pt (170 twips), measured on the
+// Word file printed by LibreOffice: a number about 0.6 em a character (digits
+// 0.64, the comma 0.32), other text about 0.56 em, bold 10 % wider (a
+// verdict's styles are bold), a note's 8 pt 6 % narrower; a cell's margins
+// 2 x 108 twips (the reference's table style).
 std::vector<long> column_widths(const Table& t, long total) {
-  constexpr double per_char = 94.0, margins = 216.0;
+  constexpr double em = 170.0, margins = 216.0;
   constexpr std::size_t widest_line = 45, widest_word = 25;
   const std::size_t n = std::max<std::size_t>(1, t.header.size());
-  std::vector<double> least(n, margins), want(n, margins);
+  std::vector<double> hard(n, margins), least(n, margins), want(n, margins);
   auto measure = [&](const Cell& c, std::size_t k) {
     for (const std::string* text : {&c.text, &c.note}) {
+      const bool note = text == &c.note;
+      const double per_char = em * (c.numeric && !note ? 0.6 : 0.56) * (!note && (c.strong || c.tone != Tone::plain) ? 1.1 : 1.0) *
+                              (note ? 8.0 / 8.5 : 1.0);
       std::size_t word = 0, longest = 0;
       for (std::size_t at = 0; at <= text->size(); ++at) {
         if (at == text->size() || (*text)[at] == ' ') {
@@ -194,23 +204,34 @@ std::vector<long> column_widths(const Table& t, long total) {
           ++word;
         }
       }
-      least[k] = std::max(least[k], margins + per_char * double(std::min(longest, widest_word)));
+      const bool number = c.numeric && !note;
+      if (number) longest = characters(*text);
+      const double word_width = margins + per_char * double(std::min(longest, widest_word));
+      least[k] = std::max(least[k], word_width);
+      // Never broken inside: a number, a verdict, a short word ("M10", "Cod.").
+      if (number || (!note && (c.strong || c.tone != Tone::plain)) || longest <= 5) hard[k] = std::max(hard[k], word_width);
       want[k] = std::max(want[k], margins + per_char * double(std::min(characters(*text), widest_line)));
     }
   };
   for (std::size_t k = 0; k < n && k < t.header.size(); ++k) measure(t.header[k], k);
   for (const auto& row : t.rows)
     for (std::size_t k = 0; k < n && k < row.size(); ++k) measure(row[k], k);
-  double sum_least = 0, sum_want = 0;
+  double sum_hard = 0, sum_least = 0, sum_want = 0;
   for (std::size_t k = 0; k < n; ++k) {
+    hard[k] = std::max(hard[k], std::min(least[k], margins + 8 * em * 0.56));  // a column of words keeps 8 characters
+
+    sum_hard += hard[k];
     sum_least += least[k];
     sum_want += want[k];
   }
+  const double room = double(total);
   std::vector<double> w(n);
   for (std::size_t k = 0; k < n; ++k) {
-    if (sum_want <= double(total)) w[k] = want[k] * double(total) / sum_want;              // all fits: widen in proportion
-    else if (sum_least >= double(total)) w[k] = least[k] * double(total) / sum_least;     // even the words do not
-    else w[k] = least[k] + (want[k] - least[k]) * (double(total) - sum_least) / (sum_want - sum_least);
+    if (sum_want <= room) w[k] = want[k] * room / sum_want;  // all fits: widen in proportion
+    else if (sum_least <= room) w[k] = least[k] + (want[k] - least[k]) * (room - sum_least) / (sum_want - sum_least);
+    else if (sum_hard < room)  // the words do not fit: those that must not break keep their width
+      w[k] = hard[k] + (least[k] - hard[k]) * (room - sum_hard) / (sum_least - sum_hard);
+    else w[k] = hard[k] * room / sum_hard;
   }
   std::vector<long> out(n);
   long used = 0;
