@@ -18,7 +18,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <cstdlib>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace assess {
 
@@ -26,7 +29,8 @@ namespace {
 
 using detail::xml_escape;
 
-constexpr long emu_per_twip = 635;        // English Metric Units (ECMA-376 Part 1, §20.1.2.1): 914400 an inch, 1440 twips an inch
+// DrawingML's English Metric Units (ECMA-376 Part 1, §20.1.2.1: 914400 an
+// inch) and WordprocessingML's twips (1440 an inch).
 constexpr double emu_per_mm = 36000.0;
 constexpr double twips_per_mm = 1440.0 / 25.4;
 // The PDF's figure (html_writer.cpp's print style): at most 170 mm wide and
