@@ -191,10 +191,11 @@ std::size_t characters(const std::string& s) {
 // 2 x 108 twips (the reference's table style).
 std::vector<long> column_widths(const Table& t, long total) {
   constexpr double em = 170.0, margins = 216.0;
-  constexpr std::size_t widest_line = 45, widest_word = 25;
+  // A header's line counts up to 15 characters (a heading wraps over its column), a cell's up to 120.
+  constexpr std::size_t widest_header = 15, widest_line = 120, widest_word = 25;
   const std::size_t n = std::max<std::size_t>(1, t.header.size());
   std::vector<double> hard(n, margins), least(n, margins), want(n, margins);
-  auto measure = [&](const Cell& c, std::size_t k) {
+  auto measure = [&](const Cell& c, std::size_t k, std::size_t widest) {
     for (const std::string* text : {&c.text, &c.note}) {
       const bool note = text == &c.note;
       const double per_char = em * (c.numeric && !note ? 0.6 : 0.56) * (!note && (c.strong || c.tone != Tone::plain) ? 1.1 : 1.0) *
@@ -208,18 +209,18 @@ std::vector<long> column_widths(const Table& t, long total) {
           ++word;
         }
       }
-      const bool number = c.numeric && !note;
+      const bool number = c.numeric && !note && widest == widest_line;  // a body cell's number; a heading wraps
       if (number) longest = characters(*text);
       const double word_width = margins + per_char * double(std::min(longest, widest_word));
       least[k] = std::max(least[k], word_width);
       // Never broken inside: a number, a verdict, a short word ("M10", "Cod.").
       if (number || (!note && (c.strong || c.tone != Tone::plain)) || longest <= 5) hard[k] = std::max(hard[k], word_width);
-      want[k] = std::max(want[k], margins + per_char * double(std::min(characters(*text), widest_line)));
+      want[k] = std::max(want[k], margins + per_char * double(std::min(characters(*text), widest)));
     }
   };
-  for (std::size_t k = 0; k < n && k < t.header.size(); ++k) measure(t.header[k], k);
+  for (std::size_t k = 0; k < n && k < t.header.size(); ++k) measure(t.header[k], k, widest_header);
   for (const auto& row : t.rows)
-    for (std::size_t k = 0; k < n && k < row.size(); ++k) measure(row[k], k);
+    for (std::size_t k = 0; k < n && k < row.size(); ++k) measure(row[k], k, widest_line);
   double sum_hard = 0, sum_least = 0, sum_want = 0;
   for (std::size_t k = 0; k < n; ++k) {
     hard[k] = std::max(hard[k], std::min(least[k], margins + 8 * em * 0.56));  // a column of words keeps 8 characters
