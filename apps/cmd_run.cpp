@@ -221,8 +221,7 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--pdf", args->pdf,
                   "also print the relazione to a PDF file (A4, headless Chromium), its tabulati to NAME-tabulati.pdf");
   cmd->add_option("--docx", args->docx,
-                  "also write the relazione as an editable Word document (pandoc, Debian package pandoc), its tabulati "
-                  "to NAME-tabulati.docx");
+                  "also write the relazione as an editable Word document, its tabulati to NAME-tabulati.docx");
   cmd->add_option("--txt", args->txt,
                   "also write the relazione as plain text (120 columns), its tabulati to NAME-tabulati.txt");
   cmd->add_option("--lang", args->lang,

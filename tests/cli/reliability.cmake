@@ -268,8 +268,9 @@ assess_cli_error_test(rel5_corner_opening_beyond "corner_opening_beyond.json: /m
 # Class 8, messages that name the user's file and the real cause.
 rel4_sh_test(rel5_tmpdir_missing 2 "cannot create a temporary folder in TMPDIR=/nonexistent/assess: No such file or directory \\(set TMPDIR to a writable folder\\)"
   "mkdir -p '${_r5}/tmpdir' && TMPDIR=/nonexistent/assess @EXE@ run mechanisms/two_storey_facade.json --pdf '${_r5}/tmpdir/r.pdf' > /dev/null")
-rel4_sh_test(rel5_pandoc_missing 2 "--docx .*/nopandoc/r.docx: pandoc was not found on PATH: install it"
-  "mkdir -p '${_r5}/nopandoc' && PATH=/nonexistent @EXE@ run mechanisms/two_storey_facade.json --docx '${_r5}/nopandoc/r.docx' > /dev/null")
+# The Word document needs no program (issue 36, item 7; it needed pandoc): written with nothing on PATH.
+rel4_sh_test(rel5_docx_without_programs 3 "Word .*/noprograms/r.docx: a zip archive"
+  "rm -rf '${_r5}/noprograms' && mkdir -p '${_r5}/noprograms' && PATH=/nonexistent @EXE@ run mechanisms/two_storey_facade.json --docx '${_r5}/noprograms/r.docx' > /dev/null && head -c 2 '${_r5}/noprograms/r.docx' | grep -q PK && echo 'Word ${_r5}/noprograms/r.docx: a zip archive' >&2; exit 3")
 # `assess dynamic --k`: a k the command line gave is named as --k, not as the
 # case's /dynamic/k (which this case does not have).
 assess_cli_error_test(rel5_dynamic_k_option "assess: error: --k: Winkler modulus k = 100000 kN/m\\^3 is too small"

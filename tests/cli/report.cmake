@@ -145,7 +145,7 @@ set_tests_properties(cli.one_verdict PROPERTIES LABELS cli TIMEOUT 600 COST 60 E
 # words in the PDF's text, 'pag. x di y' on every page) and the Word document
 # read back with python-docx (numbered headings, every table, every figure,
 # the verdict). Debian's python3 has python3-docx (skipped, exit 77, without
-# it, chromium, poppler-utils or pandoc).
+# it, chromium or poppler-utils).
 find_program(ASSESS_DEBIAN_PYTHON3 python3 PATHS /usr/bin NO_DEFAULT_PATH)
 if(NOT ASSESS_DEBIAN_PYTHON3)
   set(ASSESS_DEBIAN_PYTHON3 python3)

@@ -3,10 +3,12 @@
 
 usage: make_reference_docx.py [OUT_DIR]   (default: this script's folder)
 
-Writes reference-it.docx and reference-en.docx, which `assess run --docx`
-hands to pandoc (--reference-doc; embedded in the library at build time,
-libassess/CMakeLists.txt) so that the Word edition prints as the PDF does
-(html_writer.cpp's print style sheet):
+Writes reference-it.docx and reference-en.docx, whose parts `assess run
+--docx` copies into every Word relazione (styles, numbering, settings,
+footer, theme, fonts and the section properties; embedded in the library at
+build time, libassess/CMakeLists.txt; docx_writer.cpp writes the body) so
+that the Word edition prints as the PDF does (html_writer.cpp's print style
+sheet):
   - A4 (210 x 297 mm) with the PDF's margins: 16 mm top, 15 mm sides, 18 mm
     bottom;
   - page numbers at the bottom right, "pag. x di y" (English: "page x of y"),
@@ -16,12 +18,12 @@ libassess/CMakeLists.txt) so that the Word edition prints as the PDF does
   - tables with thin grey borders and a grey header row;
   - the verdict colours as character styles: "Verdetto OK" (green #11661F,
     bold), "Verdetto KO" (red #B3001B, bold), "Nota" (8 pt grey), which the
-    writer puts on each verdict word, D/C and note (docx_writer.cpp,
-    data-custom-style).
+    writer puts on each verdict word, D/C and note (docx_writer.cpp).
 
 It starts from pandoc's own default reference document (`pandoc
 --print-default-data-file reference.docx`, pandoc 2.17 of Debian 12) and
-edits its XML; run it again after a pandoc upgrade and commit both files.
+edits its XML; commit both files. pandoc is needed only here, by whoever
+regenerates them (not by the build nor by `assess`: issue 36, item 7).
 """
 import io
 import os

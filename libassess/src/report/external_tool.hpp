@@ -1,9 +1,9 @@
 // external_tool.hpp (private to the report layer): the programs the report
 // writers run (headless Chromium for the PDF, pdftohtml for its outline,
-// qpdf, pandoc for the Word document, rsvg-convert through pandoc), each in a
-// private temporary directory removed afterwards, without a shell, in its own
-// process group, with a time limit; a signal that stops `assess` stops them
-// and removes the directory (support/termination.hpp, issue 39).
+// qpdf), each in a private temporary directory removed afterwards, without a
+// shell, in its own process group, with a time limit; a signal that stops
+// `assess` stops them and removes the directory (support/termination.hpp,
+// issue 39). The Word writer runs none (docx_writer.hpp).
 #pragma once
 
 #include <filesystem>

@@ -6,8 +6,8 @@
 // contents, every other mark invisible) and laid over those first pages with
 // qpdf (issue 32: one print of the whole document, not two). Without qpdf, a
 // second print of the whole document. One browser prints everything (it
-// starts once, pdf.hpp), the two PDFs side by side, and
-// the Word documents are written by pandoc meanwhile (issue 36, item 7);
+// starts once, pdf.hpp), the two PDFs side by side, and the Word documents
+// are written meanwhile (issue 36, item 7);
 // every file through the guarded writer (support/output_file.hpp).
 #include "assess/report/report_files.hpp"
 
@@ -128,10 +128,11 @@ void write_report_files(const Relazione& r, const ReportFiles& files) {
   auto path_of = [](const std::string& body_path, int k) { return k == 0 ? body_path : tabulati_path(body_path); };
   detail::TempDir dir("assess_report_");
   PdfPrinter printer;  // one browser for both documents' prints
-  // Side by side (issue 36, item 7): the Word documents (pandoc) and the
-  // tabulati's PDF while the body's PDF prints.
+  // Side by side (issue 36, item 7): the Word documents and the tabulati's
+  // PDF while the body's PDF prints.
   std::vector<std::future<void>> jobs;
   std::map<std::string, int> pages[2];
+  std::string docx[2];
   auto wait_all = [&] {
     for (auto& j : jobs)
       if (j.valid()) j.wait();
@@ -144,8 +145,7 @@ void write_report_files(const Relazione& r, const ReportFiles& files) {
       }));
     for (int k = 0; k < 2 && !files.docx.empty(); ++k)
       jobs.push_back(std::async(std::launch::async, [&, k] {
-        write_docx(*docs[k], (dir.path() / ("report-" + std::to_string(k) + ".docx")).string(),
-                   "--docx " + path_of(files.docx, k));
+        docx[k] = docx_bytes(*docs[k], "--docx " + path_of(files.docx, k));
       }));
     if (!files.pdf.empty()) pages[0] = print_pdf(printer, *docs[0], dir.path() / "pdf-0", dir.path() / "final-0.pdf");
     for (auto& j : jobs) j.get();  // rethrows the first failure
@@ -173,10 +173,7 @@ void write_report_files(const Relazione& r, const ReportFiles& files) {
       const std::string text = to_text(*docs[k]);
       install("--txt", path_of(files.txt, k), nullptr, &text);
     }
-    if (!files.docx.empty()) {
-      const fs::path docx = dir.path() / ("report-" + std::to_string(k) + ".docx");
-      install("--docx", path_of(files.docx, k), &docx, nullptr);
-    }
+    if (!files.docx.empty()) install("--docx", path_of(files.docx, k), nullptr, &docx[k]);
   }
 }
 

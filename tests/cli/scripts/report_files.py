@@ -10,7 +10,8 @@ each of the two documents:
     (sommario) with the page of each section equal to the page the PDF's
     bookmark gives; every table cell's text of the HTML appears in the PDF's
     text (nothing lost at the margin: the page is not shrunk, cells wrap);
-  - Word (read back with python-docx): Word headings with the numbered
+  - Word (written by the library itself, issue 36 item 7; read back with
+    python-docx): Word headings with the numbered
     sections (Premessa, Conclusioni), tables as tables (as many as the HTML's),
     the figures embedded as pictures, the verdict sentence of the conclusion;
     and, on the file's own XML (issue 36, item 6), the page as the PDF's: A4,
@@ -31,7 +32,7 @@ import subprocess
 import sys
 
 ASSESS, OUT, CASE = sys.argv[1:4]
-for tool in ("chromium", "pdftotext", "pdfinfo", "pdftohtml", "pandoc"):
+for tool in ("chromium", "pdftotext", "pdfinfo", "pdftohtml"):
     if not shutil.which(tool):
         print(f"{tool} not found: skipped")
         sys.exit(77)

@@ -1,8 +1,11 @@
-// docx_writer.hpp: the Word writer of the document model (issue 28, item 10):
-// the same relazione as an editable .docx (headings as Word headings, tables
-// as tables, figures embedded, a table of contents Word updates), through
-// pandoc (Debian package pandoc; figures converted by rsvg-convert, package
-// librsvg2-bin) from an HTML rendering without styles.
+// docx_writer.hpp: the Word writer of the document model (issue 28, item 10;
+// issue 36, items 6 and 7): the same relazione as an editable .docx, written
+// as WordprocessingML by the library itself: headings as Word headings with
+// their bookmarks, tables as tables, figures as pictures (the SVG, with a PNG
+// for readers before Word 2016), a table of contents Word updates on opening,
+// and the page, styles and footer of the reference document (build_info.hpp).
+// The zip goes through libzip, the PNGs through librsvg and zlib, each loaded
+// when a Word document is first written (Debian packages libzip4, librsvg2-2).
 #pragma once
 
 #include "assess/report/document.hpp"
@@ -11,14 +14,14 @@
 
 namespace assess {
 
-/// The HTML that pandoc reads: the document's structure, no CSS; each figure
-/// panel an <img> of `figure_file(id, k)` in the same folder.
-std::string to_pandoc_html(const Document& d);
+/// The bytes of `d` as a Word document. `what` names the output in errors
+/// ("--docx relazione.docx"). @throws InputError if libzip or librsvg is
+/// missing (naming the package) or a figure cannot be drawn.
+std::string docx_bytes(const Document& d, const std::string& what = "--docx");
 
-/// Writes `d` to `path` as a Word document. `shown` names the output in
-/// errors ("--docx relazione.docx"; default "--docx PATH"): the user's file,
-/// not a temporary one (issue 39). @throws InputError if pandoc is missing
-/// (naming the package) or fails.
+/// Writes `d` to `path` as a Word document (support/output_file.hpp's guarded
+/// writer). `shown` names the output in errors ("--docx relazione.docx";
+/// default "--docx PATH"): the user's file, not a temporary one (issue 39).
 void write_docx(const Document& d, const std::string& path, const std::string& shown = "");
 
 }  // namespace assess
