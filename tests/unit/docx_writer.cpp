@@ -146,7 +146,7 @@ Document sample() {
   box.content = inner.take_blocks();
   b.add_box(std::move(box));
   b.add_signature({"Norcia, 1 gennaio 2026", "Il tecnico"});
-  b.add_raw_html("<p>Testo <b>grezzo</b> &amp; altro</p>");
+  b.add_raw_html("<p>Testo <b>grez</b>zo &amp; altro</p><p>e &amp;lt;fine&gt;</p>");
   return b.document();
 }
 
@@ -236,7 +236,7 @@ TEST_CASE("the Word writer's parts: every block type of the document model") {
     CHECK(count(doc, "<w:rStyle w:val=\"VerbatimChar\"/></w:rPr><w:t xml:space=\"preserve\">riga 1</w:t><w:br/><w:tab/>"
                      "<w:t xml:space=\"preserve\">riga 2</w:t>") == 1);
     CHECK(count(doc, ">Il tecnico</w:t>") == 1);
-    CHECK(count(doc, ">Testo grezzo &amp; altro</w:t>") == 1);
+    CHECK(count(doc, ">Testo grezzo &amp; altro e &amp;lt;fine&gt;</w:t>") == 1);  // inline tags join, blocks part
     CHECK(count(doc, ">Dentro il riquadro.</w:t>") == 1);
   }
   SUBCASE("the table: caption, repeated header row, right-aligned figures, notes, the governing row") {

@@ -17,6 +17,7 @@
 #include "assess/support/output_file.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -101,16 +102,30 @@ std::string paragraph(const std::string& runs, const std::string& style, const s
   return "<w:p>" + (ppr.empty() ? "" : "<w:pPr>" + ppr + "</w:pPr>") + runs + "</w:p>";
 }
 
-// The text of HTML without its tags, entities of the five XML ones decoded, spaces collapsed.
+// The text of HTML without its tags (a block's or a line break's a space, an
+// inline element's nothing), the five XML entities decoded, spaces collapsed.
 std::string strip_tags(const std::string& html) {
-  std::string text;
+  static const std::vector<std::string> inline_tags = {"a", "b", "strong", "i", "em", "span", "sub", "sup", "code", "small", "wbr"};
+  std::string text, tag;
   bool in_tag = false;
   for (char c : html) {
-    if (c == '<') in_tag = true;
-    else if (c == '>' && in_tag) {
+    if (c == '<') {
+      in_tag = true;
+      tag.clear();
+    } else if (c == '>' && in_tag) {
       in_tag = false;
-      text += ' ';
-    } else if (!in_tag) text += c;
+      std::string name;
+      for (char t : tag) {
+        if (t == '/' && name.empty()) continue;
+        if (!std::isalnum(static_cast<unsigned char>(t))) break;
+        name += char(std::tolower(static_cast<unsigned char>(t)));
+      }
+      if (std::find(inline_tags.begin(), inline_tags.end(), name) == inline_tags.end()) text += ' ';
+    } else if (in_tag) {
+      tag += c;
+    } else {
+      text += c;
+    }
   }
   for (const auto& [entity, ch] : {std::pair{"&lt;", "<"}, {"&gt;", ">"}, {"&quot;", "\""}, {"&#39;", "'"}, {"&amp;", "&"}})
     for (std::size_t at = 0; (at = text.find(entity, at)) != std::string::npos; at += 1)
