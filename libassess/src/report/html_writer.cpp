@@ -268,6 +268,12 @@ std::string to_html(const Document& d, const HtmlOptions& options) {
   } else {
     body = w.blocks(d.blocks);
   }
+  if (options.heading_destinations) {
+    body += "<div class=\"destinations\" hidden>";
+    for (const DocBlock& b : d.blocks)
+      if (const Heading* h = std::get_if<Heading>(&b.value)) body += "<a href=\"#" + xml_escape(h->anchor) + "\"></a>";
+    body += "</div>\n";
+  }
   return "<!DOCTYPE html>\n<html lang=\"" + xml_escape(d.lang) + "\">\n<head>\n<meta charset=\"utf-8\">\n"
          "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
          xml_escape(d.title) + "</title>\n<style>" + kCss + page_numbers(d.lang) +

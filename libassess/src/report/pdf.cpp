@@ -3,8 +3,8 @@
 // its DevTools pipe (report/devtools_browser.hpp), or, when the browser does
 // not speak it, by `chromium --print-to-pdf` (no header and footer lines;
 // PDF bookmarks from the headings); the PDF is checked to start with "%PDF".
-// The outline is read back with pdftohtml (poppler-utils) for the contents'
-// page numbers.
+// The pages of the headings are read back by report_files.cpp
+// (report/pdf_bookmarks.hpp).
 #include "assess/report/pdf.hpp"
 
 #include "report/devtools_browser.hpp"
@@ -21,14 +21,6 @@
 namespace assess {
 
 namespace {
-
-std::string xml_unescape(std::string s) {
-  static const std::pair<const char*, const char*> ents[] = {
-      {"&lt;", "<"}, {"&gt;", ">"}, {"&quot;", "\""}, {"&#39;", "'"}, {"&apos;", "'"}, {"&amp;", "&"}};
-  for (const auto& [from, to] : ents)
-    for (std::size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + 1)) s.replace(at, std::string(from).size(), to);
-  return s;
-}
 
 std::string browser_program() {
   const char* env = std::getenv("CHROMIUM");
@@ -93,20 +85,5 @@ void PdfPrinter::print(const std::string& html, const std::string& pdf_path, boo
 }
 
 void html_to_pdf(const std::string& html, const std::string& pdf_path) { PdfPrinter().print(html, pdf_path); }
-
-std::vector<std::pair<int, std::string>> pdf_outline(const std::string& pdf_path) {
-  detail::TempDir dir("assess_outline_");
-  const std::filesystem::path xml = dir.path() / "outline.xml", log = dir.path() / "log";
-  const int code = detail::run_program({"pdftohtml", "-xml", "-i", "-q", "-nodrm", "-f", "1", "-l", "1", pdf_path, (dir.path() / "outline").string()}, log);
-  std::vector<std::pair<int, std::string>> out;
-  if (code != 0) return out;
-  const std::string s = detail::read_file(xml);
-  for (std::size_t at = s.find("<item page=\""); at != std::string::npos; at = s.find("<item page=\"", at + 1)) {
-    const std::size_t q = s.find('"', at + 12), gt = s.find('>', at), end = s.find("</item>", at);
-    if (q == std::string::npos || gt == std::string::npos || end == std::string::npos) break;
-    out.push_back({std::atoi(s.substr(at + 12, q - at - 12).c_str()), xml_unescape(s.substr(gt + 1, end - gt - 1))});
-  }
-  return out;
-}
 
 }  // namespace assess

@@ -1,7 +1,8 @@
 // report_files.cpp: a relazione written to its HTML, PDF, Word and text files
 // (issues 28, 36): the body and its tabulati, each file of the body with the
 // tabulati's beside it (NAME-tabulati.EXT). Each PDF is printed once with the
-// contents' page column empty; its bookmarks give each heading's page; the
+// contents' page column empty, untagged; its named destinations give each
+// heading's page and the bookmarks are added afterwards; the
 // contents' page numbers are then printed alone (the document up to its
 // contents, every other mark invisible) and laid over those first pages with
 // qpdf (issue 32: one print of the whole document, not two). Without qpdf, a
@@ -12,6 +13,7 @@
 #include "assess/report/report_files.hpp"
 
 #include "report/external_tool.hpp"
+#include "report/pdf_bookmarks.hpp"
 
 #include "assess/report/docx_writer.hpp"
 #include "assess/report/html_writer.hpp"
@@ -22,7 +24,6 @@
 #include "assess/support/output_file.hpp"
 
 
-#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <future>
@@ -34,32 +35,29 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string squeeze(const std::string& s) {
-  std::string out;
-  for (unsigned char c : s)
-    if (!std::isspace(c)) out += char(c);
-  return out;
+// The page of each heading: its anchor's named destination in the PDF
+// printed with HtmlOptions::heading_destinations.
+std::map<std::string, int> heading_pages(const Document& d, const std::map<std::string, int>& destinations) {
+  std::map<std::string, int> pages;
+  for (const DocBlock& b : d.blocks)
+    if (const Heading* h = std::get_if<Heading>(&b.value))
+      if (const auto at = destinations.find(h->anchor); at != destinations.end()) pages[h->anchor] = at->second;
+  return pages;
 }
 
-// The page of each heading: the headings in document order matched with the
-// PDF's bookmarks (Chromium makes one per h1-h6, in order) by their text.
-std::map<std::string, int> heading_pages(const Document& d, const std::vector<std::pair<int, std::string>>& outline) {
-  std::map<std::string, int> pages;
+// The PDF's bookmarks: the headings with a page, numbered as printed, the
+// title's level dropped.
+std::vector<detail::Bookmark> bookmarks(const Document& d, const std::map<std::string, int>& pages) {
+  std::vector<detail::Bookmark> out;
   const std::vector<std::string> numbers = heading_numbers(d);
-  std::size_t j = 0, k = 0;
+  std::size_t k = 0;
   for (const DocBlock& b : d.blocks) {
     const Heading* h = std::get_if<Heading>(&b.value);
     if (!h) continue;
     const std::string& n = numbers[k++];
-    const std::string want = squeeze(n + h->text);
-    for (std::size_t i = j; i < outline.size(); ++i)
-      if (squeeze(outline[i].second) == want) {
-        pages[h->anchor] = outline[i].first;
-        j = i + 1;
-        break;
-      }
+    if (pages.count(h->anchor)) out.push_back({(n.empty() ? "" : n + " ") + h->text, std::max(1, h->level - 1), h->anchor});
   }
-  return pages;
+  return out;
 }
 
 // `path`'s content replaced by the file `from` (or the text): whole or not at
@@ -69,9 +67,11 @@ void install(const std::string& option, const std::string& path, const fs::path*
 }
 
 
-// `base` with the pages of `overlay` laid over its first pages (qpdf keeps
-// the base's bookmarks and links). False when qpdf is not installed.
-bool overlay_first_pages(const fs::path& base, const fs::path& overlay, const fs::path& out, const fs::path& dir) {
+// `base` with the pages of `overlay` laid over its first pages and the
+// bookmarks of `update` (a qpdf JSON update), the base's links kept. False
+// when qpdf is not installed.
+bool overlay_first_pages(const fs::path& base, const fs::path& overlay, const fs::path& update, const fs::path& out,
+                         const fs::path& dir) {
   const fs::path log = dir / "qpdf.log";
   const int code = detail::run_program({"qpdf", "--show-npages", overlay.string()}, log);
   if (code == detail::program_not_found) return false;
@@ -83,7 +83,8 @@ bool overlay_first_pages(const fs::path& base, const fs::path& overlay, const fs
   }
   if (code != 0 || pages < 1) throw InputError("--pdf: qpdf could not read the contents' page numbers (exit " + std::to_string(code) + ")");
   const std::string range = "1-" + std::to_string(pages);
-  const int done = detail::run_program({"qpdf", base.string(), "--overlay", overlay.string(), "--from=" + range,
+  const int done = detail::run_program({"qpdf", base.string(), "--update-from-json=" + update.string(), "--overlay",
+                                        overlay.string(), "--from=" + range,
                                         "--to=" + range, "--", out.string()},
                                        dir / "qpdf-overlay.log");
   // qpdf exits 3 for warnings with a written file.
@@ -92,21 +93,27 @@ bool overlay_first_pages(const fs::path& base, const fs::path& overlay, const fs
   return true;
 }
 
-// The PDF of one document: printed once with the contents' page column
-// empty, its bookmarks giving each heading's page, the page numbers printed
-// alone and laid over the first pages (without qpdf: a second print). Returns
-// the heading pages (for the HTML edition) and writes `final`.
+// The PDF of one document: printed once, untagged, with the contents' page
+// column empty and a hidden link to every heading; its named destinations
+// give each heading's page; the page numbers printed alone are laid over the
+// first pages and the bookmarks added, both by qpdf (without qpdf: a second,
+// tagged print, its bookmarks Chromium's). Returns the heading pages (for
+// the HTML edition) and writes `final`.
 std::map<std::string, int> print_pdf(PdfPrinter& printer, const Document& d, const fs::path& dir, const fs::path& final) {
   fs::create_directories(dir);
   HtmlOptions o;
   o.page_column = true;
-  const fs::path first = dir / "first.pdf", toc = dir / "contents.pdf";
-  printer.print(to_html(d, o), first.string());
-  o.pages = heading_pages(d, pdf_outline(first.string()));
+  const fs::path first = dir / "first.pdf", toc = dir / "contents.pdf", update = dir / "bookmarks.json";
+  HtmlOptions marked = o;
+  marked.heading_destinations = true;
+  printer.print(to_html(d, marked), first.string(), false);
+  o.pages = heading_pages(d, detail::pdf_destinations(first, dir));
   HtmlOptions numbers = o;
   numbers.contents_overlay = true;
-  printer.print(to_html(d, numbers), toc.string(), false);  // laid over the first: no bookmarks of its own
-  if (!overlay_first_pages(first, toc, final, dir)) printer.print(to_html(d, o), final.string());
+  printer.print(to_html(d, numbers), toc.string(), false);
+  if (!detail::write_bookmarks_update(first, bookmarks(d, o.pages), update, dir) ||
+      !overlay_first_pages(first, toc, update, final, dir))
+    printer.print(to_html(d, o), final.string());
   return o.pages;
 }
 

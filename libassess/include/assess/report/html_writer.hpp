@@ -30,6 +30,10 @@ struct HtmlOptions {
   /// (report_files.cpp), it puts the page numbers in place without printing
   /// the whole document a second time.
   bool contents_overlay = false;
+  /// A hidden link to every heading (a print whose bookmarks are added
+  /// afterwards): Chromium then writes each heading's named destination,
+  /// which gives its page and its bookmark (report/pdf_bookmarks.hpp).
+  bool heading_destinations = false;
   /// The file of each other document a link may point into (Span::doc ->
   /// "casa-tabulati.html", relative to this page; issue 36). A link into a
   /// document not listed is printed as its text alone (a PDF: its links

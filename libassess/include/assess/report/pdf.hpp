@@ -25,7 +25,8 @@ class PdfPrinter {
 
   /// Prints the HTML document `html` (the text of the page) to the PDF file
   /// `pdf_path`; several threads may print at once. With `bookmarks` false,
-  /// no outline and no tags (a print laid over another one). @throws
+  /// no outline and no tags: a quarter less work, for a print whose
+  /// bookmarks are added afterwards or that is laid over another one. @throws
   /// InputError if the browser is missing (naming the Debian package
   /// chromium), fails, takes more than 180 s or writes no PDF.
   void print(const std::string& html, const std::string& pdf_path, bool bookmarks = true);
@@ -37,10 +38,5 @@ class PdfPrinter {
 
 /// One print with a printer of its own (PdfPrinter::print).
 void html_to_pdf(const std::string& html, const std::string& pdf_path);
-
-/// The bookmarks of a PDF printed by html_to_pdf, in document order: (page,
-/// title) of every heading. Read with pdftohtml (Debian package
-/// poppler-utils); empty when it is missing or fails.
-std::vector<std::pair<int, std::string>> pdf_outline(const std::string& pdf_path);
 
 }  // namespace assess
