@@ -58,7 +58,8 @@ std::string files_written(const RunArgs& a) {
 // paths and the mechanism's id, building_path_message); identity otherwise.
 using MessageMap = std::function<std::string(const std::string&)>;
 
-void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_text, const MessageMap& map = {});
+void run_single(const RunArgs& a, PdfPrinter& printer, const CaseFile& c, const std::string& case_text,
+                const MessageMap& map = {});
 
 // The case file's text for the report's appendix (the bounded reader: the
 // file already read once, so the same checks).
@@ -71,10 +72,13 @@ std::string read_text(const std::string& path) { return read_input_file(path, in
 // written the same way at the end).
 ReportFiles report_files(const RunArgs& a) { return {a.html, a.pdf, a.docx, a.txt}; }
 
-void check_outputs(const RunArgs& a, const std::vector<OutputTarget>& more = {}) {
+// Then, with --pdf, the PDFs' browser starts: its start-up runs beside the
+// assessment (issue 36, item 7).
+void check_outputs(const RunArgs& a, PdfPrinter& printer, const std::vector<OutputTarget>& more = {}) {
   std::vector<OutputTarget> all = report_files(a).outputs();
   all.insert(all.end(), more.begin(), more.end());
   check_output_files(all);
+  if (!a.pdf.empty()) printer.start();
 }
 
 // The expanded cases of --expand DIR (DIR created if needed), as outputs.
@@ -96,22 +100,22 @@ void write_expanded(const RunArgs& a, const BuildingCase& b, const std::vector<c
 
 // A building case (issue 22; docs/user/building.md): every mechanism, the
 // summary and the relazione; --mechanism ID runs one mechanism as a single case.
-void run_building(const RunArgs& a, const nlohmann::json& doc) {
+void run_building(const RunArgs& a, PdfPrinter& printer, const nlohmann::json& doc) {
   const Lang lang = parse_lang(a.lang);
   BuildingCase bc = parse_building(doc, a.file);
   if (!a.mechanism.empty()) {
     const BuildingMechanism& m = find_mechanism(bc, a.mechanism);
     // --expand with --mechanism: that mechanism's expanded case only.
     if (!a.expand.empty()) {
-      check_outputs(a, expanded_outputs(a, {&m}));
+      check_outputs(a, printer, expanded_outputs(a, {&m}));
       write_expanded(a, bc, {&m});
     } else {
-      check_outputs(a);
+      check_outputs(a, printer);
     }
     // Its errors and warnings name the building file's paths and the mechanism.
     const MessageMap map = [&](const std::string& text) { return building_path_message(bc, m, text); };
     try {
-      run_single(a, m.kase, standalone_case(bc, m).dump(2) + "\n", map);
+      run_single(a, printer, m.kase, standalone_case(bc, m).dump(2) + "\n", map);
     } catch (const InputError& e) {
       throw InputError(map(e.what()));
     }
@@ -123,9 +127,9 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
   if (!a.expand.empty()) {
     std::vector<const BuildingMechanism*> all;
     for (const BuildingMechanism& m : bc.mechanisms) all.push_back(&m);
-    check_outputs(a, expanded_outputs(a, all));
+    check_outputs(a, printer, expanded_outputs(a, all));
   } else {
-    check_outputs(a);
+    check_outputs(a, printer);
   }
   FacadeOptions opt;
   opt.keep_going = a.keep_going;
@@ -144,7 +148,7 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
     ReportOptions ro;
     ro.lang = lang;
     ro.case_text = read_text(a.file);
-    write_report_files(building_relazione(res, ro), report_files(a));
+    write_report_files(building_relazione(res, ro), report_files(a), &printer);
   }
   if (a.json) {
     nlohmann::json j = building_json(res);
@@ -159,17 +163,19 @@ void run_building(const RunArgs& a, const nlohmann::json& doc) {
 }
 
 void run(const RunArgs& a) {
+  PdfPrinter printer;  // started once the outputs are checked (check_outputs)
   const nlohmann::json doc = read_json_file(a.file, input_kinds::case_file);
   // A building's outputs are checked with its expanded cases, once the file is parsed (run_building).
-  if (is_building_document(doc)) return run_building(a, doc);
-  check_outputs(a);
+  if (is_building_document(doc)) return run_building(a, printer, doc);
+  check_outputs(a, printer);
   if (!a.mechanism.empty() || !a.expand.empty())
     throw InputError(a.file + ": --mechanism and --expand apply to a building case (a file with \"walls\"), "
                      "not to a single-mechanism case");
-  run_single(a, parse_case(doc, a.file), read_text(a.file));
+  run_single(a, printer, parse_case(doc, a.file), read_text(a.file));
 }
 
-void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_text, const MessageMap& map) {
+void run_single(const RunArgs& a, PdfPrinter& printer, const CaseFile& c, const std::string& case_text,
+                const MessageMap& map) {
   const Lang lang = parse_lang(a.lang);
   FacadeOptions opt;
   opt.keep_going = a.keep_going;
@@ -193,7 +199,7 @@ void run_single(const RunArgs& a, const CaseFile& c, const std::string& case_tex
     if (frag) ro.fragility = frag->result;
     if (ties) ro.ties = &*ties;
     ro.case_text = case_text;
-    write_report_files(facade_relazione(res, ro), report_files(a));
+    write_report_files(facade_relazione(res, ro), report_files(a), &printer);
   }
   if (a.json) {
     nlohmann::json j = facade_run_json(res, ties, frag);

@@ -285,10 +285,11 @@ rel4_sh_test(rel5_pdf_without_timeout 3 "PDF report written to:? .*/notimeout/r.
 # and a browser that ends mid-print are errors naming the browser (exit 2).
 rel4_sh_test(rel6_pdf_devtools 3 "printed by fake_devtools.py through the DevTools pipe"
   "rm -rf '${_r5}/devtools' && mkdir -p '${_r5}/devtools' && PATH=/nonexistent CHROMIUM='${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/fake_devtools.py' @EXE@ run mechanisms/two_storey_facade.json --lang en --pdf '${_r5}/devtools/r.pdf' > /dev/null && cat '${_r5}/devtools/r-tabulati.pdf'; exit 3")
+# (each test its own folder: they run side by side)
 rel4_sh_test(rel6_pdf_devtools_refused 2 "--pdf: .*fake_devtools.py refused Page.printToPDF: Printing failed"
-  "mkdir -p '${_r5}/devtools' && FAKE_DEVTOOLS=refuse PATH=/nonexistent CHROMIUM='${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/fake_devtools.py' @EXE@ run mechanisms/two_storey_facade.json --lang en --pdf '${_r5}/devtools/refused.pdf' > /dev/null")
+  "mkdir -p '${_r5}/devtools_refused' && FAKE_DEVTOOLS=refuse PATH=/nonexistent CHROMIUM='${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/fake_devtools.py' @EXE@ run mechanisms/two_storey_facade.json --lang en --pdf '${_r5}/devtools_refused/r.pdf' > /dev/null")
 rel4_sh_test(rel6_pdf_devtools_died 2 "--pdf: .*fake_devtools.py ended before it finished printing"
-  "mkdir -p '${_r5}/devtools' && FAKE_DEVTOOLS=die PATH=/nonexistent CHROMIUM='${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/fake_devtools.py' @EXE@ run mechanisms/two_storey_facade.json --lang en --pdf '${_r5}/devtools/died.pdf' > /dev/null")
+  "mkdir -p '${_r5}/devtools_died' && FAKE_DEVTOOLS=die PATH=/nonexistent CHROMIUM='${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/fake_devtools.py' @EXE@ run mechanisms/two_storey_facade.json --lang en --pdf '${_r5}/devtools_died/r.pdf' > /dev/null")
 # Class 9, bounded work: one horizontal-flexure mechanism at its caps (20
 # strips of 6 openings, 200 search points: 0.2-0.3 s of CPU; at the former
 # caps, 50 strips of 20 openings, 57 s; docs/reliability.md states the time).

@@ -16,6 +16,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <future>
 #include <mutex>
 
 namespace assess {
@@ -50,27 +51,40 @@ std::string print_alone(const std::string& browser, const std::filesystem::path&
 
 struct PdfPrinter::Impl {
   std::string browser = browser_program();
-  std::mutex mutex;  // guards the start
   std::unique_ptr<detail::TempDir> dir;
   std::unique_ptr<detail::DevtoolsBrowser> session;
   bool alone = false;  // the browser does not speak DevTools: one process per print
+  std::mutex mutex;    // guards what follows
+  bool launched = false;
+  std::future<void> launching;  // last: destroyed (waited for) first
 
-  // The run's browser, started at the first print; nullptr: print alone.
-  detail::DevtoolsBrowser* started() {
-    std::lock_guard<std::mutex> lock(mutex);
-    if (session || alone) return session.get();
+  void launch() {
     dir = std::make_unique<detail::TempDir>("assess_browser_");
     try {
       session = std::make_unique<detail::DevtoolsBrowser>(browser, dir->path());
     } catch (const detail::DevtoolsUnavailable&) {
       alone = true;
     }
+  }
+  void start() {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (launched) return;
+    launched = true;
+    launching = std::async(std::launch::async, [this] { launch(); });
+  }
+  // The run's browser, started (or its start waited for); nullptr: print alone.
+  detail::DevtoolsBrowser* started() {
+    start();
+    std::lock_guard<std::mutex> lock(mutex);
+    if (launching.valid()) launching.get();  // its error, once (then each print alone says it again)
     return session.get();
   }
 };
 
 PdfPrinter::PdfPrinter() : impl_(std::make_unique<Impl>()) {}
 PdfPrinter::~PdfPrinter() = default;
+
+void PdfPrinter::start() { impl_->start(); }
 
 void PdfPrinter::print(const std::string& html, const std::string& pdf_path, bool bookmarks) {
   detail::TempDir dir("assess_pdf_");

@@ -130,11 +130,12 @@ std::string tabulati_path(const std::string& path) {
   return (p.parent_path() / (stem + "-tabulati" + ext)).string();
 }
 
-void write_report_files(const Relazione& r, const ReportFiles& files) {
+void write_report_files(const Relazione& r, const ReportFiles& files, PdfPrinter* started) {
   const Document* docs[2] = {&r.body, &r.tabulati};
   auto path_of = [](const std::string& body_path, int k) { return k == 0 ? body_path : tabulati_path(body_path); };
   detail::TempDir dir("assess_report_");
-  PdfPrinter printer;  // one browser for both documents' prints
+  PdfPrinter own;  // one browser for both documents' prints (none started unless printed)
+  PdfPrinter& printer = started ? *started : own;
   // Side by side (issue 36, item 7): the Word documents and the tabulati's
   // PDF while the body's PDF prints.
   std::vector<std::future<void>> jobs;

@@ -116,8 +116,13 @@ def check(h, p, w, tabulati):
         errors.append(f"{len(lost)} words of table cells not found in the PDF's text, e.g. {lost[:5]!r}")
     xml = subprocess.run(["pdftohtml", "-xml", "-i", "-q", "-stdout", p], capture_output=True, text=True).stdout
     outline = [(int(m.group(1)), html.unescape(m.group(2))) for m in re.finditer(r'<item page="(\d+)">(.*?)</item>', xml)]
-    if len(outline) < 10:
-        errors.append(f"the PDF has {len(outline)} bookmarks, expected the sections")
+    # One bookmark per heading of the HTML (h2-h6; the h1 is the title), in the same order
+    # (report/pdf_bookmarks.cpp writes them from the headings' named destinations).
+    headings = [re.sub(r"<[^>]+>", "", m) for m in re.findall(r"<h[2-6](?! class=\"toc-heading\")[^>]*>(.*?)</h[2-6]>", page, flags=re.S)]
+    if len(outline) != len(headings):
+        errors.append(f"the PDF has {len(outline)} bookmarks, the HTML {len(headings)} headings")
+    elif [re.sub(r"\s+", "", html.unescape(h)) for h in headings] != [re.sub(r"\s+", "", t) for _, t in outline]:
+        errors.append("the PDF's bookmarks are not the HTML's headings in order")
     pages_of = {re.sub(r"\s+", "", t): n for n, t in outline}
     checked = 0
     for entry in cells.toc:

@@ -13,8 +13,8 @@
 
 namespace assess {
 
-/// The PDFs of one run, printed by one headless browser (started at the
-/// first print, closed with the printer). The browser is `chromium` on
+/// The PDFs of one run, printed by one headless browser (started by start()
+/// or at the first print, closed with the printer). The browser is `chromium` on
 /// PATH, or the program named by the environment variable CHROMIUM.
 class PdfPrinter {
  public:
@@ -22,6 +22,10 @@ class PdfPrinter {
   ~PdfPrinter();
   PdfPrinter(const PdfPrinter&) = delete;
   PdfPrinter& operator=(const PdfPrinter&) = delete;
+
+  /// Starts the browser in the background (once): its start-up runs beside
+  /// the work that comes before the first print. Errors are the first print's.
+  void start();
 
   /// Prints the HTML document `html` (the text of the page) to the PDF file
   /// `pdf_path`; several threads may print at once. With `bookmarks` false,

@@ -10,6 +10,7 @@
 
 #include "assess/report/relazione.hpp"
 #include "assess/report/document.hpp"
+#include "assess/report/pdf.hpp"
 #include "assess/support/output_file.hpp"
 
 #include <string>
@@ -46,9 +47,10 @@ struct ReportFiles {
   }
 };
 
-/// Writes the requested files of both documents. @throws InputError naming the
-/// option (--html, --pdf, --docx, --txt), the file and the cause (a missing
-/// program names its Debian package).
-void write_report_files(const Relazione& r, const ReportFiles& files);
+/// Writes the requested files of both documents; the PDFs with `printer`
+/// (one the caller started early, pdf.hpp) or a printer of their own.
+/// @throws InputError naming the option (--html, --pdf, --docx, --txt), the
+/// file and the cause (a missing program names its Debian package).
+void write_report_files(const Relazione& r, const ReportFiles& files, PdfPrinter* printer = nullptr);
 
 }  // namespace assess
