@@ -1,5 +1,5 @@
 // external_tool.hpp (private to the report layer): the programs the report
-// writers run (headless Chromium for the PDF, pdftohtml for its outline,
+// writers run (headless Chromium for the PDF, pdfinfo for its headings' pages,
 // qpdf), each in a private temporary directory removed afterwards, without a
 // shell, in its own process group, with a time limit; a signal that stops
 // `assess` stops them and removes the directory (support/termination.hpp,

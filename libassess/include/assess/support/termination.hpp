@@ -1,6 +1,6 @@
 // termination.hpp: what a run leaves behind when it is stopped (issue 39,
 // class 5): its temporary files and folders, and the programs it started
-// (Chromium, pdftohtml, qpdf).
+// (Chromium, pdfinfo, qpdf).
 //
 // Every temporary file or folder the library creates is registered here while
 // it exists, and every child process runs in its own process group, also
