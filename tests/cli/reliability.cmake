@@ -281,8 +281,9 @@ rel4_sh_test(rel5_pdf_without_timeout 3 "PDF report written to:? .*/notimeout/r.
   "rm -rf '${_r5}/notimeout' && mkdir -p '${_r5}/notimeout' && PATH=/nonexistent CHROMIUM='${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/fake_chromium.sh' @EXE@ run mechanisms/two_storey_facade.json --lang en --pdf '${_r5}/notimeout/r.pdf' && head -c 4 '${_r5}/notimeout/r.pdf' | grep -q PDF; exit 3")
 # The PDF writer's DevTools client (issue 36, item 7: one browser for every
 # print of a run) against a stand-in that speaks the protocol on descriptors
-# 3 and 4: the PDF it sends in base 64 is the file written; a protocol error
-# and a browser that ends mid-print are errors naming the browser (exit 2).
+# 3 and 4: the PDF it sends in base 64 is the file written; a protocol error,
+# a browser that ends mid-print and an answer of the wrong form are errors
+# naming the browser (exit 2).
 rel4_sh_test(rel6_pdf_devtools 3 "printed by fake_devtools.py through the DevTools pipe"
   "rm -rf '${_r5}/devtools' && mkdir -p '${_r5}/devtools' && PATH=/nonexistent CHROMIUM='${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/fake_devtools.py' @EXE@ run mechanisms/two_storey_facade.json --lang en --pdf '${_r5}/devtools/r.pdf' > /dev/null && cat '${_r5}/devtools/r-tabulati.pdf'; exit 3")
 # (each test its own folder: they run side by side)
@@ -290,6 +291,8 @@ rel4_sh_test(rel6_pdf_devtools_refused 2 "--pdf: .*fake_devtools.py refused Page
   "mkdir -p '${_r5}/devtools_refused' && FAKE_DEVTOOLS=refuse PATH=/nonexistent CHROMIUM='${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/fake_devtools.py' @EXE@ run mechanisms/two_storey_facade.json --lang en --pdf '${_r5}/devtools_refused/r.pdf' > /dev/null")
 rel4_sh_test(rel6_pdf_devtools_died 2 "--pdf: .*fake_devtools.py ended before it finished printing"
   "mkdir -p '${_r5}/devtools_died' && FAKE_DEVTOOLS=die PATH=/nonexistent CHROMIUM='${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/fake_devtools.py' @EXE@ run mechanisms/two_storey_facade.json --lang en --pdf '${_r5}/devtools_died/r.pdf' > /dev/null")
+rel4_sh_test(rel6_pdf_devtools_malformed 2 "--pdf: .*fake_devtools.py sent an answer of an unexpected form"
+  "mkdir -p '${_r5}/devtools_malformed' && FAKE_DEVTOOLS=malformed PATH=/nonexistent CHROMIUM='${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/fake_devtools.py' @EXE@ run mechanisms/two_storey_facade.json --lang en --pdf '${_r5}/devtools_malformed/r.pdf' > /dev/null")
 # Class 9, bounded work: one horizontal-flexure mechanism at its caps (20
 # strips of 6 openings, 200 search points: 0.2-0.3 s of CPU; at the former
 # caps, 50 strips of 20 openings, 57 s; docs/reliability.md states the time).

@@ -99,18 +99,20 @@ struct DevtoolsBrowser::State {
       const ssize_t n = ::recv(fd, chunk, sizeof chunk, 0);
       if (n < 0 && errno == EINTR) continue;
       if (n <= 0) break;
+      // A message ends at the first NUL of the new bytes (the ones before had none).
+      std::size_t start = 0, from = buffer.size();
       buffer.append(chunk, std::size_t(n));
-      std::size_t start = 0;
-      for (std::size_t end; (end = buffer.find('\0', start)) != std::string::npos; start = end + 1) {
+      for (std::size_t end; (end = buffer.find('\0', from)) != std::string::npos; start = from = end + 1) {
         nlohmann::json m = nlohmann::json::parse(buffer.begin() + long(start), buffer.begin() + long(end), nullptr, false);
         if (!m.is_object()) continue;
         std::lock_guard<std::mutex> lock(mutex);
         if (m.contains("id") && m["id"].is_number_integer()) {
           const long id = m["id"].get<long>();  // before the move (json's operator= takes its argument by value)
           answers[id] = std::move(m);
-        }
-        else if (m.value("method", "") == "Page.loadEventFired" && m.contains("sessionId"))
+        } else if (m.contains("method") && m["method"] == "Page.loadEventFired" && m.contains("sessionId") &&
+                   m["sessionId"].is_string()) {
           loaded.insert(m["sessionId"].get<std::string>());
+        }
         changed.notify_all();
       }
       buffer.erase(0, start);
@@ -149,9 +151,14 @@ struct DevtoolsBrowser::State {
     nlohmann::json answer = std::move(answers[id]);
     answers.erase(id);
     lock.unlock();
-    if (answer.contains("error"))
-      fail("refused " + method + ": " + answer["error"].value("message", answer["error"].dump()));
-    return answer.value("result", nlohmann::json::object());
+    if (answer.contains("error")) {
+      const nlohmann::json& e = answer["error"];
+      fail("refused " + method + ": " +
+           (e.is_object() && e.contains("message") && e["message"].is_string() ? e["message"].get<std::string>() : e.dump()));
+    }
+    const nlohmann::json result = answer.value("result", nlohmann::json::object());
+    if (!result.is_object()) fail("answered " + method + " with no result");
+    return result;
   }
 
   // Closes the browser (Browser.close when `polite`; its group killed after
@@ -235,6 +242,8 @@ std::string DevtoolsBrowser::print(const std::filesystem::path& page, bool bookm
     return base64_decode(pdf.value("data", ""));
   } catch (const std::system_error&) {
     s_->fail("did not finish printing within its time limit (" + std::to_string(timeout_s) + " s)");
+  } catch (const nlohmann::json::exception&) {
+    s_->fail("sent an answer of an unexpected form");  // a field of the wrong type
   }
 }
 

@@ -5,7 +5,8 @@ so that the PDF writer's protocol client (report/devtools_browser.cpp) is
 tested without a browser. FAKE_DEVTOOLS (environment) chooses its behaviour:
   print   (default) every page prints as a small PDF, sent in base 64;
   refuse  Page.printToPDF answers with a protocol error;
-  die     the stand-in exits when asked to print (the pipe closes).
+  die     the stand-in exits when asked to print (the pipe closes);
+  malformed  the PDF's data is a number, not base 64 text.
 Absolute interpreter path: the tests run it with PATH=/nonexistent."""
 import base64
 import json
@@ -45,6 +46,9 @@ while True:
         elif method == "Page.printToPDF":
             if mode == "die":
                 sys.exit(1)
+            if mode == "malformed":
+                send({"id": mid, "result": {"data": 5}, "sessionId": session})
+                continue
             if mode == "refuse":
                 send({"id": mid, "error": {"code": -32000, "message": "Printing failed"}, "sessionId": session})
                 continue
