@@ -47,23 +47,17 @@ int main(int argc, char** argv) {
         doc["walls"].push_back(w);
       }
   }
-  double best_cpu = 1e300, best_wall = 1e300;
-  for (int i = 0; i < n; ++i) {
-    const bench::ProcessTime t = bench::in_fresh_process([&] {
-      FacadeOptions o;
-      o.histories = false;
-      const BuildingAssessment a = assess_building(parse_building(doc, file), o);
-      std::size_t analyses = 0, dynamic = 0;
-      for (const BuildingMechanismResult& r : a.results) analyses += r.a.dynamics.runs.size(), dynamic += !r.a.dynamics.runs.empty();
-      if (i == 0)
-        std::printf("%s: %zu mechanisms (%zu with dynamic analyses), %zu dynamic analyses\n", file.c_str(),
-                    a.results.size(), dynamic, analyses);
-      return 0;
-    });
-    if (!t.ok) return 1;
-    std::printf("  run %d: CPU %.3f s, wall %.3f s\n", i + 1, t.cpu_s, t.wall_s);
-    best_cpu = std::min(best_cpu, t.cpu_s);
-    best_wall = std::min(best_wall, t.wall_s);
-  }
-  std::printf("best of %d fresh processes: CPU %.3f s (all threads), wall %.3f s\n", n, best_cpu, best_wall);
+  const bench::BestTime best = bench::best_of_fresh_processes(n, [&](int i) {
+    FacadeOptions o;
+    o.histories = false;
+    const BuildingAssessment a = assess_building(parse_building(doc, file), o);
+    std::size_t analyses = 0, dynamic = 0;
+    for (const BuildingMechanismResult& r : a.results) analyses += r.a.dynamics.runs.size(), dynamic += !r.a.dynamics.runs.empty();
+    if (i == 0)
+      std::printf("%s: %zu mechanisms (%zu with dynamic analyses), %zu dynamic analyses\n", file.c_str(),
+                  a.results.size(), dynamic, analyses);
+    return 0;
+  }, true);
+  if (!best.ok) return 1;
+  std::printf("best of %d fresh processes: CPU %.3f s (all threads), wall %.3f s\n", n, best.cpu_s, best.wall_s);
 }

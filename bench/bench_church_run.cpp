@@ -21,27 +21,22 @@ int main(int argc, char** argv) {
   using namespace assess;
   const int n = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
   const std::string file = argc > 2 ? argv[2] : data_dir() + "/mechanisms/church-facade.json";
-  double best_cpu = 1e300, best_wall = 1e300;
-  for (int i = 0; i < n; ++i) {
-    const bench::ProcessTime t = bench::in_fresh_process([&] {
-      FacadeOptions o;
-      o.histories = false;
-      const FacadeAssessment a = assess_facade(read_case_file(file), o);
-      std::size_t runs = a.dynamics.runs.size();
-      double integrated = 0.0;
-      for (const DynamicRun& r : a.dynamics.runs) integrated += r.result.t_end;
-      for (const FacadeAssessment& s : a.other_dynamics) {
-        runs += s.dynamics.runs.size();
-        for (const DynamicRun& r : s.dynamics.runs) integrated += r.result.t_end;
-      }
-      if (i == 0)
-        std::printf("%s: %zu analyses (%zu other candidates), %.1f s integrated in total\n", file.c_str(), runs,
-                    a.other_dynamics.size(), integrated);
-      return 0;
-    });
-    if (!t.ok) return 1;
-    best_cpu = std::min(best_cpu, t.cpu_s);
-    best_wall = std::min(best_wall, t.wall_s);
-  }
-  std::printf("best of %d fresh processes: CPU %.3f s (all threads), wall %.3f s\n", n, best_cpu, best_wall);
+  const bench::BestTime best = bench::best_of_fresh_processes(n, [&](int i) {
+    FacadeOptions o;
+    o.histories = false;
+    const FacadeAssessment a = assess_facade(read_case_file(file), o);
+    std::size_t runs = a.dynamics.runs.size();
+    double integrated = 0.0;
+    for (const DynamicRun& r : a.dynamics.runs) integrated += r.result.t_end;
+    for (const FacadeAssessment& s : a.other_dynamics) {
+      runs += s.dynamics.runs.size();
+      for (const DynamicRun& r : s.dynamics.runs) integrated += r.result.t_end;
+    }
+    if (i == 0)
+      std::printf("%s: %zu analyses (%zu other candidates), %.1f s integrated in total\n", file.c_str(), runs,
+                  a.other_dynamics.size(), integrated);
+    return 0;
+  }, false);
+  if (!best.ok) return 1;
+  std::printf("best of %d fresh processes: CPU %.3f s (all threads), wall %.3f s\n", n, best.cpu_s, best.wall_s);
 }

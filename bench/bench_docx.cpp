@@ -48,18 +48,12 @@ int main(int argc, char** argv) {
   const Document* docs[2] = {&r.body, &r.tabulati};
   for (const Document* d : docs) {
     std::printf("%s: %zu pictures\n", d->title.c_str(), pictures(d->blocks));
-    double best_cpu = 1e300, best_wall = 1e300;
-    for (int i = 0; i < n; ++i) {
-      const bench::ProcessTime t = bench::in_fresh_process([&] {
-        const std::string bytes = docx_bytes(*d);
-        if (i == 0) std::printf("  %.2f MB\n", double(bytes.size()) / 1e6);
-        return 0;
-      });
-      if (!t.ok) return 1;
-      std::printf("  run %d: CPU %.3f s, wall %.3f s\n", i + 1, t.cpu_s, t.wall_s);
-      best_cpu = std::min(best_cpu, t.cpu_s);
-      best_wall = std::min(best_wall, t.wall_s);
-    }
-    std::printf("  best of %d fresh processes: CPU %.3f s, wall %.3f s\n", n, best_cpu, best_wall);
+    const bench::BestTime best = bench::best_of_fresh_processes(n, [&](int i) {
+      const std::string bytes = docx_bytes(*d);
+      if (i == 0) std::printf("  %.2f MB\n", double(bytes.size()) / 1e6);
+      return 0;
+    }, true);
+    if (!best.ok) return 1;
+    std::printf("  best of %d fresh processes: CPU %.3f s, wall %.3f s\n", n, best.cpu_s, best.wall_s);
   }
 }

@@ -61,15 +61,11 @@ int main(int argc, char** argv) {
   const int n = argc > 1 ? std::max(1, std::atoi(argv[1])) : 3;
   const std::string catalogue = data_dir() + "/spectra/records/catalogue.json";
   auto best = [n](const char* what, auto&& work) {
-    double cpu = 1e300, wall = 1e300;
-    for (int i = 0; i < n; ++i) {
-      // The church's spectrum and range are computed in the child too; they are
-      // timed apart and subtracted (the measured work is what follows them).
-      const bench::ProcessTime t = bench::in_fresh_process([&] { return work(i == 0); });
-      if (!t.ok) std::exit(1);
-      cpu = std::min(cpu, t.cpu_s), wall = std::min(wall, t.wall_s);
-    }
-    std::printf("%-62s CPU %8.1f ms, wall %8.1f ms (best of %d processes)\n", what, 1e3 * cpu, 1e3 * wall, n);
+    // The church's spectrum and range are computed in the child too; they are
+    // timed apart and subtracted (the measured work is what follows them).
+    const bench::BestTime t = bench::best_of_fresh_processes(n, [&](int i) { return work(i == 0); }, false);
+    if (!t.ok) std::exit(1);
+    std::printf("%-62s CPU %8.1f ms, wall %8.1f ms (best of %d processes)\n", what, 1e3 * t.cpu_s, 1e3 * t.wall_s, n);
   };
   best("process start, church kinematics and site spectrum only", [&](bool) {
     church();

@@ -44,4 +44,29 @@ ProcessTime in_fresh_process(Work&& work) {
   return t;
 }
 
+/// The best (least) CPU and wall time of `n` runs of work(i) (i = 0 ... n-1,
+/// returning an exit status), each in a fresh process; with `print_runs`,
+/// each run's times as "  run i: CPU ... s, wall ... s". ok false (and the
+/// runs stop) at the first run that fails.
+struct BestTime {
+  double cpu_s = 1e300;
+  double wall_s = 1e300;
+  bool ok = true;
+};
+template <typename Work>
+BestTime best_of_fresh_processes(int n, Work&& work, bool print_runs) {
+  BestTime best;
+  for (int i = 0; i < n; ++i) {
+    const ProcessTime t = in_fresh_process([&] { return work(i); });
+    if (!t.ok) {
+      best.ok = false;
+      return best;
+    }
+    if (print_runs) std::printf("  run %d: CPU %.3f s, wall %.3f s\n", i + 1, t.cpu_s, t.wall_s);
+    best.cpu_s = t.cpu_s < best.cpu_s ? t.cpu_s : best.cpu_s;
+    best.wall_s = t.wall_s < best.wall_s ? t.wall_s : best.wall_s;
+  }
+  return best;
+}
+
 }  // namespace assess::bench

@@ -13,6 +13,7 @@
 #include <doctest/doctest.h>
 
 #include "report/zip_archive.hpp"
+#include "tag_balance.hpp"
 
 #include "assess/report/docx_writer.hpp"
 #include "assess/support/error.hpp"
@@ -44,23 +45,6 @@ std::size_t count(const std::string& text, const std::string& what) {
   std::size_t n = 0;
   for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + what.size())) ++n;
   return n;
-}
-
-// "" when every element is closed in order, else the first problem.
-std::string tag_balance(const std::string& xml) {
-  static const std::regex tag(R"(<(/?)([A-Za-z][A-Za-z0-9:._-]*)[^>]*?(/?)>)");
-  std::vector<std::string> stack;
-  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), tag); it != std::sregex_iterator(); ++it) {
-    const std::string name = (*it)[2];
-    if ((*it)[3] == "/") continue;
-    if ((*it)[1] == "") {
-      stack.push_back(name);
-    } else {
-      if (stack.empty() || stack.back() != name) return "unexpected </" + name + ">";
-      stack.pop_back();
-    }
-  }
-  return stack.empty() ? "" : "unclosed <" + stack.back() + ">";
 }
 
 std::uint32_t be32(const std::string& s, std::size_t at) {
