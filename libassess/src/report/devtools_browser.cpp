@@ -58,8 +58,15 @@ std::string base64_decode(const std::string& in) {
   return out;
 }
 
-// file:// URL of an absolute path, every byte outside the unreserved set and
-// '/' percent-encoded (a TMPDIR may hold spaces, '#' or '%').
+// A descriptor moved above 4 and close-on-exec (the program receives it as 3 and 4 only).
+int high_descriptor(int fd) {
+  const int moved = ::fcntl(fd, F_DUPFD_CLOEXEC, 10);
+  ::close(fd);
+  return moved;
+}
+
+}  // namespace
+
 std::string file_url(const std::filesystem::path& page) {
   static const char* hex = "0123456789ABCDEF";
   std::string url = "file://";
@@ -69,15 +76,6 @@ std::string file_url(const std::filesystem::path& page) {
   }
   return url;
 }
-
-// A descriptor moved above 4 and close-on-exec (the program receives it as 3 and 4 only).
-int high_descriptor(int fd) {
-  const int moved = ::fcntl(fd, F_DUPFD_CLOEXEC, 10);
-  ::close(fd);
-  return moved;
-}
-
-}  // namespace
 
 struct DevtoolsBrowser::State {
   std::string program;

@@ -14,6 +14,11 @@
 
 namespace assess::detail {
 
+/// The file:// URL of `page` (made absolute), every byte outside the
+/// unreserved characters and '/' percent-encoded: a TMPDIR may hold spaces,
+/// '#' or '%'.
+std::string file_url(const std::filesystem::path& page);
+
 /// The program started but does not speak the protocol on the pipe (it
 /// exited or never answered): the caller prints without it.
 struct DevtoolsUnavailable : std::runtime_error {

@@ -36,7 +36,7 @@ std::string print_alone(const std::string& browser, const std::filesystem::path&
       {browser, "--headless", "--no-sandbox", "--disable-gpu", "--no-first-run", "--disable-background-networking",
        "--disable-component-update", "--disable-sync", "--user-data-dir=" + (dir / "profile").string(),
        "--no-pdf-header-footer", "--print-to-pdf-no-header", "--generate-pdf-document-outline",
-       "--print-to-pdf=" + out.string(), "file://" + page.string()},
+       "--print-to-pdf=" + out.string(), detail::file_url(page)},
       log);
   if (code == detail::program_not_found)
     throw InputError("--pdf: " + browser + " was not found on PATH: install it (Debian: apt-get install chromium)");
