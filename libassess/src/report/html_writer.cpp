@@ -110,13 +110,9 @@ std::string inline_html(const Inline& text, const HtmlOptions& o) {
 
 // The SVG element of a figure, its ids made unique on the page: id="x" ->
 // id="<fig>-x", and the references href="#x", url(#x) likewise.
-std::string svg_body(const std::string& svg, const std::string& id, bool layout_only) {
+std::string svg_body(const std::string& svg, const std::string& id) {
   const auto begin = svg.find("<svg");
   const auto end = svg.rfind("</svg>");
-  if (layout_only) {  // the root element alone: its size and viewBox lay the page out the same
-    const auto open_end = svg.find('>', begin);
-    return svg.substr(begin, open_end + 1 - begin) + "</svg>";
-  }
   std::string body = svg.substr(begin, end + 6 - begin);
   static const std::regex ids(R"(\bid=(["']))"), hrefs(R"(href=(["'])#)"), urls(R"(url\(#)");
   body = std::regex_replace(body, ids, "id=$1" + id + "-");
@@ -205,11 +201,11 @@ struct Writer {
     if (f.grid) {
       s += "<div class=\"grid\">\n";
       for (std::size_t i = 0; i < f.panels.size(); ++i)
-        s += "<div class=\"panel\">" + svg_body(f.panels[i].svg, f.id + "-" + std::to_string(i), o.layout_only) + "<div>" +
+        s += "<div class=\"panel\">" + svg_body(f.panels[i].svg, f.id + "-" + std::to_string(i)) + "<div>" +
              xml_escape(f.panels[i].label) + "</div></div>\n";
       s += "</div>\n";
     } else if (!f.panels.empty()) {
-      s += svg_body(f.panels.front().svg, f.id, o.layout_only) + "\n";
+      s += svg_body(f.panels.front().svg, f.id) + "\n";
     }
     if (!f.caption.empty()) s += "<figcaption>" + xml_escape(f.caption) + "</figcaption>\n";
     return s + "</figure>\n";

@@ -98,6 +98,4 @@ void PdfPrinter::print(const std::string& html, const std::string& pdf_path, boo
   write_output_file(pdf_path, pdf, "--pdf");
 }
 
-void html_to_pdf(const std::string& html, const std::string& pdf_path) { PdfPrinter().print(html, pdf_path); }
-
 }  // namespace assess

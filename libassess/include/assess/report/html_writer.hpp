@@ -20,10 +20,6 @@ struct HtmlOptions {
   std::map<std::string, int> pages;
   /// Show the contents' page column (a printed edition).
   bool page_column = false;
-  /// Each figure's SVG without its content (its root element with the same size and viewBox):
-  /// the same layout and pages, printed in a fraction of the time (the first print of a PDF,
-  /// which only reads where each heading falls).
-  bool layout_only = false;
   /// The contents' page numbers alone: the document up to the end of its
   /// contents, every other mark invisible but laid out the same, no page
   /// footer. Printed and laid over the first pages of the full print

@@ -8,8 +8,6 @@
 
 #include <memory>
 #include <string>
-#include <utility>
-#include <vector>
 
 namespace assess {
 
@@ -39,8 +37,5 @@ class PdfPrinter {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
-
-/// One print with a printer of its own (PdfPrinter::print).
-void html_to_pdf(const std::string& html, const std::string& pdf_path);
 
 }  // namespace assess
