@@ -12,6 +12,7 @@
 #include <assess/dynamics/analysis_limits.hpp>
 #include <assess/dynamics/rocking_analysis.hpp>
 #include <assess/dynamics/rocking_request.hpp>
+#include <assess/report/note_text.hpp>
 #include <assess/report/rocking_report.hpp>
 #include <assess/support/units.hpp>
 
@@ -146,7 +147,7 @@ void run_case(const CaseDynamicArgs& a) {
   }
   if (a.floor) spec.floor_input = true;
   const MechanismDynamics md = build_mechanism_dynamics(kase, gov, chain, spec);
-  if (!md.applies) throw InputError(a.file + ": the dynamic model does not apply: " + md.note);
+  if (!md.applies) throw InputError(a.file + ": the dynamic model does not apply: " + note_text(Lang::en, md.note));
 
   if (std::isnan(a.dt) && !a.unit.empty())
     throw InputError("--unit applies only to a plain record file, given with --dt");
@@ -174,7 +175,7 @@ void run_case(const CaseDynamicArgs& a) {
     nlohmann::json j;
     j["case_file"] = a.file;
     j["mechanism"] = gov.label;
-    j["model"] = md.describe();
+    j["model"] = note_text(Lang::en, md.describe());
     j["Z"] = md.Z;
     j["theta_max"] = r.theta_max;
     j["t_theta_max"] = r.t_theta_max;
@@ -199,7 +200,7 @@ void run_case(const CaseDynamicArgs& a) {
     return;
   }
   std::printf("dynamic analysis of %s: %s\n", a.file.c_str(), gov.label.c_str());
-  std::printf("  model          : %s\n", md.describe().c_str());
+  std::printf("  model          : %s\n", note_text(Lang::en, md.describe()).c_str());
   std::printf("  record         : %s (%zu points, dt = %g s, PGA = %.4f g) x %g%s; at the base PGA = %.4f g\n",
               record.name.c_str(), record.size(), record.dt, record.pga() / units::g_n, a.scale,
               a.reverse ? ", reversed" : "", input.pga() * a.scale / units::g_n);

@@ -27,6 +27,11 @@ assess_cli_test(building_text ARGS run mechanisms/building-house.json --lang en
   PASS "Outcome of the building's assessment.*2 of 10 mechanisms are not satisfied.*NTC 2018, linear \\(strength\\): M1 .*ζE = 0\\.561 \\(PGA_C.*TR_C = 104 years.*comune Norcia \\(PG\\).*M10 .*NTC 2008 \\(Circ\\. 617/2009 C8A\\.4\\), for comparison.*Records used")
 assess_cli_test(building_json ARGS run mechanisms/building-house.json --json
   PASS "\"building\".*\"record_sets\".*\"governing\".*\"mechanisms\".*\"assessment\".*\"safety_indices\".*\"zeta_E\"")
+# Issue 41: a warning every mechanism gives in the same words (the investigations' text names
+# another knowledge level) is listed once in the building's warnings, with the ids that give it.
+assess_cli_test(building_warning_once ARGS run tests/cli/building/house_dynamic_two.json --json
+  PASS "names LC1 but the case adopts LC2 \\(FC = 1\\.20\\)[^\n]*correct the text or the key \\[M1, M2, M3, M4, M5, M6, M7, M8, M9, M10\\]\""
+  FAIL_REGEX "correct the text or the key \\[M1 \"")
 assess_cli_test(building_one_mechanism ARGS run mechanisms/building-house.json --mechanism M5 --lang en
   PASS "Ribaltamento del timpano.*Conclusion \\(adopted procedure.*gable about its base" FAIL_REGEX "building's assessment")
 

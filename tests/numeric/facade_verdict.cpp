@@ -12,6 +12,7 @@
 #include <doctest/doctest.h>
 
 #include "check_close.hpp"
+#include "find_note.hpp"
 
 #include <assess/assessment/facade_assessment.hpp>
 #include <assess/dynamics/rocking_analysis.hpp>
@@ -158,14 +159,21 @@ TEST_CASE("a dynamic run that overturns under one of two records is never summar
   CHECK_FALSE(s.no_verdict);  // a collapse fails whatever the number of records
   REQUIRE(a.dynamics.energy_rows.size() == 1);
   CHECK_FALSE(a.dynamics.energy_rows[0].satisfied);
-  CHECK(a.dynamics.energy_rows[0].note.find("overturned in 1 of 2") != std::string::npos);
+  // "overturned in 1 of 2 analyses", as data: the note's id and its two counts.
+  const Note* overturned = test::find_note(a.dynamics.energy_rows[0].note, "check.overturned");
+  REQUIRE(overturned);
+  CHECK(test::note_count(*overturned, 0) == 1);
+  CHECK(test::note_count(*overturned, 1) == 2);
   const VerdictRow* dyn = summary_row(a.verdict, "NTC2018", "dynamic");
   const VerdictRow* en = summary_row(a.verdict, "seed", "dynamic energy");
   REQUIRE(dyn);
   REQUIRE(en);
   CHECK_FALSE(dyn->satisfied);
   CHECK_FALSE(en->satisfied);
-  CHECK(en->note.find("overturned in 1 of 2") != std::string::npos);
+  const Note* en_overturned = test::find_note(en->note, "check.overturned");
+  REQUIRE(en_overturned);
+  CHECK(test::note_count(*en_overturned, 0) == 1);
+  CHECK(test::note_count(*en_overturned, 1) == 2);
   for (const CodeVerdict& o : a.verdict.overall)
     if (o.code == "NTC2018") CHECK_FALSE(o.satisfied);
 }
@@ -198,7 +206,8 @@ TEST_CASE("NTC 2018 §7.3.5 record count: 2 records no verdict, 5 the most unfav
       CHECK(s.no_verdict);
       CHECK_FALSE(s.slv_satisfied);
       CHECK(row.no_verdict);
-      CHECK(row.note.find("no verdict") != std::string::npos);
+      CHECK(test::find_note(row.note, "check.rule_few"));  // "no verdict: ... at least 3 records"
+      CHECK_FALSE(test::find_note(row.note, "check.rule_few_collapse"));
       const VerdictRow* dyn = summary_row(a.verdict, "NTC2018", "dynamic");
       REQUIRE(dyn);
       CHECK(dyn->no_verdict);

@@ -4,7 +4,7 @@
 // another layer through localise(), and its parts in order.
 #include <doctest/doctest.h>
 
-#include "assess/assessment/note.hpp"
+#include "assess/support/note.hpp"
 #include "assess/report/messages.hpp"
 #include "assess/report/note_text.hpp"
 
@@ -59,6 +59,27 @@ TEST_CASE("a note renders its numbers with the language's decimal separator and 
                                        "mean spectrum is not checked against the target there");
   CHECK(note_text(Lang::it, beyond).rfind("; T_SLV = 4,500 s e T_SLC = ∞ s sono oltre il suo estremo 4,000 s", 0) ==
         0);
+}
+
+TEST_CASE("a dynamic check's note and the dynamic model, as data, in both languages") {
+  // A dynamic row of two records, one overturning (facade_assessment.cpp dynamic_row): its parts in order.
+  const NoteText row{{"check.d0_exceeded", {count_arg(1), count_arg(2), count_arg(1)}},
+                     {"check.records", {count_arg(2)}},
+                     {"check.rule_few_collapse", {}},
+                     {"check.failed", {count_arg(1), count_arg(2)}}};
+  CHECK(note_text(Lang::en, row) ==
+        "d0 exceeded in 1 of 2 analyses (overturned in 1); 2 records: the most unfavourable result; fewer than 3 "
+        "records (NTC 2018 §7.3.5) cannot show the wall safe, but a collapse fails the check whatever their number; "
+        "1 of 2 analyses FAILED (not verified; left out of the statistics)");
+  CHECK(note_text(Lang::it, row).rfind("d0 superato in 1 su 2 analisi (ribaltamento in 1); 2 accelerogrammi: ", 0) == 0);
+  // The floor-motion filter: a damping ratio by its significant digits (5 %, 2.5 %), the rest by decimals.
+  const NoteText floor{{"dyn.floor_filter", {number_arg(7.0, 2, "m"), number_arg(0.215, 3, "s"), number_arg(5.0, -3, "%"),
+                                             number_arg(1.2, 4)}}};
+  CHECK(note_text(Lang::en, floor) ==
+        "; base at Z = 7.00 m, floor motions a_Z = ug'' + gamma psi ur'' (first mode: T1 = 0.215 s, xi = 5 %, "
+        "gamma psi = 1.2000)");
+  CHECK(note_text(Lang::it, NoteText{{"dyn.floor_given", {number_arg(2.5, -3, "m")}}}) ==
+        "; base a Z = 2,5 m, moti di piano forniti dall'utente");
 }
 
 TEST_CASE("a text of another layer is localised; a note whose arguments do not fit is an error") {

@@ -57,6 +57,38 @@ std::size_t governing_mechanism_kinematic(const BuildingCase& b, const std::stri
   return best;
 }
 
+namespace {
+
+// The mechanisms' warnings, each located in the building's file and tagged
+// with its mechanism; a warning several mechanisms give in the same words is
+// listed once with their ids ("[M1, M2, M5]"), not once per mechanism.
+std::vector<std::string> merged_warnings(const BuildingCase& b, const std::vector<BuildingMechanismResult>& results) {
+  std::vector<std::string> text;              // in order of first appearance
+  std::vector<std::vector<std::size_t>> who;  // the mechanisms giving each
+  for (std::size_t i = 0; i < results.size(); ++i)
+    for (const std::string& w : results[i].a.warnings) {
+      const std::size_t k = std::size_t(std::find(text.begin(), text.end(), w) - text.begin());
+      if (k == text.size()) text.push_back(w), who.emplace_back();
+      if (who[k].empty() || who[k].back() != i) who[k].push_back(i);
+    }
+  std::vector<std::string> out;
+  for (std::size_t k = 0; k < text.size(); ++k) {
+    const std::string one = building_path_message(b, b.mechanisms[who[k].front()], text[k]);
+    if (who[k].size() == 1) {
+      out.push_back(one);
+      continue;
+    }
+    const BuildingMechanism& first = b.mechanisms[who[k].front()];
+    const std::string tag = " [" + first.id + " \"" + first.name + "\"]";  // building_path_message's
+    std::string ids;
+    for (std::size_t i : who[k]) ids += (ids.empty() ? "" : ", ") + b.mechanisms[i].id;
+    out.push_back(one.substr(0, one.size() - tag.size()) + " [" + ids + "]");
+  }
+  return out;
+}
+
+}  // namespace
+
 BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& options) {
   BuildingAssessment out;
   out.building = std::move(building);
@@ -137,8 +169,8 @@ BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& o
       r.zeta_before = r.zeta_after = zeta_E(r.a.kinematic, r.a.kase.method);
       r.passes_before = r.passes_after = every_kinematic_check_satisfied(r.a.kinematic);
     }
-    for (const std::string& w : r.a.warnings) out.warnings.push_back(building_path_message(b, b.mechanisms[i], w));
   }
+  out.warnings = merged_warnings(b, out.results);
   const FacadeAssessment& a0 = out.results.front().a;
   out.site_description = a0.site.description;
   out.VR = a0.site.VR;

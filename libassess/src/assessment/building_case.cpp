@@ -436,7 +436,7 @@ BuildingCase parse_building(const nlohmann::json& doc, const std::string& file) 
     // is decided here, once, from the selection itself, so that the building,
     // a mechanism run alone (--mechanism) and its expanded case agree.
     const BuildingMechanism& first = b.mechanisms[members[0]];
-    const std::string problem = [&] {
+    const NoteText problem = [&] {
       try {
         return shared_selection_problem(first.kase);
       } catch (const InputError& err) {
@@ -446,9 +446,8 @@ BuildingCase parse_building(const nlohmann::json& doc, const std::string& file) 
     if (!problem.empty()) {
       SharedSelection& added = b.selections.back();
       fall_back_to_own_selection(b, b.selections.size() - 1);
-      char range[64];
-      std::snprintf(range, sizeof range, "%.3f-%.3f s", added.T_min, added.T_max);
-      added.note = problem + " over the union range " + range + ": each mechanism selected its own records";
+      added.note = problem;
+      added.note.push_back({"sel.fell_back", {number_arg(added.T_min, 3), number_arg(added.T_max, 3, "s")}});
     }
   }
   return b;

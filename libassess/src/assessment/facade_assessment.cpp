@@ -527,18 +527,19 @@ std::vector<CaseDefault> assessment_defaults(const FacadeAssessment& a) {
   return out;
 }
 
-std::string shared_selection_problem(const CaseFile& kase) {
+NoteText shared_selection_problem(const CaseFile& kase) {
   const DynamicSpec d = parse_dynamic(kase.dynamic, kase.file, directory_of(kase.file));
-  if (!d.selection || !d.selection->T_min || !d.selection->T_max || !kase.site) return "";
+  if (!d.selection || !d.selection->T_min || !d.selection->T_max || !kase.site) return {};
   const Site site(*kase.site);
   const ElasticSpectrum target(site.action(LimitState::SLV).hazard, kase.site->conditions, 5.0);
   const PeriodRange range{*d.selection->T_min, *d.selection->T_max};
   const SelectionRequest req = selection_request(kase, *d.selection, range);
   const std::shared_ptr<const LibrarySelection> ls =
       select_from_library(*req.lib, req.rules, [&target](double T) { return target.Se(T); }, req.so);
-  if (ls->result.status != SelectionResult::Status::Compatible) return "no compatible set (" + ls->result.message + ")";
-  if (!ls->result.band_satisfied) return "the set's mean spectrum leaves the -10 %/+30 % band";
-  return "";
+  if (ls->result.status != SelectionResult::Status::Compatible)
+    return {{"sel.no_compatible", {generated_arg(ls->result.message)}}};
+  if (!ls->result.band_satisfied) return {{"sel.band_left", {}}};
+  return {};
 }
 
 namespace {
@@ -776,22 +777,27 @@ CheckRow dynamic_row(const FacadeAssessment& a, std::size_t ie, const CandidateR
   row.formula = (s.rule == "mean" ? "mean of peak d* over " : "largest peak d* of ") + nrec;
   int collapses = 0;
   for (const DynamicRun& r : a.dynamics.runs) collapses += r.restitution == ie && r.collapse ? 1 : 0;
-  row.note = std::string(s.any_collapse ? "d0 exceeded in " + std::to_string(collapses) + " of " +
-                                              std::to_string(s.analyses) + " analyses (overturned in " +
-                                              std::to_string(s.overturned) +
-                                              (md.tied() ? ", a rod broken in " + std::to_string(s.ruptured) : "") + ")"
-                                        : "d0 never exceeded") +
-             "; " + nrec + ": " +
-             (s.rule == "mean" ? "mean of the results (NTC 2018 §7.3.5, >= 7 records)"
-              : s.rule == "most unfavourable" ? "the most unfavourable result (NTC 2018 §7.3.5, 3 to 6 records)"
-              : s.any_collapse ? "the most unfavourable result; fewer than 3 records (NTC 2018 §7.3.5) cannot show "
-                                 "the wall safe, but a collapse fails the check whatever their number"
-                               : "no verdict: NTC 2018 §7.3.5 needs at least 3 records (results shown, not judged)");
+  // The note, as data (note.hpp): the collapses, the records' rule, compatibility, failures.
+  if (!s.any_collapse)
+    row.note.push_back({"check.d0_never", {}});
+  else if (md.tied())
+    row.note.push_back({"check.d0_exceeded_tied",
+                        {count_arg(std::size_t(collapses)), count_arg(std::size_t(s.analyses)),
+                         count_arg(std::size_t(s.overturned)), count_arg(std::size_t(s.ruptured))}});
+  else
+    row.note.push_back({"check.d0_exceeded", {count_arg(std::size_t(collapses)), count_arg(std::size_t(s.analyses)),
+                                              count_arg(std::size_t(s.overturned))}});
+  row.note.push_back(s.records == 1 ? Note{"check.records_one", {}}
+                                    : Note{"check.records", {count_arg(std::size_t(s.records))}});
+  row.note.push_back({s.rule == "mean"                ? "check.rule_mean"
+                      : s.rule == "most unfavourable" ? "check.rule_worst"
+                      : s.any_collapse                ? "check.rule_few_collapse"
+                                                      : "check.rule_few",
+                      {}});
   if (a.dynamics.compatibility.computed && !a.dynamics.compatibility.band_satisfied)
-    row.note += "; records not compatible with the SLV spectrum";
+    row.note.push_back({"check.not_compatible", {}});
   if (s.failed)
-    row.note += "; " + std::to_string(s.failed) + " of " + std::to_string(s.analyses) +
-                " analyses FAILED (not verified; left out of the statistics)";
+    row.note.push_back({"check.failed", {count_arg(std::size_t(s.failed)), count_arg(std::size_t(s.analyses))}});
   row.demand = s.d_demand;
   row.capacity = dynamic_d_SLV(gov.result);
   row.unit = "m";
@@ -828,7 +834,7 @@ CheckRow energy_row(const FacadeAssessment& a, std::size_t ie, const CandidateRe
   en.failed = s.failed;
   en.dc_survivors = s.mean_dc_survivors;
   decide(en);
-  en.note = "overturned in " + std::to_string(s.overturned) + " of " + std::to_string(s.analyses) + " analyses";
+  en.note = {{"check.overturned", {count_arg(std::size_t(s.overturned)), count_arg(std::size_t(s.analyses))}}};
   return en;
 }
 

@@ -52,10 +52,10 @@ std::vector<TieRestraint> chain_levels(const std::vector<DynamicTie>& ties) {
   return levels;
 }
 
-// ", held by N tie level(s) (...)": the ties in the model's description.
-std::string held_by(std::size_t n) {
-  return " held by " + std::to_string(n) + " tie level" + (n > 1 ? "s" : "") +
-         " (one-sided elastic-perfectly-plastic restraint, docs/theory/ties.md §6)";
+// " held by n tie levels (...)", of one body or of a chain (the words agree in Italian).
+Note held_by(bool body, std::size_t n) {
+  const std::string id = std::string(body ? "dyn.body_held" : "dyn.chain_held") + (n == 1 ? "_one" : "");
+  return n == 1 ? Note{id, {}} : Note{id, {count_arg(n)}};
 }
 
 }  // namespace
@@ -77,8 +77,7 @@ MechanismDynamics MechanismDynamics::with_ties(std::vector<DynamicTie> levels) c
   if (m.ties.empty()) return m;
   if (sidedness != Sidedness::one_sided) {
     m.applies = false;
-    m.note = "the dynamic analysis with tie rods covers one-sided rocking (a façade against its transverse walls); "
-             "the case asks for two-sided rocking";
+    m.note = {{"dyn.na_tied_two_sided", {}}};
     return m;
   }
   if (body) {
@@ -134,30 +133,29 @@ double MechanismDynamics::restoring(double q) const {
   return chain->net_restoring(q) / length;
 }
 
-std::string MechanismDynamics::describe() const {
-  std::string s;
+NoteText MechanismDynamics::describe() const {
+  NoteText s;
+  const bool two = sidedness == Sidedness::two_sided;
   if (body) {
-    s = "one body rotating about its ground hinge (rocking model, seed Eq. 1)";
-    if (tied()) s += held_by(ties.size());
+    s.push_back({"dyn.body", {}});
   } else {
-    if (chain->chain().blocks().size() == 1)  // issue 33: a roof thrust, its moment exact at every rotation
-      s = std::string(sidedness == Sidedness::two_sided ? "two-sided" : "one-sided") +
-          " model of one body rotating about its ground hinge with the roof thrust's moment exact at every rotation "
-          "(Lagrange's equation, docs/theory/chain-dynamics.md), q_u = " + fmt("%.5f", chain->q_u()) + " rad";
-    else
-      s = std::string(sidedness == Sidedness::two_sided ? "two-sided" : "one-sided") + " chain of " +
-          std::to_string(chain->chain().blocks().size()) + " blocks, one coordinate q = rotation of block '" +
-          chain->chain().blocks()[std::size_t(chain->reference_block())].name +
-          "' (Lagrange's equation, docs/theory/chain-dynamics.md), q_u = " + fmt("%.5f", chain->q_u()) + " rad";
-    if (tied()) s += "," + held_by(ties.size());
+    const NoteArg q_u_rad = number_arg(chain->q_u(), 5, "rad");
+    const std::size_t n = chain->chain().blocks().size();
+    if (n == 1)  // issue 33: a roof thrust, its moment exact at every rotation
+      s.push_back({two ? "dyn.thrust_two" : "dyn.thrust_one", {q_u_rad}});
+    else  // the reference block by its name in the case ("block 'lower'": the report names the catalogue's blocks)
+      s.push_back({two ? "dyn.chain_two" : "dyn.chain_one",
+                   {count_arg(n),
+                    generated_arg("block '" + chain->chain().blocks()[std::size_t(chain->reference_block())].name + "'"),
+                    q_u_rad}});
   }
+  if (tied()) s.push_back(held_by(static_cast<bool>(body), ties.size()));
   if (Z > 0.0 || floor_input) {
-    s += "; base at Z = " + fmt("%.2f", Z) + " m, ";
     if (floor_input)
-      s += "floor motions given by the user";
+      s.push_back({"dyn.floor_given", {number_arg(Z, 2, "m")}});
     else
-      s += "floor motions a_Z = ug'' + gamma psi ur'' (first mode: T1 = " + fmt("%.3f", filter->T1) +
-           " s, xi = " + fmt("%.3g", filter_damping_pct) + " %, gamma psi = " + fmt("%.4f", filter->gamma_psi) + ")";
+      s.push_back({"dyn.floor_filter", {number_arg(Z, 2, "m"), number_arg(filter->T1, 3, "s"),
+                                        number_arg(filter_damping_pct, -3, "%"), number_arg(filter->gamma_psi, 4)}});
   }
   return s;
 }
@@ -171,17 +169,12 @@ MechanismDynamics build_bare(const CaseFile& kase, const CandidateResult& cand, 
   // Issue 33: the mechanisms the 1-DOF rocking equation does not describe
   // (docs/theory/mechanisms.md §1.5, §2.4).
   if (chain.plan()) {
-    m.note = "horizontal flexure: the strip is restored by the arch's thrust, not by gravity, and that thrust is "
-             "bounded by crushing at the hinges, by the side walls' sliding or by a yielding tie, none of which "
-             "restores the strip's shape after an excursion: no rocking equation describes it (the kinematic "
-             "checks stand)";
+    m.note = {{"dyn.na_plan", {}}};
     return m;
   }
   for (const Load& l : chain.loads())
     if (l.type == LoadType::Friction) {
-      m.note = "interlocking friction (Coulomb friction: the side walls' interlocking, a floor's seat) dissipates and "
-               "sticks: it is no restoring force of the rocking equation; the dynamic analysis is not run for this "
-               "candidate (the kinematic checks stand)";
+      m.note = {{"dyn.na_friction", {}}};
       return m;
     }
   // Issue 33: a roof thrust's moment about the hinge varies with the rotation,
@@ -274,7 +267,7 @@ MechanismDynamics build_bare(const CaseFile& kase, const CandidateResult& cand, 
     const std::string msg = e.what();
     if (d.smooth && (msg.find("Winkler") != std::string::npos || msg.find("smooth") != std::string::npos))
       throw InputError(given_at(file, msg.find("modulus") != std::string::npos ? d.k_from : d.model_from) + ": " + msg);
-    m.note = msg;
+    m.note = {{"dyn.na_chain", {generated_arg(msg)}}};
     return m;
   }
   if (two && !m.chain->symmetric())

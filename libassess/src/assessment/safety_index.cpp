@@ -46,7 +46,7 @@ std::vector<SafetyIndex> safety_indices(const KinematicCaseResult& k, const Verd
         s.candidate = r->candidate;
         s.note = r->index.note;
       } else {
-        s.note = approach == std::string("dynamic") ? no_dynamic_index : "no check of this approach has an index";
+        s.note = {approach == std::string("dynamic") ? no_dynamic_index() : Note{"index.no_check", {}}};
       }
       out.push_back(s);
     }

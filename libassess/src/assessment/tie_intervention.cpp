@@ -961,7 +961,7 @@ TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventi
   TieDynamicResult R;
   if (!a.dynamics.spec || !a.dynamics.mechanism || a.dynamics.runs.empty()) {
     R.note = a.dynamics.spec && !a.dynamics.note.empty() && !a.dynamics.applies ? a.dynamics.note
-                                                                        : "no dynamic analysis in the case";
+                                                                        : NoteText{{"tie.dyn_none", {}}};
     return R;
   }
   // The façade's analyses are the stato di fatto (its existing ties hold the
@@ -980,7 +980,7 @@ TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventi
       return R;
     }
     if (!other->tied()) {
-      R.note = "the new ties hold no block of the mechanism analysed dynamically";
+      R.note = {{"tie.dyn_no_block", {}}};
       return R;
     }
     other_runs = dynamic_runs(a, *other, after.result, false);
@@ -1021,8 +1021,7 @@ TieDynamicResult run_tie_dynamics(const FacadeAssessment& a, const TieInterventi
     R.summaries.push_back(s);
   }
   R.applies = true;
-  R.note = t.intervention ? "the façade's analyses (the stato di fatto) repeated with the ties of the intervention"
-                          : "the façade's analyses are those of the wall with its existing ties";
+  R.note = {{t.intervention ? "tie.dyn_repeated" : "tie.dyn_existing", {}}};
   return R;
 }
 

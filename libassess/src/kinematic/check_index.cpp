@@ -123,11 +123,11 @@ void locate(CheckIndex& ix, DcAlongAxis& dc, const Scan& s, bool failing, double
 CheckIndex check_index(const KinematicResult& r, const CheckInput& in, const CheckRow& row, const HazardAxis& axis) {
   CheckIndex ix;
   if (row.kind != "strength" && row.kind != "displacement") {
-    ix.note = no_dynamic_index;
+    ix.note = {no_dynamic_index()};
     return ix;
   }
   if (!std::isfinite(row.dc) || row.no_verdict) {
-    ix.note = "no index: the check has no finite D/C";
+    ix.note = {{"index.no_finite_dc", {}}};
     return ix;
   }
   const LimitState ls = parse_limit_state(row.limit_state);
@@ -140,7 +140,7 @@ CheckIndex check_index(const KinematicResult& r, const CheckInput& in, const Che
   const double x_lo = tr ? check_index_tr_min : check_index_ag_min_g;
   const double x_hi = tr ? check_index_tr_max : check_index_ag_max_g;
   if (!(x_D >= x_lo && x_D <= x_hi)) {
-    ix.note = "no index: the limit state's hazard lies outside the searched range";
+    ix.note = {{"index.hazard_outside", {}}};
     return ix;
   }
   ix.TR_demand = tr ? x_D : nan;
@@ -165,8 +165,7 @@ CheckIndex check_index(const KinematicResult& r, const CheckInput& in, const Che
     if (!failing && ix.TR_ratio < 1.0) ix.TR_ratio = 1.0;
   }
   if (ix.bound != 0)
-    ix.note = ix.bound < 0 ? "the check fails at the lowest return period searched: the index is at most this"
-                           : "the check is satisfied up to the highest return period searched: the index is at least this";
+    ix.note = {{ix.bound < 0 ? "index.bound_below" : "index.bound_above", {}}};
   return ix;
 }
 

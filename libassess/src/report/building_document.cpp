@@ -9,6 +9,7 @@
 // appendices (every mechanism's other candidates, warnings, legend, readings,
 // the case file). Every verdict read from BuildingAssessment.
 #include "assess/report/building_report.hpp"
+#include "assess/report/note_text.hpp"
 
 #include "report/message_tables.hpp"
 #include "report/relazione_context.hpp"
@@ -468,7 +469,7 @@ void add_summary(Lang L, const BuildingAssessment& b, DocumentBuilder& d, const 
   for (const auto& [text, ids] : sets) items.push_back({Span(text, true), Span{": " + ids}});
   d.add_list(items);
   for (const SharedSelection& s : bc.selections)
-    if (s.fell_back) d.add_paragraph(s.id + ": " + (L == Lang::it ? relazione::decimal_comma(localise(L, s.note)) : s.note));
+    if (s.fell_back) d.add_paragraph(s.id + ": " + (L == Lang::it ? relazione::decimal_comma(note_text(L, s.note)) : note_text(L, s.note)));
   // Each shared set is described in the tabulati (add_record_sets; issue 36: the body's length).
   if (has_shared_set(b) && tabulati)
     d.add_paragraph(Inline{reference(bt(L, "sets_in_tab"), "record-sets", tabulati_key)}, "note");

@@ -4,6 +4,7 @@
 
 #include "assess/report/kinematic_report.hpp"
 #include "assess/report/tie_report.hpp"
+#include "assess/report/note_text.hpp"
 
 #include "report/report_heading.hpp"
 #include "report/number_text.hpp"
@@ -45,7 +46,7 @@ nlohmann::json safety_indices_json(const std::vector<SafetyIndex>& indices) {
       j.update(to_json(s.index));
       j.erase("note");
     }
-    if (!s.note.empty()) j["note"] = s.note;
+    if (!s.note.empty()) j["note"] = note_text(Lang::en, s.note);
     arr.push_back(j);
   }
   return arr;
@@ -73,7 +74,7 @@ nlohmann::json building_part_json(const BuildingAssessment& b) {
     for (std::size_t i : s.members) members.push_back(bc.mechanisms[i].id);
     sj["members"] = members;
     sj["fell_back"] = s.fell_back;
-    if (!s.note.empty()) sj["note"] = s.note;
+    if (!s.note.empty()) sj["note"] = note_text(Lang::en, s.note);
     sets.push_back(sj);
   }
   bj["record_sets"] = sets;

@@ -264,7 +264,7 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
   if (a.dynamics.spec) {
     nlohmann::json d;
     d["applies"] = a.dynamics.applies;
-    d["note"] = a.dynamics.note;
+    d["note"] = note_text(Lang::en, a.dynamics.note);
     if (a.dynamics.applies) {
       d["model"] = dynamic_model_json(a);
       if (!a.curves.code_floor_Se.empty())

@@ -2,6 +2,7 @@
 // layer: formats the results, never recomputes physics).
 #include "assess/report/kinematic_report.hpp"
 
+#include "assess/report/note_text.hpp"
 #include "assess/support/units.hpp"
 #include "report/number_text.hpp"
 #include "report/text_format.hpp"
@@ -28,7 +29,7 @@ nlohmann::json to_json(const CheckRow& r) {
                    {"clause", r.clause},     {"formula", r.formula}};
   if (!r.candidate.empty()) j["candidate"] = r.candidate;
   j["outcome"] = to_string(r.outcome());
-  if (!r.note.empty()) j["note"] = r.note;
+  if (!r.note.empty()) j["note"] = note_text(Lang::en, r.note);
   if (!r.inputs.empty()) {
     nlohmann::json in = nlohmann::json::object();
     for (const auto& [name, v] : r.inputs) in[name] = v;
@@ -63,7 +64,7 @@ nlohmann::json to_json(const CheckIndex& x) {
     if (x.non_monotonic) j["other_crossing_TR_years"] = num(x.other_crossing_TR);
     j["shape_held"] = x.shape_held;
   }
-  if (!x.note.empty()) j["note"] = x.note;
+  if (!x.note.empty()) j["note"] = note_text(Lang::en, x.note);
   return j;
 }
 
@@ -264,7 +265,7 @@ std::string checks_text(const std::vector<CheckRow>& checks, TextWidth width) {
                     x.limit_state.c_str(), x.kind.c_str(), x.location.c_str(), number_text(x.demand, "%.6f", 12),
                     number_text(x.capacity, "%.6f", 12), x.unit.c_str(), number_text(x.dc, "%.3f", 7), pga,
                     x.no_verdict ? "no verdict" : verdict(x.satisfied), x.formula.c_str(), x.clause.c_str(),
-                    x.note.empty() ? "" : ("; " + x.note).c_str());
+                    x.note.empty() ? "" : ("; " + note_text(Lang::en, x.note)).c_str());
       if (!x.inputs.empty()) out += "           " + inputs_text(x) + "\n";
     }
     return out;
@@ -284,7 +285,7 @@ std::string checks_text(const std::vector<CheckRow>& checks, TextWidth width) {
                   x.unit.c_str(), number_text(x.dc, "%.3f", 7), pga);
     out += wrap_items(std::string(11, ' '),
                       split_items(std::string(x.no_verdict ? "no verdict" : verdict(x.satisfied)) + "; " + x.formula +
-                                  "; " + x.clause + (x.note.empty() ? "" : "; " + x.note)),
+                                  "; " + x.clause + (x.note.empty() ? "" : "; " + note_text(Lang::en, x.note))),
                       11) +
            "\n";
     if (!x.inputs.empty()) out += wrap_text(std::string(11, ' ') + inputs_text(x), 11) + "\n";
@@ -437,7 +438,7 @@ nlohmann::json to_json(const VerdictRow& r) {
           {"outcome", to_string(r.outcome())},
           {"clause", r.clause},
           {"candidate", r.candidate},
-          {"note", r.note},
+          {"note", note_text(Lang::en, r.note)},
           {"checks", r.checks},
           {"failing", r.failing}};
 }
@@ -492,7 +493,7 @@ std::string verdict_text(const Verdict& v, TextWidth width) {
   for (const VerdictRow& r : v.rows) {
     std::string tail = r.candidate.empty() ? r.clause : r.candidate + "; " + r.clause;
     if (r.failing > 0 && r.checks > 1) tail += format("; %d of %d checks fail", r.failing, r.checks);
-    if (!r.note.empty()) tail += "; " + r.note;
+    if (!r.note.empty()) tail += "; " + note_text(Lang::en, r.note);
     const std::string dc = number_text(r.dc, "%.3f", 8);
     const std::string cols = format("  %-8s %-15s %-4s %-7s %s  %-31s", r.code.c_str(),
                                     (r.code == "seed" ? std::string("energy (mean)") : r.approach).c_str(),

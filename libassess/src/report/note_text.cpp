@@ -16,7 +16,8 @@ std::string arg_text(Lang lang, const NoteArg& a) {
     case NoteArg::Kind::count: return std::to_string(static_cast<long long>(a.value));
     case NoteArg::Kind::number: break;
   }
-  std::string s = detail::number_text(a.value, ("%." + std::to_string(a.decimals) + "f").c_str());
+  const std::string f = a.decimals < 0 ? "%." + std::to_string(-a.decimals) + "g" : "%." + std::to_string(a.decimals) + "f";
+  std::string s = detail::number_text(a.value, f.c_str());
   if (lang == Lang::it)
     for (char& c : s)
       if (c == '.') c = ',';

@@ -106,7 +106,7 @@ void brief_safety_indices(Ctx& c, const MethodVerdict& concl) {
     if (s.code != concl.code || s.approach == "dynamic") continue;
     const std::string method = c.t("method." + method_of_kind(s.approach));
     if (!s.defined) {
-      items.push_back({Span{method + ": " + c.loc(s.note)}});
+      items.push_back({Span{method + ": " + c.note(s.note)}});
       continue;
     }
     const CheckIndex& v = s.index;
@@ -154,7 +154,7 @@ void add_safety_indices(Ctx& c) {
     if (brief && !s.defined && s.approach == "dynamic") continue;
     const std::string method = c.t("method." + method_of_kind(s.approach));
     if (!s.defined) {
-      Cell why(s.approach == "dynamic" ? c.t("zeta.no_dynamic") : c.loc(s.note));
+      Cell why(s.approach == "dynamic" ? c.t("zeta.no_dynamic") : c.note(s.note));
       rows.push_back({Cell(code_name(s.code)), Cell(method), Cell("—"), c.num(std::nan(""), 3), c.num(std::nan(""), 3),
                       c.num(std::nan(""), 3), c.num(std::nan(""), 0), c.num(std::nan(""), 0), c.num(std::nan(""), 2), why});
       continue;

@@ -93,7 +93,7 @@ void comparison(Ctx& c, bool figure, bool rows_table) {
       bars.y.push_back(std::isfinite(r.dc) ? r.dc : top);  // a collapse: the bar reaches the top (∞ in the table)
       p.x_tic_labels.push_back({x, short_name(r) + (std::isfinite(r.dc) ? "" : " (∞)")});
       std::string note = c.loc(r.candidate.empty() ? "" : r.candidate + "; ") + c.clause(r.clause);
-      if (!r.note.empty()) note += "; " + c.loc(r.note);
+      if (!r.note.empty()) note += "; " + c.note(r.note);
       Cell outcome = c.outcome_cell(r.outcome());
       if (r.code == "seed") outcome.text = r.satisfied ? "≤ 1" : std::isfinite(r.dc) ? "> 1" : c.t("dc.collapse_word");
       rows.push_back({Cell(grp == "seed" ? c.t("cmp.group_seed") : code_name(r.code)),

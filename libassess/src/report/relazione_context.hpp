@@ -6,7 +6,7 @@
 #pragma once
 
 #include "assess/assessment/facade_assessment.hpp"
-#include "assess/assessment/note.hpp"
+#include "assess/support/note.hpp"
 #include "assess/report/relazione.hpp"
 #include "assess/assessment/tie_intervention.hpp"
 #include "assess/report/document.hpp"

@@ -51,7 +51,7 @@ void add_model(Ctx& c, const FacadeAssessment& x) {
   const DynamicSpec& d = *x.dynamics.spec;
   std::string what = c.t(d.smooth ? "dyn.smooth" : "dyn.rigid") + ", ";
   if (x.dynamics.model) what += c.t(x.dynamics.model->sidedness() == Sidedness::one_sided ? "dyn.one_sided" : "dyn.two_sided") + ". ";
-  c.d.add_paragraph(what + c.t("dyn.model") + ": " + c.loc(md.describe()) + ".");
+  c.d.add_paragraph(what + c.t("dyn.model") + ": " + c.note(md.describe()) + ".");
   c.d.add_paragraph(c.t(md.single_body() ? "dyn.eq_body" : "dyn.eq_chain"), "note");
   if (d.smooth) c.d.add_paragraph(c.t("dyn.eq_winkler"), "note");
   c.d.add_paragraph(c.t("dyn.eq_impact"), "note");
@@ -345,7 +345,7 @@ void add_others(Ctx& c, const FacadeAssessment& shown) {
     const std::string label = c.loc(c.candidate(ci).label);
     if (!o->dynamics.applies) {
       rows.push_back({Cell(label), Cell("—"), Cell("—"), c.num(std::nan(""), 0), c.num(std::nan(""), 4),
-                      c.num(std::nan(""), 4), c.num(std::nan(""), 3), Cell(c.t("dyn.na") + ": " + c.loc(o->dynamics.note))});
+                      c.num(std::nan(""), 4), c.num(std::nan(""), 3), Cell(c.t("dyn.na") + ": " + c.note(o->dynamics.note))});
       continue;
     }
     std::string recs;
@@ -380,11 +380,11 @@ void add_dynamic_summary(Ctx& c) {
   if (!a.dynamics.spec) return;
   c.d.add_heading(c.t("dyn.heading"));
   if (!a.dynamics.applies) {
-    c.d.add_paragraph(c.t("dyn.na") + ": " + c.loc(a.dynamics.note));
+    c.d.add_paragraph(c.t("dyn.na") + ": " + c.note(a.dynamics.note));
     return;
   }
   const FacadeAssessment& x = governing_dynamics(a);
-  c.d.add_paragraph(c.t("dyn.model_heading") + ": " + c.loc(x.dynamics.note) + ".");
+  c.d.add_paragraph(c.t("dyn.model_heading") + ": " + c.note(x.dynamics.note) + ".");
   c.d.add_heading(c.t("dyn.input_heading"), 3, false);
   add_records(c, x);
   if (c.o.shared_records.empty()) add_compatibility(c, x);
@@ -403,7 +403,7 @@ void add_dynamic(Ctx& c) {
   if (!a.dynamics.spec) return;
   c.d.add_heading(c.t("dyn.heading"), 2, false, true, "dynamic");
   if (!a.dynamics.applies) {
-    c.d.add_paragraph(c.t("dyn.na") + ": " + c.loc(a.dynamics.note));
+    c.d.add_paragraph(c.t("dyn.na") + ": " + c.note(a.dynamics.note));
     return;
   }
   const FacadeAssessment& x = governing_dynamics(a);
@@ -412,7 +412,7 @@ void add_dynamic(Ctx& c) {
   const DynamicSpec& d = *x.dynamics.spec;
   std::string what = c.t(d.smooth ? "dyn.smooth" : "dyn.rigid") + ", ";
   if (x.dynamics.model) what += c.t(x.dynamics.model->sidedness() == Sidedness::one_sided ? "dyn.one_sided" : "dyn.two_sided") + ". ";
-  Inline model{Span{what + c.t("dyn.model") + ": " + c.loc(x.dynamics.mechanism->describe()) + "."}};
+  Inline model{Span{what + c.t("dyn.model") + ": " + c.note(x.dynamics.mechanism->describe()) + "."}};
   if (c.tabulati) {
     model.push_back(Span{" "});
     model.push_back(reference(c.t("dyn.params_in_tab"), c.here("dynamic"), tabulati_key));

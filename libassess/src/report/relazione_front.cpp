@@ -109,7 +109,7 @@ void add_verdict_box(Ctx& c) {
         std::string gov = c.t("verdict.governing") + ": " + row_name(c, r) + ", D/C = " + c.n(r.dc, 3) + " (" +
                           c.clause(r.clause) + (r.candidate.empty() ? "" : "; " + c.loc(r.candidate)) + ")";
         if (r.no_verdict) gov += " — " + c.t("verdict.untrusted");
-        else if (!std::isfinite(r.dc) && !r.note.empty()) gov += " — " + c.loc(r.note);
+        else if (!std::isfinite(r.dc) && !r.note.empty()) gov += " — " + c.note(r.note);
         mb.content.push_back(Paragraph{{Span{gov}}, "note", ""});
       }
       b.content.push_back(std::move(mb));

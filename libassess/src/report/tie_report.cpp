@@ -1,6 +1,7 @@
 // tie_report.cpp: text and JSON of the tie rods (issues 23, 29), and the
 // readings adopted; formatting only.
 #include "assess/report/tie_report.hpp"
+#include "assess/report/note_text.hpp"
 
 #include "assess/kinematic/tie_catalogue.hpp"
 #include "assess/report/kinematic_report.hpp"
@@ -282,7 +283,7 @@ std::string outcome_text(const TieDynamicRun& r) {
 
 std::string dynamics_text(const TieInterventionResult& t) {
   const TieDynamicResult& d = t.dynamics;
-  if (!d.applies) return d.note.empty() ? "" : wrap_text("  dynamic analysis with the ties: not done: " + d.note, 4) + "\n";
+  if (!d.applies) return d.note.empty() ? "" : wrap_text("  dynamic analysis with the ties: not done: " + note_text(Lang::en, d.note), 4) + "\n";
   std::string s = wrap_text(t.intervention ? "  dynamic check, stato di fatto -> stato di progetto (Circ. 2019 "
                                              "C8.7.1.2.1.9; the analyses above repeated with every tie of the project)"
                                            : "  dynamic check of the stato di fatto with its existing ties (Circ. 2019 "
@@ -545,7 +546,7 @@ nlohmann::json tie_json(const TieInterventionResult& t) {
   j["zeta_E_improvement"] = num(t.zetaE_after - t.zetaE_before);
   nlohmann::json dj;
   dj["applies"] = t.dynamics.applies;
-  dj["note"] = t.dynamics.note;
+  dj["note"] = note_text(Lang::en, t.dynamics.note);
   dj["summaries"] = nlohmann::json::array();
   for (const TieDynamicSummary& x : t.dynamics.summaries)
     dj["summaries"].push_back({{"e", x.e},

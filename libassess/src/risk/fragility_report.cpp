@@ -6,6 +6,7 @@
 #include "assess/support/content_hash.hpp"
 
 #include "assess/report/html_report.hpp"
+#include "assess/report/note_text.hpp"
 #include "assess/report/plot.hpp"
 #include "assess/risk/collapse_rate.hpp"
 #include "assess/support/error.hpp"
@@ -107,7 +108,7 @@ json fragility_to_json(const FragilityStudy& st, const FragilityResult& r) {
   if (const std::string h = file_fnv1a64(st.file); !h.empty()) j["case_fnv1a64"] = h;
   j["project"] = st.project;
   j["mechanism"] = st.mechanism;
-  j["model"] = st.dynamics.describe();
+  j["model"] = note_text(Lang::en, st.dynamics.describe());
   j["selection_warnings"] = st.selection_warnings;
   j["site"] = st.site_description;
   j["method"] = to_string(st.options.method);
@@ -153,7 +154,7 @@ json fragility_to_json(const FragilityStudy& st, const FragilityResult& r) {
 std::string fragility_text(const FragilityStudy& st, const FragilityResult& r) {
   std::ostringstream os;
   os << "fragility of '" << st.mechanism << "' (" << st.file << "), site " << st.site_description << "\n";
-  os << "model: " << st.dynamics.describe() << "\n";
+  os << "model: " << note_text(Lang::en, st.dynamics.describe()) << "\n";
   for (const std::string& w : st.selection_warnings) os << "selection: " << w << "\n";
   os << to_string(st.options.method) << ": " << st.stripes.size() << " levels, " << r.analyses << " analyses ("
      << r.failed << " failed); IM = PGA on the site's ground\n";
@@ -244,7 +245,7 @@ FragilityReportFiles write_fragility_report(const FragilityStudy& st, const Frag
   // HTML page.
   HtmlReport html("Fragility and annual risk of overturning: " + st.project);
   html.add_heading("Summary");
-  html.add_paragraph("Case " + st.file + ", mechanism '" + st.mechanism + "' (" + st.dynamics.describe() +
+  html.add_paragraph("Case " + st.file + ", mechanism '" + st.mechanism + "' (" + note_text(Lang::en, st.dynamics.describe()) +
                      "), site " + st.site_description +
                      ", VN " + fmt(st.VN, "%.0f") + " years, VR " + fmt(st.VR, "%.0f") + " years. Method: " +
                      (st.options.method == FragilityMethod::stripes

@@ -8,6 +8,8 @@
 // stripe's Se(0), so every analysis of a stripe has exactly the stripe's IM).
 #include "assess/risk/fragility_study.hpp"
 
+#include "assess/report/note_text.hpp"
+
 #include "assess/hazard/site.hpp"
 #include "assess/records/library_selection.hpp"
 #include "assess/records/record_catalogue.hpp"
@@ -114,7 +116,7 @@ FragilityStudy prepare_fragility(const CaseFile& kase, const FragilityOptions& o
   st.dynamics = build_mechanism_dynamics(kase, gov, kase.mechanism.candidates[kin.governing].chain, d);
   if (!st.dynamics.applies)
     throw InputError(kase.file + ": /mechanism: the dynamic model does not apply to the governing mechanism '" +
-                     gov.label + "': " + st.dynamics.note + "; a fragility needs its dynamic analyses");
+                     gov.label + "': " + note_text(Lang::en, st.dynamics.note) + "; a fragility needs its dynamic analyses");
   for (const Restitution& r : d.restitutions) st.restitution_labels.push_back(describe(r));
   if (d.polarity != Polarity::reversed) st.polarities.push_back(false);
   if (d.polarity != Polarity::normal) st.polarities.push_back(true);

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""The Italian relazione is entirely Italian (issues 24, 28, 36): renders the
-Italian HTML of every shipped case — the body and its tabulati di calcolo — and
+"""The Italian relazione is entirely Italian (issues 24, 28, 36, 41): renders the
+Italian HTML of every shipped case (and two with undecided or collapsing dynamics) — the body and its tabulati di calcolo — and
 scans their text for English words and code tokens (ASCII spellings of Greek
 letters and units, internal names and block names, paths, certainty tags, notes
 addressed to developers),
@@ -63,6 +63,10 @@ def main():
     os.makedirs(out, exist_ok=True)
     failures = []
     cases = sorted(glob.glob(os.path.join(src, "mechanisms", "*.json")))
+    # Dynamic checks without a verdict (2 records, NTC 2018 §7.3.5) and with a collapse
+    # under 2 records: their notes are in no shipped case (issue 41).
+    cases += [os.path.join(src, "tests", "cli", "building", "house_dynamic_two.json"),
+              os.path.join(src, "tests", "cli", "verdict", "overturn_two_records.json")]
     for case in cases:
         name = os.path.basename(case)[:-5]
         if name.startswith("campaign"):

@@ -13,6 +13,7 @@
 #pragma once
 
 #include "assess/assessment/case_file.hpp"
+#include "assess/support/note.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -72,7 +73,7 @@ struct SharedSelection {
   double T_min = 0.0, T_max = 0.0;   ///< union of the members' ranges (s)
   std::vector<std::size_t> members;  ///< indices in BuildingCase::mechanisms
   bool fell_back = false;            ///< no compatible set over the union: members selected their own
-  std::string note;
+  NoteText note;                     ///< why it fell back (as data)
 };
 
 struct BuildingCase {

@@ -7,7 +7,7 @@
 
 #include "assess/assessment/dynamic_case.hpp"
 #include "assess/assessment/mechanism_dynamics.hpp"
-#include "assess/assessment/note.hpp"
+#include "assess/support/note.hpp"
 #include "assess/dynamics/rocking_from_chain.hpp"
 #include "assess/kinematic/code_checks.hpp"
 #include "assess/kinematic/outcome.hpp"
@@ -127,7 +127,7 @@ struct SpectrumCompatibility {
 struct DynamicPart {
   std::optional<DynamicSpec> spec;  ///< the case's "dynamic" section, parsed (empty without one)
   bool applies = false;             ///< the mechanism has a dynamic model and it was analysed
-  std::string note;                 ///< why it does not apply, or the model's description
+  NoteText note;                    ///< why it does not apply, or the model's description (as data)
   std::optional<ChainRockingBody> body;  ///< one rotating body (rocking model); empty for a multi-block chain
   std::optional<RockingModel> model;     ///< model of the first restitution value (geometry, theta_u, capacity)
   /// The dynamic model of the governing mechanism: rocking body or chain, and its base motion.

@@ -131,9 +131,9 @@ std::vector<CaseDefault> assessment_defaults(const FacadeAssessment& a);
 /// /dynamic/select/period_range_s can be used (docs/theory/building.md §3):
 /// a compatible set whose mean spectrum stays within the -10 %/+30 % band of
 /// the SLV spectrum over the range (NTC 2018 §3.2.3.6). The same selection
-/// the assessment makes (memoised per process: no second cost). "" when
-/// usable, else why not. @throws InputError for a bad selection section.
-std::string shared_selection_problem(const CaseFile& kase);
+/// the assessment makes (memoised per process: no second cost). Empty when
+/// usable, else why not (a note as data). @throws InputError for a bad selection section.
+NoteText shared_selection_problem(const CaseFile& kase);
 
 /// Runs the whole assessment of a case. Throws InputError for bad input
 /// (naming the JSON path); physical outcomes are results.

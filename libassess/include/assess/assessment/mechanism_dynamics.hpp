@@ -19,6 +19,7 @@
 #include "assess/dynamics/rocking_from_chain.hpp"
 #include "assess/dynamics/tied_rocking.hpp"
 #include "assess/records/floor_motion.hpp"
+#include "assess/support/note.hpp"
 
 #include <limits>
 #include <memory>
@@ -38,7 +39,7 @@ struct DynamicTie {
 
 struct MechanismDynamics {
   bool applies = false;                           ///< false: `note` says why the model cannot represent the chain
-  std::string note;
+  NoteText note;
   std::optional<ChainRockingBody> body;           ///< one rotating body: the rocking body
   std::vector<RockingModel> rocking;              ///< one rotating body: a model per restitution value
   std::shared_ptr<const ChainDynamics> chain;     ///< otherwise: the chain model
@@ -82,8 +83,8 @@ struct MechanismDynamics {
   /// Net restoring moment (single body, N m/m) or generalised force per unit
   /// length (N m/m) at q (held by ties: on the envelope, q in [0, q_u]).
   double restoring(double q) const;
-  /// One line: "rocking body ..." or "chain of N blocks ...", the input motion.
-  std::string describe() const;
+  /// One line, as data (note.hpp): "rocking body ..." or "chain of N blocks ...", the input motion.
+  NoteText describe() const;
 };
 
 /// The tie levels of a kinematic candidate (`cand.result.ties`) as the model

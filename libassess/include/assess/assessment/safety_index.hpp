@@ -30,7 +30,7 @@ struct SafetyIndex {
   /// zetaE defined: the approach has a check with an index (strength and
   /// displacement; the dynamic approach has none: `note` says why).
   bool defined = false;
-  std::string note;
+  NoteText note;
   std::string limit_state, location, candidate;  ///< the check whose index is the lowest
   /// That check's index (check_index.hpp): zeta, PGA_C, PGA_D, TR_C, TR_D,
   /// their ratio, whether extrapolated, bounded, non-monotonic.

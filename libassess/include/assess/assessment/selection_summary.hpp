@@ -4,7 +4,7 @@
 // records that could not be read.
 #pragma once
 
-#include "assess/assessment/note.hpp"
+#include "assess/support/note.hpp"
 #include "assess/records/record_selection.hpp"
 
 #include <cstddef>

@@ -76,7 +76,7 @@ struct TieDynamicSummary {
 
 struct TieDynamicResult {
   bool applies = false;
-  std::string note;              ///< why not, or what was done
+  NoteText note;                 ///< why not, or what was done (as data)
   std::vector<TieDynamicRun> runs_before;  ///< the stato di fatto's analyses (with its existing ties), if tied
   std::vector<TieDynamicRun> runs;         ///< the stato di progetto's
   std::vector<TieDynamicSummary> summaries;

@@ -24,7 +24,7 @@ struct VerdictRow {
   double dc = 0.0;          ///< demand / capacity (-)
   bool satisfied = false;   ///< dc <= 1 and a verdict could be given
   bool no_verdict = false;  ///< the check could not give a verdict (`note` says why)
-  std::string note;         ///< "overturned in 1 of 2 analyses", the record-count rule ...
+  NoteText note;            ///< "overturned in 1 of 2 analyses", the record-count rule ... (as data)
   int checks = 0;           ///< how many checks this row governs
   int failing = 0;          ///< how many of them fail
   Outcome outcome() const { return outcome_of(satisfied, no_verdict); }

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "assess/hazard/hazard.hpp"
+#include "assess/support/note.hpp"
 
 #include <functional>
 #include <limits>
@@ -22,7 +23,7 @@ struct CheckRow;
 struct CheckIndex {
   /// An index exists (a kinematic check with a finite D/C); otherwise `note` says why.
   bool defined = false;
-  std::string note;
+  NoteText note;
   double TR_demand = std::numeric_limits<double>::quiet_NaN();    ///< TR_D: the limit state's TR as the check used it (years)
   double TR_capacity = std::numeric_limits<double>::quiet_NaN();  ///< TR_C (years); NaN without a return-period axis
   double ag_demand_g = std::numeric_limits<double>::quiet_NaN();  ///< PGA_D = ag(TR_D) on rock (g)
@@ -50,9 +51,7 @@ struct CheckIndex {
 };
 
 /// Why a dynamic check has no index (the same words in every output).
-inline constexpr const char* no_dynamic_index =
-    "no PGA capacity: the dynamic check runs the records scaled to the SLV spectrum and gives a D/C, not the return "
-    "period at which the mechanism fails (an incremental analysis would: assess fragility --ida)";
+inline Note no_dynamic_index() { return {"index.no_dynamic", {}}; }
 
 /// The searched range of return periods (years), beyond the data by the
 /// extrapolation of Site::hazard_extrapolated; a crossing beyond it is a bound.

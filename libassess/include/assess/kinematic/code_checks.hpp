@@ -51,7 +51,7 @@ struct CheckRow {
   bool no_verdict = false;
   /// Its verdict in three states (outcome.hpp).
   Outcome outcome() const { return outcome_of(satisfied, no_verdict); }
-  std::string note;             ///< remarks for the reader ("overturned in 1 of 2 analyses" ...)
+  NoteText note;                ///< remarks for the reader, as data ("overturned in 1 of 2 analyses" ...)
   /// Dynamic and energy rows (issue 28): the analyses behind the row, how
   /// many collapsed (the threshold d0 exceeded or the wall overturned,
   /// C8.7.1.2.1.9) and how many failed (integrator limits: not a result).

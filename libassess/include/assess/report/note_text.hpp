@@ -1,11 +1,11 @@
-// note_text.hpp: a note of the assessment (assessment/note.hpp) in words:
+// note_text.hpp: a note of the analysis (support/note.hpp) in words:
 // its catalogue text "note.<id>" (messages.cpp) in the report's language with
 // each "{}" replaced by its argument: a number with the language's decimal
 // separator and its unit, a text as it is, a text of another layer through
 // localise().
 #pragma once
 
-#include "assess/assessment/note.hpp"
+#include "assess/support/note.hpp"
 #include "assess/report/messages.hpp"
 
 #include <string>

@@ -1,4 +1,4 @@
-// note.hpp: a note of the assessment as data, not as an English sentence
+// note.hpp: a note of the analysis as data, not as an English sentence
 // (issue 41): the id of its text in the message catalogue (report/
 // messages.cpp, key "note.<id>", a "{}" per argument, in Italian and English)
 // and its arguments: numbers kept as numbers with their decimals and unit, so
@@ -24,7 +24,7 @@ struct NoteArg {
   Kind kind = Kind::text;
   std::string text;
   double value = 0.0;
-  int decimals = 3;
+  int decimals = 3;  ///< decimals ("%.Nf"); a negative N: -N significant digits ("%.Ng", 5 for 5.0)
   std::string unit;  ///< printed after the number, after a space ("s", "km", "m/s"; "" none)
 };
 
@@ -43,7 +43,7 @@ inline NoteArg number_arg(double v, int decimals, std::string unit = "") {
 }
 inline NoteArg count_arg(std::size_t n) { return {NoteArg::Kind::count, "", double(n), 0, ""}; }
 
-/// Every note id the assessment writes (the catalogue test checks each has
+/// Every note id the library writes (the catalogue test checks each has
 /// its text in both languages, with one "{}" per argument).
 const std::vector<std::pair<std::string, std::size_t>>& note_ids();
 
