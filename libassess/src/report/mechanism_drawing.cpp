@@ -598,36 +598,113 @@ std::string plan_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
                                                    Canvas::marker("arrowk", "#222") + "</defs>\n");
 }
 
-}  // namespace
-
-std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
-  decimal_comma = lang == Lang::it;
-  if (chain.plan()) return plan_svg(chain, r, lang);  // issue 33: horizontal flexure, in plan
-  const std::vector<Block>& blocks = chain.blocks();
-  // Bounding box of the blocks and of the foundation level z = 0.
-  double xmin = kInf, xmax = -kInf, zmin = 0.0, zmax = -kInf;
-  for (const Block& b : blocks)
-    for (const auto& p : b.polygon) {
-      xmin = std::min(xmin, p.x()), xmax = std::max(xmax, p.x());
-      zmin = std::min(zmin, p.y()), zmax = std::max(zmax, p.y());
+// The bounding box of the blocks and of the foundation level z = 0: xmin, xmax, zmin, zmax (m).
+std::array<double, 4> bounding_box(const std::vector<Block>& blocks) {
+  std::array<double, 4> b{kInf, -kInf, 0.0, -kInf};
+  for (const Block& k : blocks)
+    for (const auto& p : k.polygon) {
+      b[0] = std::min(b[0], p.x()), b[1] = std::max(b[1], p.x());
+      b[2] = std::min(b[2], p.y()), b[3] = std::max(b[3], p.y());
     }
-  const double wx = std::max(xmax - xmin, 1e-6), wz = std::max(zmax - zmin, 1e-6);
-  const Geometry geo{blocks, 1e-7 * std::max(wx, wz)};
+  return b;
+}
+
+// A horizontal dimension: the wall's thickness over a band, a block's width, a load's offset.
+struct HDim {
+  double x1, x2;      // m
+  double zt1, zt2;    // upper reference levels of the two ends (m)
+  double zb1, zb2;    // lower reference levels of the two ends (m)
+  std::string kind;   // thickness, width, offset
+  int load = -1;      // offset: index of the load
+};
+
+// A column of vertical dimensions on the outer side of the wall.
+struct Column {
+  std::vector<double> z;  // levels, bottom to top
+  std::string kind;
+};
+
+// A row of horizontal dimensions (px) taken, for the next not to clash with it.
+struct Row {
+  double y, X1, X2;
+};
+
+// The elevation of a chain in its plane (mechanism_svg): the state its drawing
+// steps share, each step one member, in the order mechanism_svg calls them.
+class Elevation {
+ public:
+  Elevation(const Chain& chain, const KinematicResult& r, Lang lang)
+      : Elevation(chain, r, lang, bounding_box(chain.blocks())) {}
+  std::string draw();
+
+ private:
+  Elevation(const Chain& chain, const KinematicResult& r, Lang lang, const std::array<double, 4>& box);
   // The wall to scale in at most 240 x 440 px.
-  const double s = std::min(240.0 / wx, 440.0 / wz);
-  auto X = [&](double x) { return 300.0 + s * (x - xmin); };
-  auto Y = [&](double z) { return 80.0 + s * (zmax - z); };
+  double X(double x) const { return 300.0 + s * (x - xmin); }
+  double Y(double z) const { return 80.0 + s * (zmax - z); }
+  void draw_blocks();
+  void collect_levels();
+  void place_columns();
+  void vertical_dimensions();
+  void horizontal_dimensions();
+  void level_lines();
+  void loads();
+  void constraints();
+  void control_point();
+  void seismic_action();
+  std::string legend_and_document();
+
+  const Chain& chain;
+  const KinematicResult& r;
+  const Lang lang;
+  const std::vector<Block>& blocks;
+  // Bounding box of the blocks and of the foundation level z = 0 (m), its sizes, the scale (px/m).
+  const double xmin, xmax, zmin, zmax, wx, wz, s;
+  const Geometry geo;
   // A projected 3-D body (issue 33: the corner's pieces welded, drawn as
   // equivalent strips in the plane normal to the axis): one resultant weight,
   // the pieces translucent, no per-piece widths.
   bool welded = false;
-  for (const Constraint& c : chain.constraints()) welded = welded || c.type == ConstraintType::Weld;
-  const bool many = blocks.size() > 6 || welded;  // a sliced body (gable): joints and slice weights not labelled
-
+  bool many = false;  // a sliced body (gable): joints and slice weights not labelled
   Canvas cv;
+  std::set<long> level_mm, floor_mm, hinge_mm;  // levels (mm): all, floors, ground hinges
+  std::vector<double> levels;                   // m
+  std::vector<HDim> hdims;
+  // Extent of the drawing's lines on each side of the wall (px); ties are drawn
+  // on the outer face, the dimension columns beyond them.
+  double gx1 = 0.0, col0 = 0.0;
+  static constexpr double arrow = 34.0, tie_len = 36.0, col_step = 46.0;
+  std::set<long> tie_mm;
+  std::vector<Column> cols;
+  std::vector<Row> rows;
+  std::map<int, double> offset_notes;  // load index -> offset (m) not dimensioned
+  std::set<char> symbols;              // of the loads drawn, explained in the legend
+};
 
+Elevation::Elevation(const Chain& chain_, const KinematicResult& r_, Lang lang_, const std::array<double, 4>& box)
+    : chain(chain_), r(r_), lang(lang_), blocks(chain_.blocks()), xmin(box[0]), xmax(box[1]), zmin(box[2]),
+      zmax(box[3]), wx(std::max(xmax - xmin, 1e-6)), wz(std::max(zmax - zmin, 1e-6)),
+      s(std::min(240.0 / wx, 440.0 / wz)), geo{blocks, 1e-7 * std::max(wx, wz)} {
+  for (const Constraint& c : chain.constraints()) welded = welded || c.type == ConstraintType::Weld;
+  many = blocks.size() > 6 || welded;
+}
 
-  // ---------------------------------------------------------------- blocks
+std::string Elevation::draw() {
+  draw_blocks();
+  collect_levels();
+  place_columns();
+  vertical_dimensions();
+  horizontal_dimensions();
+  level_lines();
+  loads();
+  constraints();
+  control_point();
+  seismic_action();
+  return legend_and_document();
+}
+
+// The blocks, as filled polygons (the label placer avoids them).
+void Elevation::draw_blocks() {
   for (std::size_t i = 0; i < blocks.size(); ++i) {
     const Block& b = blocks[i];
     std::string pts;
@@ -642,13 +719,14 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
          "\"/>\n";
     cv.placer.polygon(std::move(px));
   }
+}
 
-  // ---------------------------------------------------------------- levels
+// The levels of the drawing and its horizontal dimensions.
+void Elevation::collect_levels() {
   // The levels of the drawing: the foundation, the base and top of the wall,
   // the ground hinges, the hinges between blocks, the carried loads, the steps
   // of the wall's thickness.
-  std::set<long> level_mm = {0, mm(zmax)};
-  std::set<long> floor_mm, hinge_mm;
+  level_mm = {0, mm(zmax)};
   for (const Constraint& c : chain.constraints()) {
     if (c.type == ConstraintType::GroundHinge) hinge_mm.insert(mm(c.point.y())), level_mm.insert(mm(c.point.y()));
     if (c.type == ConstraintType::Hinge && !many) level_mm.insert(mm(c.point.y()));
@@ -664,14 +742,6 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
     for (const auto& p : b.polygon) base = std::min(base, p.y());
   level_mm.insert(mm(base));
   // Steps of the thickness, and the bands of constant section (for the thickness dimensions).
-  struct HDim {
-    double x1, x2;      // m
-    double zt1, zt2;    // upper reference levels of the two ends (m)
-    double zb1, zb2;    // lower reference levels of the two ends (m)
-    std::string kind;   // thickness, width, offset
-    int load = -1;      // offset: index of the load
-  };
-  std::vector<HDim> hdims;
   std::set<std::pair<long, long>> hdim_keys;
   for (const Block& b : blocks) {
     if (welded) break;  // the pieces of a projection: equivalent widths, not dimensions of the wall
@@ -728,26 +798,21 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
     hdims.push_back({face, x, z, z, z, z, "offset", int(i)});
   }
 
-  std::vector<double> levels;
   for (long v : level_mm) levels.push_back(v / 1000.0);
+}
 
-  // Extent of the drawing's lines on each side of the wall.
-  const double gx1 = X(xmin) - 175.0;
-  // Ties are drawn on the outer face: the dimension columns beyond them.
-  const double arrow = 34.0, tie_len = 36.0;
-  std::set<long> tie_mm;
+// The left end of the level lines and the first dimension column, beyond the ties.
+void Elevation::place_columns() {
+  gx1 = X(xmin) - 175.0;
   for (const Load& l : chain.loads())
     if (l.type == LoadType::Tie) tie_mm.insert(mm(l.point.y()));
-  const double col0 = X(xmax) + 34.0 + (tie_mm.empty() ? 0.0 : 86.0), col_step = 46.0;
+  col0 = X(xmax) + 34.0 + (tie_mm.empty() ? 0.0 : 86.0);
+}
 
-  // --------------------------------------------------- vertical dimensions
+// Columns of vertical dimensions on the outer side.
+void Elevation::vertical_dimensions() {
   // Columns on the outer side: the chain of levels, the hinge level (when the
   // chain does not show it as one dimension), the overall height.
-  struct Column {
-    std::vector<double> z;  // levels, bottom to top
-    std::string kind;
-  };
-  std::vector<Column> cols;
   if (levels.size() > 2) cols.push_back({levels, "level"});
   for (long h : hinge_mm) {
     const double zh = h / 1000.0;
@@ -788,8 +853,10 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
                       (tie_mm.count(e.first) ? tie_len + 6 : slider_mm.count(e.first) ? 16 : 4);
     cv.line(x0, Y(z), e.second, Y(z), ext_style);
   }
+}
 
-  // ------------------------------------------------- horizontal dimensions
+// Rows of horizontal dimensions above or below the wall.
+void Elevation::horizontal_dimensions() {
   // In rows above the wall (or below it when an extension line upward would
   // cross a block), the narrower ones nearer; an offset that cannot be
   // dimensioned outside the wall is written by its load ("d = ...").
@@ -798,11 +865,6 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
     if (ra != rb) return ra < rb;
     return (a.x2 - a.x1) < (b.x2 - b.x1);
   });
-  struct Row {
-    double y, X1, X2;
-  };
-  std::vector<Row> rows;
-  std::map<int, double> offset_notes;  // load index -> offset (m) not dimensioned
   for (const HDim& d : hdims) {
     // Above the wall or below it, where the extension lines cross no block;
     // of the two, the side with the shorter extension lines.
@@ -848,8 +910,10 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
     cv.dim_labels.push_back(
         {d2(d.x2 - d.x1), fs, "class=\"dim\" data-kind=\"" + d.kind + "\" fill=\"#222\"", xm, y, p});
   }
+}
 
-  // ---------------------------------------------------- level lines, ground
+// The floors and hinge levels, the ground.
+void Elevation::level_lines() {
   double right_edge = col0 + col_step * double(cols.size() - 1) + 16.0;
   for (long zmm_ : floor_mm) {
     const double z = zmm_ / 1000.0;
@@ -878,10 +942,11 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
     cv.line(hx, Y0 + 8, hx + 8, Y0, "stroke=\"#444\"");
   cv.labels.push_back({msg(lang, "draw.ground") + " z = 0", 11, "fill=\"#444\"", gx1, Y0,
                     {{gx1, Y0 + 22, Anchor::Start}, {gx1, Y0 - 5, Anchor::Start}, {gx1 + 60, Y0 + 22, Anchor::Start}}});
+}
 
-  // ------------------------------------------------------------------ loads
+// The loads: self weights, carried weights, forces, ties, friction.
+void Elevation::loads() {
   double self_total = 0.0, self_x = 0.0, self_z = 0.0;
-  std::set<char> symbols;  // of the loads drawn, explained in the legend
   for (std::size_t li = 0; li < chain.loads().size(); ++li) {
     const Load& l = chain.loads()[li];
     const double Xp = X(l.point.x()), Yp = Y(l.point.y());
@@ -962,8 +1027,10 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
                       {{Xp - 5, Yp - 15 + 3.5, Anchor::End}, {Xp + 5, Yp - 15 + 3.5, Anchor::Start},
                        {X(geo.left_at(self_z / self_total)) - 8, Yp - 15 + 3.5, Anchor::End}}});
   }
+}
 
-  // ----------------------------------------------------------- constraints
+// The hinges and sliders.
+void Elevation::constraints() {
   std::set<std::pair<long, long>> drawn;
   for (const Constraint& c : chain.constraints()) {
     const double Xp = X(c.point.x()), Yp = Y(c.point.y());
@@ -989,8 +1056,10 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
                          {Xp + 6, Yp - 6, Anchor::Start}, {Xp - 6, Yp - 6, Anchor::End}}});
     }
   }
+}
 
-  // --------------------------------------------------------- control point
+// The control point of the capacity curve.
+void Elevation::control_point() {
   if (r.control_block >= 0) {
     const double Xp = X(r.control_point.x()), Yp = Y(r.control_point.y());
     cv.circle(Xp, Yp, 6, "fill=\"none\" stroke=\"#000\" stroke-width=\"1.5\"");
@@ -1006,8 +1075,10 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
                        {X(geo.left_at(r.control_point.y())) - 8, Yp - 21, Anchor::End},
                        {X(geo.left_at(r.control_point.y())) - 8, Yp + 40, Anchor::End}}});
   }
+}
 
-  // ------------------------------------------------------- seismic action
+// The direction of the seismic action.
+void Elevation::seismic_action() {
   {
     double top = Y(zmax);
     for (const Row& rw : rows) top = std::min(top, rw.y);
@@ -1019,7 +1090,10 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
                       {{sx1, sy - 8, Anchor::Start}, {sx1 - 6, sy + 4, Anchor::End}, {sx1, sy + 18, Anchor::Start}}});
     cv.labels.push_back({"x", 11, "fill=\"#b3001b\"", sx2, sy, {{sx2 + 6, sy + 4, Anchor::Start}}});
   }
-  // ------------------------------------------------------------ placement
+}
+
+// The labels placed, the legend under everything, the SVG document.
+std::string Elevation::legend_and_document() {
   // The legend under everything.
   const double ly = cv.place_labels();
   std::vector<std::string> legend = {tr(lang, "quote in m", "dimensions in m")};
@@ -1039,11 +1113,18 @@ std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lan
                         "d = distance of the load from the inner face of the wall"));
   cv.place_legend(legend, gx1, ly);
 
-  // ------------------------------------------------------------- document
   return cv.document(msg(lang, "mech.heading"),
                      "<defs>" + Canvas::marker("arrow", "context-stroke", "auto-start-reverse") +
                          Canvas::marker("arrowb", "#0b4f9c") + Canvas::marker("arrowr", "#b3001b") +
                          Canvas::marker("arrowk", "#222") + "</defs>\n");
+}
+
+}  // namespace
+
+std::string mechanism_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
+  decimal_comma = lang == Lang::it;
+  if (chain.plan()) return plan_svg(chain, r, lang);  // issue 33: horizontal flexure, in plan
+  return Elevation(chain, r, lang).draw();
 }
 
 }  // namespace assess
