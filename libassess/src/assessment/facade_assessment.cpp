@@ -331,17 +331,19 @@ void compatibility(FacadeAssessment& a, const std::vector<Record>& recs, const E
     }
     c.band_satisfied = c.min_ratio >= lo && c.max_ratio <= hi;
   }
-  char buf[320];
-  std::snprintf(buf, sizeof buf,
-                "mean spectrum of the %d records / SLV spectrum (5 %%) over %.2f-%.2f s: %.3f to %.3f, %s the band "
-                "%.2f-%.2f (NTC 2018 §3.2.3.6)",
-                int(recs.size()), c.range.T_min, c.range.T_max, c.min_ratio, c.max_ratio,
-                c.band_satisfied ? "within" : "OUTSIDE", lo, hi);
-  c.message = buf;
-  if (!c.band_satisfied)
+  c.message = {{c.band_satisfied ? "compat.within" : "compat.outside",
+                {count_arg(recs.size()), number_arg(c.range.T_min, 2), number_arg(c.range.T_max, 2, "s"),
+                 number_arg(c.min_ratio, 3), number_arg(c.max_ratio, 3), number_arg(lo, 2), number_arg(hi, 2)}}};
+  if (!c.band_satisfied) {
+    char buf[320];  // the warning, an English sentence as every warning (localised by the report)
+    std::snprintf(buf, sizeof buf,
+                  "mean spectrum of the %d records / SLV spectrum (5 %%) over %.2f-%.2f s: %.3f to %.3f, OUTSIDE the "
+                  "band %.2f-%.2f (NTC 2018 §3.2.3.6)",
+                  int(recs.size()), c.range.T_min, c.range.T_max, c.min_ratio, c.max_ratio, lo, hi);
     a.warnings.push_back(a.kase.file + ": " + (a.selection.result ? "/dynamic/select" : "/dynamic/records") + ": the " +
-                         c.message + ": the records are not compatible with the site's SLV action and the dynamic "
+                         buf + ": the records are not compatible with the site's SLV action and the dynamic "
                          "verdict rests on them");
+  }
 }
 
 // The summary over every candidate's checks, the dynamic and energy rows.

@@ -278,7 +278,7 @@ nlohmann::json facade_json(const FacadeAssessment& a) {
                               {"min_ratio", a.dynamics.compatibility.min_ratio},
                               {"max_ratio", a.dynamics.compatibility.max_ratio},
                               {"band_satisfied", a.dynamics.compatibility.band_satisfied},
-                              {"message", a.dynamics.compatibility.message}};
+                              {"message", note_text(Lang::en, a.dynamics.compatibility.message)}};
       if (a.selection.result) d["selection"] = selection_json(a);
       d["duration"] = {{"whole_record", true},
                        {"free_motion_cap_s", a.dynamics.free_tail_s},

@@ -163,7 +163,7 @@ void add_records(Ctx& c, const FacadeAssessment& x) {
                         c.t(x.selection.spectra == "precomputed" ? "dyn.spectra_pre" : "dyn.spectra_int")}});
     if (!why.empty()) c.d.add_list(why);
   }
-  if (x.dynamics.compatibility.computed) c.d.add_paragraph(c.t("dyn.compat_msg") + ": " + c.loc(x.dynamics.compatibility.message) + ".");
+  if (x.dynamics.compatibility.computed) c.d.add_paragraph(c.t("dyn.compat_msg") + ": " + c.note(x.dynamics.compatibility.message) + ".");
   std::map<std::string, int> ends;
   for (const DynamicRun& r : x.dynamics.runs) ++ends[to_string(r.result.end)];
   std::string list;
@@ -433,7 +433,7 @@ void add_dynamic(Ctx& c) {
     if (x.selection.result)
       c.d.add_paragraph(msgf(c.L, "dyn.selection", c.n(x.selection.range.T_min, 2), c.n(x.selection.range.T_max, 2)) +
                         c.loc(x.selection.result->message));
-    if (x.dynamics.compatibility.computed) c.d.add_paragraph(c.t("dyn.compat_msg") + ": " + c.loc(x.dynamics.compatibility.message) + ".");
+    if (x.dynamics.compatibility.computed) c.d.add_paragraph(c.t("dyn.compat_msg") + ": " + c.note(x.dynamics.compatibility.message) + ".");
   }
   add_choice_notes(c, {"selection_window"});
   add_summary(c, x);

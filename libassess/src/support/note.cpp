@@ -79,6 +79,9 @@ const std::vector<std::pair<std::string, std::size_t>>& note_ids() {
       {"sel.no_compatible", 1},
       {"sel.band_left", 0},
       {"sel.fell_back", 2},
+      // The records' mean spectrum against the SLV spectrum (facade_assessment.cpp, NTC 2018 §3.2.3.6).
+      {"compat.within", 7},
+      {"compat.outside", 7},
   };
   return ids;
 }

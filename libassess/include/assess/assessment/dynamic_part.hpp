@@ -119,7 +119,7 @@ struct SpectrumCompatibility {
   PeriodRange range{};
   double min_ratio = 0.0, max_ratio = 0.0;  ///< min and max over the range of mean/Se (-)
   bool band_satisfied = false;
-  std::string message;
+  NoteText message;  ///< the comparison in words, as data ("mean spectrum of the 7 records / SLV spectrum ...")
 };
 
 /// The dynamic part of FacadeAssessment (present when the case has a
