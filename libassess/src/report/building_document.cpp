@@ -645,65 +645,36 @@ void add_warnings(Lang L, const BuildingAssessment& b, DocumentBuilder& d) {
   d.add_list(items, "warnings");
 }
 
-}  // namespace
-
-Document building_summary(const BuildingAssessment& b, const ReportOptions& options) {
-  const Lang L = options.lang;
+// The frontespizio's table: client, work, site, engineer, date, revision, case file.
+void add_front_table(Lang L, const BuildingAssessment& b, const ReportOptions& options, DocumentBuilder& d) {
   const BuildingCase& bc = b.building;
-  DocumentBuilder d(bt(L, "sum_title"), to_string(L));
-  d.set_subtitle((bc.project.empty() ? "" : bc.project + ". ") + msg(L, "front.case_file") + ": " +
-                 detail::shown_file(bc.file) + ". " + msg(L, "sum.full"));
-  add_verdict(L, b, d);
-  facade_site_section(b.results.front().a, options, d);
-  add_summary(L, b, d, options, false);
-  add_interventions(L, b, d, options);
-  add_warnings(L, b, d);
-  return d.document();
+  const ReportInfo& info = bc.report;
+  std::vector<std::vector<Cell>> rows;
+  auto row = [&](const char* key, const std::string& v) {
+    if (v.empty()) return;
+    Cell value(v);
+    value.user = std::string(key) != "front.site" && std::string(key) != "front.date";
+    rows.push_back({Cell(msg(L, key)), value});
+  };
+  row("front.client", info.client);
+  row("front.work", info.work.empty() ? bc.project : info.work);
+  row("front.location", info.location);
+  row("front.site", L == Lang::it ? relazione::decimal_comma(localise(L, b.site_description)) : b.site_description);
+  row("front.engineer", info.engineer);
+  row("front.registration", info.registration);
+  row("front.date", options.date.empty() ? detail::today_utc() : options.date);
+  row("front.revision", info.revision.empty() ? "0" : info.revision);
+  row("front.case_file", detail::shown_file(bc.file));
+  d.add_cell_table({Cell(msg(L, "front.item")), Cell(msg(L, "front.value"))}, rows, "", "front");
 }
 
-Relazione building_relazione(const BuildingAssessment& b, const ReportOptions& options) {
-  const Lang L = options.lang;
+// The general part, as the single relazione writes it from the first
+// mechanism's case: premessa, normativa, description, the mechanisms' list,
+// the site, the modelling choices, the formulas, the building's summary.
+void add_general_part(Lang L, const BuildingAssessment& b, const ReportOptions& options, const ReportOptions& mo,
+                      DocumentBuilder& d, std::set<std::string>& readings) {
   const BuildingCase& bc = b.building;
-  DocumentBuilder d(bt(L, "title"), to_string(L));
-  DocumentBuilder t(msg(L, "tab.title"), to_string(L));
-  d.set_key(relazione_key);
-  t.set_key(tabulati_key);
-  t.set_number_prefix("T");
-  std::set<std::string> readings;
-  const ReportInfo& info = bc.report;
-  std::string meta;
-  if (!bc.project.empty()) meta += bt(L, "project") + ": " + bc.project + ". ";
-  meta += bt(L, "generated") + " " + ASSESS_VERSION + ", " + bt(L, "date") + " " +
-          (options.date.empty() ? detail::today_utc() : options.date) + ".";
-  d.set_subtitle(meta);
-  t.set_subtitle(meta);
-  {
-    std::vector<std::vector<Cell>> rows;
-    auto row = [&](const char* key, const std::string& v) {
-      if (v.empty()) return;
-      Cell value(v);
-      value.user = std::string(key) != "front.site" && std::string(key) != "front.date";
-      rows.push_back({Cell(msg(L, key)), value});
-    };
-    row("front.client", info.client);
-    row("front.work", info.work.empty() ? bc.project : info.work);
-    row("front.location", info.location);
-    row("front.site", L == Lang::it ? relazione::decimal_comma(localise(L, b.site_description)) : b.site_description);
-    row("front.engineer", info.engineer);
-    row("front.registration", info.registration);
-    row("front.date", options.date.empty() ? detail::today_utc() : options.date);
-    row("front.revision", info.revision.empty() ? "0" : info.revision);
-    row("front.case_file", detail::shown_file(bc.file));
-    d.add_cell_table({Cell(msg(L, "front.item")), Cell(msg(L, "front.value"))}, rows, "", "front");
-  }
-  add_verdict(L, b, d);
-  d.add_contents(msg(L, "doc.contents"), 2);
-
-  // The general part, as the single relazione writes it, from the first mechanism's case.
   const FacadeAssessment& a0 = b.results.front().a;
-  ReportOptions mo = options;
-  mo.case_text.clear();
-  mo.fragility.reset();
   {
     relazione::Ctx c{a0, mo, L, d, &readings, true, true};
     d.add_heading(bt(L, "premessa"), 2, false, true, "premessa");
@@ -729,14 +700,14 @@ Relazione building_relazione(const BuildingAssessment& b, const ReportOptions& o
     relazione::add_formulas(c);
   }
   add_summary(L, b, d, options, true);
+}
 
-  // The tabulati: what they hold, then each mechanism's part in the order of the body.
-  t.add_contents(msg(L, "doc.contents"), 2);
-  {
-    relazione::Ctx x{a0, mo, L, t, &readings, true, true};
-    relazione::add_tab_intro(x);
-  }
-  add_record_sets(L, b, t, options);
+// Each mechanism's section in the body and its part of the tabulati, in the
+// order of the building; the first tie intervention met (for the readings).
+const TieInterventionResult* add_mechanism_parts(Lang L, const BuildingAssessment& b, ReportOptions& mo,
+                                                 DocumentBuilder& d, DocumentBuilder& t,
+                                                 std::set<std::string>& readings) {
+  const BuildingCase& bc = b.building;
   const TieInterventionResult* any_ties = nullptr;
   for (std::size_t i = 0; i < bc.mechanisms.size(); ++i) {
     const BuildingMechanism& m = bc.mechanisms[i];
@@ -764,7 +735,13 @@ Relazione building_relazione(const BuildingAssessment& b, const ReportOptions& o
     x->set_heading_shift(0);
     x->set_id_prefix("");
   }
-  // Issue 37: the ties of each wall once, with the mechanisms they restrain.
+  return any_ties;
+}
+
+// Issue 37: the ties of each wall once, with the mechanisms they restrain.
+void add_wall_ties(Lang L, const BuildingAssessment& b, ReportOptions& mo, DocumentBuilder& d, DocumentBuilder& t,
+                   std::set<std::string>& readings) {
+  const BuildingCase& bc = b.building;
   for (std::size_t w = 0; w < bc.doc.at("walls").size(); ++w) {
     std::vector<std::pair<std::string, const TieInterventionResult*>> members;
     const FacadeAssessment* first = nullptr;
@@ -782,10 +759,12 @@ Relazione building_relazione(const BuildingAssessment& b, const ReportOptions& o
     relazione::add_wall_tie_section(c, wall, members, &t);
     for (DocumentBuilder* x : {&d, &t}) x->set_id_prefix("");
   }
-  mo.ties = nullptr;
-  mo.shared_records.clear();
-  add_interventions(L, b, d, options);
+}
 
+// The conclusions: the building's verdict, the governing mechanism of each
+// approach, the mechanisms whose verdict is not robust, the tie index.
+void add_conclusions(Lang L, const BuildingAssessment& b, const ReportOptions& options, DocumentBuilder& d) {
+  const BuildingCase& bc = b.building;
   d.add_heading(bt(L, "conclusioni"), 2, false, true, "conclusions");  // after the interventions, on their page
   d.add_paragraph(verdict_sentence(L, b));
   for (const BuildingGoverning& g : b.governing) {
@@ -818,6 +797,64 @@ Relazione building_relazione(const BuildingAssessment& b, const ReportOptions& o
     d.add_paragraph(tie_index_text(L, b, false));
     d.add_paragraph(tie_index_text(L, b, true));
   }
+}
+
+}  // namespace
+
+Document building_summary(const BuildingAssessment& b, const ReportOptions& options) {
+  const Lang L = options.lang;
+  const BuildingCase& bc = b.building;
+  DocumentBuilder d(bt(L, "sum_title"), to_string(L));
+  d.set_subtitle((bc.project.empty() ? "" : bc.project + ". ") + msg(L, "front.case_file") + ": " +
+                 detail::shown_file(bc.file) + ". " + msg(L, "sum.full"));
+  add_verdict(L, b, d);
+  facade_site_section(b.results.front().a, options, d);
+  add_summary(L, b, d, options, false);
+  add_interventions(L, b, d, options);
+  add_warnings(L, b, d);
+  return d.document();
+}
+
+Relazione building_relazione(const BuildingAssessment& b, const ReportOptions& options) {
+  const Lang L = options.lang;
+  const BuildingCase& bc = b.building;
+  DocumentBuilder d(bt(L, "title"), to_string(L));
+  DocumentBuilder t(msg(L, "tab.title"), to_string(L));
+  d.set_key(relazione_key);
+  t.set_key(tabulati_key);
+  t.set_number_prefix("T");
+  std::set<std::string> readings;
+  const ReportInfo& info = bc.report;
+  std::string meta;
+  if (!bc.project.empty()) meta += bt(L, "project") + ": " + bc.project + ". ";
+  meta += bt(L, "generated") + " " + ASSESS_VERSION + ", " + bt(L, "date") + " " +
+          (options.date.empty() ? detail::today_utc() : options.date) + ".";
+  d.set_subtitle(meta);
+  t.set_subtitle(meta);
+  add_front_table(L, b, options, d);
+  add_verdict(L, b, d);
+  d.add_contents(msg(L, "doc.contents"), 2);
+
+  const FacadeAssessment& a0 = b.results.front().a;
+  ReportOptions mo = options;  // the general part's and the mechanisms' options: no case text, no fragility
+  mo.case_text.clear();
+  mo.fragility.reset();
+  add_general_part(L, b, options, mo, d, readings);
+
+  // The tabulati: what they hold, then each mechanism's part in the order of the body.
+  t.add_contents(msg(L, "doc.contents"), 2);
+  {
+    relazione::Ctx x{a0, mo, L, t, &readings, true, true};
+    relazione::add_tab_intro(x);
+  }
+  add_record_sets(L, b, t, options);
+  const TieInterventionResult* any_ties = add_mechanism_parts(L, b, mo, d, t, readings);
+  add_wall_ties(L, b, mo, d, t, readings);
+  mo.ties = nullptr;
+  mo.shared_records.clear();
+  add_interventions(L, b, d, options);
+
+  add_conclusions(L, b, options, d);
   {
     std::vector<std::pair<std::string, const FacadeAssessment*>> ms;
     for (std::size_t i = 0; i < bc.mechanisms.size(); ++i)
