@@ -287,9 +287,13 @@ Inline verdict_sentence(Lang L, const BuildingAssessment& b) {
   if (o == Outcome::satisfied)
     out.push_back(Span{fmt::format(fmt::runtime(bt(L, "verdict_ok")), v.mechanisms), true, verdict_tone(o)});
   else if (o == Outcome::not_satisfied)
-    out.push_back(Span{fmt::format(fmt::runtime(bt(L, "verdict_fail")), v.failing.size(), v.mechanisms, failing), true, verdict_tone(o)});
+    out.push_back(Span{fmt::format(fmt::runtime(bt(L, v.failing.size() == 1 ? "verdict_fail_one" : "verdict_fail")),
+                                   v.failing.size(), v.mechanisms, failing),
+                       true, verdict_tone(o)});
   else
-    out.push_back(Span{fmt::format(fmt::runtime(bt(L, "verdict_none")), v.undecided.size(), v.mechanisms), true, verdict_tone(o)});
+    out.push_back(Span{fmt::format(fmt::runtime(bt(L, v.undecided.size() == 1 ? "verdict_none_one" : "verdict_none")),
+                                   v.undecided.size(), v.mechanisms),
+                       true, verdict_tone(o)});
   std::string tail;
   if (!v.undecided.empty()) {
     std::string u;
