@@ -14,7 +14,11 @@ using detail::xml_escape;
 // Print style sheet (issue 28, item 9): A4, a fixed type size that prints
 // (body 10.5 pt, tables 8.5 pt, notes 8 pt: nothing below 8 pt), tables at
 // full width whose cells wrap (a long word breaks rather than widening the
-// page: Chromium would otherwise shrink the whole page to fit), headings kept
+// page: Chromium would otherwise shrink the whole page to fit, and the
+// contents' numbers laid over it would miss their rows: report_files.cpp
+// numbers_on_rows; the two widest tables, the building's summary and the
+// acceptability checks, with narrower cell padding: 7-9 px too wide for the
+// house), headings kept
 // with the block that follows, figures and table rows never split, one
 // colour per verdict.
 constexpr const char* kCss = R"(
@@ -33,6 +37,7 @@ constexpr const char* kCss = R"(
   table.narrow { width: auto; min-width: 60%; }
   caption { caption-side: top; text-align: left; font-style: italic; font-size: 9.5pt; padding-bottom: 0.3em; }
   th, td { border: 1px solid #bbb; padding: 0.18em 0.35em; text-align: left; vertical-align: top; overflow-wrap: break-word; }
+  table.building-summary th, table.building-summary td, table.acceptability th, table.acceptability td { padding: 0.18em 0.22em; }
   th { background: #eee; font-size: 8.5pt; }
   td.num, th.num { text-align: right; font-variant-numeric: tabular-nums; } td.num { white-space: nowrap; }
   th.num .note, td.num .note { white-space: normal; text-align: left; }
@@ -252,21 +257,19 @@ const char* kOverlayCss = R"(
 
 std::string to_html(const Document& d, const HtmlOptions& options) {
   Writer w{d, options, heading_numbers(d)};
-  std::string body;
-  if (options.contents_overlay) {
-    // The blocks up to the contents (the front page, the verdict box) lay it out where the full print has it.
-    std::vector<DocBlock> head;
-    for (const DocBlock& b : d.blocks) {
-      head.push_back(b);
-      if (std::holds_alternative<Contents>(b.value)) break;
-    }
-    body = w.blocks(head);
-  } else {
-    body = w.blocks(d.blocks);
+  // The contents' page numbers alone: the blocks up to the contents (the front
+  // page, the verdict box) lay it out where the full print has it.
+  std::vector<DocBlock> head;
+  for (const DocBlock& b : d.blocks) {
+    if (!options.contents_overlay) break;
+    head.push_back(b);
+    if (std::holds_alternative<Contents>(b.value)) break;
   }
+  const std::vector<DocBlock>& printed = options.contents_overlay ? head : d.blocks;
+  std::string body = w.blocks(printed);
   if (options.heading_destinations) {
     body += "<div class=\"destinations\" hidden>";
-    for (const DocBlock& b : d.blocks)
+    for (const DocBlock& b : printed)
       if (const Heading* h = std::get_if<Heading>(&b.value)) body += "<a href=\"#" + xml_escape(h->anchor) + "\"></a>";
     body += "</div>\n";
   }

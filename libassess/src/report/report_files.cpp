@@ -24,12 +24,14 @@
 #include "assess/support/output_file.hpp"
 
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <future>
 #include <sys/resource.h>
 #include <unistd.h>
 #include <map>
+#include <sstream>
 
 namespace assess {
 
@@ -39,12 +41,54 @@ namespace fs = std::filesystem;
 
 // The page of each heading: its anchor's named destination in the PDF
 // printed with HtmlOptions::heading_destinations.
-std::map<std::string, int> heading_pages(const Document& d, const std::map<std::string, int>& destinations) {
+std::map<std::string, int> heading_pages(const Document& d,
+                                         const std::map<std::string, detail::PdfDestination>& destinations) {
   std::map<std::string, int> pages;
   for (const DocBlock& b : d.blocks)
     if (const Heading* h = std::get_if<Heading>(&b.value))
-      if (const auto at = destinations.find(h->anchor); at != destinations.end()) pages[h->anchor] = at->second;
+      if (const auto at = destinations.find(h->anchor); at != destinations.end()) pages[h->anchor] = at->second.page;
   return pages;
+}
+
+// The words of the first `pages` pages of `pdf` (pdftotext -bbox, poppler-utils):
+// per page, each word's right end and baseline (pt). Empty when pdftotext fails.
+struct PdfWord {
+  double x_min, x_max, y_max;
+};
+std::vector<std::vector<PdfWord>> pdf_words(const fs::path& pdf, int pages, const fs::path& dir) {
+  std::vector<std::vector<PdfWord>> out;
+  const fs::path log = dir / "words.html";
+  if (detail::run_program({"pdftotext", "-bbox", "-f", "1", "-l", std::to_string(pages), pdf.string(), log.string()},
+                          dir / "pdftotext.log") != 0)
+    return out;
+  std::istringstream in(detail::read_file(log));
+  for (std::string line; std::getline(in, line);) {
+    if (line.find("<page ") != std::string::npos) out.emplace_back();
+    PdfWord w{};
+    const std::size_t at = line.find("<word ");
+    if (at != std::string::npos && !out.empty() &&
+        std::sscanf(line.c_str() + at, "<word xMin=\"%lf\" yMin=\"%*f\" xMax=\"%lf\" yMax=\"%lf\"", &w.x_min,
+                    &w.x_max, &w.y_max) == 3)
+      out.back().push_back(w);
+  }
+  return out;
+}
+
+// The page numbers printed alone lie on the contents' rows of the full print:
+// each number has a word of the full print on its baseline, to its left.
+// Chromium shrinks a whole document whose content is wider than the page (and
+// lays it out wider); the overlay, which ends at the contents, would not be
+// shrunk with it and its numbers would fall between the lines.
+bool numbers_on_rows(const fs::path& full, const fs::path& overlay, int pages, const fs::path& dir) {
+  const auto base = pdf_words(full, pages, dir), numbers = pdf_words(overlay, pages, dir);
+  if (base.size() < numbers.size()) return false;
+  for (std::size_t p = 0; p < numbers.size(); ++p)
+    for (const PdfWord& n : numbers[p]) {
+      bool row = false;
+      for (const PdfWord& w : base[p]) row = row || (std::abs(w.y_max - n.y_max) < 0.5 && w.x_max < n.x_min);
+      if (!row) return false;
+    }
+  return true;
 }
 
 // The PDF's bookmarks: the headings with a page, numbered as printed, the
@@ -71,7 +115,9 @@ void install(const std::string& option, const std::string& path, const fs::path*
 
 // `base` with the pages of `overlay` laid over its first pages and the
 // bookmarks of `update` (a qpdf JSON update), the base's links kept. False
-// when qpdf is not installed.
+// when qpdf is not installed, or when the overlay's numbers would not lie on
+// the base's contents rows (numbers_on_rows): the caller prints the whole
+// document with its numbers instead.
 bool overlay_first_pages(const fs::path& base, const fs::path& overlay, const fs::path& update, const fs::path& out,
                          const fs::path& dir) {
   const fs::path log = dir / "qpdf.log";
@@ -84,6 +130,7 @@ bool overlay_first_pages(const fs::path& base, const fs::path& overlay, const fs
     pages = pages * 10 + (ch - '0');
   }
   if (code != 0 || pages < 1) throw InputError("--pdf: qpdf could not read the contents' page numbers (exit " + std::to_string(code) + ")");
+  if (!numbers_on_rows(base, overlay, pages, dir)) return false;
   const std::string range = "1-" + std::to_string(pages);
   const int done = detail::run_program({"qpdf", base.string(), "--update-from-json=" + update.string(), "--overlay",
                                         overlay.string(), "--from=" + range,

@@ -156,6 +156,18 @@ def check(h, p, w, tabulati):
     missing = sorted({m.group(1) for e in cells.toc for m in [re.search(r"(\d+)\s*$", e)] if m} - tokens, key=int)
     if missing:
         errors.append(f"contents' page numbers not printed on the first pages: {missing[:10]}")
+    # ... and on their rows: every number in the right-hand column of the first pages (x > 500 pt,
+    # above the footer) shares its baseline with a word on the left (its entry's title). Laid over a
+    # print that Chromium had shrunk to fit, the numbers fell between the lines (report_files.cpp
+    # numbers_on_rows). Tolerance 0.5 pt.
+    front_bbox = subprocess.run(["pdftotext", "-bbox", "-f", "1", "-l", "4", p, "-"], capture_output=True, text=True).stdout
+    for k, pg in enumerate(front_bbox.split("<page ")[1:], start=1):
+        words = [(float(a), float(c), float(d), t) for a, c, d, t in
+                 re.findall(r'<word xMin="([\d.]+)" yMin="[\d.]+" xMax="([\d.]+)" yMax="([\d.]+)">([^<]*)</word>', pg)]
+        for x0, x1, y, t in words:
+            if t.isdigit() and x0 > 500 and y < 800 and not any(abs(y2 - y) < 0.5 and x2 < 450 for _, x2, y2, _ in words):
+                errors.append(f"page {k}: the number {t} at x = {x0:.1f} pt, y = {y:.1f} pt lies on no row of the contents")
+                break
     
     # Word: headings, tables, pictures, the verdict.
     d = docx.Document(w)
