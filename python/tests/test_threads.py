@@ -61,4 +61,7 @@ def test_two_threads_take_clearly_less_wall_time_than_one():
         min(times["rocking", 1]), min(times["rocking", 2]), speedup, reference))
     if reference < 1.5:
         pytest.skip("the machine gives two threads a speed-up of %.2f now (loaded): nothing to compare" % reference)
-    assert speedup > 1.3 and speedup > 0.8 * reference
+    # An analysis holds the GIL while its result becomes a Python dict (a few
+    # percent of its 4 ms): measured speed-ups 1.47-1.9 where the reference gave
+    # 1.94. A call that kept the GIL gives at most 1.05.
+    assert speedup > 1.25 and speedup > 0.65 * reference
