@@ -45,9 +45,8 @@ std::string ref(long n) { return std::to_string(n) + " 0 R"; }
 
 }  // namespace
 
-std::map<std::string, PdfDestination> pdf_destinations(const std::filesystem::path& pdf,
-                                                       const std::filesystem::path& dir) {
-  std::map<std::string, PdfDestination> pages;
+std::map<std::string, int> pdf_destinations(const std::filesystem::path& pdf, const std::filesystem::path& dir) {
+  std::map<std::string, int> pages;
   const std::filesystem::path log = dir / "dests.txt";
   if (run_program({"pdfinfo", "-dests", pdf.string()}, log) != 0) return pages;
   // "   3 [ XYZ    0  724 null      ] "premessa"": the page, the destination, the quoted name.
@@ -55,12 +54,9 @@ std::map<std::string, PdfDestination> pdf_destinations(const std::filesystem::pa
   for (std::string line; std::getline(in, line);) {
     const std::size_t open = line.find('"'), close = line.rfind('"');
     if (open == std::string::npos || close <= open) continue;
-    PdfDestination at;
-    if (std::sscanf(line.c_str(), "%d", &at.page) != 1 || at.page < 1) continue;
-    double left = 0.0;  // "[ XYZ left top zoom ]"; another kind of view keeps top 0
-    const std::size_t xyz = line.find("XYZ");
-    if (xyz != std::string::npos && xyz < open) std::sscanf(line.c_str() + xyz + 3, "%lf %lf", &left, &at.top);
-    pages.emplace(line.substr(open + 1, close - open - 1), at);
+    int page = 0;
+    if (std::sscanf(line.c_str(), "%d", &page) != 1 || page < 1) continue;
+    pages.emplace(line.substr(open + 1, close - open - 1), page);
   }
   return pages;
 }

@@ -16,16 +16,9 @@
 
 namespace assess::detail {
 
-/// Where a named destination points: its page (from 1) and the top of its view (pt from the page's bottom).
-struct PdfDestination {
-  int page = 0;
-  double top = 0.0;
-};
-
-/// Each named destination of `pdf` (anchor -> page and top); empty when
-/// pdfinfo is missing or fails. `dir`: a private folder.
-std::map<std::string, PdfDestination> pdf_destinations(const std::filesystem::path& pdf,
-                                                       const std::filesystem::path& dir);
+/// The page of each named destination of `pdf` (anchor -> page, from 1);
+/// empty when pdfinfo is missing or fails. `dir`: a private folder.
+std::map<std::string, int> pdf_destinations(const std::filesystem::path& pdf, const std::filesystem::path& dir);
 
 /// One bookmark: its title, its level (1 the top) and the named destination it opens.
 struct Bookmark {

@@ -41,17 +41,16 @@ namespace fs = std::filesystem;
 
 // The page of each heading: its anchor's named destination in the PDF
 // printed with HtmlOptions::heading_destinations.
-std::map<std::string, int> heading_pages(const Document& d,
-                                         const std::map<std::string, detail::PdfDestination>& destinations) {
+std::map<std::string, int> heading_pages(const Document& d, const std::map<std::string, int>& destinations) {
   std::map<std::string, int> pages;
   for (const DocBlock& b : d.blocks)
     if (const Heading* h = std::get_if<Heading>(&b.value))
-      if (const auto at = destinations.find(h->anchor); at != destinations.end()) pages[h->anchor] = at->second.page;
+      if (const auto at = destinations.find(h->anchor); at != destinations.end()) pages[h->anchor] = at->second;
   return pages;
 }
 
 // The words of the first `pages` pages of `pdf` (pdftotext -bbox, poppler-utils):
-// per page, each word's right end and baseline (pt). Empty when pdftotext fails.
+// per page, each word's left and right ends and its baseline (pt). Empty when pdftotext fails.
 struct PdfWord {
   double x_min, x_max, y_max;
 };
