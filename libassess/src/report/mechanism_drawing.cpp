@@ -434,23 +434,71 @@ long mm(double v) { return std::lround(v * 1000.0); }
 // the ring beam's force, the control point, the seismic action outward.
 // Dimensions: the stretches between the hinges and openings (kind "level"),
 // the span (kind "total"), the thickness (kind "thickness").
-std::string plan_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
-  const std::vector<Block>& blocks = chain.blocks();
-  double xmin = kInf, xmax = -kInf, umin = kInf, umax = -kInf;
-  for (const Block& b : blocks)
-    for (const auto& p : b.polygon) {
-      xmin = std::min(xmin, p.x()), xmax = std::max(xmax, p.x());
-      umin = std::min(umin, p.y()), umax = std::max(umax, p.y());
-    }
-  const double t = std::max(xmax - xmin, 1e-6), L = std::max(umax - umin, 1e-6);
-  // To scale, the span in at most 520 px, the thickness at least 24 px.
-  const double s = std::min(520.0 / L, 160.0 / t);
-  const double sx = std::max(s, 24.0 / t);  // thickness exaggerated if thin (said in the legend)
-  auto X = [&](double u) { return 120.0 + s * (u - umin); };
-  auto Y = [&](double x) { return 200.0 - sx * x; };  // outward (x > 0) up
-  Canvas cv;
+// The plan of a horizontal strip (plan_svg, issue 33): the state its drawing
+// steps share, each step one member, in the order plan_svg calls them.
+class Plan {
+ public:
+  Plan(const Chain& chain, const KinematicResult& r, Lang lang, const std::array<double, 4>& box);
+  std::string draw();
 
-  // The strip's blocks.
+ private:
+  // To scale: along the wall u to the right, outward (x > 0) up.
+  double X(double u) const { return 120.0 + s * (u - umin); }
+  double Y(double x) const { return 200.0 - sx * x; }
+  void draw_blocks();
+  void transverse_walls();
+  void hinges();
+  void loads();
+  void control_point();
+  void span_dimensions();
+  void thickness_dimension();
+  void seismic_action();
+  std::string legend_and_document();
+
+  const Chain& chain;
+  const KinematicResult& r;
+  const Lang lang;
+  const std::vector<Block>& blocks;
+  // The blocks' extent across (x, m) and along (u, m) the wall, the thickness t and span L (m).
+  const double xmin, xmax, umin, umax, t, L;
+  // The span in at most 520 px, the thickness at least 24 px (exaggerated if thin, said in the legend).
+  const double s, sx;
+  // The transverse walls at the supports: width and depth drawn (px).
+  const double wall_w, wall_d = 70.0;
+  Canvas cv;
+  std::set<char> symbols;  // of the loads drawn, explained in the legend
+};
+
+// The extent of a strip's blocks: xmin, xmax (across), umin, umax (along the wall) (m).
+std::array<double, 4> plan_box(const std::vector<Block>& blocks) {
+  std::array<double, 4> b{kInf, -kInf, kInf, -kInf};
+  for (const Block& k : blocks)
+    for (const auto& p : k.polygon) {
+      b[0] = std::min(b[0], p.x()), b[1] = std::max(b[1], p.x());
+      b[2] = std::min(b[2], p.y()), b[3] = std::max(b[3], p.y());
+    }
+  return b;
+}
+
+Plan::Plan(const Chain& chain_, const KinematicResult& r_, Lang lang_, const std::array<double, 4>& box)
+    : chain(chain_), r(r_), lang(lang_), blocks(chain_.blocks()), xmin(box[0]), xmax(box[1]), umin(box[2]),
+      umax(box[3]), t(std::max(xmax - xmin, 1e-6)), L(std::max(umax - umin, 1e-6)),
+      s(std::min(520.0 / L, 160.0 / t)), sx(std::max(s, 24.0 / t)), wall_w(std::max(14.0, s * t)) {}
+
+std::string Plan::draw() {
+  draw_blocks();
+  transverse_walls();
+  hinges();
+  loads();
+  control_point();
+  span_dimensions();
+  thickness_dimension();
+  seismic_action();
+  return legend_and_document();
+}
+
+// The strip's blocks.
+void Plan::draw_blocks() {
   for (std::size_t i = 0; i < blocks.size(); ++i) {
     std::string pts;
     std::vector<std::array<double, 2>> px;
@@ -463,8 +511,10 @@ std::string plan_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
          "\" stroke=\"#5a4a32\" stroke-width=\"1.2\"/>\n";
     cv.placer.polygon(std::move(px));
   }
-  // The transverse walls at the supports (context, hatched, inward of the strip).
-  const double wall_w = std::max(14.0, s * t), wall_d = 70.0;
+}
+
+// The transverse walls at the supports (context, hatched, inward of the strip).
+void Plan::transverse_walls() {
   for (int side = 0; side < 2; ++side) {
     const double xa = side == 0 ? X(umin) - wall_w : X(umax), xb = xa + wall_w;
     const double ya = Y(xmax), yb = Y(xmin) + wall_d;
@@ -478,7 +528,10 @@ std::string plan_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
                       {{0.5 * (xa + xb), yb + 14, Anchor::Middle}, {side == 0 ? xa - 4 : xb + 4, yb - 4,
                                                                       side == 0 ? Anchor::End : Anchor::Start}}});
   }
-  // Hinges and the thrust line through them.
+}
+
+// Hinges and the thrust line through them.
+void Plan::hinges() {
   std::vector<std::array<double, 2>> hinge_px;
   for (const Constraint& c : chain.constraints()) {
     if (c.type == ConstraintType::Hinge) {
@@ -498,8 +551,10 @@ std::string plan_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
   for (std::size_t k = 0; k + 1 < hinge_px.size(); ++k)
     cv.line(hinge_px[k][0], hinge_px[k][1], hinge_px[k + 1][0], hinge_px[k + 1][1],
          "stroke=\"#b3001b\" stroke-width=\"1\" stroke-dasharray=\"5 3\"", false);
-  // Loads: the arch's thrust (at both supports), the ring beam's force.
-  std::set<char> symbols;
+}
+
+// Loads: the arch's thrust (at both supports), the ring beam's force.
+void Plan::loads() {
   for (const Load& l : chain.loads()) {
     if (l.type != LoadType::Force && l.type != LoadType::Tie) continue;
     const double n = l.force.norm();
@@ -524,7 +579,10 @@ std::string plan_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
                         {{Xp + 5, Yp - 36, Anchor::Start}, {Xp - 5, Yp - 36, Anchor::End}}});
     }
   }
-  // Control point.
+}
+
+// The control point.
+void Plan::control_point() {
   if (r.control_block >= 0) {
     const double Xp = X(r.control_point.y()), Yp = Y(r.control_point.x());
     cv.circle(Xp, Yp, 6, "fill=\"none\" stroke=\"#000\" stroke-width=\"1.5\"");
@@ -533,7 +591,10 @@ std::string plan_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
     cv.labels.push_back({msg(lang, "draw.control"), 10, "", Xp, Yp,
                       {{Xp + 10, Yp + 16, Anchor::Start}, {Xp - 10, Yp + 16, Anchor::End}}});
   }
-  // Dimensions below the strip (inside the building, beyond the walls' ends).
+}
+
+// Dimensions below the strip (inside the building, beyond the walls' ends).
+void Plan::span_dimensions() {
   std::set<long> us = {mm(umin), mm(umax)};
   for (const Block& b : blocks)
     for (const auto& p : b.polygon) us.insert(mm(p.y()));
@@ -558,29 +619,35 @@ std::string plan_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
                             xm, yd, {{xm, yd - 3, Anchor::Middle}, {xm, yd + 12, Anchor::Middle}}});
     }
   }
-  // The thickness, beyond the last support's wall.
-  {
-    const double xd = X(umax) + wall_w + 40.0;
-    cv.line(xd, Y(xmax) - 5, xd, Y(xmin) + 5, dim_style);
-    cv.tick(xd, Y(xmax)), cv.tick(xd, Y(xmin));
-    cv.line(X(umax) + wall_w + 3, Y(xmax), xd + 5, Y(xmax), ext_style);
-    cv.line(X(umax) + wall_w + 3, Y(xmin), xd + 5, Y(xmin), ext_style);
-    const double ym = 0.5 * (Y(xmax) + Y(xmin));
-    cv.dim_labels.push_back({d2(t), 10, "class=\"dim\" data-kind=\"thickness\" fill=\"#222\"", xd, ym,
-                          {{xd + 5, ym + 3.5, Anchor::Start}, {xd - 5, ym + 3.5, Anchor::End}}});
-  }
-  // Outer face, inside, the seismic action outward.
-  {
-    const double xa = 0.5 * (X(umin) + X(umax)), ya = Y(xmax) - 70.0;
-    cv.line(xa, ya + 48, xa, ya, "stroke=\"#b3001b\" stroke-width=\"2.5\" marker-end=\"url(#arrowr)\"");
-    cv.head(xa, ya + 48, xa, ya, 2.5);
-    cv.labels.push_back({msg(lang, "draw.seismic"), 11, "fill=\"#b3001b\"", xa, ya,
-                      {{xa + 8, ya + 10, Anchor::Start}, {xa - 8, ya + 10, Anchor::End}}});
-    cv.labels.push_back({tr(lang, "esterno", "outside"), 10, "fill=\"#444\" font-style=\"italic\"", X(umin), Y(xmax),
-                      {{X(umin) + 4, Y(xmax) - 6, Anchor::Start}}});
-    cv.labels.push_back({tr(lang, "interno", "inside"), 10, "fill=\"#444\" font-style=\"italic\"", X(umin), Y(xmin),
-                      {{X(umin) + 4, Y(xmin) + 14, Anchor::Start}}});
-  }
+}
+
+// The thickness, beyond the last support's wall.
+void Plan::thickness_dimension() {
+  const double xd = X(umax) + wall_w + 40.0;
+  cv.line(xd, Y(xmax) - 5, xd, Y(xmin) + 5, dim_style);
+  cv.tick(xd, Y(xmax)), cv.tick(xd, Y(xmin));
+  cv.line(X(umax) + wall_w + 3, Y(xmax), xd + 5, Y(xmax), ext_style);
+  cv.line(X(umax) + wall_w + 3, Y(xmin), xd + 5, Y(xmin), ext_style);
+  const double ym = 0.5 * (Y(xmax) + Y(xmin));
+  cv.dim_labels.push_back({d2(t), 10, "class=\"dim\" data-kind=\"thickness\" fill=\"#222\"", xd, ym,
+                        {{xd + 5, ym + 3.5, Anchor::Start}, {xd - 5, ym + 3.5, Anchor::End}}});
+}
+
+// Outer face, inside, the seismic action outward.
+void Plan::seismic_action() {
+  const double xa = 0.5 * (X(umin) + X(umax)), ya = Y(xmax) - 70.0;
+  cv.line(xa, ya + 48, xa, ya, "stroke=\"#b3001b\" stroke-width=\"2.5\" marker-end=\"url(#arrowr)\"");
+  cv.head(xa, ya + 48, xa, ya, 2.5);
+  cv.labels.push_back({msg(lang, "draw.seismic"), 11, "fill=\"#b3001b\"", xa, ya,
+                    {{xa + 8, ya + 10, Anchor::Start}, {xa - 8, ya + 10, Anchor::End}}});
+  cv.labels.push_back({tr(lang, "esterno", "outside"), 10, "fill=\"#444\" font-style=\"italic\"", X(umin), Y(xmax),
+                    {{X(umin) + 4, Y(xmax) - 6, Anchor::Start}}});
+  cv.labels.push_back({tr(lang, "interno", "inside"), 10, "fill=\"#444\" font-style=\"italic\"", X(umin), Y(xmin),
+                    {{X(umin) + 4, Y(xmin) + 14, Anchor::Start}}});
+}
+
+// The labels placed, the legend, the SVG document.
+std::string Plan::legend_and_document() {
   const double ly = cv.place_labels();
   std::vector<std::string> legend = {tr(lang, "pianta della fascia, quote in m", "plan of the strip, dimensions in m")};
   if (sx > s * 1.0001)
@@ -596,6 +663,10 @@ std::string plan_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
   cv.place_legend(legend, X(umin) - wall_w - 60.0, ly);
   return cv.document(msg(lang, "mech.heading"), "<defs>" + Canvas::marker("arrowr", "#b3001b") +
                                                    Canvas::marker("arrowk", "#222") + "</defs>\n");
+}
+
+std::string plan_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
+  return Plan(chain, r, lang, plan_box(chain.blocks())).draw();
 }
 
 // The bounding box of the blocks and of the foundation level z = 0: xmin, xmax, zmin, zmax (m).
