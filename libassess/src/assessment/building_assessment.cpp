@@ -89,15 +89,15 @@ std::vector<std::string> merged_warnings(const BuildingCase& b, const std::vecto
 
 }  // namespace
 
-BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& options) {
-  BuildingAssessment out;
-  out.building = std::move(building);
-  BuildingCase& b = out.building;
+namespace {
+
+// Every mechanism in parallel, each error kept in its slot and the first
+// thrown located in the building's file. The record sets are final:
+// parse_building decided each shared selection (building_case.hpp).
+void assess_mechanisms(BuildingAssessment& out, const FacadeOptions& options) {
+  const BuildingCase& b = out.building;
   const std::size_t n = b.mechanisms.size();
-  out.results.resize(n);
   std::vector<std::string> errors(n);
-  // Every mechanism in parallel, each error kept in its slot. The record sets
-  // are final: parse_building decided each shared selection (building_case.hpp).
   detail::parallel_for(n, [&](std::size_t i) {
     try {
       out.results[i].a = assess_facade(b.mechanisms[i].kase, options);
@@ -107,31 +107,36 @@ BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& o
   });
   for (std::size_t i = 0; i < n; ++i)
     if (!errors[i].empty()) throw InputError(building_path_message(b, b.mechanisms[i], errors[i]));
+}
 
-  // Issue 23: the tie rods of each mechanism, as `assess run` of its case does
-  // them (after the record sets are final): given ties decide the assessment's
-  // dynamic rows, so the safety indices below are computed after this.
-  // Issue 37: a wall's ties act on every mechanism of the wall they cross:
-  // those mechanisms are assessed (and designed) together, one group per wall.
+// Issue 37: a wall's ties act on every mechanism of the wall they cross: those
+// mechanisms are assessed (and designed) together, one group per wall; a
+// mechanism with ties of its own is a group alone.
+std::vector<std::vector<std::size_t>> tie_groups(const BuildingCase& b) {
   std::vector<std::vector<std::size_t>> groups;
-  {
-    std::map<std::size_t, std::size_t> wall_group;
-    for (std::size_t i = 0; i < n; ++i) {
-      const BuildingMechanism& m = b.mechanisms[i];
-      if (!has_ties(m.kase)) continue;
-      if (!m.wall_ties) {
-        groups.push_back({i});
-        continue;
-      }
-      const auto it = wall_group.find(m.wall_index);
-      if (it == wall_group.end()) {
-        wall_group[m.wall_index] = groups.size();
-        groups.push_back({i});
-      } else {
-        groups[it->second].push_back(i);
-      }
+  std::map<std::size_t, std::size_t> wall_group;
+  for (std::size_t i = 0; i < b.mechanisms.size(); ++i) {
+    const BuildingMechanism& m = b.mechanisms[i];
+    if (!has_ties(m.kase)) continue;
+    if (!m.wall_ties) {
+      groups.push_back({i});
+      continue;
+    }
+    const auto it = wall_group.find(m.wall_index);
+    if (it == wall_group.end()) {
+      wall_group[m.wall_index] = groups.size();
+      groups.push_back({i});
+    } else {
+      groups[it->second].push_back(i);
     }
   }
+  return groups;
+}
+
+// Issue 23: the tie rods of each mechanism, as `assess run` of its case does
+// them (after the record sets are final), one group at a time in parallel.
+void assess_tie_groups(BuildingAssessment& out, const std::vector<std::vector<std::size_t>>& groups) {
+  const BuildingCase& b = out.building;
   std::vector<std::string> group_errors(groups.size());
   std::vector<std::size_t> group_failing(groups.size(), 0);
   detail::parallel_for(groups.size(), [&](std::size_t g) {
@@ -157,8 +162,11 @@ BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& o
   for (std::size_t g = 0; g < groups.size(); ++g)
     if (!group_errors[g].empty())
       throw InputError(building_path_message(b, b.mechanisms[group_failing[g]], group_errors[g]));
+}
 
-  for (std::size_t i = 0; i < n; ++i) {
+// Each mechanism's zetaE and pass before and after the ties (without ties: the same).
+void mechanism_tie_indices(BuildingAssessment& out) {
+  for (std::size_t i = 0; i < out.results.size(); ++i) {
     BuildingMechanismResult& r = out.results[i];
     if (r.ties) {
       r.zeta_before = r.ties->zetaE_before;
@@ -170,20 +178,15 @@ BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& o
       r.passes_before = r.passes_after = every_kinematic_check_satisfied(r.a.kinematic);
     }
   }
-  out.warnings = merged_warnings(b, out.results);
-  const FacadeAssessment& a0 = out.results.front().a;
-  out.site_description = a0.site.description;
-  out.VR = a0.site.VR;
-  if (a0.site.actions.count(LimitState::SLV)) {
-    out.TR_SLV = a0.site.actions.at(LimitState::SLV).TR;
-    out.ag_SLV_g = a0.site.actions.at(LimitState::SLV).hazard.ag_g;
-  }
-  for (const char* code : {"NTC2018", "NTC2008"}) {
-    bool present = false;
-    for (const BuildingMechanismResult& r : out.results)
-      for (const SafetyIndex& s : r.a.indices) present = present || s.code == code;
-    if (present) out.codes.push_back(code);
-  }
+}
+
+// The governing mechanism of each code and approach: the lowest zetaE
+// (strength, displacement), the largest D/C (dynamic, or without a zetaE);
+// ties: the first in the file. With the counts of satisfied, failing and
+// undecided mechanisms.
+std::vector<BuildingGoverning> governing_mechanisms(const BuildingAssessment& out) {
+  std::vector<BuildingGoverning> governing;
+  const std::size_t n = out.results.size();
   for (const std::string& code : out.codes)
     for (const char* approach : {"strength", "displacement", "dynamic"}) {
       BuildingGoverning g;
@@ -212,12 +215,16 @@ BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& o
           g.dc = std::isfinite(s->dc) ? s->dc : inf;
         }
       }
-      if (g.assessed > 0) out.governing.push_back(g);
+      if (g.assessed > 0) governing.push_back(g);
     }
-  // The building's index before and after the ties: the smallest mechanism
-  // zetaE (docs/theory/building.md §8). Ties: the first in the file.
-  BuildingTieIndex& t = out.tie_index;
-  for (std::size_t i = 0; i < n; ++i) {
+  return governing;
+}
+
+// The building's index before and after the ties: the smallest mechanism
+// zetaE (docs/theory/building.md §8). Ties: the first in the file.
+BuildingTieIndex building_tie_index(const BuildingAssessment& out) {
+  BuildingTieIndex t;
+  for (std::size_t i = 0; i < out.results.size(); ++i) {
     const BuildingMechanismResult& r = out.results[i];
     t.any_ties = t.any_ties || r.ties.has_value();
     t.passing_before += r.passes_before;
@@ -231,6 +238,38 @@ BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& o
       t.mechanism_after = int(i);
     }
   }
+  return t;
+}
+
+}  // namespace
+
+BuildingAssessment assess_building(BuildingCase building, const FacadeOptions& options) {
+  BuildingAssessment out;
+  out.building = std::move(building);
+  const BuildingCase& b = out.building;
+  out.results.resize(b.mechanisms.size());
+  assess_mechanisms(out, options);
+
+  // The tie rods (issues 23, 37): given ties decide the assessment's dynamic
+  // rows, so the building's indices below are taken after this.
+  assess_tie_groups(out, tie_groups(b));
+  mechanism_tie_indices(out);
+  out.warnings = merged_warnings(b, out.results);
+  const FacadeAssessment& a0 = out.results.front().a;
+  out.site_description = a0.site.description;
+  out.VR = a0.site.VR;
+  if (a0.site.actions.count(LimitState::SLV)) {
+    out.TR_SLV = a0.site.actions.at(LimitState::SLV).TR;
+    out.ag_SLV_g = a0.site.actions.at(LimitState::SLV).hazard.ag_g;
+  }
+  for (const char* code : {"NTC2018", "NTC2008"}) {
+    bool present = false;
+    for (const BuildingMechanismResult& r : out.results)
+      for (const SafetyIndex& s : r.a.indices) present = present || s.code == code;
+    if (present) out.codes.push_back(code);
+  }
+  out.governing = governing_mechanisms(out);
+  out.tie_index = building_tie_index(out);
   out.verdict = building_verdict(out);
   return out;
 }
