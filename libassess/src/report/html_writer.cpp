@@ -260,11 +260,11 @@ std::string to_html(const Document& d, const HtmlOptions& options) {
   // The contents' page numbers alone: the blocks up to the contents (the front
   // page, the verdict box) lay it out where the full print has it.
   std::vector<DocBlock> head;
-  for (const DocBlock& b : d.blocks) {
-    if (!options.contents_overlay) break;
-    head.push_back(b);
-    if (std::holds_alternative<Contents>(b.value)) break;
-  }
+  if (options.contents_overlay)
+    for (const DocBlock& b : d.blocks) {
+      head.push_back(b);
+      if (std::holds_alternative<Contents>(b.value)) break;
+    }
   const std::vector<DocBlock>& printed = options.contents_overlay ? head : d.blocks;
   std::string body = w.blocks(printed);
   if (options.heading_destinations) {

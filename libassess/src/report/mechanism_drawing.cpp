@@ -469,8 +469,9 @@ class Plan {
   std::set<char> symbols;  // of the loads drawn, explained in the legend
 };
 
-// The extent of a strip's blocks: xmin, xmax (across), umin, umax (along the wall) (m).
-std::array<double, 4> plan_box(const std::vector<Block>& blocks) {
+// The extent of the blocks' polygons: min and max of their first coordinate,
+// min and max of their second (m): x and z in elevation, x and u in plan.
+std::array<double, 4> block_extent(const std::vector<Block>& blocks) {
   std::array<double, 4> b{kInf, -kInf, kInf, -kInf};
   for (const Block& k : blocks)
     for (const auto& p : k.polygon) {
@@ -666,17 +667,13 @@ std::string Plan::legend_and_document() {
 }
 
 std::string plan_svg(const Chain& chain, const KinematicResult& r, Lang lang) {
-  return Plan(chain, r, lang, plan_box(chain.blocks())).draw();
+  return Plan(chain, r, lang, block_extent(chain.blocks())).draw();
 }
 
 // The bounding box of the blocks and of the foundation level z = 0: xmin, xmax, zmin, zmax (m).
 std::array<double, 4> bounding_box(const std::vector<Block>& blocks) {
-  std::array<double, 4> b{kInf, -kInf, 0.0, -kInf};
-  for (const Block& k : blocks)
-    for (const auto& p : k.polygon) {
-      b[0] = std::min(b[0], p.x()), b[1] = std::max(b[1], p.x());
-      b[2] = std::min(b[2], p.y()), b[3] = std::max(b[3], p.y());
-    }
+  std::array<double, 4> b = block_extent(blocks);
+  b[2] = std::min(b[2], 0.0);
   return b;
 }
 
